@@ -1,0 +1,80 @@
+#pragma once
+// Loader for the paper's dataset layout, for any directory shaped like
+//   <dir>/domain.pddl, problems/<P>.pddl, plans/{observed,completed}/<plan>.pddl
+// plus, for Doors-Keys-Gems, utterances/{pragmatic,literal}/<plan>.txt and
+// stimuli.json, and for VirtualHome, goals/definitions/<label>.pddl and
+// goals/sets/<P>.txt. The domain kind is read from the domain file's name.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pddl/plan.hpp"
+#include "pddl/task.hpp"
+
+namespace clips::data {
+
+enum class DomainKind { DoorsKeysGems, VirtualHome, Generic };
+std::string to_string(DomainKind k);
+
+struct PlanRecord {
+  std::string id;          // file stem, e.g. "2.1.keys" or "1.1.stew_chicken"
+  std::string problem_id;  // e.g. "2", "10b", "demo0"
+  int index = 0;           // plan index on that problem
+  std::string tag;         // mDKG: "keys"/"doors"; VH: the true goal label
+  bool evaluated = true;   // mDKG tutorial plans (demo*) are not evaluated
+  pddl::PlanFile observed;
+  pddl::PlanFile completed;
+  std::optional<std::string> pragmatic_utterance;  // utterances/pragmatic (mDKG)
+  std::optional<std::string> literal_utterance;    // utterances/literal (mDKG)
+};
+
+// One candidate goal: a label and a PDDL condition.
+struct GoalSpec {
+  std::string label;      // e.g. "gem2" or "set_table1"
+  std::string condition;  // e.g. "(has human gem2)"
+};
+
+struct StimulusInfo {  // one entry of stimuli.json (mDKG)
+  std::string name, type, utterance;
+  int timesteps = 0, option_count = 0, goal = -1;
+  std::vector<int> best_options;  // 1-based option numbers
+};
+
+class Dataset {
+ public:
+  static Dataset load(const std::string& dir);
+
+  const std::string& dir() const { return dir_; }
+  DomainKind kind() const { return kind_; }
+  std::shared_ptr<const pddl::Domain> domain() const { return domain_; }
+  const std::vector<PlanRecord>& plans() const { return plans_; }
+  const PlanRecord& plan(const std::string& id) const;  // throws InputError listing ids
+
+  // Grounded task of a problem (grounded once, then shared).
+  std::shared_ptr<const pddl::Task> task(const std::string& problem_id) const;
+  std::string problem_path(const std::string& problem_id) const;
+
+  // The candidate goals of a plan's problem, in the paper's order, and the
+  // index of the plan's true goal among them.
+  std::vector<GoalSpec> candidate_goals(const PlanRecord& p) const;
+  int true_goal_index(const PlanRecord& p) const;
+  const std::map<std::string, std::string>& goal_definitions() const { return goal_defs_; }
+  const std::optional<StimulusInfo> stimulus(const std::string& plan_id) const;
+
+ private:
+  std::string dir_;
+  DomainKind kind_ = DomainKind::Generic;
+  std::shared_ptr<const pddl::Domain> domain_;
+  std::vector<PlanRecord> plans_;
+  std::map<std::string, std::string> goal_defs_;                 // VH label -> condition text
+  std::map<std::string, std::vector<std::string>> goal_sets_;   // VH problem -> labels
+  std::map<std::string, StimulusInfo> stimuli_;
+  mutable std::map<std::string, std::shared_ptr<const pddl::Task>> tasks_;
+};
+
+// Grounding options each domain needs (e.g. keep `frozen` in the state).
+pddl::GroundingOptions grounding_options(DomainKind k);
+
+}  // namespace clips::data

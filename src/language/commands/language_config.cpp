@@ -1,0 +1,217 @@
+#include "language/commands/language_config.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "util/error.hpp"
+
+namespace clips::commands {
+
+const SalientActionRule* LanguageConfig::salient_rule(const std::string& action) const {
+  for (const auto& rule : salient_actions)
+    if (rule.action == action) return &rule;
+  return nullptr;
+}
+
+std::string LanguageConfig::to_pronoun(const std::string& name) const {
+  if (name == speaker) return speaker_pronoun;
+  if (name == listener) return listener_pronoun;
+  return name;
+}
+
+std::string LanguageConfig::to_agent_name(const std::string& arg) const {
+  if (arg == speaker_pronoun) return speaker;
+  if (arg == listener_pronoun) return listener;
+  return arg;
+}
+
+LanguageConfig doors_keys_gems_language() {
+  LanguageConfig c;
+  c.domain = "doors-keys-gems";
+  c.salient_actions = {{"pickup", 1, 2}, {"handover", 1, 3}, {"unlock", 1, 3}};
+  c.qualifier = "iscolor";
+  c.qualifier_object_arg = 1;
+  c.speaker = "human";
+  c.listener = "robot";
+  c.max_command_actions = 3;
+  c.max_action_types = 2;
+  c.max_qualifier_values_per_action_type = 1;
+  c.variable_naming = VariableNaming::ObjectType;
+  c.printed_form = PrintedForm::WhereClause;
+  c.goal_atoms = {{"pickup", {"(has $1 $2)"}},
+                  {"handover", {"(has $2 $3)", "(pickedup-by $1 $3)"}},
+                  {"unlock", {"(unlocked-by $1 $3)", "(unlocked-with $2 $3)"}}};
+  c.goal_variables = GoalVariables::Existential;
+  return c;
+}
+
+LanguageConfig virtual_home_language() {
+  LanguageConfig c;
+  c.domain = "virtual-home";
+  c.salient_actions = {{"grab", 1, 2}};
+  c.qualifier = "itemtype";
+  c.qualifier_object_arg = 1;
+  c.speaker = "actor";
+  c.listener = "helper";
+  c.max_command_actions = 4;
+  c.max_action_types = 2;
+  c.max_qualifier_values_per_action_type = 2;
+  c.variable_naming = VariableNaming::QualifierValue;
+  c.printed_form = PrintedForm::QualifiedArgsOnly;
+  c.goal_atoms = {{"grab", {"(placed $2 table1)"}}};
+  c.goal_variables = GoalVariables::LowercasedName;
+  return c;
+}
+
+namespace {
+
+using nlohmann::json;
+
+// Reads typed values and reports errors as "<file>: <key>: <problem>".
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& why) const {
+    throw InputError(SourceLoc{source_, 0, 0}, key + ": " + why);
+  }
+
+  const json& field(const json& obj, const std::string& key, const std::string& path) const {
+    if (!obj.is_object()) fail(path, "expected an object");
+    auto it = obj.find(key);
+    if (it == obj.end()) fail(path + "." + key, "missing");
+    return *it;
+  }
+
+  std::string string(const json& value, const std::string& key) const {
+    if (!value.is_string() || value.get<std::string>().empty()) fail(key, "expected a non-empty string");
+    return value.get<std::string>();
+  }
+
+  int positive_int(const json& value, const std::string& key, int minimum = 1) const {
+    if (!value.is_number_integer() || value.get<long long>() < minimum)
+      fail(key, "expected an integer >= " + std::to_string(minimum));
+    return value.get<int>();
+  }
+
+  bool boolean(const json& value, const std::string& key) const {
+    if (!value.is_boolean()) fail(key, "expected true or false");
+    return value.get<bool>();
+  }
+
+  template <class Enum>
+  Enum choice(const json& value, const std::string& key,
+              const std::vector<std::pair<std::string, Enum>>& options) const {
+    std::string allowed;
+    if (value.is_string())
+      for (const auto& [name, e] : options)
+        if (value.get<std::string>() == name) return e;
+    for (const auto& [name, e] : options) allowed += (allowed.empty() ? "" : ", ") + name;
+    fail(key, "expected one of: " + allowed);
+  }
+
+ private:
+  std::string source_;
+};
+
+void read_party(const Reader& r, const json& value, const std::string& key, std::string& object,
+                std::string& pronoun) {
+  object = r.string(r.field(value, "object", key), key + ".object");
+  pronoun = r.string(r.field(value, "pronoun", key), key + ".pronoun");
+}
+
+}  // namespace
+
+LanguageConfig parse_language_config(const std::string& json_text, const std::string& source_name) {
+  json doc;
+  try {
+    doc = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw InputError(SourceLoc{source_name, 0, 0}, std::string("invalid JSON: ") + e.what());
+  }
+  const Reader r(source_name);
+  if (!doc.is_object()) r.fail("(top level)", "expected an object");
+
+  static const std::set<std::string> known = {
+      "domain", "salient_actions", "qualifier", "speaker", "listener", "max_command_actions",
+      "max_action_types", "max_qualifier_values_per_action_type", "speaker_actions",
+      "exclude_chains", "variable_naming", "printed_form", "goal_atoms", "goal_variables",
+      "comment"};
+  for (const auto& [key, value] : doc.items())
+    if (!known.contains(key)) r.fail(key, "unknown key");
+
+  LanguageConfig c;
+  c.domain = r.string(r.field(doc, "domain", ""), "domain");
+
+  const json& actions = r.field(doc, "salient_actions", "");
+  if (!actions.is_array() || actions.empty()) r.fail("salient_actions", "expected a non-empty array");
+  for (std::size_t i = 0; i < actions.size(); ++i) {
+    const std::string key = "salient_actions[" + std::to_string(i) + "]";
+    SalientActionRule rule;
+    rule.action = r.string(r.field(actions[i], "action", key), key + ".action");
+    if (actions[i].contains("agent_arg"))
+      rule.agent_arg = r.positive_int(actions[i]["agent_arg"], key + ".agent_arg");
+    rule.focal_arg = r.positive_int(r.field(actions[i], "focal_arg", key), key + ".focal_arg");
+    c.salient_actions.push_back(rule);
+  }
+
+  if (doc.contains("qualifier")) {
+    const json& q = doc["qualifier"];
+    c.qualifier = r.string(r.field(q, "predicate", "qualifier"), "qualifier.predicate");
+    if (q.contains("object_arg"))
+      c.qualifier_object_arg = r.positive_int(q["object_arg"], "qualifier.object_arg");
+  }
+  if (doc.contains("speaker")) read_party(r, doc["speaker"], "speaker", c.speaker, c.speaker_pronoun);
+  if (doc.contains("listener"))
+    read_party(r, doc["listener"], "listener", c.listener, c.listener_pronoun);
+  if (doc.contains("max_command_actions"))
+    c.max_command_actions = r.positive_int(doc["max_command_actions"], "max_command_actions");
+  if (doc.contains("max_action_types"))
+    c.max_action_types = r.positive_int(doc["max_action_types"], "max_action_types");
+  if (doc.contains("max_qualifier_values_per_action_type"))
+    c.max_qualifier_values_per_action_type = r.positive_int(
+        doc["max_qualifier_values_per_action_type"], "max_qualifier_values_per_action_type", 0);
+  if (doc.contains("speaker_actions"))
+    c.speaker_actions = r.choice<SpeakerActionRule>(
+        doc["speaker_actions"], "speaker_actions",
+        {{"exclude-all", SpeakerActionRule::ExcludeAll},
+         {"exclude-speaker-only-commands", SpeakerActionRule::ExcludeSpeakerOnlyCommands}});
+  if (doc.contains("exclude_chains")) c.exclude_chains = r.boolean(doc["exclude_chains"], "exclude_chains");
+  if (doc.contains("variable_naming"))
+    c.variable_naming = r.choice<VariableNaming>(
+        doc["variable_naming"], "variable_naming",
+        {{"object-type", VariableNaming::ObjectType}, {"qualifier-value", VariableNaming::QualifierValue}});
+  if (doc.contains("printed_form"))
+    c.printed_form = r.choice<PrintedForm>(
+        doc["printed_form"], "printed_form",
+        {{"where-clause", PrintedForm::WhereClause},
+         {"qualified-args-only", PrintedForm::QualifiedArgsOnly}});
+  if (doc.contains("goal_atoms")) {
+    const json& atoms = doc["goal_atoms"];
+    if (!atoms.is_object()) r.fail("goal_atoms", "expected an object of action -> [atom templates]");
+    for (const auto& [action, templates] : atoms.items()) {
+      const std::string key = "goal_atoms." + action;
+      if (!templates.is_array() || templates.empty()) r.fail(key, "expected a non-empty array of strings");
+      for (const auto& t : templates) c.goal_atoms[action].push_back(r.string(t, key));
+    }
+  }
+  if (doc.contains("goal_variables"))
+    c.goal_variables = r.choice<GoalVariables>(
+        doc["goal_variables"], "goal_variables",
+        {{"existential", GoalVariables::Existential},
+         {"lowercased-name", GoalVariables::LowercasedName}});
+  return c;
+}
+
+LanguageConfig load_language_config(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(SourceLoc{path.string(), 0, 0}, "cannot open language config");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_language_config(text.str(), path.string());
+}
+
+}  // namespace clips::commands

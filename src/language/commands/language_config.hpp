@@ -1,0 +1,100 @@
+#pragma once
+// Per-domain settings of the command model (spec 7.3-7.6, 9.9; VH spec 6.2-6.5,
+// 7.4). Everything domain-specific about commands lives here so the
+// enumeration, lifting and printing code works on plain strings for any domain.
+//
+// Defaults follow the reference code (spec 13 item 2): all speaker actions are
+// removed before enumeration and chained actions are allowed.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace clips::commands {
+
+// An action name that is salient, with 1-based argument positions.
+struct SalientActionRule {
+  std::string action;  // e.g. "handover"
+  int agent_arg = 1;   // the acting agent
+  int focal_arg = 2;   // the object the action is about (handover: the item, unlock: the door)
+};
+
+// Which speaker actions may appear in commands (spec 13 item 2).
+enum class SpeakerActionRule {
+  ExcludeAll,               // reference code: drop every speaker action first
+  ExcludeSpeakerOnlyCommands  // paper (mDKG): drop commands whose actions are all the speaker's
+};
+
+// How lifted variables are named (spec 7.5, VH spec 6.4).
+enum class VariableNaming {
+  ObjectType,     // mDKG: `?key1`, `?door1`: object type + per-type counter
+  QualifierValue  // VH: `?Plate1` after (itemtype plate1 plate), else `?Fixture1` after the type
+};
+
+// How the command is printed for the LLM (spec 7.6, VH spec 6.5).
+enum class PrintedForm {
+  WhereClause,        // mDKG: actions ` where ` predicates, '?' removed
+  QualifiedArgsOnly   // VH: drop unqualified variables and qualifier predicates, lowercase first letter
+};
+
+// How variables are treated when a command becomes a goal formula (spec 9.9, VH spec 7.4).
+enum class GoalVariables {
+  Existential,        // mDKG: (exists (?key1 - key) (and ...))
+  LowercasedName      // VH quirk: ?Plate2 becomes the constant plate2
+};
+
+struct LanguageConfig {
+  std::string domain;
+  std::vector<SalientActionRule> salient_actions;
+
+  // The qualifying predicate attached to each focal object, e.g. (iscolor key2 red).
+  std::string qualifier = "iscolor";
+  int qualifier_object_arg = 1;  // 1-based position of the object in the qualifier
+
+  std::string speaker = "human";
+  std::string listener = "robot";
+  std::string speaker_pronoun = "me";
+  std::string listener_pronoun = "you";
+
+  int max_command_actions = 3;  // K
+  // Commands with more than this many actions may use at most this many
+  // distinct (agent, action name) pairs (the reference checks n > 2 only).
+  int max_action_types = 2;
+  // Within one (agent, action name) group of such a command, at most this many
+  // distinct qualifiers (compared with the object masked). mDKG: 1 (colour
+  // consistency); VH: 2 (at most 2 item types); 0 disables the check.
+  int max_qualifier_values_per_action_type = 1;
+
+  SpeakerActionRule speaker_actions = SpeakerActionRule::ExcludeAll;
+  // Paper rule: drop commands in which an object occurs in two actions.
+  bool exclude_chains = false;
+
+  VariableNaming variable_naming = VariableNaming::ObjectType;
+  PrintedForm printed_form = PrintedForm::WhereClause;
+
+  // Goal atoms per action name; `$i` is replaced by the action's i-th argument
+  // after pronouns are mapped back to agent names. E.g. handover ->
+  // {"(has $2 $3)", "(pickedup-by $1 $3)"}.
+  std::map<std::string, std::vector<std::string>> goal_atoms;
+  GoalVariables goal_variables = GoalVariables::Existential;
+
+  const SalientActionRule* salient_rule(const std::string& action) const;
+  // Maps an agent name to its pronoun and back; other names pass through.
+  std::string to_pronoun(const std::string& name) const;
+  std::string to_agent_name(const std::string& arg) const;
+  bool is_pronoun(const std::string& arg) const {
+    return arg == speaker_pronoun || arg == listener_pronoun;
+  }
+};
+
+// Built-in settings equal to the shipped data/domains/<domain>/language.json.
+LanguageConfig doors_keys_gems_language();
+LanguageConfig virtual_home_language();
+
+// Loads a language.json file (format: data/domains/<domain>/language.json;
+// enum values are kebab-case, e.g. "exclude-speaker-only-commands"). Missing keys keep the defaults above; unknown
+// keys and bad values raise clips::InputError naming the file and the key.
+LanguageConfig load_language_config(const std::filesystem::path& path);
+LanguageConfig parse_language_config(const std::string& json_text, const std::string& source_name);
+
+}  // namespace clips::commands

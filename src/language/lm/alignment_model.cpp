@@ -1,0 +1,765 @@
+#include "language/lm/alignment_model.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include "language/lm/language_model.hpp"
+#include "language/lm/utterance_tokens.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
+
+namespace clips::lm {
+namespace {
+
+// Mixture weights of the word process (see the header). They are fixed rather
+// than learned: with a few hundred short sentences EM would happily move mass
+// between sources in ways that help fit but hurt discrimination.
+constexpr double kPiBackground = 0.5;
+constexpr double kPiAgent = 0.1;
+constexpr double kPiContent = 0.4;
+constexpr double kGenericShare = 0.08;  // share of GEN inside Content when groups are active
+constexpr double kMention = 0.85;       // rho
+constexpr double kRequestClause = 0.8;
+constexpr int kMaxEnumeratedGroups = 8;  // beyond this all groups are taken as mentioned
+
+// Field weights inside a group, renormalised over the fields present.
+constexpr double kWeightVerb = 0.3;
+constexpr double kWeightNoun = 0.35;
+constexpr double kWeightAttribute = 0.25;
+constexpr double kWeightNumber = 0.1;
+
+// Dirichlet strengths of the lexical bases.
+constexpr double kKappaContent = 6.0;
+constexpr double kKappaAgent = 6.0;
+constexpr double kKappaGeneric = 20.0;
+constexpr double kKappaBackground = 30.0;
+constexpr double kKappaLength = 8.0;
+constexpr double kBaseFloor = 0.03;     // uniform share inside each table's prior base
+constexpr double kInitialFloor = 0.5;   // uniform share for the first E-step
+constexpr double kAlphaPriorCopy = 8.0;  // Beta prior on the copy probability
+constexpr double kAlphaPriorOther = 1.0;
+
+constexpr int kMaxLen = 256;
+constexpr int kMaxActionsBucket = 5;
+constexpr int kCharSymbols = 36;  // a-z, 0-9; index 36 = end of word
+
+int char_index(char c) {
+  if (c >= 'a' && c <= 'z') return c - 'a';
+  if (c >= '0' && c <= '9') return 26 + (c - '0');
+  return -1;
+}
+
+int actions_bucket(int a) { return std::clamp(a, 0, kMaxActionsBucket); }
+
+double log_poisson(int n, double mu) {
+  return n * std::log(mu) - mu - std::lgamma(n + 1.0);
+}
+
+// Base distribution of lengths: mostly Poisson around the mean, with a
+// geometric component so long utterances are never impossible.
+double length_base(int n, double mean) {
+  const double p = 1.0 / 16.0;
+  return 0.8 * std::exp(log_poisson(n, mean)) + 0.2 * p * std::pow(1 - p, n);
+}
+
+WordDistribution agent_base(bool speaker) {
+  if (speaker) {
+    return {{"i", 0.3},     {"will", 0.15},   {"am", 0.15}, {"going", 0.1}, {"let", 0.05},
+            {"me", 0.05},   {"myself", 0.05}, {"we", 0.05}, {"now", 0.05}, {"gonna", 0.05}};
+  }
+  return {{"you", 0.25}, {"can", 0.15}, {"could", 0.15}, {"would", 0.1}, {"please", 0.1},
+          {"will", 0.05}, {"help", 0.05}, {"need", 0.05}, {"want", 0.05}, {"go", 0.05}};
+}
+
+WordDistribution number_base(int count) {
+  static const char* names[] = {"zero", "one", "two", "three", "four", "five",
+                                "six",  "seven", "eight", "nine", "ten"};
+  WordDistribution d;
+  if (count <= 10) {
+    d.emplace_back(names[count], 0.35);
+    d.emplace_back(std::to_string(count), 0.05);
+  }
+  if (count == 2) {
+    d.emplace_back("both", 0.25);
+    d.emplace_back("pair", 0.03);
+    d.emplace_back("couple", 0.02);
+  } else {
+    d.emplace_back("all", 0.2);
+    d.emplace_back("every", 0.05);
+  }
+  d.emplace_back("these", 0.05);
+  d.emplace_back("those", 0.05);
+  d.emplace_back("some", 0.1);
+  d.emplace_back("multiple", 0.02);
+  d.emplace_back("more", 0.02);
+  double z = 0;
+  for (auto& [w, p] : d) z += p;
+  for (auto& [w, p] : d) p /= z;
+  return d;
+}
+
+std::string verb_key(const FrameGroup& g) {
+  return "V:" + g.action + "/" + g.agent + (g.to_speaker ? "/to-me" : "");
+}
+std::string noun_key(const FrameGroup& g) {
+  return "N:" + g.type + (g.count >= 2 ? "/pl" : "/sg");
+}
+std::string number_key(int count) { return "Q:" + std::to_string(std::min(count, 10)); }
+
+// Lexical base of a table key (the keys above plus the fixed sources).
+WordDistribution base_for_key(const std::string& key) {
+  if (key == "A:you") return agent_base(false);
+  if (key == "A:me") return agent_base(true);
+  if (key.rfind("Q:", 0) == 0) return number_base(std::stoi(key.substr(2)));
+  if (key.rfind("V:", 0) == 0) {
+    const size_t slash = key.find('/');
+    const std::string action = key.substr(2, slash - 2);
+    const bool to_me = key.find("/to-me") != std::string::npos;
+    return WordNetLexicon::instance().verb_base(action, to_me);
+  }
+  if (key.rfind("N:", 0) == 0) {
+    const size_t slash = key.rfind('/');
+    return WordNetLexicon::instance().noun_base(key.substr(2, slash - 2), key.substr(slash) == "/pl");
+  }
+  return {};  // GEN and R get their bases from the trainer
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------
+
+struct AlignmentModel::Table {
+  std::string key;
+  std::vector<double> prob;                        // over the vocabulary
+  std::unordered_map<std::string, double> extra;   // mass on words outside it (lazy tables)
+  std::vector<std::pair<int, double>> base;        // lexical base over vocabulary ids
+  double kappa = kKappaContent;
+
+  double at(int id, const std::string& w) const {
+    if (id >= 0) return prob[static_cast<size_t>(id)];
+    if (extra.empty()) return 0.0;
+    auto it = extra.find(w);
+    return it == extra.end() ? 0.0 : it->second;
+  }
+};
+
+struct AlignmentModel::Bound {
+  struct Field {
+    const Table* table;
+    int table_index;  // -1 for lazily created tables (not trained)
+    double weight;
+    bool residual;    // the non-copy part of an attribute field
+  };
+  struct Copy {
+    int id;
+    std::string word;
+    double weight;
+  };
+  struct Group {
+    bool speaker;
+    std::vector<Field> fields;
+    std::vector<Copy> copies;
+  };
+  std::vector<Group> groups;
+  int num_actions = 0;
+};
+
+struct AlignmentModel::Counts {
+  std::vector<std::vector<double>> table;  // per trained table, per word id
+  std::vector<double> bg;
+  double copy = 0;
+  double non_copy = 0;
+  std::vector<std::vector<double>> length;  // [bucket][n]
+};
+
+AlignmentModel::AlignmentModel() = default;
+AlignmentModel::~AlignmentModel() = default;
+
+int AlignmentModel::add_word(const std::string& w) {
+  auto [it, inserted] = word_ids_.emplace(w, static_cast<int>(words_.size()));
+  if (inserted) words_.push_back(w);
+  return it->second;
+}
+
+int AlignmentModel::table_index(const std::string& key) {
+  auto it = table_ids_.find(key);
+  if (it != table_ids_.end()) return it->second;
+  auto t = std::make_unique<Table>();
+  t->key = key;
+  tables_.push_back(std::move(t));
+  const int id = static_cast<int>(tables_.size()) - 1;
+  table_ids_.emplace(key, id);
+  return id;
+}
+
+double AlignmentModel::char_prob(const std::string& w) const {
+  if (w.empty()) return 0.0;
+  int prev = char_index(w[0]);
+  if (prev < 0) return 0.0;
+  double p = char_first_[static_cast<size_t>(prev)];
+  for (size_t i = 1; i < w.size(); ++i) {
+    const int c = char_index(w[i]);
+    if (c < 0) return 0.0;
+    p *= char_next_[static_cast<size_t>(prev * (kCharSymbols + 1) + c)];
+    prev = c;
+  }
+  return p * char_next_[static_cast<size_t>(prev * (kCharSymbols + 1) + kCharSymbols)];
+}
+
+double AlignmentModel::bg_prob(int id, const std::string& w) const {
+  if (id >= 0) return bg_[static_cast<size_t>(id)];
+  return bg_unknown_scale_ * char_prob(w);
+}
+
+EncodedUtterance AlignmentModel::encode(const std::string& text) const {
+  EncodedUtterance u;
+  u.words = tokenize_utterance(text);
+  u.ids.reserve(u.words.size());
+  for (size_t i = 0; i < u.words.size(); ++i) {
+    auto it = word_ids_.find(u.words[i]);
+    u.ids.push_back(it == word_ids_.end() ? -1 : it->second);
+    if (is_clause_end(u.words[i])) u.clause_end.push_back(static_cast<int>(i) + 1);
+  }
+  if (u.clause_end.empty() || u.clause_end.back() != static_cast<int>(u.words.size())) {
+    u.clause_end.push_back(static_cast<int>(u.words.size()));
+  }
+  return u;
+}
+
+const AlignmentModel::Table* AlignmentModel::find_or_make_table(const std::string& key) const {
+  if (auto it = table_ids_.find(key); it != table_ids_.end()) return tables_[static_cast<size_t>(it->second)].get();
+  {
+    std::shared_lock lock(lazy_mutex_);
+    if (auto it = lazy_tables_.find(key); it != lazy_tables_.end()) return it->second.get();
+  }
+  // An element never seen in training: its emission is its lexical base alone.
+  auto t = std::make_unique<Table>();
+  t->key = key;
+  t->prob.assign(words_.size(), 0.0);
+  for (const auto& [w, p] : base_for_key(key)) {
+    if (auto it = word_ids_.find(w); it != word_ids_.end()) {
+      t->prob[static_cast<size_t>(it->second)] += p;
+    } else {
+      t->extra[w] += p;
+    }
+  }
+  std::unique_lock lock(lazy_mutex_);
+  auto [it, inserted] = lazy_tables_.emplace(key, std::move(t));
+  return it->second.get();
+}
+
+std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::string& command) const {
+  const CommandFrame frame = parse_command_frame(command, "query command");
+  auto b = std::make_shared<Bound>();
+  b->num_actions = frame.num_actions;
+  const Table* residual = tables_[static_cast<size_t>(table_ids_.at("R"))].get();
+  const int residual_index = table_ids_.at("R");
+  auto field_of = [&](const std::string& key, double weight) {
+    const Table* t = find_or_make_table(key);
+    auto it = table_ids_.find(key);
+    return Bound::Field{t, it == table_ids_.end() ? -1 : it->second, weight, false};
+  };
+  for (const FrameGroup& g : frame.groups) {
+    Bound::Group bg;
+    bg.speaker = g.agent == "me";
+    double z = kWeightVerb + (g.type.empty() ? 0 : kWeightNoun) +
+               (g.attributes.empty() ? 0 : kWeightAttribute) + (g.count >= 2 ? kWeightNumber : 0);
+    bg.fields.push_back(field_of(verb_key(g), kWeightVerb / z));
+    if (!g.type.empty()) bg.fields.push_back(field_of(noun_key(g), kWeightNoun / z));
+    if (g.count >= 2) bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
+    if (!g.attributes.empty()) {
+      const double each = kWeightAttribute / z / static_cast<double>(g.attributes.size());
+      for (const std::string& a : g.attributes) {
+        auto it = word_ids_.find(a);
+        bg.copies.push_back(Bound::Copy{it == word_ids_.end() ? -1 : it->second, a, each * copy_alpha_});
+      }
+      bg.fields.push_back(Bound::Field{residual, residual_index, kWeightAttribute / z * (1 - copy_alpha_), true});
+    }
+    b->groups.push_back(std::move(bg));
+  }
+  return b;
+}
+
+double AlignmentModel::length_log_prob(int actions, int n, bool complete) const {
+  const size_t a = static_cast<size_t>(actions_bucket(actions));
+  const std::vector<double>& pmf = length_[a];
+  if (complete) {
+    if (n <= kMaxLen) return std::log(pmf[static_cast<size_t>(n)]);
+    return std::log(length_tail_scale_[a] * length_base(n, length_mean_[a]));
+  }
+  // P(N >= n): one minus the mass below n (the tail beyond kMaxLen is tiny but
+  // positive; keep it so a long prefix is never impossible).
+  double below = 0;
+  for (int k = 0; k < std::min(n, kMaxLen + 1); ++k) below += pmf[static_cast<size_t>(k)];
+  const double p = 1.0 / 16.0;
+  const double floor_tail = length_tail_scale_[a] * 0.2 * std::pow(1 - p, std::max(n, kMaxLen + 1));
+  return std::log(std::max(1.0 - below, floor_tail));
+}
+
+double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool complete,
+                                Counts* counts, double weight) const {
+  const size_t n = u.ids.size();
+  const size_t G = c.groups.size();
+  const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
+  const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
+  const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
+
+  // Per-token source probabilities.
+  std::vector<double> p_bg(n), p_you(n), p_me(n), p_gen(n), p_group(n * G);
+  for (size_t i = 0; i < n; ++i) {
+    const int id = u.ids[i];
+    const std::string& w = u.words[i];
+    p_bg[i] = bg_prob(id, w);
+    p_you[i] = a_you.at(id, w);
+    p_me[i] = a_me.at(id, w);
+    p_gen[i] = gen.at(id, w);
+    for (size_t g = 0; g < G; ++g) {
+      double s = 0;
+      for (const Bound::Field& f : c.groups[g].fields) s += f.weight * f.table->at(id, w);
+      for (const Bound::Copy& cp : c.groups[g].copies) {
+        if (id >= 0 ? id == cp.id : w == cp.word) s += cp.weight;
+      }
+      p_group[g * n + i] = s;
+    }
+  }
+
+  const bool enumerate = G <= static_cast<size_t>(kMaxEnumeratedGroups);
+  const uint32_t first_mask = enumerate ? 0u : (1u << std::min<size_t>(G, 31)) - 1u;
+  const uint32_t end_mask = enumerate ? (1u << G) : first_mask + 1u;
+  const size_t clauses = u.clause_end.size();
+  const double log_req = std::log(kRequestClause);
+  const double log_stm = std::log(1 - kRequestClause);
+
+  std::vector<double> mix(n * 2);
+  std::vector<double> log_m;
+  std::vector<double> clause_log;  // [mask][clause][type] when counting
+  log_m.reserve(end_mask - first_mask);
+  if (counts != nullptr) clause_log.resize(static_cast<size_t>(end_mask - first_mask) * clauses * 2);
+
+  for (uint32_t mask = first_mask; mask < end_mask; ++mask) {
+    double lp = 0;
+    int n_you = 0, n_me = 0;
+    for (size_t g = 0; g < G; ++g) {
+      const bool on = (mask >> g) & 1u;
+      if (enumerate) lp += std::log(on ? kMention : 1 - kMention);
+      if (on) (c.groups[g].speaker ? n_me : n_you)++;
+    }
+    // Word mixtures for both clause types.
+    for (size_t i = 0; i < n; ++i) {
+      double s_you = 0, s_me = 0;
+      for (size_t g = 0; g < G; ++g) {
+        if (!((mask >> g) & 1u)) continue;
+        (c.groups[g].speaker ? s_me : s_you) += p_group[g * n + i];
+      }
+      const double content_you =
+          n_you > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_you / n_you : p_gen[i];
+      const double content_me =
+          n_me > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_me / n_me : p_gen[i];
+      mix[2 * i] = kPiBackground * p_bg[i] + kPiAgent * p_you[i] + kPiContent * content_you;
+      mix[2 * i + 1] = kPiBackground * p_bg[i] + kPiAgent * p_me[i] + kPiContent * content_me;
+    }
+    size_t start = 0;
+    for (size_t k = 0; k < clauses; ++k) {
+      const size_t end = static_cast<size_t>(u.clause_end[k]);
+      double lr = log_req, ls = log_stm;
+      double pr = 1, ps = 1;
+      for (size_t i = start; i < end; ++i) {
+        pr *= mix[2 * i];
+        ps *= mix[2 * i + 1];
+        // Fold into logs before the running products can underflow.
+        if (pr < 1e-200) {
+          lr += std::log(pr);
+          pr = 1;
+        }
+        if (ps < 1e-200) {
+          ls += std::log(ps);
+          ps = 1;
+        }
+      }
+      lr += std::log(pr);
+      ls += std::log(ps);
+      const double hi = std::max(lr, ls);
+      const double lk = hi + std::log(std::exp(lr - hi) + std::exp(ls - hi));
+      lp += lk;
+      if (counts != nullptr) {
+        const size_t base = (static_cast<size_t>(mask - first_mask) * clauses + k) * 2;
+        clause_log[base] = lr - lk;
+        clause_log[base + 1] = ls - lk;
+      }
+      start = end;
+    }
+    log_m.push_back(lp);
+  }
+  double hi = -std::numeric_limits<double>::infinity();
+  for (double v : log_m) hi = std::max(hi, v);
+  double z = 0;
+  for (double v : log_m) z += std::exp(v - hi);
+  const double log_words = hi + std::log(z);
+  const double total = log_words + length_log_prob(c.num_actions, static_cast<int>(n), complete);
+
+  if (counts == nullptr) return total;
+
+  // E-step: distribute `weight` over mentions, clause types and sources.
+  const size_t bucket = static_cast<size_t>(actions_bucket(c.num_actions));
+  if (n <= static_cast<size_t>(kMaxLen)) counts->length[bucket][n] += weight;
+  const int id_you = table_ids_.at("A:you");
+  const int id_me = table_ids_.at("A:me");
+  const int id_gen = table_ids_.at("GEN");
+  for (uint32_t mask = first_mask; mask < end_mask; ++mask) {
+    const double pm = std::exp(log_m[mask - first_mask] - log_words);
+    if (pm < 1e-9) continue;
+    int n_you = 0, n_me = 0;
+    for (size_t g = 0; g < G; ++g) {
+      if ((mask >> g) & 1u) (c.groups[g].speaker ? n_me : n_you)++;
+    }
+    size_t start = 0;
+    for (size_t k = 0; k < clauses; ++k) {
+      const size_t end = static_cast<size_t>(u.clause_end[k]);
+      for (int t = 0; t < 2; ++t) {
+        const bool speaker = t == 1;
+        const double pt = std::exp(clause_log[(static_cast<size_t>(mask - first_mask) * clauses + k) * 2 + t]);
+        const double wt = weight * pm * pt;
+        if (wt < 1e-12) continue;
+        const int active = speaker ? n_me : n_you;
+        for (size_t i = start; i < end; ++i) {
+          const int id = u.ids[i];
+          if (id < 0) continue;  // training tokens are always in the vocabulary
+          const double p_agent = speaker ? p_me[i] : p_you[i];
+          double s = 0;
+          for (size_t g = 0; g < G; ++g) {
+            if (((mask >> g) & 1u) && c.groups[g].speaker == speaker) s += p_group[g * n + i];
+          }
+          const double gen_share = active > 0 ? kGenericShare : 1.0;
+          const double content = gen_share * p_gen[i] + (active > 0 ? (1 - kGenericShare) * s / active : 0.0);
+          const double m = kPiBackground * p_bg[i] + kPiAgent * p_agent + kPiContent * content;
+          if (m <= 0) continue;
+          const double r = wt / m;
+          const size_t uid = static_cast<size_t>(id);
+          counts->bg[uid] += r * kPiBackground * p_bg[i];
+          counts->table[static_cast<size_t>(speaker ? id_me : id_you)][uid] += r * kPiAgent * p_agent;
+          counts->table[static_cast<size_t>(id_gen)][uid] += r * kPiContent * gen_share * p_gen[i];
+          if (active == 0) continue;
+          const double share = r * kPiContent * (1 - kGenericShare) / active;
+          for (size_t g = 0; g < G; ++g) {
+            if (!((mask >> g) & 1u) || c.groups[g].speaker != speaker) continue;
+            for (const Bound::Field& f : c.groups[g].fields) {
+              const double e = share * f.weight * f.table->at(id, u.words[i]);
+              if (f.table_index >= 0) counts->table[static_cast<size_t>(f.table_index)][uid] += e;
+              if (f.residual) counts->non_copy += e;
+            }
+            for (const Bound::Copy& cp : c.groups[g].copies) {
+              if (id == cp.id) counts->copy += share * cp.weight;
+            }
+          }
+        }
+      }
+      start = end;
+    }
+  }
+  return total;
+}
+
+double AlignmentModel::log_prob(const Bound& c, const EncodedUtterance& u, bool complete) const {
+  return evaluate(c, u, complete, nullptr, 0.0);
+}
+
+double AlignmentModel::length_mass(int actions, int max_n) const {
+  double s = 0;
+  for (int k = 0; k <= max_n; ++k) s += std::exp(length_log_prob(actions, k, true));
+  return s;
+}
+
+double AlignmentModel::next_token_mass(const std::string& command, bool mentioned_all,
+                                       bool request_clause) const {
+  auto c = bind(command);
+  auto table_mass = [](const Table& t) {
+    double s = 0;
+    for (double p : t.prob) s += p;
+    for (const auto& [w, p] : t.extra) s += p;
+    return s;
+  };
+  double bg = 0, chars_in_vocab = 0;
+  for (size_t i = 0; i < words_.size(); ++i) {
+    bg += bg_[i];
+    chars_in_vocab += char_prob(words_[i]);
+  }
+  bg += bg_unknown_scale_ * (1 - chars_in_vocab);
+  const Table& agent = *tables_[static_cast<size_t>(table_ids_.at(request_clause ? "A:you" : "A:me"))];
+  const double gen = table_mass(*tables_[static_cast<size_t>(table_ids_.at("GEN"))]);
+  double groups = 0;
+  int active = 0;
+  for (const Bound::Group& g : c->groups) {
+    if (!mentioned_all || g.speaker == request_clause) continue;
+    ++active;
+    for (const Bound::Field& f : g.fields) groups += f.weight * table_mass(*f.table);
+    for (const Bound::Copy& cp : g.copies) groups += cp.weight;
+  }
+  const double content = active > 0 ? kGenericShare * gen + (1 - kGenericShare) * groups / active : gen;
+  return kPiBackground * bg + kPiAgent * table_mass(agent) + kPiContent * content;
+}
+
+std::string AlignmentModel::explain(const std::string& command, const std::string& utterance) const {
+  auto c = bind(command);
+  EncodedUtterance u = encode(utterance);
+  const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
+  const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
+  const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
+  std::string out = "alpha=" + std::to_string(copy_alpha_) + "\n";
+  for (size_t i = 0; i < u.words.size(); ++i) {
+    const int id = u.ids[i];
+    const std::string& w = u.words[i];
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%-12s bg=%.4f you=%.4f me=%.4f gen=%.4f", w.c_str(), bg_prob(id, w),
+                  a_you.at(id, w), a_me.at(id, w), gen.at(id, w));
+    out += buf;
+    for (const Bound::Group& g : c->groups) {
+      out += " |";
+      for (const Bound::Field& f : g.fields) {
+        std::snprintf(buf, sizeof buf, " %s=%.4f", f.table->key.c_str(), f.table->at(id, w));
+        out += buf;
+      }
+      for (const Bound::Copy& cp : g.copies) {
+        if (id >= 0 ? id == cp.id : w == cp.word) out += " copy";
+      }
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+// ------------------------------------------------------------------------------------
+
+struct Trainer {
+  static std::shared_ptr<AlignmentModel> run(const std::vector<TrainingPair>& pairs, int iterations) {
+    std::shared_ptr<AlignmentModel> m(new AlignmentModel());
+    AlignmentModel& M = *m;
+
+    // Parse everything first so malformed input fails before any work.
+    std::vector<CommandFrame> frames;
+    std::vector<std::vector<std::string>> tokens;
+    for (const TrainingPair& p : pairs) {
+      frames.push_back(parse_command_frame(p.command, p.origin));
+      tokens.push_back(tokenize_utterance(p.utterance));
+    }
+
+    // Vocabulary: punctuation first (always present), training tokens, base words.
+    for (const char* punct : {",", ".", "?", "!"}) M.add_word(punct);
+    for (const auto& t : tokens) {
+      for (const std::string& w : t) M.add_word(w);
+    }
+    std::set<std::string> keys = {"A:you", "A:me"};
+    std::set<std::string> attributes;
+    for (const CommandFrame& f : frames) {
+      for (const FrameGroup& g : f.groups) {
+        keys.insert(verb_key(g));
+        if (!g.type.empty()) keys.insert(noun_key(g));
+        if (g.count >= 2) keys.insert(number_key(g.count));
+        for (const std::string& a : g.attributes) attributes.insert(a);
+      }
+    }
+    std::map<std::string, WordDistribution> bases;
+    for (const std::string& k : keys) {
+      bases[k] = base_for_key(k);
+      for (const auto& [w, p] : bases[k]) M.add_word(w);
+    }
+    for (const std::string& a : attributes) M.add_word(a);
+    const size_t V = M.words_.size();
+
+    // GEN: domain content words in general. R: what an attribute field says when
+    // it does not copy its value (e.g. "coloured", another attribute word).
+    WordDistribution gen_base;
+    {
+      std::map<std::string, double> acc;
+      double parts = 0;
+      for (const auto& [k, d] : bases) {
+        if (k[0] != 'V' && k[0] != 'N') continue;
+        parts += 1;
+        for (const auto& [w, p] : d) {
+          if (!is_function_word(w)) acc[w] += p;
+        }
+      }
+      for (const std::string& a : attributes) acc[a] += parts / 4.0 / std::max<double>(1, attributes.size());
+      double z = 0;
+      for (auto& [w, p] : acc) z += p;
+      for (auto& [w, p] : acc) gen_base.emplace_back(w, p / z);
+    }
+    WordDistribution residual_base;
+    for (const std::string& a : attributes) residual_base.emplace_back(a, 1.0);
+    residual_base.emplace_back("colored", 1.0);
+    residual_base.emplace_back("coloured", 1.0);
+    residual_base.emplace_back("color", 1.0);
+    residual_base.emplace_back("colour", 1.0);
+    for (auto& [w, p] : residual_base) {
+      M.add_word(w);
+      p /= static_cast<double>(residual_base.size());
+    }
+    bases["GEN"] = gen_base;
+    bases["R"] = residual_base;
+    const size_t V2 = M.words_.size();
+    (void)V;
+
+    // Character bigram model over the vocabulary's word types (add-1/2 smoothing).
+    {
+      std::vector<double> first(kCharSymbols, 0.5);
+      std::vector<double> next(static_cast<size_t>(kCharSymbols * (kCharSymbols + 1)), 0.5);
+      for (const std::string& w : M.words_) {
+        int prev = -1;
+        bool ok = !w.empty();
+        for (char ch : w) ok = ok && char_index(ch) >= 0;
+        if (!ok) continue;
+        for (char ch : w) {
+          const int c = char_index(ch);
+          if (prev < 0) {
+            first[static_cast<size_t>(c)] += 1;
+          } else {
+            next[static_cast<size_t>(prev * (kCharSymbols + 1) + c)] += 1;
+          }
+          prev = c;
+        }
+        next[static_cast<size_t>(prev * (kCharSymbols + 1) + kCharSymbols)] += 1;
+      }
+      double z = 0;
+      for (double v : first) z += v;
+      for (double& v : first) v /= z;
+      for (int p = 0; p < kCharSymbols; ++p) {
+        double s = 0;
+        for (int c = 0; c <= kCharSymbols; ++c) s += next[static_cast<size_t>(p * (kCharSymbols + 1) + c)];
+        for (int c = 0; c <= kCharSymbols; ++c) next[static_cast<size_t>(p * (kCharSymbols + 1) + c)] /= s;
+      }
+      M.char_first_ = std::move(first);
+      M.char_next_ = std::move(next);
+    }
+    std::vector<double> char_in_vocab(V2);
+    for (size_t i = 0; i < V2; ++i) char_in_vocab[i] = M.char_prob(M.words_[i]);
+
+    // Tables. The prior base of a table is its lexical base mixed with a small
+    // uniform floor over the words its kind may emit (content words for content
+    // fields, closed-class words for the speech-act sources), so EM can discover
+    // words the lexicon lacks (WordNet has no grab -> pick up). The first E-step
+    // uses a much larger floor, the usual uniform start of alignment models, so
+    // that co-occurrence decides the first responsibilities.
+    std::vector<int> content_ids, function_ids;
+    for (size_t i = 0; i < V2; ++i) {
+      (is_function_word(M.words_[i]) ? function_ids : content_ids).push_back(static_cast<int>(i));
+    }
+    auto with_floor = [&](const WordDistribution& d, const std::vector<int>& floor_ids, double eps) {
+      std::vector<std::pair<int, double>> out;
+      for (const auto& [w, p] : d) out.emplace_back(M.word_ids_.at(w), (1 - eps) * p);
+      for (int id : floor_ids) out.emplace_back(id, eps / static_cast<double>(floor_ids.size()));
+      return out;
+    };
+    for (const auto& [k, d] : bases) {
+      const int ti = M.table_index(k);
+      AlignmentModel::Table& t = *M.tables_[static_cast<size_t>(ti)];
+      const bool agent = k[0] == 'A';
+      t.kappa = agent ? kKappaAgent : k == "GEN" ? kKappaGeneric : kKappaContent;
+      const std::vector<int>& floor_ids = agent ? function_ids : content_ids;
+      t.base = with_floor(d, floor_ids, kBaseFloor);
+      t.prob.assign(V2, 0.0);
+      // GEN starts flat: it must not out-compete the command's own fields for
+      // the words they co-occur with before EM has seen the data.
+      const double init_floor = k == "GEN" ? 0.95 : kInitialFloor;
+      for (const auto& [id, p] : with_floor(d, floor_ids, init_floor)) t.prob[static_cast<size_t>(id)] += p;
+    }
+
+    // Background initialised to smoothed relative frequencies of all tokens.
+    auto set_background = [&](const std::vector<double>& cnt) {
+      double total = 0;
+      for (double v : cnt) total += v;
+      M.bg_.assign(V2, 0.0);
+      for (size_t i = 0; i < V2; ++i) {
+        M.bg_[i] = (cnt[i] + kKappaBackground * char_in_vocab[i]) / (total + kKappaBackground);
+      }
+      M.bg_unknown_scale_ = kKappaBackground / (total + kKappaBackground);
+    };
+    std::vector<double> punct_pseudo(V2, 0.0);
+    for (int i = 0; i < 4; ++i) punct_pseudo[static_cast<size_t>(i)] = 0.5;
+    {
+      std::vector<double> cnt = punct_pseudo;
+      for (size_t p = 0; p < pairs.size(); ++p) {
+        // Content words start with a tenth of their frequency so the first
+        // E-step credits them to the command's fields where those fit.
+        for (const std::string& w : tokens[p]) {
+          cnt[static_cast<size_t>(M.word_ids_.at(w))] += pairs[p].weight * (is_function_word(w) ? 1.0 : 0.1);
+        }
+      }
+      set_background(cnt);
+    }
+
+    // Length model placeholder (uniform-ish) for the E-steps; refit each M-step.
+    M.length_.assign(kMaxActionsBucket + 1, std::vector<double>(kMaxLen + 1, 0.0));
+    M.length_tail_scale_.assign(kMaxActionsBucket + 1, 1.0);
+    M.length_mean_.assign(kMaxActionsBucket + 1, 8.0);
+    for (auto& row : M.length_) {
+      for (int k = 0; k <= kMaxLen; ++k) row[static_cast<size_t>(k)] = length_base(k, 8.0);
+    }
+
+    std::vector<EncodedUtterance> encoded;
+    for (const TrainingPair& p : pairs) encoded.push_back(M.encode(p.utterance));
+
+    for (int it = 0; it < std::max(1, iterations); ++it) {
+      AlignmentModel::Counts counts;
+      counts.table.assign(M.tables_.size(), std::vector<double>(V2, 0.0));
+      counts.bg = punct_pseudo;
+      counts.length.assign(kMaxActionsBucket + 1, std::vector<double>(kMaxLen + 1, 0.0));
+      for (size_t p = 0; p < pairs.size(); ++p) {
+        auto b = M.bind(pairs[p].command);
+        M.evaluate(*b, encoded[p], true, &counts, pairs[p].weight);
+      }
+      // M-step.
+      for (size_t ti = 0; ti < M.tables_.size(); ++ti) {
+        AlignmentModel::Table& t = *M.tables_[ti];
+        std::vector<double>& cnt = counts.table[ti];
+        // Content fields keep closed-class words at zero unless the base has them;
+        // EM cannot move mass there anyway (their probability starts at zero).
+        double total = 0;
+        for (double v : cnt) total += v;
+        t.prob.assign(V2, 0.0);
+        for (size_t w = 0; w < V2; ++w) t.prob[w] = cnt[w] / (total + t.kappa);
+        for (const auto& [id, p] : t.base) t.prob[static_cast<size_t>(id)] += t.kappa * p / (total + t.kappa);
+      }
+      set_background(counts.bg);
+      M.copy_alpha_ = (counts.copy + kAlphaPriorCopy) /
+                      (counts.copy + counts.non_copy + kAlphaPriorCopy + kAlphaPriorOther);
+      fit_length(M, counts.length);
+    }
+    return m;
+  }
+
+  static void fit_length(AlignmentModel& M, const std::vector<std::vector<double>>& cnt) {
+    // Mean length per action bucket, borrowing from neighbours when a bucket is empty.
+    double all_n = 0, all_sum = 0;
+    for (const auto& row : cnt) {
+      for (int k = 0; k <= kMaxLen; ++k) {
+        all_n += row[static_cast<size_t>(k)];
+        all_sum += k * row[static_cast<size_t>(k)];
+      }
+    }
+    const double overall = all_n > 0 ? all_sum / all_n : 8.0;
+    for (size_t a = 0; a < cnt.size(); ++a) {
+      double n = 0, s = 0;
+      for (int k = 0; k <= kMaxLen; ++k) {
+        n += cnt[a][static_cast<size_t>(k)];
+        s += k * cnt[a][static_cast<size_t>(k)];
+      }
+      const double prior_mean = overall + 2.0 * (static_cast<double>(a) - 1.5);
+      const double mean = std::max(2.0, (s + 3.0 * prior_mean) / (n + 3.0));
+      M.length_mean_[a] = mean;
+      M.length_tail_scale_[a] = kKappaLength / (n + kKappaLength);
+      for (int k = 0; k <= kMaxLen; ++k) {
+        M.length_[a][static_cast<size_t>(k)] =
+            (cnt[a][static_cast<size_t>(k)] + kKappaLength * length_base(k, mean)) / (n + kKappaLength);
+      }
+    }
+  }
+};
+
+std::shared_ptr<AlignmentModel> AlignmentModel::train(const std::vector<TrainingPair>& pairs, int iterations) {
+  return Trainer::run(pairs, iterations);
+}
+
+}  // namespace clips::lm

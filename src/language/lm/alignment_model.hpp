@@ -1,0 +1,131 @@
+#pragma once
+// The generative utterance model behind EmbeddedLanguageModel.
+//
+// P(u | c) for a token sequence u = w_1..w_n (see utterance_tokens.hpp) and a
+// command frame c (see command_frame.hpp) is defined by this process:
+//
+//  1. Length: n ~ P_len(n | number of actions of c). This is the explicit end
+//     event (a smoothed histogram, with a Poisson+geometric base so every
+//     length has mass).
+//  2. Mentions: each group g of c is "mentioned" (m_g = 1) with probability rho,
+//     independently. A group that is not mentioned cannot emit words, which is
+//     what penalises commands containing actions the utterance never talks about.
+//  3. Clauses: the tokens are cut into clauses after punctuation and a few
+//     conjunctions; each clause independently gets a speech-act type t:
+//     R (a request to the listener, "can you open the blue door") with P = 0.8 or
+//     S (a statement about the speaker's own part, "I'll get the red key") with 0.2.
+//  4. Words: each token of a clause of type t is drawn independently from the mixture
+//       pi_bg * BG(w) + pi_agent * A_t(w) + pi_content * Content_{m,t}(w)
+//     where BG is a background English unigram whose base is a character bigram
+//     model (so every string of [a-z0-9]+ has mass: unknown words are fine),
+//     A_t emits speech-act markers ("can", "could", "you" / "i", "will", "am"),
+//     and Content_{m,t} is a uniform mixture over the mentioned groups whose
+//     agent matches t (you for R, me for S) plus a small share of GEN, a generic
+//     source of domain content words (used entirely when no group qualifies; this
+//     is where "I'll get the red key" goes when the command omits the speaker).
+//     A group emits through its fields, with fixed weights:
+//       V  verb, table keyed by (action, agent, whether "me" is the recipient);
+//       N  noun, keyed by (object type, plural iff the group has 2+ actions);
+//       C  attribute (colour): copy the predicate's value with probability alpha,
+//          else a shared residual table R. alpha is ONE parameter shared by all
+//          colours, so a colour seen once in training is as copyable as any;
+//       Q  number words, keyed by the group's action count (only if >= 2).
+//
+// Every factor is a normalised distribution and the clause cuts depend only on
+// already generated tokens, so the sum over all token sequences is exactly 1.
+// Emission tables are Dirichlet posteriors: expected counts from EM over the
+// training pairs (corpus + few-shot examples) plus kappa times a lexical base from
+// WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).
+// Content fields never emit closed-class words unless their base contains them.
+#include <cstdint>
+#include <memory>
+#include <shared_mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "language/lm/command_frame.hpp"
+
+namespace clips::lm {
+
+// A training pair: a command and one of its utterances, with a weight.
+struct TrainingPair {
+  std::string command;
+  std::string utterance;
+  double weight = 1.0;
+  std::string origin;  // "file:line" or "prompt example N", for error messages
+};
+
+class AlignmentModel;
+
+// A tokenised utterance bound to one trained model's vocabulary.
+struct EncodedUtterance {
+  std::vector<int> ids;             // vocabulary id, or -1 if unknown
+  std::vector<std::string> words;   // the tokens themselves
+  std::vector<int> clause_end;      // exclusive end index of each clause
+};
+
+// Trained parameters. Immutable after train(), except for a thread-safe cache of
+// tables created on demand for command elements unseen in training.
+class AlignmentModel {
+ public:
+  // Train by EM on the pairs (throws LmError naming the pair's origin if a
+  // command cannot be parsed).
+  static std::shared_ptr<AlignmentModel> train(const std::vector<TrainingPair>& pairs, int iterations);
+
+  struct Bound;  // a command frame bound to this model's tables
+  std::shared_ptr<const Bound> bind(const std::string& command) const;
+
+  EncodedUtterance encode(const std::string& text) const;
+  // log P(u | c). If `complete` is false the text is a prefix and the result is
+  // the probability of all utterances starting with these tokens.
+  double log_prob(const Bound& c, const EncodedUtterance& u, bool complete) const;
+
+  // For tests: the total probability that the next token is drawn from the
+  // model's vocabulary plus the mass of all unknown strings, given a command,
+  // a prefix and an assumed clause type; equals 1 for a proper model.
+  double next_token_mass(const std::string& command, bool mentioned_all, bool request_clause) const;
+  // For tests: sum of P_len(n | actions) for n = 0..max_n.
+  double length_mass(int actions, int max_n) const;
+  size_t vocabulary_size() const { return words_.size(); }
+  // Human-readable per-token source probabilities (all groups mentioned), for debugging.
+  std::string explain(const std::string& command, const std::string& utterance) const;
+
+  ~AlignmentModel();
+  AlignmentModel(const AlignmentModel&) = delete;
+  AlignmentModel& operator=(const AlignmentModel&) = delete;
+
+ private:
+  AlignmentModel();
+  struct Table;
+  struct Counts;
+  friend struct Trainer;
+
+  int add_word(const std::string& w);
+  int table_index(const std::string& key);  // training-time: create if missing
+  const Table* find_or_make_table(const std::string& key) const;
+  double char_prob(const std::string& w) const;
+  double bg_prob(int id, const std::string& w) const;
+  double evaluate(const Bound& c, const EncodedUtterance& u, bool complete, Counts* counts,
+                  double weight) const;
+  double length_log_prob(int actions, int n, bool complete) const;
+
+  std::unordered_map<std::string, int> word_ids_;
+  std::vector<std::string> words_;
+  std::vector<double> char_first_;  // char bigram model: first char
+  std::vector<double> char_next_;   // [prev * 37 + next], next 36 = end
+  std::vector<double> bg_;          // background probs over the vocabulary
+  double bg_unknown_scale_ = 0;     // BG(unknown w) = scale * char_prob(w)
+
+  std::vector<std::unique_ptr<Table>> tables_;
+  std::unordered_map<std::string, int> table_ids_;
+  double copy_alpha_ = 0.8;
+  std::vector<std::vector<double>> length_;  // [actions][n] for n <= kMaxLen
+  std::vector<double> length_tail_scale_;    // weight of the base beyond kMaxLen
+  std::vector<double> length_mean_;
+
+  mutable std::shared_mutex lazy_mutex_;
+  mutable std::unordered_map<std::string, std::unique_ptr<Table>> lazy_tables_;
+};
+
+}  // namespace clips::lm

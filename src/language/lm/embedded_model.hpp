@@ -1,0 +1,82 @@
+#pragma once
+// EmbeddedLanguageModel: the default, offline scorer of log P(utterance | command).
+//
+// It needs no network and no API key. Instead of a neural LM it uses a small
+// generative alignment model of command-conditioned utterances (alignment_model.hpp)
+// trained at load time on
+//   * a command -> utterance corpus shipped in data/language/ (corpus-*.tsv), and
+//   * the few-shot examples found in each prompt (weighted higher), one trained
+//     model per distinct few-shot block, cached for the life of the object;
+// with WordNet (wordnet_lexicon.hpp) supplying synonyms and inflections.
+//
+// Prompt convention (clips-spec 7.7): few-shot lines "Input: <cmd>\nOutput: <utt>"
+// joined by "\n", then "\nInput: <query cmd>\nOutput:". The prompt "\n" (a
+// hypothesis without commands) means the empty command. The continuation is
+// " <utterance>\n"; the final "\n" is the end-of-utterance event. A continuation
+// without the final "\n" is scored as a prefix (probability of all completions).
+//
+// Scores are natural logs over the model's token sequences (utterance_tokens.hpp):
+// lower-cased words and the punctuation tokens , . ? ! — a proper distribution.
+// Thread-safe; deterministic (no randomness anywhere).
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "language/lm/language_model.hpp"
+
+namespace clips::lm {
+
+class AlignmentModel;
+struct TrainingPair;
+
+struct EmbeddedModelOptions {
+  // Directory holding the corpus files. Empty: $CLIPS_DATA_DIR if set, else
+  // CLIPS_SOURCE_DIR "/data/language".
+  std::string data_dir;
+  // Files read from data_dir (each line "command<TAB>utterance"; '#' comments).
+  std::vector<std::string> corpus_files = {"corpus-dkg.tsv", "corpus-vh.tsv"};
+  // Weight of each few-shot example relative to one corpus pair.
+  double fewshot_weight = 4.0;
+  int em_iterations = 25;
+};
+
+class EmbeddedLanguageModel : public LanguageModel {
+ public:
+  // Reads the corpus now (throws LmError naming file and line on a missing or
+  // malformed file); training happens lazily per few-shot block.
+  explicit EmbeddedLanguageModel(EmbeddedModelOptions options = {});
+  explicit EmbeddedLanguageModel(const std::string& data_dir);
+  ~EmbeddedLanguageModel() override;
+
+  std::string name() const override { return "embedded"; }
+  std::vector<double> score(const std::vector<ScoreRequest>& batch) override;
+  double score_one(const std::string& prompt, const std::string& continuation);
+
+  // The trained model for a prompt's few-shot block (exposed for tests).
+  std::shared_ptr<const AlignmentModel> model_for_prompt(const std::string& prompt);
+  // Number of distinct few-shot blocks trained so far.
+  size_t trained_blocks() const;
+  const std::string& data_dir() const { return data_dir_; }
+
+ private:
+  struct BlockState;
+  std::shared_ptr<BlockState> block_state(const std::string& block);
+
+  EmbeddedModelOptions options_;
+  std::string data_dir_;
+  std::vector<TrainingPair> corpus_;
+  mutable std::mutex mutex_;  // guards blocks_ and serialises training
+  std::map<std::string, std::shared_ptr<BlockState>> blocks_;
+};
+
+// Split a prompt into (few-shot block, query command). Throws LmError if the
+// prompt does not end with "Output:" after an "Input:" line (the single "\n"
+// prompt gives an empty block and an empty command).
+std::pair<std::string, std::string> split_prompt(const std::string& prompt);
+
+// Few-shot (command, utterance) pairs of a block, in order.
+std::vector<std::pair<std::string, std::string>> parse_fewshot_block(const std::string& block);
+
+}  // namespace clips::lm

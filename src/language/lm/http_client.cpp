@@ -1,0 +1,270 @@
+#include "language/lm/http_client.hpp"
+
+#include <curl/curl.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <thread>
+
+namespace clips::lm {
+
+void ensure_curl_initialised() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    if (curl_global_init(CURL_GLOBAL_DEFAULT) != CURLE_OK) {
+      throw LmError("libcurl: curl_global_init failed");
+    }
+  });
+}
+
+namespace {
+
+constexpr std::size_t kMaxPooledHandles = 8;
+
+struct Transfer {
+  std::string body;
+  std::map<std::string, std::string> headers;
+};
+
+std::size_t on_body(char* data, std::size_t size, std::size_t count, void* user) {
+  static_cast<Transfer*>(user)->body.append(data, size * count);
+  return size * count;
+}
+
+std::size_t on_header(char* data, std::size_t size, std::size_t count, void* user) {
+  auto* t = static_cast<Transfer*>(user);
+  std::string line(data, size * count);
+  // A new status line (e.g. after "100 Continue") starts a fresh header set.
+  if (line.rfind("HTTP/", 0) == 0) {
+    t->headers.clear();
+  } else if (auto colon = line.find(':'); colon != std::string::npos) {
+    std::string name = line.substr(0, colon);
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::string value = line.substr(colon + 1);
+    auto not_space = [](unsigned char c) { return !std::isspace(c); };
+    value.erase(value.begin(), std::find_if(value.begin(), value.end(), not_space));
+    value.erase(std::find_if(value.rbegin(), value.rend(), not_space).base(), value.end());
+    t->headers[name] = value;
+  }
+  return size * count;
+}
+
+bool is_retryable_status(long status) {
+  return status == 408 || status == 429 || (status >= 500 && status <= 599);
+}
+
+bool is_timeout(CURLcode code) { return code == CURLE_OPERATION_TIMEDOUT; }
+
+// Failures where trying again can plausibly help (the server was busy,
+// restarting, or the connection dropped mid-reply).
+bool is_transient(CURLcode code) {
+  switch (code) {
+    case CURLE_COULDNT_CONNECT:
+    case CURLE_COULDNT_RESOLVE_HOST:
+    case CURLE_SEND_ERROR:
+    case CURLE_RECV_ERROR:
+    case CURLE_GOT_NOTHING:
+    case CURLE_PARTIAL_FILE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Retry-After as delta-seconds or HTTP date; OpenAI also sends retry-after-ms.
+std::optional<std::chrono::milliseconds> retry_after(
+    const std::map<std::string, std::string>& headers) {
+  if (auto it = headers.find("retry-after-ms"); it != headers.end()) {
+    char* end = nullptr;
+    double ms = std::strtod(it->second.c_str(), &end);
+    if (end != it->second.c_str() && std::isfinite(ms) && ms >= 0) {
+      return std::chrono::milliseconds(static_cast<long long>(ms));
+    }
+  }
+  auto it = headers.find("retry-after");
+  if (it == headers.end()) return std::nullopt;
+  char* end = nullptr;
+  double seconds = std::strtod(it->second.c_str(), &end);
+  if (end != it->second.c_str() && *end == '\0' && std::isfinite(seconds) && seconds >= 0) {
+    return std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0));
+  }
+  std::time_t when = curl_getdate(it->second.c_str(), nullptr);
+  if (when < 0) return std::nullopt;
+  auto wait = std::chrono::system_clock::from_time_t(when) - std::chrono::system_clock::now();
+  return std::max(std::chrono::milliseconds(0),
+                  std::chrono::duration_cast<std::chrono::milliseconds>(wait));
+}
+
+std::string url_host(const std::string& url) {
+  auto start = url.find("://");
+  start = (start == std::string::npos) ? 0 : start + 3;
+  auto end = url.find_first_of("/?#", start);
+  std::string authority = url.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  if (auto at = authority.rfind('@'); at != std::string::npos) authority = authority.substr(at + 1);
+  if (!authority.empty() && authority.front() == '[') {
+    return authority.substr(1, authority.find(']') - 1);
+  }
+  return authority.substr(0, authority.find(':'));
+}
+
+bool is_loopback(const std::string& host) {
+  return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+}
+
+std::string attempts_text(int n) {
+  return std::to_string(n) + (n == 1 ? " attempt" : " attempts");
+}
+
+}  // namespace
+
+HttpClient::HttpClient(HttpOptions options) : options_(options) {
+  ensure_curl_initialised();
+  options_.max_retries = std::max(0, options_.max_retries);
+}
+
+HttpClient::~HttpClient() {
+  for (void* h : pool_) curl_easy_cleanup(static_cast<CURL*>(h));
+}
+
+void* HttpClient::acquire_handle() const {
+  {
+    std::lock_guard lock(pool_mutex_);
+    if (!pool_.empty()) {
+      void* h = pool_.back();
+      pool_.pop_back();
+      curl_easy_reset(static_cast<CURL*>(h));  // keeps its connection cache
+      return h;
+    }
+  }
+  CURL* h = curl_easy_init();
+  if (h == nullptr) throw LmError("libcurl: curl_easy_init failed");
+  return h;
+}
+
+void HttpClient::release_handle(void* handle) const {
+  std::lock_guard lock(pool_mutex_);
+  if (pool_.size() < kMaxPooledHandles) {
+    pool_.push_back(handle);
+  } else {
+    curl_easy_cleanup(static_cast<CURL*>(handle));
+  }
+}
+
+HttpResponse HttpClient::post_json(const std::string& url, const std::string& body,
+                                   const std::vector<std::string>& extra_headers) const {
+  // Owns the handle for this call and hands it back to the pool on any exit.
+  struct Lease {
+    const HttpClient* owner;
+    CURL* h;
+    ~Lease() { owner->release_handle(h); }
+  } lease{this, static_cast<CURL*>(acquire_handle())};
+
+  curl_slist* header_list = nullptr;
+  header_list = curl_slist_append(header_list, "Content-Type: application/json");
+  header_list = curl_slist_append(header_list, "Accept: application/json");
+  header_list = curl_slist_append(header_list, "Expect:");  // no 100-continue round trip
+  for (const auto& h : extra_headers) header_list = curl_slist_append(header_list, h.c_str());
+  struct ListGuard {
+    curl_slist* l;
+    ~ListGuard() { curl_slist_free_all(l); }
+  } list_guard{header_list};
+
+  const bool loopback = is_loopback(url_host(url));
+  const int max_attempts = options_.max_retries + 1;
+  auto backoff = options_.backoff_initial;
+
+  for (int attempt = 1;; ++attempt) {
+    Transfer t;
+    char errbuf[CURL_ERROR_SIZE] = {0};
+    CURL* h = lease.h;
+    curl_easy_setopt(h, CURLOPT_URL, url.c_str());
+    curl_easy_setopt(h, CURLOPT_POST, 1L);
+    curl_easy_setopt(h, CURLOPT_POSTFIELDS, body.data());
+    curl_easy_setopt(h, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(body.size()));
+    curl_easy_setopt(h, CURLOPT_HTTPHEADER, header_list);
+    curl_easy_setopt(h, CURLOPT_WRITEFUNCTION, on_body);
+    curl_easy_setopt(h, CURLOPT_WRITEDATA, &t);
+    curl_easy_setopt(h, CURLOPT_HEADERFUNCTION, on_header);
+    curl_easy_setopt(h, CURLOPT_HEADERDATA, &t);
+    curl_easy_setopt(h, CURLOPT_ERRORBUFFER, errbuf);
+    curl_easy_setopt(h, CURLOPT_NOSIGNAL, 1L);  // timeouts without SIGALRM: threads are safe
+    curl_easy_setopt(h, CURLOPT_CONNECTTIMEOUT_MS,
+                     static_cast<long>(options_.connect_timeout.count()));
+    curl_easy_setopt(h, CURLOPT_TIMEOUT_MS, static_cast<long>(options_.total_timeout.count()));
+    curl_easy_setopt(h, CURLOPT_ACCEPT_ENCODING, "");  // whatever libcurl can decode
+    // Local inference servers are never reached through a proxy.
+    if (loopback) curl_easy_setopt(h, CURLOPT_NOPROXY, "*");
+
+    CURLcode code = curl_easy_perform(h);
+    long status = 0;
+    if (code == CURLE_OK) curl_easy_getinfo(h, CURLINFO_RESPONSE_CODE, &status);
+
+    std::optional<std::chrono::milliseconds> server_wait;
+    if (code != CURLE_OK) {
+      bool retry = is_transient(code) || (is_timeout(code) && options_.retry_on_timeout);
+      if (!retry || attempt >= max_attempts) {
+        std::string detail = errbuf[0] != '\0' ? std::string(errbuf) : curl_easy_strerror(code);
+        if (is_timeout(code)) {
+          throw LmError("POST " + url + " timed out after " + attempts_text(attempt) +
+                        " (connect timeout " + std::to_string(options_.connect_timeout.count()) +
+                        " ms, total timeout " + std::to_string(options_.total_timeout.count()) +
+                        " ms): " + detail);
+        }
+        throw LmError("POST " + url + " failed after " + attempts_text(attempt) + ": " + detail +
+                      " (curl error " + std::to_string(static_cast<int>(code)) + ")");
+      }
+    } else if (is_retryable_status(status)) {
+      if (attempt >= max_attempts) {
+        throw LmError("POST " + url + ": HTTP " + std::to_string(status) + " after " +
+                      attempts_text(attempt) + ", retry budget exhausted: " +
+                      server_error_text(t.body));
+      }
+      server_wait = retry_after(t.headers);
+    } else {
+      return HttpResponse{status, std::move(t.body), std::move(t.headers), attempt};
+    }
+
+    auto wait = server_wait ? std::min(*server_wait, options_.retry_after_max)
+                            : std::min(backoff, options_.backoff_max);
+    std::this_thread::sleep_for(wait);
+    backoff = std::chrono::milliseconds(
+        static_cast<long long>(static_cast<double>(backoff.count()) * options_.backoff_factor));
+  }
+}
+
+std::string server_error_text(const std::string& body) {
+  auto j = nlohmann::json::parse(body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_object()) {
+    if (auto e = j.find("error"); e != j.end()) {
+      if (e->is_string()) return e->get<std::string>();
+      if (e->is_object() && e->contains("message") && (*e)["message"].is_string()) {
+        return (*e)["message"].get<std::string>();
+      }
+    }
+    for (const char* key : {"message", "detail"}) {
+      if (auto m = j.find(key); m != j.end()) return m->is_string() ? m->get<std::string>() : m->dump();
+    }
+  }
+  constexpr std::size_t kMax = 300;
+  if (body.empty()) return "(empty body)";
+  return body.size() <= kMax ? body : body.substr(0, kMax) + "...";
+}
+
+std::string env_or(const char* name, const std::string& fallback) {
+  const char* v = std::getenv(name);
+  return (v != nullptr && *v != '\0') ? std::string(v) : fallback;
+}
+
+std::string join_url(const std::string& base, const std::string& path) {
+  std::string b = base;
+  while (!b.empty() && b.back() == '/') b.pop_back();
+  return b + path;
+}
+
+}  // namespace clips::lm

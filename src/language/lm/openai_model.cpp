@@ -1,0 +1,249 @@
+#include "language/lm/openai_model.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <utility>
+
+namespace clips::lm {
+
+using nlohmann::json;
+
+namespace detail {
+
+std::size_t utf8_length(const std::string& text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // skip continuation bytes
+  }));
+}
+
+namespace {
+
+bool looks_special(const std::string& token) {
+  return token.size() >= 3 && token.front() == '<' && token.back() == '>';
+}
+
+long long offset_at(const json& offsets, std::size_t i, const std::string& where) {
+  const json& o = offsets[i];
+  if (!o.is_number_integer() && !o.is_number_unsigned()) {
+    throw LmError(where + ".text_offset[" + std::to_string(i) + "] is not an integer");
+  }
+  return o.get<long long>();
+}
+
+}  // namespace
+
+double sum_continuation_logprobs(const json& logprobs, const std::string& prompt,
+                                 const std::string& continuation, const std::string& where) {
+  if (!logprobs.is_object()) throw LmError(where + " missing (server ignored logprobs?)");
+  auto offsets_it = logprobs.find("text_offset");
+  if (offsets_it == logprobs.end() || offsets_it->is_null()) throw LmError(where + ".text_offset missing");
+  if (!offsets_it->is_array()) throw LmError(where + ".text_offset is not an array");
+  auto lps_it = logprobs.find("token_logprobs");
+  if (lps_it == logprobs.end() || lps_it->is_null()) throw LmError(where + ".token_logprobs missing");
+  if (!lps_it->is_array()) throw LmError(where + ".token_logprobs is not an array");
+  const json& offsets = *offsets_it;
+  const json& lps = *lps_it;
+  const std::size_t n = lps.size();
+  if (offsets.size() != n) {
+    throw LmError(where + ".text_offset has " + std::to_string(offsets.size()) +
+                  " entries but token_logprobs has " + std::to_string(n));
+  }
+  if (n == 0) throw LmError(where + ".token_logprobs is empty");
+
+  const auto p = static_cast<long long>(utf8_length(prompt));
+  const auto f = p + static_cast<long long>(utf8_length(continuation));
+
+  long long shift = 0;
+  if (auto tokens = logprobs.find("tokens"); tokens != logprobs.end() && tokens->is_array() &&
+                                             tokens->size() == n && n >= 2 && lps[0].is_null() &&
+                                             (*tokens)[0].is_string()) {
+    const auto first = (*tokens)[0].get<std::string>();
+    const long long first_len = static_cast<long long>(utf8_length(first));
+    if (looks_special(first) && prompt.rfind(first, 0) != 0 &&
+        offset_at(offsets, 1, where) - offset_at(offsets, 0, where) == first_len) {
+      shift = offset_at(offsets, 0, where) + first_len;
+    }
+  }
+
+  double sum = 0.0;
+  std::size_t counted = 0;
+  bool saw_prompt_token = (p == 0);
+  long long previous = std::numeric_limits<long long>::min();
+  for (std::size_t i = 0; i < n; ++i) {
+    const long long raw = offset_at(offsets, i, where);
+    if (raw < previous) {
+      throw LmError(where + ".text_offset[" + std::to_string(i) + "] decreases (" +
+                    std::to_string(raw) + " after " + std::to_string(previous) + ")");
+    }
+    previous = raw;
+    const long long start = raw - shift;
+    const long long end =
+        (i + 1 < n) ? offset_at(offsets, i + 1, where) - shift : std::numeric_limits<long long>::max();
+    if (start < p) saw_prompt_token = true;
+    const bool inside = start >= p && start < f;
+    const bool straddles = start < p && end > p && p < f;
+    if (!inside && !straddles) continue;
+
+    const json& lp = lps[i];
+    if (lp.is_null()) {
+      throw LmError(where + ".token_logprobs[" + std::to_string(i) + "] is null" +
+                    (i == 0 ? " (the continuation starts at the first token: empty prompt?)" : ""));
+    }
+    if (!lp.is_number()) {
+      throw LmError(where + ".token_logprobs[" + std::to_string(i) + "] is not a number");
+    }
+    sum += lp.get<double>();
+    ++counted;
+  }
+  if (!saw_prompt_token) {
+    throw LmError(where + ".text_offset: no token lies inside the prompt (first offset " +
+                  std::to_string(offset_at(offsets, 0, where)) +
+                  "); the server does not seem to echo the prompt");
+  }
+  if (counted == 0) {
+    throw LmError(where + ".text_offset: no token starts inside the continuation (characters " +
+                  std::to_string(p) + ".." + std::to_string(f) +
+                  "); the server does not seem to echo the prompt");
+  }
+  return sum;
+}
+
+}  // namespace detail
+
+namespace {
+
+bool mentions_max_tokens(const std::string& text) {
+  std::string lower = text;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return lower.find("max_tokens") != std::string::npos ||
+         lower.find("max tokens") != std::string::npos;
+}
+
+}  // namespace
+
+OpenAiCompletionsModel::OpenAiCompletionsModel(OpenAiCompletionsOptions options)
+    : options_(std::move(options)), http_(options_.http) {
+  std::string base = options_.base_url.empty()
+                         ? env_or("CLIPS_LM_BASE_URL", "https://api.openai.com/v1")
+                         : options_.base_url;
+  endpoint_ = join_url(base, "/completions");
+  model_ = options_.model.empty() ? env_or("CLIPS_LM_MODEL", "davinci-002") : options_.model;
+  api_key_ = options_.api_key ? *options_.api_key : env_or("OPENAI_API_KEY", "");
+  if (!(options_.temperature > 0.0)) {
+    throw LmError("openai completions: temperature must be > 0 (scores are divided by it), got " +
+                  std::to_string(options_.temperature));
+  }
+  if (options_.batch_size == 0) options_.batch_size = 1;
+  fallback_ = !options_.try_max_tokens_zero;
+}
+
+std::string OpenAiCompletionsModel::name() const { return "openai:" + model_; }
+
+std::vector<double> OpenAiCompletionsModel::score(const std::vector<ScoreRequest>& batch) {
+  // Identical pairs are common (one utterance, repeated commands): send each once.
+  std::map<std::pair<std::string, std::string>, std::size_t> slot_of;
+  std::vector<const ScoreRequest*> unique;
+  std::vector<std::size_t> slot(batch.size());
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    auto [it, added] = slot_of.try_emplace({batch[i].prompt, batch[i].continuation}, unique.size());
+    if (added) unique.push_back(&batch[i]);
+    slot[i] = it->second;
+  }
+
+  std::vector<double> unique_scores;
+  unique_scores.reserve(unique.size());
+  for (std::size_t start = 0; start < unique.size(); start += options_.batch_size) {
+    std::size_t stop = std::min(unique.size(), start + options_.batch_size);
+    std::vector<const ScoreRequest*> chunk(unique.begin() + static_cast<std::ptrdiff_t>(start),
+                                           unique.begin() + static_cast<std::ptrdiff_t>(stop));
+    for (double s : score_chunk(chunk)) unique_scores.push_back(s);
+  }
+
+  std::vector<double> out(batch.size());
+  for (std::size_t i = 0; i < batch.size(); ++i) out[i] = unique_scores[slot[i]];
+  return out;
+}
+
+std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const ScoreRequest*>& chunk) {
+  json prompts = json::array();
+  for (const auto* r : chunk) prompts.push_back(r->prompt + r->continuation);
+  std::vector<std::string> headers;
+  if (!api_key_.empty()) headers.push_back("Authorization: Bearer " + api_key_);
+
+  HttpResponse reply;
+  for (;;) {
+    const bool fallback = fallback_.load();
+    json body = {{"model", model_},
+                 {"prompt", prompts},
+                 {"max_tokens", fallback ? 1 : 0},
+                 {"echo", true},
+                 {"logprobs", options_.logprobs},
+                 {"temperature", options_.temperature}};
+    reply = http_.post_json(endpoint_, body.dump(), headers);
+    if (reply.status >= 200 && reply.status < 300) break;
+    const std::string why = server_error_text(reply.body);
+    // vLLM: 400 "max_tokens must be at least 1"; pydantic-based servers: 422.
+    if (!fallback && (reply.status == 400 || reply.status == 422) &&
+        (mentions_max_tokens(why) || mentions_max_tokens(reply.body))) {
+      fallback_ = true;
+      continue;
+    }
+    throw LmError("POST " + endpoint_ + ": HTTP " + std::to_string(reply.status) + ": " + why);
+  }
+
+  const std::string context = "reply from " + endpoint_ + ": ";
+  json j = json::parse(reply.body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) {
+    throw LmError(context + "body is not valid JSON (" + std::to_string(reply.body.size()) +
+                  " bytes: " + server_error_text(reply.body) + ")");
+  }
+  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
+  auto choices = j.find("choices");
+  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
+  if (!choices->is_array()) throw LmError(context + "choices is not an array");
+  if (choices->size() != chunk.size()) {
+    throw LmError(context + "choices has " + std::to_string(choices->size()) + " entries, expected " +
+                  std::to_string(chunk.size()) + " (one per prompt)");
+  }
+
+  std::vector<double> scores(chunk.size());
+  std::vector<bool> filled(chunk.size(), false);
+  for (std::size_t pos = 0; pos < choices->size(); ++pos) {
+    const json& choice = (*choices)[pos];
+    const std::string where = "choices[" + std::to_string(pos) + "]";
+    if (!choice.is_object()) throw LmError(context + where + " is not an object");
+    // Servers may answer a batch out of order; `index` says which prompt it is.
+    std::size_t index = pos;
+    if (auto idx = choice.find("index"); idx != choice.end() && !idx->is_null()) {
+      if (!idx->is_number_integer() && !idx->is_number_unsigned()) {
+        throw LmError(context + where + ".index is not an integer");
+      }
+      const auto v = idx->get<long long>();
+      if (v < 0 || static_cast<std::size_t>(v) >= chunk.size()) {
+        throw LmError(context + where + ".index " + std::to_string(v) + " out of range");
+      }
+      index = static_cast<std::size_t>(v);
+    }
+    if (filled[index]) {
+      throw LmError(context + where + ".index " + std::to_string(index) + " repeats an earlier choice");
+    }
+    filled[index] = true;
+    auto lp = choice.find("logprobs");
+    if (lp == choice.end() || lp->is_null()) throw LmError(context + where + ".logprobs missing");
+    try {
+      const double total = detail::sum_continuation_logprobs(*lp, chunk[index]->prompt,
+                                                             chunk[index]->continuation,
+                                                             where + ".logprobs");
+      scores[index] = total / options_.temperature;
+    } catch (const LmError& e) {
+      throw LmError(context + e.what());
+    }
+  }
+  return scores;
+}
+
+}  // namespace clips::lm

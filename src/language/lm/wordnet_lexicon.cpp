@@ -1,0 +1,299 @@
+#include "language/lm/wordnet_lexicon.hpp"
+
+#include <wn.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <mutex>
+#include <set>
+#include <unordered_set>
+
+#include "language/lm/language_model.hpp"
+
+namespace clips::lm {
+namespace {
+
+std::mutex& wordnet_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// --- raw WordNet access; callers hold wordnet_mutex() ---------------------------
+
+bool wn_has(const std::string& word, int pos) {
+  if (word.empty()) return false;
+  std::string buf = word;
+  return in_wn(buf.data(), pos) != 0;
+}
+
+std::vector<std::string> wn_base_forms(const std::string& word, int pos) {
+  std::vector<std::string> out;
+  std::string buf = word;
+  char* r = morphstr(buf.data(), pos);
+  while (r != nullptr) {
+    out.emplace_back(r);
+    r = morphstr(nullptr, pos);
+  }
+  return out;
+}
+
+// Is `form` an inflection of `lemma` according to WordNet's morphology?
+bool inflects_to(const std::string& form, const std::string& lemma, int pos) {
+  for (const std::string& b : wn_base_forms(form, pos)) {
+    if (b == lemma) return true;
+  }
+  return false;
+}
+
+std::string lower_word(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Words of the synsets of `word` (first `senses` senses) and of their hypernyms
+// up to `levels` levels, split by relation: synonyms vs hypernym words.
+void wn_related(const std::string& word, int pos, int senses, int levels,
+                std::vector<std::string>& synonyms, std::vector<std::string>& hypernyms) {
+  std::string buf = word;
+  SynsetPtr head = findtheinfo_ds(buf.data(), pos, HYPERPTR, ALLSENSES);
+  int sense = 0;
+  for (SynsetPtr s = head; s != nullptr && sense < senses; s = s->nextss, ++sense) {
+    for (int k = 0; k < s->wcount; ++k) synonyms.push_back(lower_word(s->words[k]));
+    // Breadth over hypernym levels: ptrlist holds the first level; each of those
+    // has its own ptrlist for the next.
+    std::vector<SynsetPtr> frontier;
+    for (SynsetPtr h = s->ptrlist; h != nullptr; h = h->nextss) frontier.push_back(h);
+    for (int level = 0; level < levels && !frontier.empty(); ++level) {
+      std::vector<SynsetPtr> next;
+      for (SynsetPtr h : frontier) {
+        for (int k = 0; k < h->wcount; ++k) hypernyms.push_back(lower_word(h->words[k]));
+        for (SynsetPtr g = h->ptrlist; g != nullptr; g = g->nextss) next.push_back(g);
+      }
+      frontier = std::move(next);
+      if (sense > 0) break;  // deeper hypernyms only for the dominant sense
+    }
+  }
+  if (head != nullptr) free_syns(head);
+}
+
+// --- English inflection candidates, kept only if WordNet maps them back -----------
+
+std::vector<std::string> plural_forms(const std::string& w) {
+  if (w.empty()) return {};
+  std::vector<std::string> cand;
+  auto ends = [&](std::string_view suf) {
+    return w.size() >= suf.size() && w.compare(w.size() - suf.size(), suf.size(), suf) == 0;
+  };
+  const auto vowel = [](char c) { return std::string_view("aeiou").find(c) != std::string_view::npos; };
+  if (ends("s") || ends("x") || ends("z") || ends("ch") || ends("sh")) {
+    cand.push_back(w + "es");
+  } else if (ends("y") && w.size() > 1 && !vowel(w[w.size() - 2])) {
+    cand.push_back(w.substr(0, w.size() - 1) + "ies");
+  } else if (ends("fe")) {
+    cand.push_back(w.substr(0, w.size() - 2) + "ves");
+    cand.push_back(w + "s");
+  } else if (ends("f")) {
+    cand.push_back(w.substr(0, w.size() - 1) + "ves");
+    cand.push_back(w + "s");
+  } else if (ends("o")) {
+    cand.push_back(w + "es");
+    cand.push_back(w + "s");
+  } else {
+    cand.push_back(w + "s");
+  }
+  std::vector<std::string> out;
+  for (const std::string& c : cand) {
+    if (inflects_to(c, w, NOUN)) out.push_back(c);
+  }
+  if (out.empty()) out.push_back(cand.front());
+  return out;
+}
+
+std::vector<std::string> verb_forms(const std::string& w) {
+  if (w.size() < 2) return {};
+  const auto vowel = [](char c) { return std::string_view("aeiou").find(c) != std::string_view::npos; };
+  std::string stem_ing = w;
+  std::string stem_ed = w;
+  if (w.back() == 'e') {
+    stem_ing.pop_back();
+    stem_ed.pop_back();
+  } else if (w.size() <= 4 && w.size() >= 3 && !vowel(w.back()) && vowel(w[w.size() - 2]) &&
+             !vowel(w[w.size() - 3]) && w.back() != 'w' && w.back() != 'x' && w.back() != 'y') {
+    stem_ing.push_back(w.back());  // grab -> grabbing, get -> getting
+    stem_ed.push_back(w.back());
+  }
+  std::vector<std::string> cand = {w + "s", w + "es", stem_ing + "ing", stem_ed + "ed"};
+  std::vector<std::string> out;
+  for (const std::string& c : cand) {
+    if (c != w && inflects_to(c, w, VERB)) out.push_back(c);
+  }
+  return out;
+}
+
+// --- base construction ---------------------------------------------------------------
+
+struct Accum {
+  std::map<std::string, double> w;
+  void add(const std::string& word, double weight) {
+    if (word.empty() || weight <= 0) return;
+    w[word] += weight;
+  }
+  // Spread `total` uniformly over the distinct single-token words of `words`
+  // that are not function words and not already among `exclude`.
+  void spread(const std::vector<std::string>& words, double total) {
+    std::set<std::string> uniq;
+    for (const std::string& x : words) {
+      if (x.find_first_of("_ -'.") != std::string::npos) continue;
+      if (is_function_word(x)) continue;
+      uniq.insert(x);
+    }
+    for (const std::string& x : uniq) add(x, total / static_cast<double>(uniq.size()));
+  }
+  WordDistribution normalised() const {
+    double z = 0;
+    for (const auto& [k, v] : w) z += v;
+    WordDistribution out;
+    for (const auto& [k, v] : w) out.emplace_back(k, v / z);
+    return out;
+  }
+};
+
+// Split a run-together name into WordNet words: ("pickup", VERB) -> {"pick", "up"}.
+// Returns {name} if WordNet knows the whole name, else the split with the most
+// balanced parts whose pieces are all known (or whose underscore compound is).
+std::vector<std::string> split_name(const std::string& name, int pos) {
+  if (wn_has(name, pos) || name.size() < 5) return {name};
+  std::vector<std::string> best;
+  size_t best_min = 0;
+  for (size_t i = 2; i + 2 <= name.size(); ++i) {
+    const std::string a = name.substr(0, i);
+    const std::string b = name.substr(i);
+    const bool compound = wn_has(a + "_" + b, pos);
+    const bool pieces = wn_has(a, pos == VERB ? VERB : NOUN) &&
+                        (wn_has(b, NOUN) || wn_has(b, VERB) || is_function_word(b));
+    if (!compound && !pieces) continue;
+    // A known compound beats any split into pieces.
+    const size_t score = std::min(a.size(), b.size()) + (compound ? 100 : 0);
+    if (score > best_min) {
+      best_min = score;
+      best = {a, b};
+    }
+  }
+  if (best.empty()) return {name};
+  return best;
+}
+
+}  // namespace
+
+bool is_function_word(std::string_view w) {
+  static const std::unordered_set<std::string_view> words = {
+      "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every",
+      "my", "your", "his", "her", "its", "our", "their", "i", "me", "you", "we", "us", "it",
+      "they", "them", "he", "she", "him", "myself", "yourself", "can", "could", "would",
+      "will", "shall", "should", "may", "might", "must", "do", "does", "did", "be", "am",
+      "is", "are", "was", "were", "been", "being", "have", "has", "had", "to", "for", "of",
+      "on", "in", "at", "with", "from", "by", "up", "over", "off", "out", "into", "onto",
+      "and", "or", "but", "while", "then", "so", "as", "if", "there", "here", "too", "also",
+      "just", "now", "not", "no", "please", "s", "what", "which", "who", "where", "when",
+      "how", "all", "both", "one", "ones", "two", "three", "four", "go", "going", "let",
+      ",", ".", "?", "!"};
+  return words.count(w) != 0;
+}
+
+WordNetLexicon& WordNetLexicon::instance() {
+  static WordNetLexicon lex;
+  return lex;
+}
+
+WordNetLexicon::WordNetLexicon() {
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (wninit() != 0) {
+    throw LmError("embedded LM: cannot open the WordNet dictionary (wninit failed; expected "
+                  "Debian's wordnet in /usr/share/wordnet or $WNSEARCHDIR)");
+  }
+}
+
+std::string WordNetLexicon::noun_lemma(const std::string& word) {
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  auto forms = wn_base_forms(word, NOUN);
+  return forms.empty() ? word : forms.front();
+}
+
+WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural) {
+  static std::map<std::pair<std::string, bool>, WordDistribution> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  auto key = std::make_pair(type, plural);
+  if (auto it = memo.find(key); it != memo.end()) return it->second;
+
+  Accum singular;  // weights over singular noun forms
+  std::vector<std::string> parts = split_name(type, NOUN);
+  std::string head = parts.back();
+  std::string lookup = type;
+  if (parts.size() == 2) {
+    const std::string compound = parts[0] + "_" + parts[1];
+    lookup = wn_has(compound, NOUN) ? compound : head;
+    singular.add(head, 0.45);
+    if (!is_function_word(parts[0])) singular.add(parts[0], 0.15);
+  } else {
+    singular.add(head, 0.6);
+  }
+  std::vector<std::string> syn, hyp;
+  wn_related(lookup, NOUN, 2, 2, syn, hyp);
+  singular.spread(syn, 0.15);
+  singular.spread(hyp, 0.1);
+  // Pro-forms: "the blue one", "the red ones".
+  singular.add("one", 0.05);
+
+  Accum out;
+  for (const auto& [word, weight] : singular.w) {
+    if (word == "one") {
+      out.add(plural ? "ones" : "one", weight);
+      continue;
+    }
+    auto pl = plural_forms(word);
+    const double share_plural = plural ? 0.85 : 0.05;
+    out.add(word, weight * (1 - share_plural));
+    for (const std::string& p : pl) out.add(p, weight * share_plural / static_cast<double>(pl.size()));
+  }
+  WordDistribution dist = out.normalised();
+  memo[key] = dist;
+  return dist;
+}
+
+WordDistribution WordNetLexicon::verb_base(const std::string& action, bool to_speaker) {
+  static std::map<std::pair<std::string, bool>, WordDistribution> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  auto key = std::make_pair(action, to_speaker);
+  if (auto it = memo.find(key); it != memo.end()) return it->second;
+
+  Accum lemmas;
+  std::vector<std::string> parts = split_name(action, VERB);
+  std::string lookup = action;
+  if (parts.size() == 2) {
+    const std::string compound = parts[0] + "_" + parts[1];
+    lookup = wn_has(compound, VERB) ? compound : parts[0];
+    lemmas.add(parts[0], 0.35);
+    lemmas.add(parts[1], 0.15);  // particle ("up", "over"): allowed despite being a function word
+  } else {
+    lemmas.add(action, 0.5);
+  }
+  std::vector<std::string> syn, hyp;
+  wn_related(lookup, VERB, 3, 1, syn, hyp);
+  lemmas.spread(syn, 0.2);
+  lemmas.spread(hyp, 0.15);
+
+  Accum out;
+  for (const auto& [word, weight] : lemmas.w) {
+    auto forms = is_function_word(word) ? std::vector<std::string>{} : verb_forms(word);
+    const double share = forms.empty() ? 0.0 : 0.3;
+    out.add(word, weight * (1 - share));
+    for (const std::string& f : forms) out.add(f, weight * share / static_cast<double>(forms.size()));
+  }
+  if (to_speaker) out.add("me", 0.1);
+  WordDistribution dist = out.normalised();
+  memo[key] = dist;
+  return dist;
+}
+
+}  // namespace clips::lm

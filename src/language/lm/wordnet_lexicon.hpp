@@ -1,0 +1,46 @@
+#pragma once
+// Lexical prior knowledge from WordNet (Debian's wordnet-dev, /usr/share/wordnet).
+//
+// The embedded model's emission tables are Dirichlet-smoothed towards *lexical
+// bases*: distributions over words that a command element can plausibly emit,
+// built here from WordNet, so that synonyms and inflections never seen in the
+// training corpus still get probability mass:
+//   * noun_base("cutleryfork", plural) -> fork(s), cutlery, tableware, ...
+//     (type names are split into WordNet words when the whole name is not one;
+//      the head is the last part; synonyms and two levels of hypernyms of the
+//      first senses are added with smaller weights; plural forms are generated
+//      by English rules and kept only if WordNet's morphology maps them back);
+//   * verb_base("handover", to_speaker) -> hand, over, pass, give, deliver, ...
+//     plus inflections (hands, handing, handed) checked the same way.
+// The WordNet C library keeps global state and is not thread-safe, so every
+// call goes through one process-wide mutex; results are memoised.
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace clips::lm {
+
+// A finite distribution over words (weights sum to 1, sorted by word).
+using WordDistribution = std::vector<std::pair<std::string, double>>;
+
+class WordNetLexicon {
+ public:
+  // The process-wide instance; throws LmError if the dictionary cannot be opened.
+  static WordNetLexicon& instance();
+
+  WordDistribution noun_base(const std::string& type, bool plural);
+  WordDistribution verb_base(const std::string& action, bool to_speaker);
+  // Base (uninflected) noun form of a word if WordNet knows one, else the word.
+  std::string noun_lemma(const std::string& word);
+
+ private:
+  WordNetLexicon();
+};
+
+// Closed-class English words (determiners, pronouns, auxiliaries, prepositions,
+// conjunctions, punctuation tokens). Content fields may emit one only when it is
+// part of their own lexical base (e.g. "up" in "pick up").
+bool is_function_word(std::string_view word);
+
+}  // namespace clips::lm

@@ -1,0 +1,737 @@
+#include "pddl/parser.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace clips::pddl {
+
+// ---------------------------------------------------------------- Domain lookups
+
+std::optional<TypeId> Domain::find_type(const std::string& n) const {
+  for (size_t i = 0; i < types.size(); ++i)
+    if (types[i].name == n) return static_cast<TypeId>(i);
+  return std::nullopt;
+}
+std::optional<PredId> Domain::find_predicate(const std::string& n) const {
+  for (size_t i = 0; i < predicates.size(); ++i)
+    if (predicates[i].name == n) return static_cast<PredId>(i);
+  return std::nullopt;
+}
+std::optional<FuncId> Domain::find_function(const std::string& n) const {
+  for (size_t i = 0; i < functions.size(); ++i)
+    if (functions[i].name == n) return static_cast<FuncId>(i);
+  return std::nullopt;
+}
+int Domain::find_action(const std::string& n) const {
+  for (size_t i = 0; i < actions.size(); ++i)
+    if (actions[i].name == n) return static_cast<int>(i);
+  return -1;
+}
+bool Domain::is_subtype(TypeId t, TypeId ancestor) const {
+  for (int guard = 0; t >= 0 && guard <= static_cast<int>(types.size()); ++guard) {
+    if (t == ancestor) return true;
+    t = types[t].parent;
+  }
+  return false;
+}
+std::optional<ObjectId> Problem::find_object(const std::string& n) const {
+  for (size_t i = 0; i < objects.size(); ++i)
+    if (objects[i].name == n) return static_cast<ObjectId>(i);
+  return std::nullopt;
+}
+
+namespace {
+
+const std::set<std::string> kSupportedRequirements = {
+    ":strips", ":typing", ":negative-preconditions", ":disjunctive-preconditions", ":equality",
+    ":existential-preconditions", ":universal-preconditions", ":quantified-preconditions",
+    ":conditional-effects", ":adl", ":fluents", ":numeric-fluents", ":action-costs"};
+
+[[noreturn]] void fail(const SExpr& e, const std::string& msg) { throw InputError(e.loc, msg); }
+
+bool is_integer(const std::string& s) {
+  if (s.empty()) return false;
+  size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
+  if (i == s.size()) return false;
+  for (; i < s.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+  return true;
+}
+
+const SExpr& expect_list(const SExpr& e, const std::string& what) {
+  if (!e.is_list) fail(e, "expected " + what + ", found '" + e.atom + "'");
+  return e;
+}
+
+// A name with type, from a PDDL typed list such as `a b - t c`.
+struct TypedName {
+  std::string name;
+  std::string type;  // "object" when untyped
+  SourceLoc loc;
+};
+
+std::vector<TypedName> typed_list(const std::vector<SExpr>& items, size_t from, const SExpr& owner) {
+  std::vector<TypedName> out;
+  std::vector<TypedName> pending;
+  for (size_t i = from; i < items.size(); ++i) {
+    const SExpr& it = items[i];
+    if (it.is_list) fail(it, "expected a name in a typed list, found a list");
+    if (it.atom == "-") {
+      if (i + 1 >= items.size()) fail(it, "expected a type after '-'");
+      const SExpr& t = items[i + 1];
+      if (t.is_list) {
+        if (t.head() == "either") fail(t, "unsupported: (either ...) types");
+        fail(t, "expected a type name after '-'");
+      }
+      if (pending.empty()) fail(it, "'-' with no names before it");
+      for (auto& p : pending) {
+        p.type = t.atom;
+        out.push_back(p);
+      }
+      pending.clear();
+      ++i;
+    } else {
+      pending.push_back(TypedName{it.atom, "object", it.loc});
+    }
+  }
+  (void)owner;
+  for (auto& p : pending) out.push_back(p);
+  return out;
+}
+
+// ---------------------------------------------------------------- Expression parsing
+
+struct Scope {
+  std::vector<std::pair<std::string, TypeId>> vars;  // slot -> (name, type)
+  std::vector<int> visible;                          // slots in scope, innermost last
+  int num_slots() const { return static_cast<int>(vars.size()); }
+};
+
+class ExprParser {
+ public:
+  ExprParser(const Domain& d, const Problem* p) : d_(d), p_(p) {}
+
+  Scope scope;
+
+  TermRef term(const SExpr& e, TypeId* type_out) {
+    if (e.is_list) fail(e, "expected a variable or object, found a list");
+    if (!e.atom.empty() && e.atom[0] == '?') {
+      std::string n = e.atom.substr(1);
+      for (auto it = scope.visible.rbegin(); it != scope.visible.rend(); ++it) {
+        if (scope.vars[*it].first == n) {
+          if (type_out) *type_out = scope.vars[*it].second;
+          return TermRef{true, *it};
+        }
+      }
+      fail(e, "unknown variable '" + e.atom + "'");
+    }
+    auto o = find_object(e.atom);
+    if (!o) fail(e, "unknown object '" + e.atom + "'");
+    if (type_out) *type_out = object_type(*o);
+    return TermRef{false, *o};
+  }
+
+  std::optional<ObjectId> find_object(const std::string& n) const {
+    if (p_) return p_->find_object(n);
+    for (size_t i = 0; i < d_.constants.size(); ++i)
+      if (d_.constants[i].name == n) return static_cast<ObjectId>(i);
+    return std::nullopt;
+  }
+  TypeId object_type(ObjectId o) const { return p_ ? p_->objects[o].type : d_.constants[o].type; }
+
+  void check_arg_type(const SExpr& at, TypeId given, TypeId wanted, bool is_var,
+                      const std::string& what) {
+    if (d_.is_subtype(given, wanted)) return;
+    // A variable of a wider type is allowed (it simply fails for other objects).
+    if (is_var && d_.is_subtype(wanted, given)) return;
+    fail(at, "type mismatch in " + what + ": expected " + d_.types[wanted].name + ", got " +
+                 d_.types[given].name);
+  }
+
+  std::vector<TermRef> args_for(const SExpr& e, const std::vector<TypeId>& types,
+                                const std::string& what) {
+    size_t n = e.items.size() - 1;
+    if (n != types.size())
+      fail(e, "arity mismatch: " + what + " takes " + std::to_string(types.size()) +
+                  " argument(s), given " + std::to_string(n));
+    std::vector<TermRef> out;
+    for (size_t i = 0; i < n; ++i) {
+      TypeId t = 0;
+      TermRef r = term(e.items[i + 1], &t);
+      check_arg_type(e.items[i + 1], t, types[i], r.is_var, what);
+      out.push_back(r);
+    }
+    return out;
+  }
+
+  // Opens a quantifier scope; returns (first slot, types, names).
+  void open_vars(const SExpr& list, Condition* c_or_null, Effect* e_or_null) {
+    expect_list(list, "a variable list");
+    auto names = typed_list(list.items, 0, list);
+    int first = scope.num_slots();
+    std::vector<TypeId> types;
+    std::vector<std::string> vnames;
+    for (auto& tn : names) {
+      if (tn.name.empty() || tn.name[0] != '?')
+        throw InputError(tn.loc, "expected a variable (starting with '?'), found '" + tn.name + "'");
+      auto t = d_.find_type(tn.type);
+      if (!t) throw InputError(tn.loc, "unknown type '" + tn.type + "'");
+      scope.vars.push_back({tn.name.substr(1), *t});
+      scope.visible.push_back(scope.num_slots() - 1);
+      types.push_back(*t);
+      vnames.push_back(tn.name.substr(1));
+    }
+    if (c_or_null) {
+      c_or_null->first_var = first;
+      c_or_null->var_types = types;
+      c_or_null->var_names = vnames;
+    }
+    if (e_or_null) {
+      e_or_null->first_var = first;
+      e_or_null->var_types = types;
+    }
+  }
+  void close_vars(size_t n) { scope.visible.resize(scope.visible.size() - n); }
+
+  bool names_zero_ary_function(const std::string& s) const {
+    auto f = d_.find_function(s);
+    return f && d_.functions[*f].arg_types.empty();
+  }
+
+  NumExpr num(const SExpr& e) {
+    NumExpr x;
+    x.loc = e.loc;
+    if (!e.is_list) {
+      if (is_integer(e.atom)) {
+        x.kind = NumExpr::Kind::Const;
+        x.value = std::stoll(e.atom);
+      } else if (e.atom == "true" || e.atom == "false") {
+        x.kind = NumExpr::Kind::Const;
+        x.value = e.atom == "true";
+        x.boolean = true;
+      } else if (names_zero_ary_function(e.atom)) {
+        x.kind = NumExpr::Kind::Fluent;
+        x.func = *d_.find_function(e.atom);
+      } else if (e.atom.find('.') != std::string::npos && !e.atom.empty() &&
+                 (std::isdigit(static_cast<unsigned char>(e.atom[0])) || e.atom[0] == '-')) {
+        fail(e, "non-integer number '" + e.atom + "': only integer fluents are supported");
+      } else {
+        x.kind = NumExpr::Kind::Object;
+        x.args.push_back(term(e, nullptr));
+      }
+      return x;
+    }
+    const std::string& h = e.head();
+    auto n = e.items.size() - 1;
+    auto operands = [&](size_t want_min, size_t want_max) {
+      if (n < want_min || n > want_max)
+        fail(e, "arity mismatch: '" + h + "' given " + std::to_string(n) + " argument(s)");
+      for (size_t i = 1; i <= n; ++i) x.kids.push_back(num(e.items[i]));
+    };
+    if (h == "+" || h == "*") {
+      x.kind = h == "+" ? NumExpr::Kind::Add : NumExpr::Kind::Mul;
+      operands(2, 2);
+    } else if (h == "-") {
+      operands(1, 2);
+      x.kind = n == 1 ? NumExpr::Kind::Neg : NumExpr::Kind::Sub;
+    } else if (h == "/") {
+      x.kind = NumExpr::Kind::Div;
+      operands(2, 2);
+    } else if (h == "new-bit-matrix") {
+      x.kind = NumExpr::Kind::NewMatrix;
+      operands(3, 3);
+    } else if (h == "set-index") {
+      x.kind = NumExpr::Kind::SetIndex;
+      operands(4, 4);
+    } else if (h == "get-index") {
+      x.kind = NumExpr::Kind::GetIndex;
+      operands(3, 3);
+    } else if (h == "width" || h == "height") {
+      x.kind = h == "width" ? NumExpr::Kind::Width : NumExpr::Kind::Height;
+      operands(1, 1);
+    } else if (!h.empty()) {
+      auto f = d_.find_function(h);
+      if (!f) fail(e, "unknown function '" + h + "'");
+      x.kind = NumExpr::Kind::Fluent;
+      x.func = *f;
+      x.args = args_for(e, d_.functions[*f].arg_types, "function '" + h + "'");
+    } else {
+      fail(e, "expected a numeric expression");
+    }
+    return x;
+  }
+
+  Condition cond(const SExpr& e) {
+    Condition c;
+    c.loc = e.loc;
+    if (!e.is_list) {
+      if (e.atom == "true") return c;
+      fail(e, "expected a condition, found '" + e.atom + "'");
+    }
+    if (e.items.empty()) {  // () is the empty conjunction
+      c.kind = Condition::Kind::And;
+      return c;
+    }
+    const std::string& h = e.head();
+    size_t n = e.items.size() - 1;
+    if (h == "and" || h == "or") {
+      c.kind = h == "and" ? Condition::Kind::And : Condition::Kind::Or;
+      for (size_t i = 1; i <= n; ++i) c.kids.push_back(cond(e.items[i]));
+    } else if (h == "not") {
+      if (n != 1) fail(e, "arity mismatch: 'not' takes 1 argument, given " + std::to_string(n));
+      c.kind = Condition::Kind::Not;
+      c.kids.push_back(cond(e.items[1]));
+    } else if (h == "imply") {
+      if (n != 2) fail(e, "arity mismatch: 'imply' takes 2 arguments, given " + std::to_string(n));
+      c.kind = Condition::Kind::Imply;
+      c.kids.push_back(cond(e.items[1]));
+      c.kids.push_back(cond(e.items[2]));
+    } else if (h == "exists" || h == "forall") {
+      if (n != 2) fail(e, "expected (" + h + " (variables) condition)");
+      c.kind = h == "exists" ? Condition::Kind::Exists : Condition::Kind::Forall;
+      open_vars(e.items[1], &c, nullptr);
+      c.kids.push_back(cond(e.items[2]));
+      close_vars(c.var_types.size());
+    } else if (h == "=" || h == "<" || h == "<=" || h == ">" || h == ">=") {
+      if (n != 2) fail(e, "arity mismatch: '" + h + "' takes 2 arguments, given " + std::to_string(n));
+      c.kind = h == "="    ? Condition::Kind::Equal
+               : h == "<"  ? Condition::Kind::Less
+               : h == "<=" ? Condition::Kind::LessEq
+               : h == ">"  ? Condition::Kind::Greater
+                           : Condition::Kind::GreaterEq;
+      c.nums.push_back(num(e.items[1]));
+      c.nums.push_back(num(e.items[2]));
+      bool obj0 = c.nums[0].kind == NumExpr::Kind::Object;
+      bool obj1 = c.nums[1].kind == NumExpr::Kind::Object;
+      if ((obj0 || obj1) && (c.kind != Condition::Kind::Equal || obj0 != obj1))
+        fail(e, "cannot compare an object with a number in '" + h + "'");
+    } else if (h == "when") {
+      fail(e, "'when' is only allowed in effects");
+    } else if (!h.empty()) {
+      auto p = d_.find_predicate(h);
+      if (!p) fail(e, "unknown predicate '" + h + "'");
+      c.kind = Condition::Kind::Atom;
+      c.pred = *p;
+      c.args = args_for(e, d_.predicates[*p].arg_types, "predicate '" + h + "'");
+    } else {
+      fail(e, "expected a condition");
+    }
+    return c;
+  }
+
+  Effect eff(const SExpr& e) {
+    Effect x;
+    x.loc = e.loc;
+    expect_list(e, "an effect");
+    if (e.items.empty()) return x;  // empty conjunction
+    const std::string& h = e.head();
+    size_t n = e.items.size() - 1;
+    if (h == "and") {
+      for (size_t i = 1; i <= n; ++i) x.kids.push_back(eff(e.items[i]));
+    } else if (h == "not") {
+      if (n != 1) fail(e, "arity mismatch: 'not' takes 1 argument, given " + std::to_string(n));
+      const SExpr& a = expect_list(e.items[1], "an atom to delete");
+      Effect inner = eff(a);
+      if (inner.kind != Effect::Kind::Add) fail(a, "only atoms can be negated in effects");
+      inner.kind = Effect::Kind::Del;
+      inner.loc = e.loc;
+      return inner;
+    } else if (h == "when") {
+      if (n != 2) fail(e, "expected (when condition effect)");
+      x.kind = Effect::Kind::When;
+      x.cond = cond(e.items[1]);
+      x.kids.push_back(eff(e.items[2]));
+    } else if (h == "forall") {
+      if (n != 2) fail(e, "expected (forall (variables) effect)");
+      x.kind = Effect::Kind::Forall;
+      open_vars(e.items[1], nullptr, &x);
+      x.kids.push_back(eff(e.items[2]));
+      close_vars(x.var_types.size());
+    } else if (h == "assign" || h == "increase" || h == "decrease" || h == "scale-up" ||
+               h == "scale-down") {
+      if (n != 2) fail(e, "arity mismatch: '" + h + "' takes 2 arguments, given " + std::to_string(n));
+      x.kind = h == "assign"     ? Effect::Kind::Assign
+               : h == "increase" ? Effect::Kind::Increase
+               : h == "decrease" ? Effect::Kind::Decrease
+               : h == "scale-up" ? Effect::Kind::ScaleUp
+                                 : Effect::Kind::ScaleDown;
+      const SExpr& target = e.items[1];
+      std::string fname = target.is_list ? target.head() : target.atom;
+      auto f = d_.find_function(fname);
+      if (!f) fail(target, "unknown function '" + fname + "'");
+      x.func = *f;
+      if (target.is_list) x.args = args_for(target, d_.functions[*f].arg_types, "function '" + fname + "'");
+      else if (!d_.functions[*f].arg_types.empty()) fail(target, "arity mismatch: function '" + fname + "' needs arguments");
+      x.value = num(e.items[2]);
+    } else if (!h.empty()) {
+      auto p = d_.find_predicate(h);
+      if (!p) fail(e, "unknown predicate '" + h + "'");
+      x.kind = Effect::Kind::Add;
+      x.pred = *p;
+      x.args = args_for(e, d_.predicates[*p].arg_types, "predicate '" + h + "'");
+    } else {
+      fail(e, "expected an effect");
+    }
+    return x;
+  }
+
+ private:
+  const Domain& d_;
+  const Problem* p_;
+};
+
+TypeId ensure_type(Domain& d, const std::string& name) {
+  if (auto t = d.find_type(name)) return *t;
+  d.types.push_back(TypeDef{name, 0});
+  return static_cast<TypeId>(d.types.size() - 1);
+}
+
+void parse_types(Domain& d, const SExpr& sec) {
+  for (auto& tn : typed_list(sec.items, 1, sec)) {
+    if (tn.name == "object") continue;
+    TypeId parent = ensure_type(d, tn.type);
+    TypeId t = ensure_type(d, tn.name);
+    if (d.is_subtype(parent, t)) throw InputError(tn.loc, "cyclic type hierarchy at '" + tn.name + "'");
+    d.types[t].parent = parent;
+  }
+}
+
+TypeId type_of_name(const Domain& d, const TypedName& tn) {
+  auto t = d.find_type(tn.type);
+  if (!t) throw InputError(tn.loc, "unknown type '" + tn.type + "'");
+  return *t;
+}
+
+void parse_predicates(Domain& d, const SExpr& sec) {
+  for (size_t i = 1; i < sec.items.size(); ++i) {
+    const SExpr& p = expect_list(sec.items[i], "a predicate declaration");
+    if (p.items.empty() || p.items[0].is_list) fail(p, "expected a predicate name");
+    if (d.find_predicate(p.head())) fail(p, "predicate '" + p.head() + "' declared twice");
+    PredicateDef def{p.head(), {}, p.loc};
+    for (auto& tn : typed_list(p.items, 1, p)) def.arg_types.push_back(type_of_name(d, tn));
+    d.predicates.push_back(def);
+  }
+}
+
+void parse_functions(Domain& d, const SExpr& sec) {
+  std::vector<FunctionDef> pending;
+  auto flush = [&](ValueType vt) {
+    for (auto& f : pending) {
+      f.type = vt;
+      d.functions.push_back(f);
+    }
+    pending.clear();
+  };
+  for (size_t i = 1; i < sec.items.size(); ++i) {
+    const SExpr& it = sec.items[i];
+    if (it.is_atom("-")) {
+      if (i + 1 >= sec.items.size() || sec.items[i + 1].is_list) fail(it, "expected a function type after '-'");
+      const std::string& t = sec.items[i + 1].atom;
+      if (t == "number" || t == "integer" || t == "int") flush(ValueType::Int);
+      else if (t == "bit-matrix" || t == "boolean-matrix") flush(ValueType::Matrix);
+      else fail(sec.items[i + 1], "unsupported function type '" + t + "' (expected number, integer or bit-matrix)");
+      ++i;
+      continue;
+    }
+    const SExpr& f = expect_list(it, "a function declaration");
+    if (f.items.empty() || f.items[0].is_list) fail(f, "expected a function name");
+    if (d.find_function(f.head())) fail(f, "function '" + f.head() + "' declared twice");
+    FunctionDef def{f.head(), {}, ValueType::Int, f.loc};
+    for (auto& tn : typed_list(f.items, 1, f)) def.arg_types.push_back(type_of_name(d, tn));
+    pending.push_back(def);
+  }
+  flush(ValueType::Int);
+}
+
+void parse_action(Domain& d, const SExpr& sec) {
+  if (sec.items.size() < 2 || sec.items[1].is_list) fail(sec, "expected an action name after :action");
+  ActionSchema a;
+  a.name = sec.items[1].atom;
+  a.loc = sec.loc;
+  if (d.find_action(a.name) >= 0) fail(sec, "action '" + a.name + "' declared twice");
+  ExprParser ep(d, nullptr);
+  const SExpr* pre = nullptr;
+  const SExpr* effect = nullptr;
+  for (size_t i = 2; i < sec.items.size(); i += 2) {
+    const SExpr& key = sec.items[i];
+    if (key.is_list || i + 1 >= sec.items.size()) fail(key, "expected ':parameters', ':precondition' or ':effect' followed by a value");
+    const SExpr& val = sec.items[i + 1];
+    if (key.atom == ":parameters") {
+      expect_list(val, "a parameter list");
+      for (auto& tn : typed_list(val.items, 0, val)) {
+        if (tn.name.empty() || tn.name[0] != '?') throw InputError(tn.loc, "expected a parameter variable, found '" + tn.name + "'");
+        a.param_names.push_back(tn.name.substr(1));
+        a.param_types.push_back(type_of_name(d, tn));
+        ep.scope.vars.push_back({tn.name.substr(1), a.param_types.back()});
+        ep.scope.visible.push_back(ep.scope.num_slots() - 1);
+      }
+    } else if (key.atom == ":precondition") {
+      pre = &val;
+    } else if (key.atom == ":effect") {
+      effect = &val;
+    } else {
+      fail(key, "unknown action section '" + key.atom + "'");
+    }
+  }
+  if (pre) a.precondition = ep.cond(*pre);
+  if (effect) a.effect = ep.eff(*effect);
+  a.num_vars = ep.scope.num_slots();
+  d.actions.push_back(std::move(a));
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- Domain
+
+Domain parse_domain(const std::string& text, const std::string& file) {
+  auto top = read_sexprs(text, file);
+  if (top.size() != 1 || !top[0].is_list || top[0].head() != "define")
+    throw InputError(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (domain NAME) ...)");
+  const SExpr& def = top[0];
+  Domain d;
+  d.file = file;
+  d.types.push_back(TypeDef{"object", -1});
+  if (def.items.size() < 2 || !def.items[1].is_list || def.items[1].head() != "domain" || def.items[1].items.size() != 2)
+    fail(def, "expected (domain NAME) after define");
+  d.name = def.items[1].items[1].atom;
+  // Sections in any order, but types before their users: do two passes.
+  for (size_t i = 2; i < def.items.size(); ++i) {
+    const SExpr& sec = expect_list(def.items[i], "a domain section");
+    const std::string& h = sec.head();
+    if (h == ":requirements") {
+      for (size_t j = 1; j < sec.items.size(); ++j) {
+        const std::string& r = sec.items[j].atom;
+        if (!kSupportedRequirements.count(r)) fail(sec.items[j], "unsupported requirement '" + r + "'");
+        d.requirements.push_back(r);
+      }
+    } else if (h == ":types") {
+      parse_types(d, sec);
+    }
+  }
+  for (size_t i = 2; i < def.items.size(); ++i) {
+    const SExpr& sec = def.items[i];
+    const std::string& h = sec.head();
+    if (h == ":requirements" || h == ":types") continue;
+    if (h == ":constants") {
+      for (auto& tn : typed_list(sec.items, 1, sec)) {
+        for (auto& c : d.constants)
+          if (c.name == tn.name) throw InputError(tn.loc, "constant '" + tn.name + "' declared twice");
+        d.constants.push_back(ObjectDef{tn.name, type_of_name(d, tn), true});
+      }
+    } else if (h == ":predicates") {
+      parse_predicates(d, sec);
+    } else if (h == ":functions") {
+      parse_functions(d, sec);
+    } else if (h == ":action") {
+      continue;  // after everything is declared
+    } else {
+      fail(sec, "unknown or unsupported domain section '" + h + "'");
+    }
+  }
+  if (auto tc = d.find_function("total-cost"); tc && d.functions[*tc].arg_types.empty()) d.total_cost = *tc;
+  for (size_t i = 2; i < def.items.size(); ++i)
+    if (def.items[i].head() == ":action") parse_action(d, def.items[i]);
+  return d;
+}
+
+Domain load_domain(const std::string& path) { return parse_domain(read_text_file(path), path); }
+
+// ---------------------------------------------------------------- Problem
+
+Problem parse_problem(const Domain& d, const std::string& text, const std::string& file, bool with_goal) {
+  auto top = read_sexprs(text, file);
+  if (top.size() != 1 || !top[0].is_list || top[0].head() != "define")
+    throw InputError(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (problem NAME) ...)");
+  const SExpr& def = top[0];
+  Problem p;
+  p.file = file;
+  p.objects = d.constants;
+  if (def.items.size() < 2 || !def.items[1].is_list || def.items[1].head() != "problem" || def.items[1].items.size() != 2)
+    fail(def, "expected (problem NAME) after define");
+  p.name = def.items[1].items[1].atom;
+  for (size_t i = 2; i < def.items.size(); ++i) {
+    const SExpr& sec = expect_list(def.items[i], "a problem section");
+    if (sec.head() == ":domain") {
+      if (sec.items.size() != 2 || sec.items[1].atom != d.name)
+        fail(sec, "problem is for domain '" + (sec.items.size() > 1 ? sec.items[1].str() : std::string("?")) +
+                      "' but the domain file defines '" + d.name + "'");
+    } else if (sec.head() == ":objects") {
+      for (auto& tn : typed_list(sec.items, 1, sec)) {
+        if (p.find_object(tn.name)) throw InputError(tn.loc, "object '" + tn.name + "' declared twice");
+        p.objects.push_back(ObjectDef{tn.name, type_of_name(d, tn), false});
+      }
+    }
+  }
+  ExprParser ep(d, &p);
+  for (size_t i = 2; i < def.items.size(); ++i) {
+    const SExpr& sec = def.items[i];
+    const std::string& h = sec.head();
+    if (h == ":domain" || h == ":objects") continue;
+    if (h == ":init") {
+      for (size_t j = 1; j < sec.items.size(); ++j) {
+        const SExpr& f = expect_list(sec.items[j], "an initial fact");
+        if (f.head() == "=") {
+          if (f.items.size() != 3) fail(f, "expected (= (function args) value)");
+          const SExpr& target = f.items[1];
+          std::string fname = target.is_list ? target.head() : target.atom;
+          auto fid = d.find_function(fname);
+          if (!fid) fail(target, "unknown function '" + fname + "'");
+          InitFluent in{*fid, {}, {}, f.loc};
+          if (target.is_list) {
+            for (auto& r : ep.args_for(target, d.functions[*fid].arg_types, "function '" + fname + "'"))
+              in.args.push_back(r.index);
+          } else if (!d.functions[*fid].arg_types.empty()) {
+            fail(target, "arity mismatch: function '" + fname + "' needs arguments");
+          }
+          in.value = ep.num(f.items[2]);
+          p.init_fluents.push_back(std::move(in));
+        } else if (f.head() == "not") {
+          continue;  // closed world: negative facts are the default
+        } else {
+          auto pid = d.find_predicate(f.head());
+          if (!pid) fail(f, "unknown predicate '" + f.head() + "'");
+          InitAtom a{*pid, {}, f.loc};
+          for (auto& r : ep.args_for(f, d.predicates[*pid].arg_types, "predicate '" + f.head() + "'"))
+            a.args.push_back(r.index);
+          p.init_atoms.push_back(std::move(a));
+        }
+      }
+    } else if (h == ":goal") {
+      if (sec.items.size() != 2) fail(sec, "expected (:goal condition)");
+      p.goal_sexpr = sec.items[1];
+      if (with_goal) {
+        p.goal = ep.cond(sec.items[1]);
+        p.goal_num_vars = ep.scope.num_slots();
+      }
+    } else if (h == ":metric") {
+      continue;  // costs come from specifications, not the problem
+    } else {
+      fail(sec, "unknown or unsupported problem section '" + h + "'");
+    }
+  }
+  return p;
+}
+
+Problem load_problem(const Domain& d, const std::string& path, bool with_goal) {
+  return parse_problem(d, read_text_file(path), path, with_goal);
+}
+
+Condition parse_condition(const Domain& d, const Problem& p, const SExpr& e, int* num_vars) {
+  ExprParser ep(d, &p);
+  Condition c = ep.cond(e);
+  if (num_vars) *num_vars = ep.scope.num_slots();
+  return c;
+}
+
+Condition parse_condition_text(const Domain& d, const Problem& p, const std::string& text,
+                               const std::string& label, int* num_vars) {
+  return parse_condition(d, p, read_one_sexpr(text, label), num_vars);
+}
+
+// ---------------------------------------------------------------- Printing
+
+namespace {
+
+struct Printer {
+  const Domain& d;
+  const Problem& p;
+  std::vector<std::string> names;
+  const std::vector<ObjectId>* binding;
+
+  std::string term(const TermRef& t) const {
+    if (!t.is_var) return p.objects[t.index].name;
+    if (binding && t.index < static_cast<int>(binding->size()) && (*binding)[t.index] >= 0)
+      return p.objects[(*binding)[t.index]].name;
+    return "?" + (t.index < static_cast<int>(names.size()) ? names[t.index] : std::to_string(t.index));
+  }
+  std::string num(const NumExpr& x) const {
+    using K = NumExpr::Kind;
+    auto kids = [&](const char* op) {
+      std::string s = std::string("(") + op;
+      for (auto& k : x.kids) s += " " + num(k);
+      return s + ")";
+    };
+    switch (x.kind) {
+      case K::Const: return x.boolean ? (x.value ? "true" : "false") : std::to_string(x.value);
+      case K::Object: return term(x.args[0]);
+      case K::Fluent: {
+        if (x.args.empty()) return d.functions[x.func].name;
+        std::string s = "(" + d.functions[x.func].name;
+        for (auto& a : x.args) s += " " + term(a);
+        return s + ")";
+      }
+      case K::Add: return kids("+");
+      case K::Sub: case K::Neg: return kids("-");
+      case K::Mul: return kids("*");
+      case K::Div: return kids("/");
+      case K::NewMatrix: return kids("new-bit-matrix");
+      case K::SetIndex: return kids("set-index");
+      case K::GetIndex: return kids("get-index");
+      case K::Width: return kids("width");
+      case K::Height: return kids("height");
+    }
+    return "?";
+  }
+  std::string cond(const Condition& c) {
+    using K = Condition::Kind;
+    auto list = [&](const char* op) {
+      std::string s = std::string("(") + op;
+      for (auto& k : c.kids) s += " " + cond(k);
+      return s + ")";
+    };
+    auto cmp = [&](const char* op) { return std::string("(") + op + " " + num(c.nums[0]) + " " + num(c.nums[1]) + ")"; };
+    switch (c.kind) {
+      case K::True: return "(and)";
+      case K::False: return "(or)";
+      case K::Atom: {
+        std::string s = "(" + d.predicates[c.pred].name;
+        for (auto& a : c.args) s += " " + term(a);
+        return s + ")";
+      }
+      case K::Not: return list("not");
+      case K::And: return list("and");
+      case K::Or: return list("or");
+      case K::Imply: return list("imply");
+      case K::Exists: case K::Forall: {
+        for (size_t i = 0; i < c.var_names.size(); ++i) {
+          size_t slot = c.first_var + i;
+          if (names.size() <= slot) names.resize(slot + 1);
+          names[slot] = c.var_names[i];
+        }
+        std::string s = c.kind == K::Exists ? "(exists (" : "(forall (";
+        for (size_t i = 0; i < c.var_names.size(); ++i) {
+          if (i) s += " ";
+          s += "?" + c.var_names[i] + " - " + d.types[c.var_types[i]].name;
+        }
+        // Quantified variables are never bound by the caller's binding.
+        auto saved = binding;
+        std::vector<ObjectId> masked;
+        if (binding) {
+          masked = *binding;
+          for (size_t i = 0; i < c.var_names.size(); ++i)
+            if (c.first_var + i < masked.size()) masked[c.first_var + i] = -1;
+          binding = &masked;
+        }
+        s += ") " + cond(c.kids[0]) + ")";
+        binding = saved;
+        return s;
+      }
+      case K::Equal: return cmp("=");
+      case K::Less: return cmp("<");
+      case K::LessEq: return cmp("<=");
+      case K::Greater: return cmp(">");
+      case K::GreaterEq: return cmp(">=");
+    }
+    return "?";
+  }
+};
+
+}  // namespace
+
+std::string to_pddl(const Domain& d, const Problem& p, const Condition& c,
+                    const std::vector<std::string>& var_names, const std::vector<ObjectId>* binding) {
+  Printer pr{d, p, var_names, binding};
+  return pr.cond(c);
+}
+
+}  // namespace clips::pddl

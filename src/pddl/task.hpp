@@ -1,0 +1,206 @@
+#pragma once
+// The grounded task: a domain + problem compiled for fast simulation.
+//
+//   Task        owns the lifted Domain/Problem, the table of dynamic atoms (one
+//               bit each in a State) and dynamic numeric fluents (int16 slots),
+//               the folded static facts, and the ground actions.
+//   GroundAction  name + argument objects, a compiled precondition, compiled
+//               effects (unconditional add/delete/numeric, plus conditional
+//               ones) and the set of its `active`-style trigger bit.
+//   CondId      a compiled condition (precondition, goal, any formula) in the
+//               task's expression pool; evaluated directly on state words.
+//
+// Grounding runs in two passes: the first folds predicates and functions that
+// no action schema changes; the second also folds ground atoms and fluents
+// that no surviving ground action changes (e.g. (has robot gem1) when the robot
+// may never hold gems). Predicates listed in GroundingOptions::keep_dynamic stay
+// in the state even if no action changes them, because callers set them on
+// copies of states (e.g. `frozen` in the assistance simulations).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "pddl/ast.hpp"
+#include "pddl/state.hpp"
+
+namespace clips::pddl {
+
+using ActionId = int;
+using CondId = int;
+
+struct GroundingOptions {
+  std::set<std::string> keep_dynamic;       // predicate names kept as state bits
+  std::vector<std::string> schema_order;    // enumeration order of schemas (default: declared)
+  bool first_param_fastest = false;         // vary the first parameter fastest
+  bool objects_by_name = false;             // order objects by name instead of declaration
+};
+
+struct BitMatrix {
+  int rows = 0, cols = 0;
+  std::vector<uint8_t> cells;  // row-major
+  bool get(int r, int c) const { return cells[static_cast<size_t>(r) * cols + c] != 0; }
+};
+
+struct NumericEffect {
+  enum class Op : uint8_t { Assign, Increase, Decrease, ScaleUp, ScaleDown };
+  Op op = Op::Assign;
+  int slot = 0;
+  int expr = 0;  // index into the numeric pool
+};
+
+struct EffectList {
+  std::vector<int> add, del;  // atom bits
+  std::vector<NumericEffect> num;
+};
+
+struct ConditionalEffect {
+  CondId cond = 0;
+  EffectList eff;
+};
+
+struct GroundAction {
+  int schema = 0;
+  std::vector<ObjectId> args;
+  CondId pre = 0;
+  EffectList eff;
+  std::vector<ConditionalEffect> cond_eff;
+  double cost = 0;  // from (increase (total-cost) n), 0 without :action-costs
+  int trigger_bit = -1;  // a positive atom every applicable state has, or -1
+};
+
+class Task {
+ public:
+  Task(std::shared_ptr<const Domain> domain, std::shared_ptr<const Problem> problem,
+       const GroundingOptions& opts = {});
+
+  const Domain& domain() const { return *domain_; }
+  const Problem& problem() const { return *problem_; }
+  const GroundingOptions& options() const { return opts_; }
+
+  // ---- layout
+  int num_atoms() const { return static_cast<int>(atoms_.size()); }
+  int num_fluents() const { return static_cast<int>(fluents_.size()); }
+  int num_words() const { return num_words_; }
+  int fluent_base() const { return atom_words_; }
+
+  // ---- objects
+  int num_objects() const { return static_cast<int>(problem_->objects.size()); }
+  const std::string& object_name(ObjectId o) const { return problem_->objects[o].name; }
+  std::optional<ObjectId> find_object(const std::string& name) const { return problem_->find_object(name); }
+  bool object_is_a(ObjectId o, const std::string& type) const;
+  std::vector<ObjectId> objects_of_type(const std::string& type) const;
+
+  // ---- atoms and fluents: dynamic ones have a bit/slot; static ones a value
+  struct AtomRef {
+    int bit = -1;          // >= 0 when dynamic
+    bool value = false;    // the folded value when static
+  };
+  AtomRef atom(const std::string& pred, const std::vector<std::string>& args) const;
+  AtomRef atom(PredId pred, const std::vector<ObjectId>& args) const;
+  struct FluentRef {
+    int slot = -1;         // >= 0 when dynamic
+    int64_t value = 0;     // the folded value when static (ints)
+    const BitMatrix* matrix = nullptr;  // static bit-matrix value
+  };
+  FluentRef fluent(const std::string& func, const std::vector<std::string>& args) const;
+  FluentRef fluent(FuncId func, const std::vector<ObjectId>& args) const;
+  std::string atom_str(int bit) const;
+  std::string fluent_str(int slot) const;
+
+  bool test(const State& s, const AtomRef& a) const { return a.bit < 0 ? a.value : get_bit(s.data(), a.bit); }
+  int64_t value(const State& s, const FluentRef& f) const {
+    return f.slot < 0 ? f.value : get_num(s.data(), atom_words_, f.slot);
+  }
+  // Sets a dynamic atom (throws if it is static and the value differs).
+  void set(State& s, const AtomRef& a, bool v) const;
+  void set(State& s, const FluentRef& f, int64_t v) const;
+
+  // ---- states
+  State initial_state() const;
+  State empty_state() const { return State{std::vector<uint64_t>(num_words_, 0)}; }
+  std::string state_str(const State& s) const;  // true atoms and fluent values
+
+  // ---- actions
+  int num_actions() const { return static_cast<int>(actions_.size()); }
+  const GroundAction& action(ActionId a) const { return actions_[a]; }
+  std::string action_name(ActionId a) const;  // e.g. "(handover robot human key1)"
+  std::optional<ActionId> find_action(const std::string& text) const;  // parses "(name args)"
+  std::optional<ActionId> find_action(int schema, const std::vector<ObjectId>& args) const;
+
+  bool applicable(ActionId a, const uint64_t* s) const { return eval(actions_[a].pre, s); }
+  void apply(ActionId a, const uint64_t* src, uint64_t* dst) const;
+  State apply(const State& s, ActionId a) const;
+  // Applicable actions in enumeration order.
+  void applicable_actions(const uint64_t* s, std::vector<ActionId>& out) const;
+  std::vector<ActionId> applicable_actions(const State& s) const;
+
+  // ---- conditions
+  CondId compile(const Condition& c, std::vector<ObjectId> binding) const;
+  CondId compile_text(const std::string& text, const std::string& label = "<condition>") const;
+  bool eval(CondId c, const uint64_t* s) const;
+  bool holds(const State& s, CondId c) const { return eval(c, s.data()); }
+  bool is_const_true(CondId c) const { return c == kTrue; }
+  bool is_const_false(CondId c) const { return c == kFalse; }
+
+  // Why an action cannot be taken in `s`: the first top-level conjunct of its
+  // lifted precondition that is false, printed with the action's objects; ""
+  // if it is applicable.
+  std::string explain_inapplicable(int schema, const std::vector<ObjectId>& args, const State& s) const;
+
+  // Compiled expression pool (public for heuristics that inspect structure).
+  struct CNode {
+    enum Op : uint8_t { True, False, Atom, NotAtom, And, Or, Not, Eq, Ne, Lt, Le, Gt, Ge };
+    Op op;
+    int a = 0, b = 0;  // Atom: bit; And/Or: kids range [a, a+b); Not: kid a; Cmp: num nodes a, b
+  };
+  struct NNode {
+    enum Op : uint8_t { Const, Fluent, Add, Sub, Mul, Div, Neg, GetIndex };
+    Op op;
+    int64_t v = 0;  // Const value; Fluent slot; GetIndex matrix index
+    int a = 0, b = 0;
+  };
+  const CNode& cnode(CondId c) const { return cnodes_[c]; }
+  const std::vector<int>& ckids() const { return ckids_; }
+
+ private:
+  friend class Grounder;
+  static constexpr CondId kTrue = 0, kFalse = 1;
+
+  int64_t eval_num(int n, const uint64_t* s) const;
+  void apply_list(const EffectList& e, const uint64_t* src, uint64_t* dst, bool adds) const;
+
+  std::shared_ptr<const Domain> domain_;
+  std::shared_ptr<const Problem> problem_;
+  GroundingOptions opts_;
+
+  // atoms_/fluents_: dynamic ones, index = bit/slot
+  std::vector<std::pair<PredId, std::vector<ObjectId>>> atoms_;
+  std::vector<std::pair<FuncId, std::vector<ObjectId>>> fluents_;
+  std::map<std::vector<int>, int> atom_index_;    // [pred, args...] -> bit
+  std::map<std::vector<int>, int> fluent_index_;  // [func, args...] -> slot
+  std::set<std::vector<int>> static_true_;        // [pred, args...] true in init
+  std::map<std::vector<int>, int64_t> static_int_;
+  std::map<std::vector<int>, int> static_matrix_;  // -> matrices_ index
+  std::vector<BitMatrix> matrices_;
+  std::set<int> dynamic_preds_;                    // predicate-level dynamic
+  std::set<int> dynamic_funcs_;
+  std::vector<int64_t> init_fluent_values_;        // per dynamic slot
+  std::vector<int> init_bits_;
+  int atom_words_ = 0, num_words_ = 0;
+
+  std::vector<GroundAction> actions_;
+  std::map<std::vector<int>, ActionId> action_index_;  // [schema, args...] -> id
+  std::vector<std::pair<int, std::vector<ActionId>>> trigger_groups_;  // bit -> actions
+  std::vector<ActionId> untriggered_;
+
+  mutable std::vector<CNode> cnodes_;
+  mutable std::vector<int> ckids_;
+  mutable std::vector<NNode> nnodes_;
+  mutable std::map<std::string, CondId> text_cache_;
+};
+
+}  // namespace clips::pddl

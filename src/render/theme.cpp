@@ -1,0 +1,85 @@
+#include "render/theme.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+namespace clips::render {
+namespace {
+
+struct Named {
+  std::string_view name;
+  Rgb rgb;
+};
+constexpr std::array<Named, 5> kNamed{{{"red", {214, 46, 46}},
+                                      {"yellow", {242, 188, 22}},
+                                      {"blue", {38, 102, 214}},
+                                      {"green", {38, 158, 70}},
+                                      {"pink", {236, 108, 178}}}};
+
+constexpr std::array<Rgb, 12> kPastels{{{255, 196, 160}, {255, 226, 150}, {196, 230, 160},
+                                        {160, 220, 210}, {168, 200, 245}, {206, 186, 240},
+                                        {245, 180, 210}, {230, 205, 170}, {200, 210, 220},
+                                        {250, 170, 160}, {215, 225, 140}, {180, 180, 235}}};
+
+// The VirtualHome item types, assigned so that the types of one problem
+// never share a colour; other types fall back to a hash.
+constexpr std::array<std::pair<std::string_view, int>, 19> kItemTypes{{
+    {"onion", 0}, {"tomato", 9}, {"potato", 7}, {"carrot", 1}, {"wine", 5}, {"chicken", 6},
+    {"salmon", 4}, {"cucumber", 2}, {"cuttingboard", 10}, {"chefknife", 8}, {"cutleryknife", 3},
+    {"cutleryfork", 11}, {"plate", 4}, {"bowl", 1}, {"juice", 1}, {"cupcake", 6},
+    {"cheese", 10}, {"wineglass", 3}, {"waterglass", 8}}};
+
+std::uint8_t clamp_byte(double v) {
+  return static_cast<std::uint8_t>(std::clamp(v + 0.5, 0.0, 255.0));
+}
+
+}  // namespace
+
+Rgb named_colour(std::string_view name) {
+  std::string lower(name);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const auto& n : kNamed)
+    if (n.name == lower) return n.rgb;
+  return theme::neutral;
+}
+
+Rgb shade(Rgb c, double f) {
+  return {clamp_byte(c.r * f), clamp_byte(c.g * f), clamp_byte(c.b * f)};
+}
+
+Rgb tint(Rgb c, double a) {
+  return {clamp_byte(c.r + (255 - c.r) * a), clamp_byte(c.g + (255 - c.g) * a),
+          clamp_byte(c.b + (255 - c.b) * a)};
+}
+
+Rgb item_colour(std::string_view type) {
+  for (const auto& [name, i] : kItemTypes)
+    if (name == type) return kPastels[i];
+  std::uint32_t h = 2166136261u;  // FNV-1a: stable, unlike std::hash
+  for (char c : type) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+  return kPastels[h % kPastels.size()];
+}
+
+std::vector<Rgb> theme_colours() {
+  using namespace theme;
+  std::vector<Rgb> out{background, floor, gridline, wall, wall_edge, text, muted, human,
+                       shade(human, 0.6), robot, shade(robot, 0.6), robot_eye, marker,
+                       track, panel, panel_edge, neutral, shade(neutral, 0.6), table, fridge, cabinet,
+                       tint(marker, 0.8)};
+  for (const auto& n : kNamed) {
+    out.push_back(n.rgb);
+    out.push_back(shade(n.rgb, 0.6));
+    out.push_back(tint(n.rgb, 0.78));  // open doors
+  }
+  for (const auto& p : kPastels) out.push_back(p);
+  std::vector<Rgb> unique;
+  for (const auto& c : out)
+    if (std::find(unique.begin(), unique.end(), c) == unique.end()) unique.push_back(c);
+  return unique;
+}
+
+}  // namespace clips::render

@@ -1,0 +1,48 @@
+// The fixed colour set of all renderings. The GIF palette is built from it,
+// so flat areas quantise exactly.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "render/image.hpp"
+
+namespace clips::render {
+
+namespace theme {
+inline constexpr Rgb background{255, 255, 255};
+inline constexpr Rgb floor{246, 243, 235};
+inline constexpr Rgb gridline{222, 216, 202};
+inline constexpr Rgb wall{56, 58, 72};
+inline constexpr Rgb wall_edge{82, 85, 102};
+inline constexpr Rgb text{33, 33, 40};
+inline constexpr Rgb muted{112, 112, 124};
+inline constexpr Rgb human{128, 62, 168};
+inline constexpr Rgb robot{72, 88, 104};
+inline constexpr Rgb robot_eye{120, 230, 255};
+inline constexpr Rgb marker{255, 140, 0};
+inline constexpr Rgb track{230, 230, 236};
+inline constexpr Rgb panel{250, 248, 242};
+inline constexpr Rgb panel_edge{205, 200, 188};
+inline constexpr Rgb neutral{150, 150, 160};
+inline constexpr Rgb table{205, 160, 110};
+inline constexpr Rgb fridge{168, 206, 232};
+inline constexpr Rgb cabinet{206, 196, 180};
+}  // namespace theme
+
+// "red", "yellow", "blue", "green", "pink" (case-insensitive); anything else,
+// including "", gives theme::neutral.
+Rgb named_colour(std::string_view name);
+
+// Darker / lighter shades used for outlines and highlights.
+Rgb shade(Rgb c, double factor);   // factor < 1 darkens
+Rgb tint(Rgb c, double amount);    // mixes towards white, amount in [0,1]
+
+// Every colour the renderers paint as a flat area (theme, named colours and
+// their shades, pastel item colours), without duplicates.
+std::vector<Rgb> theme_colours();
+
+// Pastel colour of a VirtualHome item type, e.g. "plate" (stable across runs).
+Rgb item_colour(std::string_view item_type);
+
+}  // namespace clips::render

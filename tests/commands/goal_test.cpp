@@ -1,0 +1,73 @@
+// Commands as goal formulas (spec 9.9, VH spec 7.4).
+#include <gtest/gtest.h>
+
+#include "commands/fixtures.hpp"
+#include "language/commands/enumerate.hpp"
+
+namespace clips::commands {
+namespace {
+
+using testing::salient_of;
+
+const char* kColours = "(iscolor key1 blue) (iscolor key2 red) (iscolor key3 blue) (iscolor door1 red)";
+
+Command dkg_command(const std::string& plan) {
+  const auto config = doors_keys_gems_language();
+  return lift_command(salient_of(plan, kColours, config), config, testing::dkg_type_of);
+}
+
+TEST(GoalFormula, HandOverBlueKeyIsExistential) {
+  const Command cmd = dkg_command("(handover robot human key1)");
+  EXPECT_EQ(cmd.display_form(), "(handover you me ?key1) where (iscolor ?key1 blue)");
+  EXPECT_EQ(cmd.to_goal_formula(doors_keys_gems_language()),
+            "(exists (?key1 - key) (and (has human ?key1) (pickedup-by robot ?key1) (iscolor ?key1 blue)))");
+}
+
+TEST(GoalFormula, ChainKeepsRepeatedPredicates) {
+  const Command cmd = dkg_command("(pickup robot key2) (handover robot human key2)");
+  EXPECT_EQ(cmd.to_goal_formula(doors_keys_gems_language()),
+            "(exists (?key1 - key) (and (has robot ?key1) (has human ?key1) (pickedup-by robot ?key1)"
+            " (iscolor ?key1 red) (iscolor ?key1 red)))");
+}
+
+TEST(GoalFormula, VariablesArePairwiseDistinct) {
+  const Command cmd = dkg_command("(unlock robot key2 door1) (pickup robot key3)");
+  EXPECT_EQ(cmd.to_goal_formula(doors_keys_gems_language()),
+            "(exists (?key1 - key ?door1 - door ?key2 - key) (and (unlocked-by robot ?door1)"
+            " (unlocked-with ?key1 ?door1) (has robot ?key2) (not (= ?key1 ?door1)) (not (= ?key1 ?key2))"
+            " (not (= ?door1 ?key2)) (iscolor ?door1 red) (iscolor ?key2 blue)))");
+}
+
+TEST(GoalFormula, SpeakerActionsMapBackToTheSpeaker) {
+  Command cmd = dkg_command("(handover robot human key1)");
+  cmd.actions = testing::terms("(pickup me ?key1)");
+  EXPECT_EQ(cmd.to_goal_formula(doors_keys_gems_language()),
+            "(exists (?key1 - key) (and (has human ?key1) (iscolor ?key1 blue)))");
+}
+
+TEST(GoalFormula, GroundCommandIsAConjunction) {
+  Command cmd;
+  cmd.actions = testing::terms("(pickup you key1) (unlock you key2 door1)");
+  EXPECT_EQ(cmd.to_goal_formula(doors_keys_gems_language()),
+            "(and (has robot key1) (unlocked-by robot door1) (unlocked-with key2 door1))");
+}
+
+TEST(GoalFormula, VirtualHomeNamesObjectsAfterVariables) {
+  const auto config = virtual_home_language();
+  const auto salient = salient_of(
+      "(grab helper plate3 cabinet2) (grab helper plate4 cabinet2) (grab helper cutleryfork2 table1)",
+      "(itemtype plate3 plate) (itemtype plate4 plate) (itemtype cutleryfork2 cutleryfork)", config);
+  const Command cmd = lift_command(salient, config, testing::vh_type_of);
+  // Quirk: "two plates and a fork" means plate1, plate2 and cutleryfork1 whatever was grabbed.
+  EXPECT_EQ(cmd.to_goal_formula(config),
+            "(and (placed plate1 table1) (placed plate2 table1) (placed cutleryfork1 table1))");
+}
+
+TEST(GoalFormula, UnknownActionIsAnError) {
+  Command cmd;
+  cmd.actions = testing::terms("(open you ?door1)");
+  EXPECT_THROW(cmd.to_goal_formula(doors_keys_gems_language()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace clips::commands
