@@ -47,8 +47,10 @@ REQUEST_FRAMES = [
 ]
 
 
-def request(vp):
+def request(vp, action=None):
     f = rng.choice(REQUEST_FRAMES)
+    while f == "{VP} for me." and action == "pickup":
+        f = rng.choice(REQUEST_FRAMES)
     if f == "Go {vp}." and not vp.split()[0] in ("get", "grab", "fetch", "find", "pick", "open", "unlock"):
         f = "{VP}."
     if f == "{VP} for me." and ("me" in vp.split() or "for me" in vp):
@@ -105,7 +107,9 @@ HANDOVER_VERBS = ["pass me {np}", "hand me {np}", "give me {np}", "bring me {np}
                   "get {np} for me", "bring {np} over here", "bring {np} here", "deliver {np} to me",
                   "toss me {np}", "send {np} my way", "pick up {np} and bring it to me",
                   "get {np} and give it to me", "fetch {np} for me", "look for {np} and bring it here",
-                  "pass over {np}", "bring me back {np}", "go get me {np}"]
+                  "pass over {np}", "bring me back {np}", "go get me {np}", "grab {np} for me",
+                  "go grab me {np}", "grab me {np}", "find {np} for me", "look for {np} for me",
+                  "find me {np}", "get me {np}"]
 HANDOVER_STATEMENTS = ["I need {np}.", "I want {np}.", "Can I have {np}?", "Let me have {np}.",
                        "I could use {np}.", "I'd like {np}.", "May I have {np}?", "I need {np}, please.",
                        "{NP} for me, please.", "Could I get {np}?", "I'm looking for {np}, can you help?",
@@ -142,7 +146,7 @@ def single_sentence(action, np, n=1):
     if action == "unlock" and r < 0.18:
         s = rng.choice(UNLOCK_STATEMENTS)
         return s.replace("{NP}", cap(np)).replace("{np}", np)
-    return request(vp_for(action, np, n))
+    return request(vp_for(action, np, n), action)
 
 
 class Cmd:
@@ -521,6 +525,12 @@ def build_vh():
         else:
             np = vh_list([vh_np(a, na), vh_np(b, nb)])
         rows.append((cmd, vh_sentence(np)))
+    cats = sorted(CATEGORY.items(), key=lambda kv: sorted(kv[0]))
+    for _ in range(45):  # category words for two related types
+        key, words = rng.choice(cats)
+        a, b = sorted(key)
+        np = rng.choice(["the ", "some ", ""]) + rng.choice(words)
+        rows.append((vh_command([(a, 1), (b, 1)] if rng.random() < 0.5 else [(b, 1), (a, 1)]), vh_sentence(np)))
     for _ in range(60):  # three or four items: one type, or two types (enumeration rule)
         a, b = rng.sample(types, 2)
         shape = rng.choice([[(a, 2), (b, 1)], [(a, 1), (b, 2)], [(a, 3)], [(a, 2), (b, 2)], [(a, 3), (b, 1)]])

@@ -14,5 +14,6 @@ std::string default_dataset_hint();
 
 void register_validate(CLI::App& app);
 void register_show(CLI::App& app);
+void register_plan(CLI::App& app);
 
 }  // namespace clips::app

@@ -109,6 +109,9 @@ class Task {
   FluentRef fluent(const std::string& func, const std::vector<std::string>& args) const;
   FluentRef fluent(FuncId func, const std::vector<ObjectId>& args) const;
   std::string atom_str(int bit) const;
+  // The predicate and objects of a dynamic atom / function and objects of a fluent.
+  const std::pair<PredId, std::vector<ObjectId>>& atom_info(int bit) const { return atoms_[bit]; }
+  const std::pair<FuncId, std::vector<ObjectId>>& fluent_info(int slot) const { return fluents_[slot]; }
   std::string fluent_str(int slot) const;
 
   bool test(const State& s, const AtomRef& a) const { return a.bit < 0 ? a.value : get_bit(s.data(), a.bit); }

@@ -24,13 +24,14 @@ constexpr double kPiContent = 0.4;
 constexpr double kGenericShare = 0.08;  // share of GEN inside Content when groups are active
 constexpr double kMention = 0.85;       // rho
 constexpr double kRequestClause = 0.8;
-constexpr int kMaxEnumeratedGroups = 8;  // beyond this all groups are taken as mentioned
+constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
 
 // Field weights inside a group, renormalised over the fields present.
 constexpr double kWeightVerb = 0.3;
 constexpr double kWeightNoun = 0.35;
 constexpr double kWeightAttribute = 0.25;
 constexpr double kWeightNumber = 0.1;
+constexpr double kWeightRecipient = 0.3;  // relative to a group's fields, when mentioned
 
 // Dirichlet strengths of the lexical bases.
 constexpr double kKappaContent = 6.0;
@@ -114,6 +115,10 @@ std::string number_key(int count) { return "Q:" + std::to_string(std::min(count,
 WordDistribution base_for_key(const std::string& key) {
   if (key == "A:you") return agent_base(false);
   if (key == "A:me") return agent_base(true);
+  if (key == "P:me") {
+    return {{"me", 0.6}, {"my", 0.08}, {"here", 0.1}, {"way", 0.05}, {"myself", 0.02},
+            {"over", 0.05}, {"to", 0.05}, {"back", 0.05}};
+  }
   if (key.rfind("Q:", 0) == 0) return number_base(std::stoi(key.substr(2)));
   if (key.rfind("V:", 0) == 0) {
     const size_t slash = key.find('/');
@@ -159,8 +164,14 @@ struct AlignmentModel::Bound {
     std::string word;
     double weight;
   };
+  // A mentionable unit: an action group, or the recipient ("me") of a
+  // hand-over group, which the speaker may or may not put into words.
   struct Group {
     bool speaker;
+    int kind;         // 0 = action group, 1 = recipient, 2 = attribute value
+    int parent = -1;  // for an optional unit: index of its action group
+    double unit_weight = 0;  // its weight relative to the group's own fields (which sum to 1)
+    double log_on, log_off;
     std::vector<Field> fields;
     std::vector<Copy> copies;
   };
@@ -173,6 +184,8 @@ struct AlignmentModel::Counts {
   std::vector<double> bg;
   double copy = 0;
   double non_copy = 0;
+  double mention_on[3] = {0, 0, 0};
+  double mention_all[3] = {0, 0, 0};
   std::vector<std::vector<double>> length;  // [bucket][n]
 };
 
@@ -266,20 +279,43 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
   for (const FrameGroup& g : frame.groups) {
     Bound::Group bg;
     bg.speaker = g.agent == "me";
-    double z = kWeightVerb + (g.type.empty() ? 0 : kWeightNoun) +
-               (g.attributes.empty() ? 0 : kWeightAttribute) + (g.count >= 2 ? kWeightNumber : 0);
+    bg.kind = 0;
+    bg.log_on = std::log(mention_[0]);
+    bg.log_off = std::log(1 - mention_[0]);
+    // The group's own fields (verb, noun, number) sum to 1; each attribute value
+    // (colour) is an optional unit of the group with a relative weight, so an
+    // utterance that never says a colour pays the colour's mention odds rather
+    // than merely diluting the group.
+    const double z = kWeightVerb + (g.type.empty() ? 0 : kWeightNoun) + (g.count >= 2 ? kWeightNumber : 0);
     bg.fields.push_back(field_of(verb_key(g), kWeightVerb / z));
     if (!g.type.empty()) bg.fields.push_back(field_of(noun_key(g), kWeightNoun / z));
     if (g.count >= 2) bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
-    if (!g.attributes.empty()) {
-      const double each = kWeightAttribute / z / static_cast<double>(g.attributes.size());
-      for (const std::string& a : g.attributes) {
-        auto it = word_ids_.find(a);
-        bg.copies.push_back(Bound::Copy{it == word_ids_.end() ? -1 : it->second, a, each * copy_alpha_});
-      }
-      bg.fields.push_back(Bound::Field{residual, residual_index, kWeightAttribute / z * (1 - copy_alpha_), true});
-    }
+    const int parent = static_cast<int>(b->groups.size());
     b->groups.push_back(std::move(bg));
+    for (const std::string& a : g.attributes) {
+      Bound::Group at;
+      at.speaker = b->groups[static_cast<size_t>(parent)].speaker;
+      at.kind = 2;
+      at.parent = parent;
+      at.unit_weight = kWeightAttribute / z / static_cast<double>(g.attributes.size());
+      at.log_on = std::log(mention_[2]);
+      at.log_off = std::log(1 - mention_[2]);
+      auto it = word_ids_.find(a);
+      at.copies.push_back(Bound::Copy{it == word_ids_.end() ? -1 : it->second, a, copy_alpha_});
+      at.fields.push_back(Bound::Field{residual, residual_index, 1 - copy_alpha_, true});
+      b->groups.push_back(std::move(at));
+    }
+    if (g.to_speaker) {
+      Bound::Group rec;
+      rec.speaker = false;
+      rec.kind = 1;
+      rec.parent = parent;
+      rec.unit_weight = kWeightRecipient / z;
+      rec.log_on = std::log(mention_[1]);
+      rec.log_off = std::log(1 - mention_[1]);
+      rec.fields.push_back(field_of("P:me", 1.0));
+      b->groups.push_back(std::move(rec));
+    }
   }
   return b;
 }
@@ -308,7 +344,9 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
   const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
 
-  // Per-token source probabilities.
+  // Per-token source probabilities; p_group[g * n + i] is unit g's own emission
+  // (its fields' weights sum to 1 for an action group; for an optional unit
+  // such as a recipient it is that unit's table alone).
   std::vector<double> p_bg(n), p_you(n), p_me(n), p_gen(n), p_group(n * G);
   for (size_t i = 0; i < n; ++i) {
     const int id = u.ids[i];
@@ -318,43 +356,78 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     p_me[i] = a_me.at(id, w);
     p_gen[i] = gen.at(id, w);
     for (size_t g = 0; g < G; ++g) {
-      double s = 0;
-      for (const Bound::Field& f : c.groups[g].fields) s += f.weight * f.table->at(id, w);
+      double v = 0;
+      for (const Bound::Field& f : c.groups[g].fields) v += f.weight * f.table->at(id, w);
       for (const Bound::Copy& cp : c.groups[g].copies) {
-        if (id >= 0 ? id == cp.id : w == cp.word) s += cp.weight;
+        if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight;
       }
-      p_group[g * n + i] = s;
+      p_group[g * n + i] = v;
     }
   }
 
   const bool enumerate = G <= static_cast<size_t>(kMaxEnumeratedGroups);
-  const uint32_t first_mask = enumerate ? 0u : (1u << std::min<size_t>(G, 31)) - 1u;
-  const uint32_t end_mask = enumerate ? (1u << G) : first_mask + 1u;
+  const uint32_t all = G >= 32 ? ~0u : (1u << G) - 1u;
+  const uint32_t first_mask = enumerate ? 0u : all;
+  const uint32_t end_mask = enumerate ? all + 1u : all;  // exclusive; non-enumerated: one mask
   const size_t clauses = u.clause_end.size();
   const double log_req = std::log(kRequestClause);
   const double log_stm = std::log(1 - kRequestClause);
 
-  std::vector<double> mix(n * 2);
-  std::vector<double> log_m;
-  std::vector<double> clause_log;  // [mask][clause][type] when counting
-  log_m.reserve(end_mask - first_mask);
-  if (counts != nullptr) clause_log.resize(static_cast<size_t>(end_mask - first_mask) * clauses * 2);
-
-  for (uint32_t mask = first_mask; mask < end_mask; ++mask) {
-    double lp = 0;
-    int n_you = 0, n_me = 0;
+  // Mixture of one token under a mask and clause type; also returns, via
+  // `den`, each action group's normaliser (1 + weights of its optional units on).
+  std::vector<double> den(G, 1.0);
+  std::vector<char> on(G, 0);
+  auto setup_mask = [&](uint32_t mask, double& log_prior, int& n_you, int& n_me) -> bool {
+    log_prior = 0;
+    n_you = n_me = 0;
+    for (size_t g = 0; g < G; ++g) on[g] = static_cast<char>((mask >> g) & 1u);
     for (size_t g = 0; g < G; ++g) {
-      const bool on = (mask >> g) & 1u;
-      if (enumerate) lp += std::log(on ? kMention : 1 - kMention);
-      if (on) (c.groups[g].speaker ? n_me : n_you)++;
-    }
-    // Word mixtures for both clause types.
-    for (size_t i = 0; i < n; ++i) {
-      double s_you = 0, s_me = 0;
-      for (size_t g = 0; g < G; ++g) {
-        if (!((mask >> g) & 1u)) continue;
-        (c.groups[g].speaker ? s_me : s_you) += p_group[g * n + i];
+      const Bound::Group& grp = c.groups[g];
+      if (grp.parent >= 0) {
+        const bool parent_on = on[static_cast<size_t>(grp.parent)] != 0;
+        if (!parent_on) {
+          if (on[g]) return false;  // an optional unit needs its group
+          continue;
+        }
       }
+      if (enumerate) log_prior += on[g] ? grp.log_on : grp.log_off;
+    }
+    for (size_t g = 0; g < G; ++g) {
+      den[g] = 1.0;
+      if (c.groups[g].parent < 0 && on[g]) (c.groups[g].speaker ? n_me : n_you)++;
+    }
+    for (size_t g = 0; g < G; ++g) {
+      if (c.groups[g].parent >= 0 && on[g]) den[static_cast<size_t>(c.groups[g].parent)] += c.groups[g].unit_weight;
+    }
+    return true;
+  };
+  auto content_sum = [&](size_t i, bool speaker) {
+    double s = 0;
+    for (size_t g = 0; g < G; ++g) {
+      const Bound::Group& grp = c.groups[g];
+      if (!on[g]) continue;
+      const size_t owner = grp.parent >= 0 ? static_cast<size_t>(grp.parent) : g;
+      if (c.groups[owner].speaker != speaker) continue;
+      const double w = grp.parent >= 0 ? grp.unit_weight : 1.0;
+      s += w * p_group[g * n + i] / den[owner];
+    }
+    return s;
+  };
+
+  std::vector<double> mix(n * 2);
+  std::vector<double> log_m(static_cast<size_t>(end_mask - first_mask) + (enumerate ? 0 : 1),
+                            -std::numeric_limits<double>::infinity());
+  std::vector<double> clause_log;  // [mask][clause][type] when counting
+  if (counts != nullptr) clause_log.resize(log_m.size() * clauses * 2);
+
+  const uint32_t stop = enumerate ? end_mask : first_mask + 1u;
+  for (uint32_t mask = first_mask; mask != stop; ++mask) {
+    double lp;
+    int n_you, n_me;
+    if (!setup_mask(mask, lp, n_you, n_me)) continue;
+    for (size_t i = 0; i < n; ++i) {
+      const double s_you = content_sum(i, false);
+      const double s_me = content_sum(i, true);
       const double content_you =
           n_you > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_you / n_you : p_gen[i];
       const double content_me =
@@ -392,7 +465,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       }
       start = end;
     }
-    log_m.push_back(lp);
+    log_m[mask - first_mask] = lp;
   }
   double hi = -std::numeric_limits<double>::infinity();
   for (double v : log_m) hi = std::max(hi, v);
@@ -409,12 +482,17 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const int id_you = table_ids_.at("A:you");
   const int id_me = table_ids_.at("A:me");
   const int id_gen = table_ids_.at("GEN");
-  for (uint32_t mask = first_mask; mask < end_mask; ++mask) {
+  for (uint32_t mask = first_mask; mask != stop; ++mask) {
     const double pm = std::exp(log_m[mask - first_mask] - log_words);
-    if (pm < 1e-9) continue;
-    int n_you = 0, n_me = 0;
-    for (size_t g = 0; g < G; ++g) {
-      if ((mask >> g) & 1u) (c.groups[g].speaker ? n_me : n_you)++;
+    if (!(pm > 1e-9)) continue;
+    double lp_unused;
+    int n_you, n_me;
+    setup_mask(mask, lp_unused, n_you, n_me);
+    for (size_t g = 0; g < G && enumerate; ++g) {
+      const Bound::Group& grp = c.groups[g];
+      if (grp.parent >= 0 && !on[static_cast<size_t>(grp.parent)]) continue;
+      counts->mention_all[grp.kind] += weight * pm;
+      if (on[g]) counts->mention_on[grp.kind] += weight * pm;
     }
     size_t start = 0;
     for (size_t k = 0; k < clauses; ++k) {
@@ -429,12 +507,9 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           const int id = u.ids[i];
           if (id < 0) continue;  // training tokens are always in the vocabulary
           const double p_agent = speaker ? p_me[i] : p_you[i];
-          double s = 0;
-          for (size_t g = 0; g < G; ++g) {
-            if (((mask >> g) & 1u) && c.groups[g].speaker == speaker) s += p_group[g * n + i];
-          }
           const double gen_share = active > 0 ? kGenericShare : 1.0;
-          const double content = gen_share * p_gen[i] + (active > 0 ? (1 - kGenericShare) * s / active : 0.0);
+          const double content =
+              gen_share * p_gen[i] + (active > 0 ? (1 - kGenericShare) * content_sum(i, speaker) / active : 0.0);
           const double m = kPiBackground * p_bg[i] + kPiAgent * p_agent + kPiContent * content;
           if (m <= 0) continue;
           const double r = wt / m;
@@ -445,14 +520,18 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           if (active == 0) continue;
           const double share = r * kPiContent * (1 - kGenericShare) / active;
           for (size_t g = 0; g < G; ++g) {
-            if (!((mask >> g) & 1u) || c.groups[g].speaker != speaker) continue;
-            for (const Bound::Field& f : c.groups[g].fields) {
-              const double e = share * f.weight * f.table->at(id, u.words[i]);
+            const Bound::Group& grp = c.groups[g];
+            if (!on[g]) continue;
+            const size_t owner = grp.parent >= 0 ? static_cast<size_t>(grp.parent) : g;
+            if (c.groups[owner].speaker != speaker) continue;
+            const double unit = share * (grp.parent >= 0 ? grp.unit_weight : 1.0) / den[owner];
+            for (const Bound::Field& f : grp.fields) {
+              const double e = unit * f.weight * f.table->at(id, u.words[i]);
               if (f.table_index >= 0) counts->table[static_cast<size_t>(f.table_index)][uid] += e;
               if (f.residual) counts->non_copy += e;
             }
-            for (const Bound::Copy& cp : c.groups[g].copies) {
-              if (id == cp.id) counts->copy += share * cp.weight;
+            for (const Bound::Copy& cp : grp.copies) {
+              if (id == cp.id) counts->copy += unit * cp.weight;
             }
           }
         }
@@ -493,10 +572,16 @@ double AlignmentModel::next_token_mass(const std::string& command, bool mentione
   double groups = 0;
   int active = 0;
   for (const Bound::Group& g : c->groups) {
-    if (!mentioned_all || g.speaker == request_clause) continue;
-    ++active;
-    for (const Bound::Field& f : g.fields) groups += f.weight * table_mass(*f.table);
-    for (const Bound::Copy& cp : g.copies) groups += cp.weight;
+    const Bound::Group& owner = g.parent >= 0 ? c->groups[static_cast<size_t>(g.parent)] : g;
+    if (!mentioned_all || owner.speaker == request_clause) continue;
+    double den = 1;
+    for (const Bound::Group& h : c->groups) {
+      if (&c->groups[static_cast<size_t>(std::max(h.parent, 0))] == &owner && h.parent >= 0) den += h.unit_weight;
+    }
+    const double w = (g.parent >= 0 ? g.unit_weight : 1.0) / den;
+    if (g.parent < 0) ++active;
+    for (const Bound::Field& f : g.fields) groups += w * f.weight * table_mass(*f.table);
+    for (const Bound::Copy& cp : g.copies) groups += w * cp.weight;
   }
   const double content = active > 0 ? kGenericShare * gen + (1 - kGenericShare) * groups / active : gen;
   return kPiBackground * bg + kPiAgent * table_mass(agent) + kPiContent * content;
@@ -508,7 +593,9 @@ std::string AlignmentModel::explain(const std::string& command, const std::strin
   const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
   const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
   const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
-  std::string out = "alpha=" + std::to_string(copy_alpha_) + "\n";
+  std::string out = "alpha=" + std::to_string(copy_alpha_) + " rho_group=" + std::to_string(mention_[0]) +
+                    " rho_recipient=" + std::to_string(mention_[1]) +
+                    " rho_attribute=" + std::to_string(mention_[2]) + "\n";
   for (size_t i = 0; i < u.words.size(); ++i) {
     const int id = u.ids[i];
     const std::string& w = u.words[i];
@@ -551,7 +638,7 @@ struct Trainer {
     for (const auto& t : tokens) {
       for (const std::string& w : t) M.add_word(w);
     }
-    std::set<std::string> keys = {"A:you", "A:me"};
+    std::set<std::string> keys = {"A:you", "A:me", "P:me"};
     std::set<std::string> attributes;
     for (const CommandFrame& f : frames) {
       for (const FrameGroup& g : f.groups) {
@@ -642,22 +729,43 @@ struct Trainer {
     // words the lexicon lacks (WordNet has no grab -> pick up). The first E-step
     // uses a much larger floor, the usual uniform start of alignment models, so
     // that co-occurrence decides the first responsibilities.
-    std::vector<int> content_ids, function_ids;
+    // Verb fields may only learn verb-like words and noun fields noun-like ones:
+    // otherwise a noun field shared by several actions (N:key) soaks up their
+    // verbs ("grab") and the verb fields stop telling actions apart.
+    std::vector<int> content_ids, function_ids, noun_ids, verb_ids;
     for (size_t i = 0; i < V2; ++i) {
-      (is_function_word(M.words_[i]) ? function_ids : content_ids).push_back(static_cast<int>(i));
+      const std::string& w = M.words_[i];
+      if (is_function_word(w)) {
+        function_ids.push_back(static_cast<int>(i));
+        continue;
+      }
+      content_ids.push_back(static_cast<int>(i));
+      if (is_punctuation_token(w)) continue;
+      const WordNetLexicon::WordClass wc = WordNetLexicon::instance().word_class(w);
+      if (wc.noun_like) noun_ids.push_back(static_cast<int>(i));
+      if (wc.verb_like) verb_ids.push_back(static_cast<int>(i));
     }
     auto with_floor = [&](const WordDistribution& d, const std::vector<int>& floor_ids, double eps) {
       std::vector<std::pair<int, double>> out;
       for (const auto& [w, p] : d) out.emplace_back(M.word_ids_.at(w), (1 - eps) * p);
       for (int id : floor_ids) out.emplace_back(id, eps / static_cast<double>(floor_ids.size()));
+      if (floor_ids.empty()) {
+        for (auto& [id, p] : out) p /= 1 - eps;
+      }
       return out;
     };
     for (const auto& [k, d] : bases) {
       const int ti = M.table_index(k);
       AlignmentModel::Table& t = *M.tables_[static_cast<size_t>(ti)];
-      const bool agent = k[0] == 'A';
+      const bool agent = k[0] == 'A' || k[0] == 'P';
       t.kappa = agent ? kKappaAgent : k == "GEN" ? kKappaGeneric : kKappaContent;
-      const std::vector<int>& floor_ids = agent ? function_ids : content_ids;
+      // The recipient unit is a closed set of words ("me", "my way", "here").
+      static const std::vector<int> no_floor;
+      const std::vector<int>& floor_ids = k[0] == 'P'   ? no_floor
+                                          : agent       ? function_ids
+                                          : k[0] == 'N' ? noun_ids
+                                          : k[0] == 'V' ? verb_ids
+                                                        : content_ids;
       t.base = with_floor(d, floor_ids, kBaseFloor);
       t.prob.assign(V2, 0.0);
       // GEN starts flat: it must not out-compete the command's own fields for
@@ -723,6 +831,10 @@ struct Trainer {
         for (const auto& [id, p] : t.base) t.prob[static_cast<size_t>(id)] += t.kappa * p / (total + t.kappa);
       }
       set_background(counts.bg);
+      for (int kind = 0; kind < 3; ++kind) {
+        M.mention_[kind] = (counts.mention_on[kind] + 2 * kMention) / (counts.mention_all[kind] + 2);
+        M.mention_[kind] = std::clamp(M.mention_[kind], 0.05, 0.95);
+      }
       M.copy_alpha_ = (counts.copy + kAlphaPriorCopy) /
                       (counts.copy + counts.non_copy + kAlphaPriorCopy + kAlphaPriorOther);
       fit_length(M, counts.length);

@@ -120,6 +120,7 @@ class AlignmentModel {
   std::vector<std::unique_ptr<Table>> tables_;
   std::unordered_map<std::string, int> table_ids_;
   double copy_alpha_ = 0.8;
+  double mention_[3] = {0.85, 0.85, 0.85};  // rho: action groups, recipients, attribute values
   std::vector<std::vector<double>> length_;  // [actions][n] for n <= kMaxLen
   std::vector<double> length_tail_scale_;    // weight of the base beyond kMaxLen
   std::vector<double> length_mean_;

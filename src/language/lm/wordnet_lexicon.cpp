@@ -220,6 +220,30 @@ std::string WordNetLexicon::noun_lemma(const std::string& word) {
   return forms.empty() ? word : forms.front();
 }
 
+WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  auto senses = [&](int pos) {
+    int best = 0;
+    std::vector<std::string> forms = wn_base_forms(word, pos);
+    forms.push_back(word);
+    for (const std::string& f : forms) {
+      std::string buf = f;
+      IndexPtr idx = index_lookup(buf.data(), pos);
+      if (idx != nullptr) {
+        best = std::max(best, idx->off_cnt);
+        free_index(idx);
+      }
+    }
+    return best;
+  };
+  const int n = senses(NOUN);
+  const int v = senses(VERB);
+  WordClass c;
+  c.noun_like = n >= v;
+  c.verb_like = v >= n;
+  return c;
+}
+
 WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural) {
   static std::map<std::pair<std::string, bool>, WordDistribution> memo;
   std::lock_guard<std::mutex> lock(wordnet_mutex());
@@ -290,7 +314,7 @@ WordDistribution WordNetLexicon::verb_base(const std::string& action, bool to_sp
     out.add(word, weight * (1 - share));
     for (const std::string& f : forms) out.add(f, weight * share / static_cast<double>(forms.size()));
   }
-  if (to_speaker) out.add("me", 0.1);
+  (void)to_speaker;  // the recipient ("me") is a mentionable unit of its own in the model
   WordDistribution dist = out.normalised();
   memo[key] = dist;
   return dist;

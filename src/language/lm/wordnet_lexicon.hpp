@@ -34,6 +34,16 @@ class WordNetLexicon {
   // Base (uninflected) noun form of a word if WordNet knows one, else the word.
   std::string noun_lemma(const std::string& word);
 
+  // Dominant word class: whether a word may be learned by a noun field and by a
+  // verb field. Decided by WordNet's sense counts of the word's base forms (e.g.
+  // "grab" has more verb than noun senses, "key" more noun senses); a word that
+  // WordNet does not know as either (unknown, adjective, adverb) may be both.
+  struct WordClass {
+    bool noun_like = true;
+    bool verb_like = true;
+  };
+  WordClass word_class(const std::string& word);
+
  private:
   WordNetLexicon();
 };

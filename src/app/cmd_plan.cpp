@@ -1,0 +1,129 @@
+// `clips plan`: optimal A* (or RTAA*) for one goal and cost profile.
+#include <fmt/core.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli.hpp"
+#include "data/dataset.hpp"
+#include "domains/registry.hpp"
+#include "pddl/parser.hpp"
+#include "search/rtaa.hpp"
+
+namespace clips::app {
+
+void register_plan(CLI::App& app) {
+  auto* cmd = app.add_subcommand("plan", "Plan for a goal with A* (optimal with an admissible heuristic) or RTAA*");
+  struct Opts {
+    std::string dataset, problem, domain_file, problem_file, goal, costs, planner = "astar", heuristic, from_plan;
+    bool json = false;
+    size_t max_nodes = size_t{1} << 24;
+    double max_seconds = 300;
+    int max_steps = 200;
+  };
+  auto o = std::make_shared<Opts>();
+  cmd->add_option("--dataset", o->dataset, "Dataset directory (with domain.pddl and problems/)");
+  cmd->add_option("--problem", o->problem, "Problem id in the dataset (e.g. 2), or with --domain a problem file");
+  cmd->add_option("--domain", o->domain_file, "A PDDL domain file (instead of --dataset)");
+  cmd->add_option("--goal", o->goal, "Goal condition in PDDL, e.g. \"(has human gem1)\" (default: the problem's goal)");
+  cmd->add_option("--costs", o->costs,
+                  "Cost profile: 1..4 for doors-keys-gems (C1..C4, default 1), 'unit', or 'task' (the domain's "
+                  "action costs; default for other domains when they declare total-cost)");
+  cmd->add_option("--planner", o->planner, "astar (default) or rtaa")->check(CLI::IsMember({"astar", "rtaa"}));
+  cmd->add_option("--heuristic", o->heuristic, "Heuristic name (default: the domain's admissible one)");
+  cmd->add_option("--from-plan", o->from_plan, "Start from the end of this observed plan (dataset plan id)");
+  cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search (default 2^24)");
+  cmd->add_option("--max-seconds", o->max_seconds, "Time budget per A* search (default 300)");
+  cmd->add_option("--max-steps", o->max_steps, "RTAA*: maximum number of executed actions (default 200)");
+  cmd->add_flag("--json", o->json, "Print one JSON object: plan, cost, expanded, seconds, status");
+  cmd->callback([o] {
+    std::shared_ptr<const pddl::Task> task;
+    data::DomainKind kind = data::DomainKind::Generic;
+    pddl::State start;
+    if (!o->dataset.empty()) {
+      if (o->problem.empty() && o->from_plan.empty()) throw InputError("--problem or --from-plan is required with --dataset");
+      auto ds = data::Dataset::load(o->dataset);
+      kind = ds.kind();
+      if (!o->from_plan.empty()) {
+        const auto& p = ds.plan(o->from_plan);
+        task = ds.task(p.problem_id);
+        start = pddl::simulate(*task, task->initial_state(), p.observed).states.back();
+      } else {
+        task = ds.task(o->problem);
+        start = task->initial_state();
+      }
+    } else {
+      if (o->domain_file.empty() || o->problem.empty())
+        throw InputError("give --dataset DIR --problem ID, or --domain FILE --problem FILE");
+      auto d = std::make_shared<pddl::Domain>(pddl::load_domain(o->domain_file));
+      auto p = std::make_shared<pddl::Problem>(pddl::load_problem(*d, o->problem));
+      task = std::make_shared<pddl::Task>(d, p, data::grounding_options(kind));
+      start = task->initial_state();
+    }
+    std::string goal = o->goal;
+    if (goal.empty()) {
+      if (!task->problem().goal_sexpr) throw InputError("--goal is required (the problem has no :goal)");
+      goal = task->problem().goal_sexpr->str();
+    }
+    std::string costs = o->costs;
+    if (costs.empty())
+      costs = kind == data::DomainKind::DoorsKeysGems ? "1" : (task->domain().total_cost ? "task" : "unit");
+    auto spec = std::make_shared<model::Specification>(task, goal, domains::cost_profile(kind, costs));
+    std::string hname = o->heuristic.empty() ? domains::default_admissible_heuristic(kind) : o->heuristic;
+    std::shared_ptr<heuristics::Heuristic> h = domains::make_heuristic(hname, *task, kind);
+    search::SearchOptions so;
+    so.max_nodes = o->max_nodes;
+    so.max_seconds = o->max_seconds;
+    std::vector<pddl::ActionId> plan;
+    double cost = 0, seconds = 0;
+    size_t expanded = 0;
+    std::string status;
+    if (o->planner == "astar") {
+      auto r = search::plan(*spec, *h, start, so);
+      plan = r.plan;
+      cost = r.status == search::SearchStatus::Success ? r.cost : 0;
+      expanded = r.expanded;
+      seconds = r.seconds;
+      status = search::to_string(r.status);
+    } else {
+      auto t0 = std::chrono::steady_clock::now();
+      search::Policy pol(spec, h);
+      pddl::State s = start;
+      status = "max_steps";
+      for (int i = 0; i < o->max_steps; ++i) {
+        if (spec->is_goal(s)) break;
+        auto st = pol.refine(s, so);
+        expanded += st.expanded;
+        auto a = pol.best_action(s);
+        if (!a) {
+          status = "failure";
+          break;
+        }
+        plan.push_back(*a);
+        cost += spec->cost(*a);
+        s = task->apply(s, *a);
+      }
+      if (spec->is_goal(s)) status = "success";
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    if (o->json) {
+      nlohmann::json j;
+      j["plan"] = nlohmann::json::array();
+      for (auto a : plan) j["plan"].push_back(task->action_name(a));
+      j["cost"] = cost;
+      j["expanded"] = expanded;
+      j["seconds"] = seconds;
+      j["status"] = status;
+      j["goal"] = goal;
+      j["costs"] = spec->profile().name;
+      j["heuristic"] = hname;
+      fmt::print("{}\n", j.dump());
+    } else {
+      for (auto a : plan) fmt::print("{}\n", task->action_name(a));
+      fmt::print("; status {}, cost {:.10g}, {} actions, {} expanded, {:.3f} s ({} heuristic, costs {})\n", status, cost,
+                 plan.size(), expanded, seconds, hname, spec->profile().name);
+    }
+    g_exit_code = status == "success" ? 0 : 1;
+  });
+}
+
+}  // namespace clips::app

@@ -1,0 +1,126 @@
+#include "heuristics/basic.hpp"
+
+#include <algorithm>
+#include <queue>
+
+namespace clips::heuristics {
+
+using model::kInf;
+using CNode = pddl::Task::CNode;
+
+namespace {
+
+void positive_conjuncts(const pddl::Task& t, pddl::CondId c, std::vector<int>& out) {
+  const CNode& n = t.cnode(c);
+  if (n.op == CNode::Atom) out.push_back(n.a);
+  if (n.op == CNode::And)
+    for (int i = 0; i < n.b; ++i) positive_conjuncts(t, t.ckids()[n.a + i], out);
+}
+
+// DNF of a condition over positive atoms; anything else counts as true.
+std::vector<std::vector<int>> dnf(const pddl::Task& t, pddl::CondId c) {
+  const CNode& n = t.cnode(c);
+  switch (n.op) {
+    case CNode::False: return {};
+    case CNode::Atom: return {{n.a}};
+    case CNode::Or: {
+      std::vector<std::vector<int>> out;
+      for (int i = 0; i < n.b; ++i) {
+        auto k = dnf(t, t.ckids()[n.a + i]);
+        out.insert(out.end(), k.begin(), k.end());
+      }
+      return out;
+    }
+    case CNode::And: {
+      std::vector<std::vector<int>> acc{{}};
+      for (int i = 0; i < n.b; ++i) {
+        auto k = dnf(t, t.ckids()[n.a + i]);
+        std::vector<std::vector<int>> next;
+        for (auto& a : acc)
+          for (auto& b : k) {
+            auto m = a;
+            m.insert(m.end(), b.begin(), b.end());
+            next.push_back(std::move(m));
+          }
+        acc = std::move(next);
+        if (acc.size() > 4096) return {{}};  // too large: give up (0 is admissible)
+      }
+      return acc;
+    }
+    default: return {{}};
+  }
+}
+
+}  // namespace
+
+void HMaxHeuristic::prepare(const model::Specification& spec, const pddl::State&) {
+  if (spec_ == &spec) return;
+  spec_ = &spec;
+  const pddl::Task& t = spec.task();
+  int na = t.num_actions(), nb = t.num_atoms();
+  pre_.assign(na, {});
+  add_.assign(na, {});
+  cost_.assign(na, 0);
+  achievers_of_pre_.assign(nb, {});
+  for (int a = 0; a < na; ++a) {
+    positive_conjuncts(t, t.action(a).pre, pre_[a]);
+    add_[a] = t.action(a).eff.add;
+    for (auto& ce : t.action(a).cond_eff) add_[a].insert(add_[a].end(), ce.eff.add.begin(), ce.eff.add.end());
+    cost_[a] = spec.cost(a);
+    for (int p : pre_[a]) achievers_of_pre_[p].push_back(a);
+  }
+  goal_clauses_ = dnf(t, spec.goal());
+  atom_cost_.assign(nb, kInf);
+  act_cost_.assign(na, kInf);
+  unsat_.assign(na, 0);
+}
+
+double HMaxHeuristic::estimate(const uint64_t* s) {
+  if (!spec_) return 0;
+  if (spec_->is_goal(s)) return 0;
+  const pddl::Task& t = spec_->task();
+  int na = t.num_actions(), nb = t.num_atoms();
+  std::fill(atom_cost_.begin(), atom_cost_.end(), kInf);
+  using QE = std::pair<double, int>;
+  std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+  for (int b = 0; b < nb; ++b)
+    if (pddl::get_bit(s, b)) {
+      atom_cost_[b] = 0;
+      q.push({0, b});
+    }
+  for (int a = 0; a < na; ++a) {
+    unsat_[a] = static_cast<int>(pre_[a].size());
+    act_cost_[a] = 0;
+    if (unsat_[a] == 0)
+      for (int b : add_[a])
+        if (cost_[a] < atom_cost_[b]) {
+          atom_cost_[b] = cost_[a];
+          q.push({cost_[a], b});
+        }
+  }
+  while (!q.empty()) {
+    auto [c, b] = q.top();
+    q.pop();
+    if (c > atom_cost_[b]) continue;
+    for (int a : achievers_of_pre_[b]) {
+      act_cost_[a] = std::max(act_cost_[a], c);
+      if (--unsat_[a] == 0) {
+        double ac = act_cost_[a] + cost_[a];
+        for (int e : add_[a])
+          if (ac < atom_cost_[e]) {
+            atom_cost_[e] = ac;
+            q.push({ac, e});
+          }
+      }
+    }
+  }
+  double best = kInf;
+  for (auto& clause : goal_clauses_) {
+    double m = 0;
+    for (int b : clause) m = std::max(m, atom_cost_[b]);
+    best = std::min(best, m);
+  }
+  return best;
+}
+
+}  // namespace clips::heuristics

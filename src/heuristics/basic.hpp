@@ -1,0 +1,44 @@
+#pragma once
+// Domain-independent heuristics.
+//   BlindHeuristic  0 everywhere (A* becomes uniform-cost search); admissible.
+//   HMaxHeuristic   h_max over a relaxation that keeps only the positive atoms
+//                   of each precondition's top-level conjunction and treats
+//                   conditional effects as unconditional. Ignoring conditions
+//                   only makes the task easier, so h_max of the relaxation is
+//                   admissible and consistent for the real task.
+#include <vector>
+
+#include "heuristics/heuristic.hpp"
+
+namespace clips::heuristics {
+
+class BlindHeuristic : public Heuristic {
+ public:
+  std::string name() const override { return "blind"; }
+  bool admissible() const override { return true; }
+  bool consistent() const override { return true; }
+  void prepare(const model::Specification&, const pddl::State&) override {}
+  double estimate(const uint64_t*) override { return 0; }
+};
+
+class HMaxHeuristic : public Heuristic {
+ public:
+  std::string name() const override { return "hmax"; }
+  bool admissible() const override { return true; }
+  bool consistent() const override { return true; }
+  void prepare(const model::Specification& spec, const pddl::State& root) override;
+  double estimate(const uint64_t* s) override;
+
+ private:
+  const model::Specification* spec_ = nullptr;
+  std::vector<std::vector<int>> pre_;          // per action: positive atom preconditions
+  std::vector<std::vector<int>> add_;          // per action: added atoms
+  std::vector<double> cost_;
+  std::vector<std::vector<int>> goal_clauses_; // DNF over positive atoms
+  std::vector<std::vector<int>> achievers_of_pre_;  // atom -> actions needing it
+  std::vector<double> atom_cost_, act_cost_;
+  std::vector<int> unsat_;
+  bool trivially_unknown_goal_ = false;
+};
+
+}  // namespace clips::heuristics

@@ -1,0 +1,67 @@
+#pragma once
+// A goal specification = a goal condition + a cost profile (SymbolicPlanners'
+// "specification"): "reach (has human gem2) minimising these action costs".
+//
+// CostProfile   per-agent, per-action-name costs, e.g. human pickup 5, robot
+//               pickup 1, wait 0.6 (the agent is an action's first argument).
+// Specification binds a goal and a profile to one grounded Task: the goal is
+//               compiled once and every ground action gets its cost.
+// Agents are frozen (may only wait / hand over) by setting `(frozen agent)` in
+// the start state; see freeze() below.
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pddl/task.hpp"
+
+namespace clips::model {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct CostProfile {
+  std::string name;                                         // e.g. "C1"
+  std::map<std::pair<std::string, std::string>, double> costs;  // (agent, action) -> cost
+  double default_cost = 1.0;                                // anything not listed
+  double cost(const std::string& agent, const std::string& action) const;
+};
+
+// The four mDKG profiles C1..C4 of clips-spec.md 4.2 (index 1..4).
+CostProfile dkg_profile(int index);
+// Unit costs for every action (VirtualHome, generic domains).
+CostProfile unit_profile();
+// Costs from the task itself ((increase (total-cost) n) effects), for :action-costs domains.
+CostProfile task_costs_profile();
+
+class Specification {
+ public:
+  Specification(std::shared_ptr<const pddl::Task> task, std::string goal_text, CostProfile costs);
+
+  const pddl::Task& task() const { return *task_; }
+  std::shared_ptr<const pddl::Task> task_ptr() const { return task_; }
+  const std::string& goal_text() const { return goal_text_; }
+  pddl::CondId goal() const { return goal_; }
+  const CostProfile& profile() const { return profile_; }
+  double cost(pddl::ActionId a) const { return action_cost_[a]; }
+  bool is_goal(const uint64_t* s) const { return task_->eval(goal_, s); }
+  bool is_goal(const pddl::State& s) const { return task_->holds(s, goal_); }
+  // Minimum cost over all actions with this name (any agent), +inf if none.
+  double min_cost(const std::string& action_name) const;
+  // A stable key for caches: goal text + profile name.
+  std::string key() const { return goal_text_ + " | " + profile_.name; }
+
+ private:
+  std::shared_ptr<const pddl::Task> task_;
+  std::string goal_text_;
+  pddl::CondId goal_;
+  CostProfile profile_;
+  std::vector<double> action_cost_;
+};
+
+// Returns a copy of `s` with `(frozen agent)` set (the agent may only wait or
+// hand over what it holds). Throws if the task has no such predicate.
+pddl::State freeze(const pddl::Task& task, const pddl::State& s, const std::string& agent);
+
+}  // namespace clips::model

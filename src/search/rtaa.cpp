@@ -1,0 +1,122 @@
+#include "search/rtaa.hpp"
+
+#include <cmath>
+
+namespace clips::search {
+
+using model::kInf;
+
+Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h)
+    : spec_(std::move(spec)), h_(std::move(h)), V_(spec_->task().num_words()), tree_(spec_->task().num_words()) {}
+
+double Policy::value(const uint64_t* s) const {
+  if (const double* v = V_.find(s)) return *v;
+  return -h_->estimate(s);
+}
+
+RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
+  RefineStats st;
+  const pddl::Task& task = spec_->task();
+  h_->prepare(*spec_, s);  // pruning sets from this call's starting state
+  SearchOptions opts = opts_in;
+  opts.extra_goal = [this](const uint64_t* x) { return tree_.contains(x); };
+  // Lookahead heuristic: the learned value where known, else H.
+  struct Learned : heuristics::Heuristic {
+    Policy* p;
+    explicit Learned(Policy* pp) : p(pp) {}
+    std::string name() const override { return "learned"; }
+    bool admissible() const override { return p->h_->admissible(); }
+    bool consistent() const override { return false; }
+    void prepare(const model::Specification&, const pddl::State&) override {}
+    double estimate(const uint64_t* x) override {
+      if (const double* v = p->V_.find(x)) return -*v;
+      return p->h_->estimate(x);
+    }
+    bool prunes() const override { return p->h_->prunes(); }
+    bool keep(pddl::ActionId a) const override { return p->h_->keep(a); }
+  } learned(this);
+
+  std::vector<uint64_t> child(task.num_words());
+  pddl::State child_state;
+  double best = -kInf;
+  for (pddl::ActionId a : task.applicable_actions(s)) {
+    task.apply(a, s.data(), child.data());
+    if (const double* v = V_.find(child.data()); v && *v == -kInf) continue;
+    if (spec_->is_goal(child.data())) {
+      V_[child.data()] = 0;
+    } else {
+      child_state.words.assign(child.begin(), child.end());
+      SearchResult r = astar(*spec_, learned, child_state, opts);
+      ++st.searches;
+      st.expanded += r.expanded;
+      update(r);
+    }
+    best = std::max(best, -spec_->cost(a) + value(child.data()));
+  }
+  V_[s.data()] = best;
+  return st;
+}
+
+void Policy::update(const SearchResult& r) {
+  const StateRegistry& reg = *r.registry;
+  if (r.status == SearchStatus::Failure) {
+    for (int id = 0; id < reg.size(); ++id) V_[reg.get(id)] = -kInf;
+    return;
+  }
+  int t = r.terminal;
+  double h_t = r.nodes[t].h;
+  double f_t = r.nodes[t].g + h_t;
+  V_[reg.get(t)] = -h_t;
+  for (int id = 0; id < reg.size(); ++id) {
+    const SearchNode& n = r.nodes[id];
+    if (n.open && id != t) continue;  // frontier nodes keep their values
+    if (id == t) continue;
+    V_[reg.get(id)] = -(f_t - n.g);
+  }
+  if (r.status == SearchStatus::Success) {
+    // Store the path root..t: each node records the action toward the goal.
+    for (int id = t; r.nodes[id].parent >= 0; id = r.nodes[id].parent)
+      tree_.try_emplace(reg.get(r.nodes[id].parent), r.nodes[id].action);
+  }
+}
+
+std::vector<QValue> Policy::q_values(const pddl::State& s) const {
+  const pddl::Task& task = spec_->task();
+  std::vector<QValue> out;
+  std::vector<uint64_t> child(task.num_words());
+  for (pddl::ActionId a : task.applicable_actions(s)) {
+    task.apply(a, s.data(), child.data());
+    double v = spec_->is_goal(child.data()) ? (V_.contains(child.data()) ? *V_.find(child.data()) : 0.0)
+                                            : value(child.data());
+    out.push_back({a, -spec_->cost(a) + v});
+  }
+  return out;
+}
+
+std::optional<pddl::ActionId> Policy::best_action(const pddl::State& s) const {
+  if (const pddl::ActionId* a = tree_.find(s.data()); a && spec_->task().applicable(*a, s.data())) return *a;
+  std::optional<pddl::ActionId> best;
+  double bq = -kInf;
+  for (const QValue& q : q_values(s))
+    if (q.q > bq) {
+      bq = q.q;
+      best = q.action;
+    }
+  return best;
+}
+
+std::vector<pddl::ActionId> Policy::rollout(const pddl::State& start, int max_steps) const {
+  std::vector<pddl::ActionId> plan;
+  pddl::State s = start;
+  for (int i = 0; i < max_steps; ++i) {
+    if (spec_->is_goal(s)) break;
+    auto a = best_action(s);
+    if (!a) break;
+    plan.push_back(*a);
+    s = spec_->task().apply(s, *a);
+    if (spec_->is_goal(s)) break;
+  }
+  return plan;
+}
+
+}  // namespace clips::search

@@ -1,0 +1,204 @@
+// EmbeddedLanguageModel: normalisation, determinism, prompt handling, errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "language/lm/alignment_model.hpp"
+#include "language/lm/embedded_model.hpp"
+#include "language/lm/utterance_tokens.hpp"
+#include "lm/embedded_prompts.hpp"
+
+namespace clips::lm {
+namespace {
+
+using testing::literal_prompt;
+using testing::pragmatic_prompt;
+using testing::vh_prompt;
+
+EmbeddedLanguageModel& model() {
+  static EmbeddedLanguageModel m;
+  return m;
+}
+
+double score(const std::string& prompt, const std::string& utterance) {
+  return model().score({{prompt, " " + utterance + "\n"}}).at(0);
+}
+
+TEST(EmbeddedTokens, LowerCasesExpandsContractionsAndKeepsPunctuation) {
+  EXPECT_EQ(tokenize_utterance(" I'll get the Red key, can't you?\n"),
+            (std::vector<std::string>{"i", "will", "get", "the", "red", "key", ",", "can", "not", "you", "?"}));
+  EXPECT_EQ(tokenize_utterance("I'm here; won't go."),
+            (std::vector<std::string>{"i", "am", "here", ",", "will", "not", "go", "."}));
+}
+
+TEST(EmbeddedPrompt, SplitsFewShotBlockAndQuery) {
+  const std::string p = literal_prompt("(pickup you key1) where (iscolor key1 red)");
+  auto [block, command] = split_prompt(p);
+  EXPECT_EQ(command, "(pickup you key1) where (iscolor key1 red)");
+  auto examples = parse_fewshot_block(block);
+  ASSERT_EQ(examples.size(), 12u);
+  EXPECT_EQ(examples[0].second, "Help me unlock the green and yellow doors.");
+  EXPECT_EQ(split_prompt("\n"), (std::pair<std::string, std::string>{"", ""}));
+  EXPECT_THROW(split_prompt("Input: (pickup you key1)\nOutput: x"), LmError);
+}
+
+TEST(EmbeddedNormalisation, NextTokenDistributionSumsToOne) {
+  auto m = model().model_for_prompt(literal_prompt("(pickup you key1)"));
+  for (const char* cmd : {"(handover you me key1) where (iscolor key1 red)",
+                          "(unlock you key1 door1) (pickup me key2) where (iscolor door1 green) (iscolor key2 blue)",
+                          "(pickup you key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 red)",
+                          "(grab you plate1) (grab you mug1)", "(frobnicate you widget1) where (iscolor widget1 mauve)",
+                          ""}) {
+    for (bool request : {true, false}) {
+      EXPECT_NEAR(m->next_token_mass(cmd, true, request), 1.0, 1e-9) << cmd;
+      EXPECT_NEAR(m->next_token_mass(cmd, false, request), 1.0, 1e-9) << cmd;
+    }
+  }
+}
+
+TEST(EmbeddedNormalisation, LengthDistributionIsProperAndEndCarriesMass) {
+  auto m = model().model_for_prompt(pragmatic_prompt("(pickup you key1)"));
+  for (int a = 0; a <= 5; ++a) {
+    const double mass = m->length_mass(a, 5000);
+    EXPECT_NEAR(mass, 1.0, 1e-6) << a;
+    EXPECT_LE(mass, 1.0 + 1e-9);
+  }
+  // The end event carries probability: a complete utterance is less likely than its prefix.
+  const std::string p = literal_prompt("(pickup you key1) where (iscolor key1 red)");
+  const double full = model().score({{p, " Pick up the red key.\n"}})[0];
+  const double prefix = model().score({{p, " Pick up the red key."}})[0];
+  EXPECT_LT(full, prefix);
+  EXPECT_LT(prefix, 0.0);
+}
+
+TEST(EmbeddedNormalisation, FiniteSetOfUtterancesSumsBelowOne) {
+  const std::string p = literal_prompt("(handover you me key1) where (iscolor key1 red)");
+  double total = 0;
+  for (const char* u : {"Pass me the red key.", "Give me the red key.", "Red key please.", "Hand me that key.",
+                        "Bring me the red key!", "The red key.", "Key.", "Could you pass me the red key?",
+                        "zzz qqq", "red red red red red red red red"}) {
+    total += std::exp(score(p, u));
+  }
+  EXPECT_GT(total, 0.0);
+  EXPECT_LE(total, 1.0);
+}
+
+TEST(EmbeddedNormalisation, UnknownWordsHaveNonZeroProbability) {
+  const std::string p = vh_prompt("(grab you plate1)");
+  const double s = score(p, "Xylophone quibbles plate zqxj?");
+  EXPECT_TRUE(std::isfinite(s));
+  EXPECT_LT(s, score(p, "Can you get a plate?"));
+}
+
+TEST(EmbeddedModel, IsDeterministicAcrossInstancesAndCalls) {
+  const std::string p = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 blue)");
+  const double a = score(p, "Can you open the blue door?");
+  const double b = score(p, "Can you open the blue door?");
+  EmbeddedLanguageModel other;
+  const double c = other.score({{p, " Can you open the blue door?\n"}})[0];
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a, c);
+}
+
+TEST(EmbeddedModel, TrainsOncePerFewShotBlock) {
+  EmbeddedLanguageModel m;
+  m.score({{literal_prompt("(pickup you key1)"), " Get it.\n"},
+           {literal_prompt("(handover you me key1)"), " Give it.\n"}});
+  EXPECT_EQ(m.trained_blocks(), 1u);
+  m.score({{pragmatic_prompt("(pickup you key1)"), " Get it.\n"}, {"\n", " Hello.\n"}});
+  EXPECT_EQ(m.trained_blocks(), 3u);
+}
+
+TEST(EmbeddedModel, EmptyCommandPromptScoresEverythingAlike) {
+  // The "\n" prompt of a hypothesis without commands scores utterances, but
+  // worse than a matching command and without preferring any command.
+  const double none = score("\n", "Can you open the blue door?");
+  EXPECT_TRUE(std::isfinite(none));
+  EXPECT_LT(none, score(literal_prompt("(unlock you key1 door1) where (iscolor door1 blue)"),
+                        "Can you open the blue door?"));
+}
+
+TEST(EmbeddedModel, NumberWordsFavourMultiActionCommands) {
+  const std::string one = literal_prompt("(pickup you key1) where (iscolor key1 green)");
+  const std::string two =
+      literal_prompt("(pickup you key1) (pickup you key2) where (iscolor key1 green) (iscolor key2 green)");
+  EXPECT_GT(score(two, "Grab both green keys."), score(one, "Grab both green keys."));
+  EXPECT_GT(score(one, "Grab the green key."), score(two, "Grab the green key."));
+  const std::string p1 = vh_prompt("(grab you plate1)");
+  const std::string p2 = vh_prompt("(grab you plate1) (grab you plate2)");
+  EXPECT_GT(score(p2, "Get two plates."), score(p1, "Get two plates."));
+  EXPECT_GT(score(p1, "Get a plate."), score(p2, "Get a plate."));
+}
+
+TEST(EmbeddedModel, SpeakerClausesDoNotClaimTheListenersColour) {
+  const std::string blue = pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)");
+  const std::string red = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
+  const char* u = "I'll grab the red key, could you pick up the blue one?";
+  EXPECT_GT(score(blue, u), score(red, u));
+  const char* v = "Can you get the yellow key? I'm going for the green one.";
+  EXPECT_GT(score(pragmatic_prompt("(pickup you key1) where (iscolor key1 yellow)"), v),
+            score(pragmatic_prompt("(pickup you key1) where (iscolor key1 green)"), v));
+}
+
+TEST(EmbeddedModel, UnseenItemTypesUseWordNet) {
+  // "mug" never occurs in the corpus; WordNet links "cup" and "mugs" to it.
+  const std::string mug = vh_prompt("(grab you mug1)");
+  const std::string plate = vh_prompt("(grab you plate1)");
+  EXPECT_GT(score(mug, "Can you bring me a mug?"), score(plate, "Can you bring me a mug?"));
+  EXPECT_GT(score(vh_prompt("(grab you mug1) (grab you mug2)"), "Bring the mugs."),
+            score(plate, "Bring the mugs."));
+}
+
+TEST(EmbeddedModel, DataDirectoryFromOptionsAndEnvironment) {
+  const std::string dir = std::string(CLIPS_SOURCE_DIR) + "/data/language";
+  EmbeddedLanguageModel explicit_dir(dir);
+  EXPECT_EQ(explicit_dir.data_dir(), dir);
+  ::setenv("CLIPS_DATA_DIR", dir.c_str(), 1);
+  EmbeddedLanguageModel from_env;
+  ::unsetenv("CLIPS_DATA_DIR");
+  EXPECT_EQ(from_env.data_dir(), dir);
+  EXPECT_EQ(explicit_dir.name(), "embedded");
+}
+
+TEST(EmbeddedModel, MissingOrMalformedCorpusIsAClearError) {
+  const auto tmp = std::filesystem::temp_directory_path() / "clips_lm_corpus_test";
+  std::filesystem::create_directories(tmp);
+  EmbeddedModelOptions o;
+  o.data_dir = tmp.string();
+  o.corpus_files = {"nope.tsv"};
+  try {
+    EmbeddedLanguageModel m(o);
+    FAIL() << "expected LmError";
+  } catch (const LmError& e) {
+    EXPECT_NE(std::string(e.what()).find("nope.tsv"), std::string::npos) << e.what();
+  }
+  {
+    std::ofstream f(tmp / "bad.tsv");
+    f << "# comment\n(pickup you key1)\tGet the key.\nthis line has no tab\n";
+  }
+  o.corpus_files = {"bad.tsv"};
+  try {
+    EmbeddedLanguageModel m(o);
+    FAIL() << "expected LmError";
+  } catch (const LmError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.tsv:3"), std::string::npos) << e.what();
+  }
+  {
+    std::ofstream f(tmp / "bad2.tsv");
+    f << "(pickup you key1\tGet the key.\n";
+  }
+  o.corpus_files = {"bad2.tsv"};
+  try {
+    EmbeddedLanguageModel m(o);
+    FAIL() << "expected LmError";
+  } catch (const LmError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad2.tsv:1"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(tmp);
+}
+
+}  // namespace
+}  // namespace clips::lm
