@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "language/lm/alignment_model.hpp"
 #include "language/lm/embedded_model.hpp"
@@ -101,6 +102,24 @@ TEST(EmbeddedModel, IsDeterministicAcrossInstancesAndCalls) {
   const double c = other.score({{p, " Can you open the blue door?\n"}})[0];
   EXPECT_EQ(a, b);
   EXPECT_EQ(a, c);
+}
+
+TEST(EmbeddedModel, ConcurrentScoringMatchesSequential) {
+  EmbeddedLanguageModel m;
+  std::vector<ScoreRequest> batch;
+  for (const char* c : {"(pickup you key1) where (iscolor key1 red)", "(grab you mug1)",
+                        "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)"}) {
+    batch.push_back({literal_prompt(c), " Bring me both red keys, please.\n"});
+    batch.push_back({vh_prompt(c), " A mug, please.\n"});
+  }
+  std::vector<std::vector<double>> results(4);
+  std::vector<std::thread> threads;
+  for (size_t t = 0; t < results.size(); ++t) {
+    threads.emplace_back([&, t] { results[t] = m.score(batch); });
+  }
+  for (auto& th : threads) th.join();
+  const auto sequential = model().score(batch);
+  for (const auto& r : results) EXPECT_EQ(r, sequential);
 }
 
 TEST(EmbeddedModel, TrainsOncePerFewShotBlock) {

@@ -22,7 +22,7 @@ constexpr double kPiBackground = 0.5;
 constexpr double kPiAgent = 0.1;
 constexpr double kPiContent = 0.4;
 constexpr double kGenericShare = 0.08;  // share of GEN inside Content when groups are active
-constexpr double kMention = 0.85;       // rho
+constexpr double kMention = 0.85;       // prior mean of the rho (Beta pseudo-counts 2)
 constexpr double kRequestClause = 0.8;
 constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
 

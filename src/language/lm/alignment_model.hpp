@@ -7,9 +7,14 @@
 //  1. Length: n ~ P_len(n | number of actions of c). This is the explicit end
 //     event (a smoothed histogram, with a Poisson+geometric base so every
 //     length has mass).
-//  2. Mentions: each group g of c is "mentioned" (m_g = 1) with probability rho,
-//     independently. A group that is not mentioned cannot emit words, which is
-//     what penalises commands containing actions the utterance never talks about.
+//  2. Mentions: each group g of c is "mentioned" (m_g = 1) with probability
+//     rho_group; given a mentioned group, each of its optional units is mentioned
+//     independently: its recipient "me" (hand-over groups) with rho_recipient and
+//     each of its attribute values (colours) with rho_attribute. A unit that is
+//     not mentioned cannot emit words, which is what penalises commands holding
+//     actions or colours the utterance never talks about (a fertility model).
+//     The rho are estimated by EM (clamped to [0.05, 0.95]); the exact sum over
+//     all mention patterns is taken (at most 2^10 patterns).
 //  3. Clauses: the tokens are cut into clauses after punctuation and a few
 //     conjunctions; each clause independently gets a speech-act type t:
 //     R (a request to the listener, "can you open the blue door") with P = 0.8 or
@@ -26,17 +31,22 @@
 //     A group emits through its fields, with fixed weights:
 //       V  verb, table keyed by (action, agent, whether "me" is the recipient);
 //       N  noun, keyed by (object type, plural iff the group has 2+ actions);
+//       Q  number words, keyed by the group's action count (only if >= 2);
+//     and through its mentioned optional units, whose weights are added to the
+//     group's and renormalised:
 //       C  attribute (colour): copy the predicate's value with probability alpha,
 //          else a shared residual table R. alpha is ONE parameter shared by all
 //          colours, so a colour seen once in training is as copyable as any;
-//       Q  number words, keyed by the group's action count (only if >= 2).
+//       P  recipient: "me", "my way", "here", ... for hand-overs to the speaker.
 //
 // Every factor is a normalised distribution and the clause cuts depend only on
 // already generated tokens, so the sum over all token sequences is exactly 1.
 // Emission tables are Dirichlet posteriors: expected counts from EM over the
 // training pairs (corpus + few-shot examples) plus kappa times a lexical base from
 // WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).
-// Content fields never emit closed-class words unless their base contains them.
+// Content fields never emit closed-class words unless their base contains them;
+// verb fields only learn verb-like words and noun fields noun-like ones (WordNet
+// sense counts), so a noun table shared by several actions cannot soak up verbs.
 #include <cstdint>
 #include <memory>
 #include <shared_mutex>

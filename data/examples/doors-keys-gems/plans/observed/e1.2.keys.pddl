@@ -1,0 +1,5 @@
+(up human)
+(wait robot)
+(up human)
+(wait robot)
+; Can you bring me the red key?

@@ -1,0 +1,252 @@
+#include "inference/belief.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "domains/registry.hpp"
+#include "inference/vh_value.hpp"
+#include "pddl/plan.hpp"
+#include "util/error.hpp"
+
+namespace clips::inference {
+
+namespace {
+
+constexpr double kNegInf = -std::numeric_limits<double>::infinity();
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool registry_has(data::DomainKind kind, const std::string& name) {
+  auto names = domains::heuristic_names(kind);
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+std::string to_string(Modality m) {
+  switch (m) {
+    case Modality::Both: return "both";
+    case Modality::UtteranceOnly: return "utterance";
+    case Modality::ActionOnly: return "action";
+  }
+  return "?";
+}
+
+Modality parse_modality(const std::string& text) {
+  if (text == "both") return Modality::Both;
+  if (text == "utterance" || text == "language") return Modality::UtteranceOnly;
+  if (text == "action") return Modality::ActionOnly;
+  throw InputError("unknown modality '" + text + "' (expected both, utterance or action)");
+}
+
+std::string inference_heuristic_name(data::DomainKind kind) {
+  if (kind == data::DomainKind::VirtualHome) return "vh";
+  if (kind == data::DomainKind::DoorsKeysGems && registry_has(kind, "dkg-mst")) return "dkg-mst";
+  return domains::default_admissible_heuristic(kind);
+}
+
+std::unique_ptr<heuristics::Heuristic> make_inference_heuristic(const std::string& name, const pddl::Task& task,
+                                                                data::DomainKind kind) {
+  if (name == "vh" && !registry_has(kind, "vh")) return std::make_unique<VhValueHeuristic>(task);
+  return domains::make_heuristic(name, task, kind);
+}
+
+ProfileSet plan_cost_profiles(data::DomainKind kind, const data::PlanRecord& plan) {
+  if (kind == data::DomainKind::DoorsKeysGems) {
+    // Code, not paper (spec 13 item 1): two candidate profiles per condition.
+    if (plan.tag == "keys") return {{model::dkg_profile(3), model::dkg_profile(4)}, 0};
+    if (plan.tag == "doors") return {{model::dkg_profile(1), model::dkg_profile(2)}, 0};
+    throw InputError("plan " + plan.id + ": condition must be keys or doors, got '" + plan.tag + "'");
+  }
+  return {{model::unit_profile()}, 0};
+}
+
+// ---------------------------------------------------------------------------
+
+Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, std::vector<data::GoalSpec> goals,
+               std::vector<model::CostProfile> profiles, InferenceOptions options)
+    : task_(std::move(task)),
+      kind_(kind),
+      goals_(std::move(goals)),
+      profiles_(std::move(profiles)),
+      options_(std::move(options)) {
+  if (goals_.empty() || profiles_.empty()) throw InputError("inference needs at least one goal and one cost profile");
+  search_ = options_.search.value_or(kind_ != data::DomainKind::VirtualHome);
+  const std::string hname = options_.heuristic.empty() ? inference_heuristic_name(kind_) : options_.heuristic;
+  const TemperatureWeights prior = options_.temperature_prior.value_or(
+      kind_ == data::DomainKind::VirtualHome ? vh_temperature_prior() : dkg_temperature_prior());
+  utterance_model_ = std::make_shared<UtteranceModel>(task_, kind_, options_.utterance);
+  const pddl::State s0 = task_->initial_state();
+  for (int g = 0; g < static_cast<int>(goals_.size()); ++g)
+    for (int c = 0; c < static_cast<int>(profiles_.size()); ++c) {
+      auto spec = std::make_shared<model::Specification>(task_, goals_[g].condition, profiles_[c]);
+      // One heuristic per hypothesis: prepare() binds it to its specification.
+      std::shared_ptr<heuristics::Heuristic> h = make_inference_heuristic(hname, *task_, kind_);
+      // Without search, V = -h is read directly, so bind h to the goal now.
+      if (!search_) h->prepare(*spec, s0);
+      hyps_.push_back({g, c, spec});
+      policies_.emplace_back(spec, h);
+      heuristics_.push_back(std::move(h));
+      temps_.emplace_back(prior);
+    }
+  const double n = static_cast<double>(hyps_.size());
+  log_prior_.assign(hyps_.size(), -std::log(n));
+  action_ll_.assign(hyps_.size(), 0.0);
+  utterance_ll_.assign(hyps_.size(), 0.0);
+  if (auto sp = task_->find_object(utterance_model_->config().speaker)) speaker_ = *sp;
+  state_ = s0;
+}
+
+bool Belief::is_speaker_action(pddl::ActionId a) const {
+  // The acting agent is the first argument of every action; without a known
+  // speaker object every action counts as evidence.
+  const auto& args = task_->action(a).args;
+  return speaker_ < 0 || (!args.empty() && args[0] == speaker_);
+}
+
+void Belief::refine_all(const pddl::State& s) {
+  if (!search_) return;  // VH: V = -h_g, nothing to refine
+  for (size_t h = 0; h < policies_.size(); ++h) {
+    search::Policy& pi = policies_[h];
+    pi.refine(s, options_.refine);
+    if (!pi.best_action(s)) {
+      // Spec 5.4: a policy with no usable action here is recomputed from scratch.
+      pi = search::Policy(hyps_[h].spec, heuristics_[h]);
+      pi.refine(s, options_.refine);
+    }
+  }
+}
+
+std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
+                                                      lm::LanguageModel* lm) {
+  std::vector<UtteranceRecord> out;
+  if (options_.speak_factors) {
+    // Goal-independent: they move only the log marginal likelihood.
+    const double f = utterances.empty() ? std::log1p(-options_.p_speak) : std::log(options_.p_speak);
+    for (double& u : utterance_ll_) u += f;
+  }
+  if (utterances.empty()) return out;
+  if (!lm) throw InputError("an utterance was observed but no language model was given");
+  std::vector<const search::Policy*> pols;
+  for (const auto& p : policies_) pols.push_back(&p);
+  auto scores = utterance_model_->score(pols, s, utterances, *lm);
+  for (size_t u = 0; u < utterances.size(); ++u) {
+    for (size_t h = 0; h < hyps_.size(); ++h) utterance_ll_[h] += scores[u][h].log_likelihood;
+    out.push_back({utterances[u], std::move(scores[u])});
+  }
+  return out;
+}
+
+StepRecord Belief::start(const pddl::State& s0, const std::vector<std::string>& utterances, lm::LanguageModel* lm) {
+  const auto t0 = std::chrono::steady_clock::now();
+  state_ = s0;
+  t_ = 0;
+  refine_all(s0);
+  auto utts = score_utterances(s0, utterances, lm);
+  return record("", false, std::move(utts), seconds_since(t0));
+}
+
+StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, const std::vector<std::string>& utterances,
+                           lm::LanguageModel* lm) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const pddl::State s = state;  // `state` may alias state_
+  refine_all(s);
+  const bool evidence = is_speaker_action(action);
+  if (evidence) {
+    std::vector<double> q;
+    for (size_t h = 0; h < hyps_.size(); ++h) {
+      q.clear();
+      int chosen = -1;
+      for (const search::QValue& qv : policies_[h].q_values(s)) {
+        if (qv.action == action) chosen = static_cast<int>(q.size());
+        q.push_back(qv.q);
+      }
+      // An unavailable action has likelihood 0: the hypothesis is eliminated.
+      action_ll_[h] += std::log(temps_[h].update(q, chosen));
+    }
+  }
+  // Robot actions: do(a), no evidence and no temperature update.
+  auto utts = score_utterances(s, utterances, lm);
+  state_ = task_->apply(s, action);
+  ++t_;
+  return record(task_->action_name(action), evidence, std::move(utts), seconds_since(t0));
+}
+
+Posterior Belief::posterior(Modality m) const {
+  Posterior p;
+  const size_t n = hyps_.size();
+  std::vector<double> lw(n);
+  double mx = kNegInf;
+  for (size_t h = 0; h < n; ++h) {
+    lw[h] = log_prior_[h] + (m == Modality::UtteranceOnly ? 0.0 : action_ll_[h]) +
+            (m == Modality::ActionOnly ? 0.0 : utterance_ll_[h]);
+    mx = std::max(mx, lw[h]);
+  }
+  p.hypotheses.assign(n, 0.0);
+  if (mx == kNegInf) {
+    // Every hypothesis is eliminated: report the prior rather than NaNs.
+    p.log_marginal = kNegInf;
+    for (size_t h = 0; h < n; ++h) p.hypotheses[h] = std::exp(log_prior_[h]);
+  } else {
+    double z = 0;
+    for (size_t h = 0; h < n; ++h) z += (p.hypotheses[h] = std::exp(lw[h] - mx));
+    for (double& x : p.hypotheses) x /= z;
+    p.log_marginal = mx + std::log(z);
+  }
+  p.goals.assign(goals_.size(), 0.0);
+  p.profiles.assign(profiles_.size(), 0.0);
+  for (size_t h = 0; h < n; ++h) {
+    p.goals[hyps_[h].goal] += p.hypotheses[h];
+    p.profiles[hyps_[h].profile] += p.hypotheses[h];
+  }
+  return p;
+}
+
+StepRecord Belief::record(std::string action, bool evidence, std::vector<UtteranceRecord> utts, double seconds) const {
+  StepRecord r;
+  r.t = t_;
+  r.action = std::move(action);
+  r.evidence = evidence;
+  for (Modality m : kModalities) r.posterior[static_cast<int>(m)] = posterior(m);
+  r.utterances = std::move(utts);
+  r.seconds = seconds;
+  return r;
+}
+
+// ---------------------------------------------------------------------------
+
+InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                           const InferenceOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto task = dataset.task(plan.problem_id);
+  ProfileSet ps = plan_cost_profiles(dataset.kind(), plan);
+  InferenceRun run;
+  run.plan_id = plan.id;
+  auto goals = dataset.candidate_goals(plan);
+  for (auto& g : goals) run.goals.push_back(g.label);
+  run.true_goal = dataset.true_goal_index(plan);
+  for (auto& p : ps.profiles) run.profiles.push_back(p.name);
+  run.true_profile = ps.true_index;
+
+  const pddl::State s0 = task->initial_state();
+  const pddl::Simulation sim = pddl::simulate(*task, s0, plan.observed);
+  const int T = static_cast<int>(sim.actions.size());
+  // utterances[k]: those annotated after k actions. Index k >= 1 is scored in
+  // the step of a_k (state s_{k-1}); an index beyond T is never observed.
+  std::vector<std::vector<std::string>> utterances(T + 1);
+  for (const auto& u : plan.observed.utterances)
+    if (u.index >= 0 && u.index <= T) utterances[u.index].push_back(u.text);
+
+  run.belief = std::make_shared<Belief>(task, dataset.kind(), std::move(goals), std::move(ps.profiles), options);
+  Belief& b = *run.belief;
+  run.steps.push_back(b.start(s0, utterances[0], &lm));
+  for (int t = 1; t <= T; ++t) run.steps.push_back(b.observe(sim.actions[t - 1], sim.states[t - 1], utterances[t], &lm));
+  run.seconds = seconds_since(t0);
+  return run;
+}
+
+}  // namespace clips::inference

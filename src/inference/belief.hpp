@@ -1,0 +1,191 @@
+#pragma once
+// Exact Bayesian goal inference (clips-spec.md 1.2-1.3, 6-8).
+//
+// Model. The human holds a goal specification h = (g, c): a goal g and a cost
+// profile c, drawn uniformly from the candidates (mDKG: 4 gems × 2 profiles =
+// 8; VH: the problem's goals × unit costs). They plan a joint policy π_h for
+// both agents (turns alternate) and, at each step,
+//   * act:   a_t ~ Boltzmann(Q_h(s_{t-1}, ·) / T), T unknown with a discrete
+//            inverse-gamma prior (temperature.hpp), marginalised exactly;
+//   * speak: with p_speak = 0.05, an utterance u ~ P(u | s_{t-1}, π_h)
+//            (utterance_model.hpp), scored in the state BEFORE a_t
+//            (reference alignment, spec 7.10; index 0 at s_0).
+// The assistant's own actions are interventions, do(a): they move the state
+// but carry no evidence (likelihood 1, temperatures untouched).
+//
+// Inference. The hypothesis space is small, so every hypothesis is kept with
+// its log weight; no sampling. Each hypothesis owns its policy π_h, refined by
+// RTAA* at the current state every step (mDKG; 2^18 expansions per A*), or
+// fixed at V = -h_g with no search (VH, n_iters = 0), and its temperature
+// weights. The log weight is split into an ACTION part (Σ log P(a_t | ...)
+// over human actions) and an UTTERANCE part (Σ log P(u | ...), plus the
+// constant speak/no-speak factors), so one run yields all three modalities:
+//   both        ∝ prior × action part × utterance part   (CLIPS)
+//   action-only ∝ prior × action part                    (SIPS-style IP)
+//   utterance   ∝ prior × utterance part                 (language-only IP)
+// In the language-only model the policies and scoring states still follow the
+// observed actions; only the action likelihoods are left out.
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "data/dataset.hpp"
+#include "inference/temperature.hpp"
+#include "inference/utterance_model.hpp"
+#include "language/lm/language_model.hpp"
+#include "model/spec.hpp"
+#include "search/rtaa.hpp"
+
+namespace clips::inference {
+
+enum class Modality { Both = 0, UtteranceOnly = 1, ActionOnly = 2 };
+inline constexpr std::array<Modality, 3> kModalities = {Modality::Both, Modality::UtteranceOnly, Modality::ActionOnly};
+std::string to_string(Modality m);  // "both", "utterance", "action"
+Modality parse_modality(const std::string& text);  // throws InputError
+
+// The heuristic behind the inference policies: mDKG "dkg-mst" once the domain
+// registry offers it (else its default), VH "vh" (vh_value.hpp).
+std::string inference_heuristic_name(data::DomainKind kind);
+std::unique_ptr<heuristics::Heuristic> make_inference_heuristic(const std::string& name, const pddl::Task& task,
+                                                                data::DomainKind kind);
+
+// Candidate cost profiles of a plan and the index of the true one (spec 4.3):
+// mDKG keys {C3, C4} (true C3), doors {C1, C2} (true C1); VH unit costs.
+struct ProfileSet {
+  std::vector<model::CostProfile> profiles;
+  int true_index = 0;
+};
+ProfileSet plan_cost_profiles(data::DomainKind kind, const data::PlanRecord& plan);
+
+struct InferenceOptions {
+  // Budgets of each A* search inside a refinement (spec 5.1: 2^18, no time limit).
+  search::SearchOptions refine = [] {
+    search::SearchOptions o;
+    o.max_nodes = size_t{1} << 18;
+    return o;
+  }();
+  // nullopt: by domain (mDKG refines, VH does not: V = -h_g).
+  std::optional<bool> search;
+  std::string heuristic;  // empty: inference_heuristic_name(kind)
+  std::optional<TemperatureWeights> temperature_prior;  // empty: by domain
+  UtteranceModelOptions utterance;
+  // Include the goal-independent log p_speak / log(1 - p_speak) factors (they
+  // change only the log marginal likelihood, never a posterior).
+  bool speak_factors = true;
+  double p_speak = 0.05;
+};
+
+struct Hypothesis {
+  int goal = 0;     // index into Belief::goals()
+  int profile = 0;  // index into Belief::profiles()
+  std::shared_ptr<const model::Specification> spec;
+};
+
+// Normalised posteriors of one modality.
+struct Posterior {
+  std::vector<double> hypotheses;  // in Belief::hypotheses() order
+  std::vector<double> goals;       // marginal over cost profiles
+  std::vector<double> profiles;    // marginal over goals
+  double log_marginal = 0;         // log Σ_h P(h) P(data | h)
+};
+
+struct UtteranceRecord {
+  std::string text;
+  std::vector<HypothesisUtterance> hypotheses;  // likelihood and per-command posterior per hypothesis
+};
+
+// What one step observed and the belief after it (a Gen-style trace entry).
+struct StepRecord {
+  int t = 0;                 // 0: initialisation at s_0
+  std::string action;        // a_t; empty at t = 0
+  bool evidence = false;     // a_t is a human action (robot actions are interventions)
+  std::array<Posterior, 3> posterior;  // indexed by Modality
+  std::vector<UtteranceRecord> utterances;
+  double seconds = 0;        // wall time of this step
+  const Posterior& operator[](Modality m) const { return posterior[static_cast<int>(m)]; }
+};
+
+class Belief {
+ public:
+  Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, std::vector<data::GoalSpec> goals,
+         std::vector<model::CostProfile> profiles, InferenceOptions options = {});
+
+  // INIT (step 0): fresh policies refined at s0; utterances spoken before any
+  // action are scored there. `lm` may be null when there are no utterances.
+  StepRecord start(const pddl::State& s0, const std::vector<std::string>& utterances = {},
+                   lm::LanguageModel* lm = nullptr);
+  // Step t: a_t taken in `state` (= s_{t-1}): refine there, score a_t if it is
+  // the human's, score the utterances annotated at t in `state`, then move to
+  // s_t = apply(a_t, state). Without utterances this is the "speak = false"
+  // step used by online assistance.
+  StepRecord observe(pddl::ActionId action, const pddl::State& state, const std::vector<std::string>& utterances = {},
+                     lm::LanguageModel* lm = nullptr);
+  // Same, at the current state.
+  StepRecord observe(pddl::ActionId action) { return observe(action, state_, {}, nullptr); }
+
+  Posterior posterior(Modality m) const;
+
+  const pddl::Task& task() const { return *task_; }
+  data::DomainKind kind() const { return kind_; }
+  const std::vector<data::GoalSpec>& goals() const { return goals_; }
+  const std::vector<model::CostProfile>& profiles() const { return profiles_; }
+  const std::vector<Hypothesis>& hypotheses() const { return hyps_; }
+  // π_h after the last step; search::Policy is a copyable value for assistance
+  // (copies share the heuristic object, which each refine re-prepares).
+  const std::vector<search::Policy>& policies() const { return policies_; }
+  std::vector<search::Policy>& policies() { return policies_; }
+  const TemperatureBelief& temperature(int h) const { return temps_[h]; }
+  double action_log_likelihood(int h) const { return action_ll_[h]; }
+  double utterance_log_likelihood(int h) const { return utterance_ll_[h]; }
+  const pddl::State& state() const { return state_; }  // s_t
+  int t() const { return t_; }
+  const UtteranceModel& utterance_model() const { return *utterance_model_; }
+  bool searches() const { return search_; }
+
+ private:
+  void refine_all(const pddl::State& s);
+  std::vector<UtteranceRecord> score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
+                                                lm::LanguageModel* lm);
+  StepRecord record(std::string action, bool evidence, std::vector<UtteranceRecord> utts, double seconds) const;
+  bool is_speaker_action(pddl::ActionId a) const;
+
+  std::shared_ptr<const pddl::Task> task_;
+  data::DomainKind kind_;
+  std::vector<data::GoalSpec> goals_;
+  std::vector<model::CostProfile> profiles_;
+  InferenceOptions options_;
+  bool search_ = true;
+  std::shared_ptr<const UtteranceModel> utterance_model_;
+  std::vector<Hypothesis> hyps_;
+  std::vector<search::Policy> policies_;
+  std::vector<std::shared_ptr<heuristics::Heuristic>> heuristics_;
+  std::vector<TemperatureBelief> temps_;
+  std::vector<double> log_prior_, action_ll_, utterance_ll_;
+  pddl::State state_;
+  int t_ = 0;
+  pddl::ObjectId speaker_ = -1;
+};
+
+// Inference over one dataset plan: INIT at s_0, then one step per observed
+// action; utterances with index k are scored at s_{k-1} (index 0 at s_0).
+struct InferenceRun {
+  std::string plan_id;
+  std::vector<std::string> goals;     // labels
+  int true_goal = -1;
+  std::vector<std::string> profiles;  // names
+  int true_profile = 0;
+  std::vector<StepRecord> steps;      // steps[0]: after INIT; steps[t]: after a_t
+  std::shared_ptr<Belief> belief;     // the belief after the last step (policies for assistance)
+  double seconds = 0;
+
+  const std::vector<search::Policy>& policies() const { return belief->policies(); }
+  const Posterior& final_posterior(Modality m) const { return steps.back()[m]; }
+  double p_true_goal(Modality m) const { return final_posterior(m).goals.at(true_goal); }
+};
+
+InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                           const InferenceOptions& options = {});
+
+}  // namespace clips::inference

@@ -1,0 +1,165 @@
+#include "inference/utterance_model.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "language/commands/enumerate.hpp"
+#include "language/commands/salient.hpp"
+#include "util/error.hpp"
+
+namespace clips::inference {
+
+namespace {
+
+constexpr double kNegInf = -std::numeric_limits<double>::infinity();
+
+double log_sum_exp(const std::vector<double>& x) {
+  double m = kNegInf;
+  for (double v : x) m = std::max(m, v);
+  if (m == kNegInf) return kNegInf;
+  double z = 0;
+  for (double v : x) z += std::exp(v - m);
+  return m + std::log(z);
+}
+
+}  // namespace
+
+UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, data::DomainKind kind,
+                               const UtteranceModelOptions& options)
+    : task_(std::move(task)),
+      config_(kind == data::DomainKind::VirtualHome ? commands::virtual_home_language()
+                                                    : commands::doors_keys_gems_language()),
+      rollout_kind_(kind == data::DomainKind::VirtualHome ? RolloutKind::WeightedAStarNoGrab : RolloutKind::Greedy),
+      options_(options) {
+  const std::string dir = options_.language_dir.empty() ? std::string(CLIPS_SOURCE_DIR) + "/data/language"
+                                                        : options_.language_dir;
+  auto all = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");
+  auto orders = commands::load_prompt_orders(dir + "/prompt-orders.json");
+  auto it = orders.find(config_.domain);
+  if (it == orders.end()) throw InputError("no prompt order for domain " + config_.domain + " in " + dir);
+  examples_ = commands::order_examples(all, config_.domain, it->second.pragmatic);
+
+  const pddl::Task& t = *task_;
+  const auto& dom = t.domain();
+  for (int o = 0; o < t.num_objects(); ++o)
+    type_of_[t.object_name(o)] = dom.types[t.problem().objects[o].type].name;
+  // Qualifier candidates: every (object, value) pair whose atom is dynamic or
+  // statically true; the state decides among dynamic ones.
+  if (auto pred = dom.find_predicate(config_.qualifier); pred && dom.predicates[*pred].arg_types.size() == 2) {
+    const int obj_pos = config_.qualifier_object_arg - 1;
+    for (int o = 0; o < t.num_objects(); ++o)
+      for (int v = 0; v < t.num_objects(); ++v) {
+        std::vector<pddl::ObjectId> args(2);
+        args[obj_pos] = o;
+        args[1 - obj_pos] = v;
+        bool typed = true;
+        for (int i = 0; i < 2; ++i)
+          typed = typed && dom.is_subtype(t.problem().objects[args[i]].type, dom.predicates[*pred].arg_types[i]);
+        if (!typed) continue;
+        auto ref = t.atom(*pred, args);
+        if (ref.bit >= 0 || ref.value) qualifiers_[t.object_name(o)].push_back({t.object_name(v), ref});
+      }
+  }
+  if (rollout_kind_ == RolloutKind::WeightedAStarNoGrab) {
+    auto nograb = dom.find_predicate("nograb");
+    auto speaker = t.find_object(config_.speaker);
+    if (!nograb || !speaker) throw InputError("the VH rollout needs (nograb " + config_.speaker + ")");
+    speaker_nograb_ = t.atom(*nograb, {*speaker});
+  }
+}
+
+std::optional<commands::Term> UtteranceModel::qualifier(const std::string& object, const pddl::State& s) const {
+  auto it = qualifiers_.find(object);
+  if (it == qualifiers_.end()) return std::nullopt;
+  for (const auto& [value, ref] : it->second)
+    if (task_->test(s, ref)) {
+      commands::Term t{config_.qualifier, {}};
+      t.args = config_.qualifier_object_arg == 1 ? std::vector<std::string>{object, value}
+                                                 : std::vector<std::string>{value, object};
+      return t;
+    }
+  return std::nullopt;
+}
+
+commands::Term UtteranceModel::term(pddl::ActionId a) const {
+  const auto& ga = task_->action(a);
+  commands::Term t{task_->domain().actions[ga.schema].name, {}};
+  for (auto o : ga.args) t.args.push_back(task_->object_name(o));
+  return t;
+}
+
+std::vector<pddl::ActionId> UtteranceModel::rollout(const search::Policy& policy, const pddl::State& s) const {
+  if (rollout_kind_ == RolloutKind::Greedy) return policy.rollout(s, options_.rollout_steps);
+  // VH: the principal may not collect new items, so every remaining item is the
+  // helper's to grab and can be delegated in a command.
+  pddl::State start = s;
+  task_->set(start, speaker_nograb_, true);
+  if (policy.spec().is_goal(start)) return {};
+  search::SearchOptions so;
+  so.max_nodes = options_.astar_max_nodes;
+  so.h_weight = options_.astar_weight;
+  so.prune = false;  // the rollout uses all legal actions
+  auto r = search::plan(policy.spec(), policy.heuristic(), start, so);
+  if (r.status == search::SearchStatus::Failure || r.terminal < 0) return {};
+  if (r.status == search::SearchStatus::Success && !r.plan.empty()) return r.plan;
+  // Budget exhausted: the path to the best frontier node (a partial plan).
+  std::vector<pddl::ActionId> path;
+  for (int id = r.terminal; r.nodes[id].parent >= 0; id = r.nodes[id].parent) path.push_back(r.nodes[id].action);
+  return {path.rbegin(), path.rend()};
+}
+
+std::vector<commands::Command> UtteranceModel::commands_at(const search::Policy& policy, const pddl::State& s) const {
+  std::vector<commands::Term> terms;
+  for (pddl::ActionId a : rollout(policy, s)) terms.push_back(term(a));
+  // Qualifiers are read in the scoring state (objects keep their colour / type).
+  auto salient = commands::extract_salient(
+      terms, config_, [&](const std::string& o) { return qualifier(o, s); });
+  return commands::enumerate_commands(salient, config_, [this](const std::string& o) {
+    auto it = type_of_.find(o);
+    return it == type_of_.end() ? std::string("object") : it->second;
+  });
+}
+
+std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(
+    const std::vector<const search::Policy*>& policies, const pddl::State& s,
+    const std::vector<std::string>& utterances, lm::LanguageModel& lm) const {
+  std::vector<std::vector<HypothesisUtterance>> out(utterances.size(),
+                                                    std::vector<HypothesisUtterance>(policies.size()));
+  if (utterances.empty() || policies.empty()) return out;
+  // Commands and prompts depend on the hypothesis only; the batch is
+  // utterance-major over (hypothesis, prompt).
+  std::vector<std::vector<commands::Command>> cmds(policies.size());
+  std::vector<std::vector<commands::WeightedPrompt>> prompts(policies.size());
+  size_t per_utterance = 0;
+  for (size_t h = 0; h < policies.size(); ++h) {
+    cmds[h] = commands_at(*policies[h], s);
+    prompts[h] = commands::command_prompts(cmds[h], examples_);
+    per_utterance += prompts[h].size();
+  }
+  std::vector<lm::ScoreRequest> batch;
+  batch.reserve(per_utterance * utterances.size());
+  for (const auto& u : utterances) {
+    const std::string cont = commands::utterance_continuation(u);
+    for (size_t h = 0; h < policies.size(); ++h)
+      for (const auto& p : prompts[h]) batch.push_back({p.prompt, cont});
+  }
+  const std::vector<double> scores = lm.score(batch);
+  if (scores.size() != batch.size()) throw lm::LmError(lm.name() + ": wrong number of scores");
+  size_t k = 0;
+  for (size_t ui = 0; ui < utterances.size(); ++ui)
+    for (size_t h = 0; h < policies.size(); ++h) {
+      HypothesisUtterance& r = out[ui][h];
+      std::vector<double> terms, lms;
+      for (const auto& p : prompts[h]) {
+        lms.push_back(scores[k++]);
+        terms.push_back(std::log(p.weight) + lms.back());
+      }
+      r.log_likelihood = log_sum_exp(terms);
+      const double z = log_sum_exp(lms);
+      for (size_t c = 0; c < cmds[h].size(); ++c)
+        r.commands.push_back({cmds[h][c].display_form(), lms[c], z == kNegInf ? 0.0 : std::exp(lms[c] - z)});
+    }
+  return out;
+}
+
+}  // namespace clips::inference

@@ -1,0 +1,90 @@
+#pragma once
+// The pragmatic speaker (clips-spec.md 7, VH spec 6): how likely is utterance u
+// if the human holds hypothesis h = (g, c) and is in state s?
+//
+//   1. Roll out the joint policy π_h from s (mDKG: greedy in π_h for ≤ 100
+//      steps; VH: weighted A* (w = 2) with the principal barred from grabbing).
+//   2. Keep the salient actions (pickups, hand-overs, unlocks / grabs), each
+//      with the qualifier of its focal object, e.g. (iscolor key2 red).
+//   3. Enumerate the distinct lifted commands over the listener's salient
+//      actions (speaker actions removed), uniform prior 1/|C|.
+//   4. P(u | s, π_h) = Σ_c (1/|C|) P_LM(u | prompt(c)); with no command the
+//      single prompt "\n" is scored with weight 1.
+// The per-command posterior P(c | u, s, π_h) ∝ P_LM(u | c) is a by-product.
+// All prompts of all hypotheses (and utterances) go to the LM in one batch.
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "data/dataset.hpp"
+#include "language/commands/command.hpp"
+#include "language/commands/fewshot.hpp"
+#include "language/commands/language_config.hpp"
+#include "language/lm/language_model.hpp"
+#include "search/rtaa.hpp"
+
+namespace clips::inference {
+
+enum class RolloutKind {
+  Greedy,             // mDKG: best_action of the policy, no search (spec 7.2)
+  WeightedAStarNoGrab // VH: weighted A* towards g with (nograb speaker) set (VH spec 6.1)
+};
+
+struct UtteranceModelOptions {
+  int rollout_steps = 100;                 // greedy rollout bound (mDKG)
+  size_t astar_max_nodes = size_t{1} << 16;  // VH rollout budget
+  double astar_weight = 2.0;               // VH rollout: f = g + 2h
+  // Directory with fewshot-examples.tsv and prompt-orders.json; empty:
+  // CLIPS_SOURCE_DIR "/data/language".
+  std::string language_dir;
+};
+
+struct CommandScore {
+  std::string command;    // display form, e.g. "(handover you me ?key1) where (iscolor ?key1 red)"
+  double log_lm = 0;      // log P_LM(u | prompt(c))
+  double posterior = 0;   // P(c | u, s, π_h)
+};
+
+struct HypothesisUtterance {
+  double log_likelihood = 0;          // log P(u | s, π_h)
+  std::vector<CommandScore> commands; // empty: scored with the "\n" prompt
+};
+
+class UtteranceModel {
+ public:
+  UtteranceModel(std::shared_ptr<const pddl::Task> task, data::DomainKind kind,
+                 const UtteranceModelOptions& options = {});
+
+  const commands::LanguageConfig& config() const { return config_; }
+  RolloutKind rollout_kind() const { return rollout_kind_; }
+  // The speaker's rollout of π_h from s (both agents' actions).
+  std::vector<pddl::ActionId> rollout(const search::Policy& policy, const pddl::State& s) const;
+  // The distinct lifted commands of that rollout, in enumeration order.
+  std::vector<commands::Command> commands_at(const search::Policy& policy, const pddl::State& s) const;
+
+  // result[u][h]: the likelihood of utterance u under policy h at state s.
+  // Exactly one LanguageModel::score call (none if there is nothing to score).
+  std::vector<std::vector<HypothesisUtterance>> score(const std::vector<const search::Policy*>& policies,
+                                                      const pddl::State& s,
+                                                      const std::vector<std::string>& utterances,
+                                                      lm::LanguageModel& lm) const;
+
+  // The qualifying predicate of an object in state s (static facts fold into the task).
+  std::optional<commands::Term> qualifier(const std::string& object, const pddl::State& s) const;
+
+ private:
+  commands::Term term(pddl::ActionId a) const;
+
+  std::shared_ptr<const pddl::Task> task_;
+  commands::LanguageConfig config_;
+  RolloutKind rollout_kind_;
+  UtteranceModelOptions options_;
+  std::vector<commands::FewShotExample> examples_;  // pragmatic order
+  std::unordered_map<std::string, std::string> type_of_;
+  // Per object: candidate qualifier values and the atom that says so.
+  std::unordered_map<std::string, std::vector<std::pair<std::string, pddl::Task::AtomRef>>> qualifiers_;
+  pddl::Task::AtomRef speaker_nograb_;
+};
+
+}  // namespace clips::inference

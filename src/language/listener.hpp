@@ -1,0 +1,147 @@
+#pragma once
+// The literal listener (clips-spec 9.7-9.9; VH spec 7.1-7.4): given the state in
+// which an instruction is spoken, list every command the robot could be asked
+// to do there, score the utterance under each command's few-shot prompt, and
+// return the posterior over commands. Also: mapping a command to its goal and
+// checking it against a plan, and the factory for the LM backends.
+//
+// The functions take a grounded task and a state rather than a dataset, so the
+// listener works on any problem of the two domains (the CLI does the dataset
+// loading).
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "language/commands/command.hpp"
+#include "language/commands/fewshot.hpp"
+#include "language/commands/language_config.hpp"
+#include "language/commands/term.hpp"
+#include "language/lm/language_model.hpp"
+#include "pddl/plan.hpp"
+#include "pddl/task.hpp"
+
+namespace clips::language {
+
+// ---- language-model backends ----------------------------------------------
+
+struct LanguageModelOptions {
+  // openai: "" falls back to $CLIPS_LM_BASE_URL / $CLIPS_LM_MODEL / $OPENAI_API_KEY
+  // and then to the backend's own defaults (see lm/openai_model.hpp).
+  std::string base_url;
+  std::string model;
+  std::optional<std::string> api_key;
+  // embedded: directory of the corpus files ("" = the backend's default).
+  std::string data_dir;
+};
+
+// Names accepted by make_language_model, default first.
+std::vector<std::string> language_model_kinds();
+
+// "embedded" (or "") -> EmbeddedLanguageModel, "openai" -> OpenAiCompletionsModel,
+// each wrapped in a CachedLanguageModel because inference and the listener
+// re-score the same (prompt, utterance) pairs. Throws clips::InputError for an
+// unknown kind (listing the known ones); backend construction errors (LmError)
+// pass through.
+std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind,
+                                                       const LanguageModelOptions& options = {});
+
+// ---- listener setup ---------------------------------------------------------
+
+struct LiteralListenerSetup {
+  commands::LanguageConfig config;
+  std::vector<commands::FewShotExample> examples;  // the literal examples, in prompt order
+  // Summed log-probabilities are divided by this: 1 for mDKG, 0.5 for VH (the
+  // reference queries davinci-002 at temperature 0.5 and scales the scores).
+  double temperature = 1.0;
+};
+
+// The directory of fewshot-examples.tsv and prompt-orders.json: $CLIPS_DATA_DIR
+// if set (the embedded LM reads its corpus from there too), else
+// CLIPS_SOURCE_DIR "/data/language".
+std::string language_data_dir();
+
+// Setup for `domain` ("doors-keys-gems" or "virtual-home"): the built-in
+// language config, the literal examples in the LITERAL prompt order of
+// prompt-orders.json, and the domain's temperature. Throws clips::InputError
+// for another domain or unreadable data files.
+LiteralListenerSetup literal_listener_setup(const std::string& domain, const std::string& data_dir = "");
+
+// The language domain of a grounded task, judged from its types:
+// "doors-keys-gems" (key/door), "virtual-home" (item/fixture); throws
+// clips::InputError otherwise.
+std::string language_domain_of(const pddl::Task& task);
+
+// ---- candidates and commands --------------------------------------------------
+
+// The ground salient listener actions of the literal listener in state `s`:
+// mDKG (spec 9.7): (pickup robot k) for every key, (handover robot human k) for
+// every key, (unlock robot k d) for every key/door pair of the same colour, in
+// that order (keys and doors in declaration order), dropping only actions that
+// are statically impossible (forbidden items); held or used keys are kept.
+// VH (VH spec 7.1): (grab helper i f) for every (placed i f) in `s`, ordered by
+// fixture name, then item name.
+std::vector<commands::Term> literal_candidate_actions(const pddl::Task& task, const pddl::State& s,
+                                                      const commands::LanguageConfig& config);
+
+// The distinct lifted commands over those candidates (spec 7.4/7.5 with K from
+// the config: 3 for mDKG, 4 for VH), in enumeration order.
+std::vector<commands::Command> literal_commands(const pddl::Task& task, const pddl::State& s,
+                                                const commands::LanguageConfig& config);
+
+// ---- scoring ------------------------------------------------------------------
+
+struct RankedCommand {
+  commands::Command command;
+  double log_likelihood = 0;  // LM log P(utterance | prompt(command)) divided by the temperature
+  double prob = 0;            // posterior under a uniform prior
+};
+
+struct ListenerResult {
+  std::string utterance;               // as given (without the added space/stop)
+  std::vector<RankedCommand> commands; // by decreasing probability (ties keep enumeration order)
+};
+
+// Scores `utterance` under every command in ONE lm.score() call. The
+// continuation is utterance_continuation(utterance) (leading space, "\n" stop).
+// Throws clips::InputError if the utterance is empty or whitespace only.
+ListenerResult rank_commands(const std::vector<commands::Command>& commands, const std::string& utterance,
+                             const LiteralListenerSetup& setup, lm::LanguageModel& lm);
+
+// literal_commands + rank_commands.
+ListenerResult literal_listener(const pddl::Task& task, const pddl::State& s, const std::string& utterance,
+                                const LiteralListenerSetup& setup, lm::LanguageModel& lm);
+
+// ---- commands as goals ----------------------------------------------------------
+
+// The goal formula of a command (spec 9.9 / VH spec 7.4) compiled in `task`.
+pddl::CondId compile_command_goal(const pddl::Task& task, const commands::Command& command,
+                                  const commands::LanguageConfig& config);
+
+// The state after the observed plan and then its completion (the completed plan
+// continues from the end of the observed one, spec 2.3). Throws InputError at a
+// bad step.
+pddl::State completed_final_state(const pddl::Task& task, const pddl::PlanFile& observed,
+                                  const pddl::PlanFile& completed);
+
+// Whether `state` satisfies the command's goal formula.
+bool state_satisfies_command(const pddl::Task& task, const pddl::State& state,
+                             const commands::Command& command, const commands::LanguageConfig& config);
+
+// The facts achieved along a trajectory: every dynamic atom that is true in at
+// least one of `states` (numeric fluents as in the last state). Command goals
+// are positive conjunctions over atoms (plus static colour/type facts and
+// object inequalities), so evaluating one here asks "did each thing the
+// command asks for happen at some point?".
+pddl::State achieved_facts(const pddl::Task& task, const std::vector<pddl::State>& states);
+
+// Whether the completed plan fulfils the command: its goal holds in the
+// achieved facts of s_T and the completion's states (observed + completion,
+// from the initial state). Neither the final state nor any single state will
+// do: a key handed over is usually spent on a door later, which deletes
+// (has human key), so "pass me the red keys" (two hand-overs) may never hold
+// at one instant although the plan did exactly that.
+bool completed_plan_satisfies(const pddl::Task& task, const pddl::PlanFile& observed, const pddl::PlanFile& completed,
+                              const commands::Command& command, const commands::LanguageConfig& config);
+
+}  // namespace clips::language
