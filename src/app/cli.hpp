@@ -18,5 +18,6 @@ void register_plan(CLI::App& app);
 void register_infer(CLI::App& app);
 void register_listen(CLI::App& app);
 void register_lm_score(CLI::App& app);
+void register_export_strips(CLI::App& app);
 
 }  // namespace clips::app

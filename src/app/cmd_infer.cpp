@@ -50,12 +50,14 @@ void register_infer(CLI::App& app) {
       return;
     }
     fmt::print("plan {}: goal posterior ({}), true goal {}\n", run.plan_id, inference::to_string(modality), true_goal);
-    fmt::print("{:>4}  {:<28}", "t", "action");
-    for (const auto& g : run.goals) fmt::print(" {:>9}", g);
+    fmt::print("{:>4}  {:<30}", "t", "action");
+    std::vector<size_t> width;
+    for (const auto& g : run.goals) width.push_back(std::max<size_t>(9, g.size()));
+    for (size_t g = 0; g < run.goals.size(); ++g) fmt::print(" {:>{}}", run.goals[g], width[g]);
     fmt::print("\n");
     for (const auto& st : run.steps) {
-      fmt::print("{:>4}  {:<28}", st.t, st.t == 0 ? "(start)" : st.action);
-      for (double p : st[modality].goals) fmt::print(" {:>9.4f}", p);
+      fmt::print("{:>4}  {:<30}", st.t, st.t == 0 ? "(start)" : st.action);
+      for (size_t g = 0; g < width.size(); ++g) fmt::print(" {:>{}.4f}", st[modality].goals[g], width[g]);
       for (const auto& u : st.utterances) fmt::print("   <- \"{}\"", u.text);
       fmt::print("\n");
     }

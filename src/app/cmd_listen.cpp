@@ -75,9 +75,9 @@ void register_listen(CLI::App& app) {
     const size_t n_all = result.commands.size();
     const size_t shown = o->top >= 0 ? std::min(n_all, static_cast<size_t>(o->top)) : (o->json ? n_all : std::min<size_t>(n_all, 10));
     if (o->json) {
-      nlohmann::json j;
+      nlohmann::ordered_json j;  // keeps "utterance" before "commands"
       j["utterance"] = result.utterance;
-      j["commands"] = nlohmann::json::array();
+      j["commands"] = nlohmann::ordered_json::array();
       for (size_t i = 0; i < shown; ++i)
         j["commands"].push_back({{"command", result.commands[i].command.display_form()}, {"prob", result.commands[i].prob}});
       fmt::print("{}\n", j.dump());

@@ -242,7 +242,9 @@ double DkgMstHeuristic::pair_weight(int i, int j) {
       bool agents = i < m.num_agents() && j < m.num_agents();
       // Between two agents no one waits; otherwise the other agent waits
       // once per move.
-      w = d * (agents ? costs_.move : costs_.move + costs_.wait);
+      // Written as d*move + d*wait, as the reference sums it, so the float
+      // values match to the last bit.
+      w = agents ? d * costs_.move : d * costs_.move + d * costs_.wait;
     }
   }
   pair_w_[idx] = w;

@@ -1,22 +1,31 @@
 #include "domains/registry.hpp"
 
+#include "domains/dkg_heuristic.hpp"
 #include "heuristics/basic.hpp"
 
 namespace clips::domains {
 
 std::vector<std::string> heuristic_names(data::DomainKind kind) {
-  (void)kind;
+  if (kind == data::DomainKind::DoorsKeysGems) return {"dkg-dist", "dkg-mst", "hmax", "blind"};
   return {"hmax", "blind"};
 }
 
 std::string default_admissible_heuristic(data::DomainKind kind) {
-  (void)kind;
-  return "hmax";
+  // The mDKG MST heuristic of the paper is not admissible; the distance bound is.
+  return kind == data::DomainKind::DoorsKeysGems ? "dkg-dist" : "hmax";
+}
+
+std::string model_heuristic(data::DomainKind kind) {
+  return kind == data::DomainKind::DoorsKeysGems ? "dkg-mst" : "hmax";
 }
 
 std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task,
                                                       data::DomainKind kind) {
   (void)task;
+  if (kind == data::DomainKind::DoorsKeysGems) {
+    if (name == "dkg-mst") return std::make_unique<DkgMstHeuristic>();
+    if (name == "dkg-dist") return std::make_unique<DkgDistanceHeuristic>();
+  }
   if (name == "blind") return std::make_unique<heuristics::BlindHeuristic>();
   if (name == "hmax") return std::make_unique<heuristics::HMaxHeuristic>();
   std::string known;

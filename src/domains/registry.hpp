@@ -15,6 +15,9 @@ namespace clips::domains {
 std::vector<std::string> heuristic_names(data::DomainKind kind);
 // The admissible default used for optimal planning.
 std::string default_admissible_heuristic(data::DomainKind kind);
+// The heuristic the human model plans with (inference and assistance):
+// the paper's DoorsKeysMSTHeuristic in mDKG.
+std::string model_heuristic(data::DomainKind kind);
 std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task,
                                                       data::DomainKind kind);
 // Cost profile by user-facing number/name: mDKG "1".."4" (C1..C4); "unit";

@@ -24,6 +24,7 @@ class VhValueHeuristic : public heuristics::Heuristic {
   // `placed`, `holding` and `next-to` atoms; cached per goal.
   void prepare(const model::Specification& spec, const pddl::State& root) override;
   double estimate(const uint64_t* state) override;
+  using heuristics::Heuristic::estimate;
 
  private:
   const pddl::Task* task_;

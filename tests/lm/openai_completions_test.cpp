@@ -295,7 +295,8 @@ TEST_F(OpenAiCompletionsTest, TruncatedTransferFailsAfterRetries) {
 }
 
 TEST_F(OpenAiCompletionsTest, UnreachableServerErrorsClearly) {
-  // A port that was just free: bind, note it, close.
+  // A port bound but never listened on: connecting is refused, and holding
+  // the socket keeps other tests' servers (run in parallel) off that port.
   int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   ASSERT_GE(fd, 0);
   sockaddr_in addr{};
@@ -304,7 +305,6 @@ TEST_F(OpenAiCompletionsTest, UnreachableServerErrorsClearly) {
   ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
   socklen_t len = sizeof addr;
   ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len), 0);
-  ::close(fd);
   const std::string base = "http://127.0.0.1:" + std::to_string(ntohs(addr.sin_port)) + "/v1";
 
   auto o = options();
@@ -312,6 +312,7 @@ TEST_F(OpenAiCompletionsTest, UnreachableServerErrorsClearly) {
   o.http.max_retries = 1;
   OpenAiCompletionsModel m(o);
   const std::string msg = error_of(m, {{kPrompt, kUtterance}});
+  ::close(fd);
   EXPECT_NE(msg.find("POST " + base + "/completions failed after 2 attempts"), std::string::npos) << msg;
   EXPECT_NE(msg.find("curl error 7"), std::string::npos) << msg;  // CURLE_COULDNT_CONNECT
 }

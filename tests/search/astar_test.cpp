@@ -107,7 +107,9 @@ TEST(HMax, AdmissibleAndConsistentOnRandomWalks) {
       }
       if (step % 10 == 0) {
         double truth = true_cost(*spec, s);
-        if (!std::isnan(truth)) EXPECT_LE(hs, truth + 1e-9) << "admissibility";
+        if (!std::isnan(truth)) {
+          EXPECT_LE(hs, truth + 1e-9) << "admissibility";
+        }
       }
       s = spec->task().apply(s, acts[rng() % acts.size()]);
     }

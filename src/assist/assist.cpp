@@ -1,0 +1,302 @@
+#include "assist/assist.hpp"
+
+#include <cmath>
+
+#include "model/spec.hpp"
+
+namespace clips::assist {
+
+using model::kInf;
+using pddl::ActionId;
+using pddl::State;
+
+double plan_cost(const model::Specification& spec, const std::vector<ActionId>& plan) {
+  double c = 0;
+  for (ActionId a : plan) c += spec.cost(a);
+  return c;
+}
+
+double human_cost(const model::Specification& spec, const std::vector<ActionId>& plan, const std::string& principal) {
+  double c = 0;
+  const pddl::Task& t = spec.task();
+  for (ActionId a : plan) {
+    const auto& ga = t.action(a);
+    if (!ga.args.empty() && t.object_name(ga.args[0]) == principal) c += spec.cost(a);
+  }
+  return c;
+}
+
+namespace {
+
+const double kLog10 = std::log(10.0);
+
+// Shared machinery of one simulated episode.
+struct Episode {
+  const AssistSetup& setup;
+  const pddl::Task& task;
+  pddl::Task::AtomRef principal_active;
+  ActionId assistant_wait = -1, principal_wait = -1;
+  search::StateMap<int> trajectory;  // completed-plan states -> index
+  std::string assistant, principal;
+
+  explicit Episode(const AssistSetup& s)
+      : setup(s), task(*s.task), trajectory(s.task->num_words()), assistant(s.assistant), principal(s.principal) {
+    principal_active = task.atom("active", {principal});
+    auto w = task.find_action("(wait " + assistant + ")");
+    auto pw = task.find_action("(wait " + principal + ")");
+    if (!w || !pw) throw InputError("assistance needs (wait " + assistant + ") and (wait " + principal + ") actions");
+    assistant_wait = *w;
+    principal_wait = *pw;
+    State cur = setup.start;
+    for (size_t j = 0; j < setup.completed.size(); ++j) {
+      trajectory.try_emplace(cur.data(), static_cast<int>(j));
+      if (!task.applicable(setup.completed[j], cur.data())) break;
+      cur = task.apply(cur, setup.completed[j]);
+    }
+  }
+
+  bool principal_turn(const State& s) const { return task.test(s, principal_active); }
+  ActionId wait_of_active(const State& s) const { return principal_turn(s) ? principal_wait : assistant_wait; }
+
+  // clips-spec.md 9.2: follow the completed plan where the state matches,
+  // else the true goal's joint policy, else wait.
+  ActionId principal_action(const search::Policy& truth, const State& s_h, bool follow_plan) const {
+    if (follow_plan) {
+      if (const int* j = trajectory.find(s_h.data())) {
+        ActionId a = setup.completed[*j];
+        if (task.applicable(a, s_h.data())) return a;
+      }
+    }
+    if (truth.value(s_h) == -kInf) return wait_of_active(s_h);
+    auto a = truth.best_action(s_h);
+    return a ? *a : wait_of_active(s_h);
+  }
+
+  // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true
+  // policy versus uniform over the assistant's available actions.
+  double coop_increment(const search::Policy& truth, const State& s, ActionId a) const {
+    auto qs = truth.q_values(s);
+    double mx = -kInf;
+    for (auto& q : qs) mx = std::max(mx, q.q);
+    if (qs.empty()) return 0;
+    double z = 0, qa = -kInf;
+    for (auto& q : qs) {
+      if (q.q > -kInf) z += std::exp(q.q - mx);
+      if (q.action == a) qa = q.q;
+    }
+    double logp = (qa == -kInf || mx == -kInf) ? -kInf : (qa - mx) - std::log(z);
+    return logp + std::log(static_cast<double>(qs.size()));
+  }
+
+  void collect_option(ActionId a, std::map<std::string, double>& opts) const {
+    if (!setup.option_of) return;
+    if (auto o = setup.option_of(a)) opts[*o] = 1.0;
+  }
+};
+
+void finish(const AssistSetup& setup, const model::Specification& truth, AssistResult& r) {
+  r.plan_length = static_cast<double>(r.plan.size()) + r.noops;
+  r.plan_cost = plan_cost(truth, r.plan) + r.noops * setup.noop_cost;
+  r.human_cost = human_cost(truth, r.plan, setup.principal) + r.noops * setup.noop_cost;
+  r.success = r.goal_reached ? 1.0 : 0.0;
+}
+
+}  // namespace
+
+AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
+  Episode ep(setup);
+  const pddl::Task& task = ep.task;
+  search::Policy truth = *belief.at(true_hypothesis).policy;  // a copy: the principal's own planner
+  const model::Specification& tspec = truth.spec();
+  for (auto& h : belief) h.policy = std::make_shared<search::Policy>(*h.policy);  // never touch the caller's
+  AssistResult r;
+  double coop = 0;
+  bool solo = false;
+  State s = setup.start;
+  for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
+    State s_h = s;
+    if (coop < -kLog10) {
+      solo = true;
+      s_h = model::freeze(task, s, setup.assistant);
+    }
+    truth.refine(s_h, setup.refine_options);
+    ActionId a;
+    if (ep.principal_turn(s) || solo) {
+      a = ep.principal_action(truth, s_h, !solo);
+    } else {
+      std::vector<const Hypothesis*> live;
+      for (auto& h : belief)
+        if (h.weight >= setup.weight_threshold) live.push_back(&h);
+      std::optional<ActionId> common;
+      bool all_same = true;
+      for (const Hypothesis* h : live) {
+        h->policy->refine(s, setup.refine_options);
+        auto b = h->policy->best_action(s);
+        if (!b || (common && *common != *b)) all_same = false;
+        if (b && !common) common = b;
+      }
+      if (all_same && common) {
+        a = *common;
+      } else {
+        auto acts = task.applicable_actions(s);
+        std::vector<double> qa(acts.size(), 0.0);
+        for (const Hypothesis* h : live) {
+          auto qs = h->policy->q_values(s);
+          const auto& spec = h->policy->spec();
+          double wait_cost = spec.cost(ep.assistant_wait);
+          for (size_t i = 0; i < acts.size(); ++i) {
+            double floor = -((setup.horizon - t) * wait_cost + spec.cost(acts[i]));
+            qa[i] += h->weight * std::max(qs[i].q, floor);
+          }
+        }
+        size_t best = 0;
+        for (size_t i = 1; i < acts.size(); ++i)
+          if (qa[i] > qa[best]) best = i;
+        a = acts[best];
+      }
+      coop += ep.coop_increment(truth, s, a);
+      ep.collect_option(a, r.options);
+    }
+    r.plan.push_back(a);
+    s = task.apply(s, a);
+    if (tspec.is_goal(s)) {
+      r.goal_reached = true;
+      break;
+    }
+  }
+  finish(setup, tspec, r);
+  return r;
+}
+
+AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
+                         std::shared_ptr<const model::Specification> true_spec,
+                         std::shared_ptr<heuristics::Heuristic> true_heuristic) {
+  Episode ep(setup);
+  const pddl::Task& task = ep.task;
+  search::Policy truth(true_spec, std::move(true_heuristic));  // fresh, refined as it goes
+  AssistResult r;
+  double coop = 0;
+  State s = setup.start;
+  for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
+    truth.refine(s, setup.refine_options);
+    ActionId a;
+    if (ep.principal_turn(s)) {
+      if (coop < -kLog10) {
+        // Lost trust: plan as if the assistant were frozen, keep acting on own turns only.
+        State s_h = model::freeze(task, s, setup.assistant);
+        truth.refine(s_h, setup.refine_options);
+        a = ep.principal_action(truth, s_h, false);
+      } else {
+        a = ep.principal_action(truth, s, true);
+      }
+    } else {
+      auto& hyps = belief.hypotheses();
+      std::vector<Hypothesis*> live;
+      for (auto& h : hyps)
+        if (h.weight >= setup.weight_threshold) live.push_back(&h);
+      std::optional<ActionId> common;
+      bool all_same = true;
+      for (Hypothesis* h : live) {
+        h->policy->refine(s, setup.refine_options);
+        auto b = h->policy->best_action(s);
+        if (!b || (common && *common != *b)) all_same = false;
+        if (b && !common) common = b;
+      }
+      if (all_same && common) {
+        a = *common;
+      } else {
+        auto acts = task.applicable_actions(s);
+        std::vector<double> qa(acts.size(), 0.0);
+        for (Hypothesis* h : live) {
+          auto qs = h->policy->q_values(s);
+          const auto& spec = h->policy->spec();
+          double wait_cost = spec.cost(ep.assistant_wait);
+          for (size_t i = 0; i < acts.size(); ++i)
+            qa[i] += h->weight * std::max(qs[i].q, -((setup.horizon - t) * wait_cost + spec.cost(acts[i])));
+        }
+        size_t best = 0;
+        for (size_t i = 1; i < acts.size(); ++i)
+          if (qa[i] > qa[best]) best = i;
+        a = acts[best];
+      }
+      coop += ep.coop_increment(truth, s, a);
+      ep.collect_option(a, r.options);
+    }
+    r.plan.push_back(a);
+    State pre = s;
+    s = task.apply(s, a);
+    if (true_spec->is_goal(s)) {
+      r.goal_reached = true;
+      break;
+    }
+    belief.observe(pre, a);
+  }
+  finish(setup, *true_spec, r);
+  return r;
+}
+
+AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
+  Episode ep(setup);
+  const pddl::Task& task = ep.task;
+  const model::Specification& tspec = belief.at(true_hypothesis).policy->spec();
+  AssistResult mean;
+  int remaining = setup.horizon - setup.observed_steps;
+  double best_w = -1;
+  // Options: pure greedy rollouts of every hypothesis (no threshold).
+  for (auto& h : belief) {
+    auto roll = h.policy->rollout(setup.start, remaining);
+    std::map<std::string, double> seen;
+    for (ActionId a : roll) ep.collect_option(a, seen);
+    for (auto& [o, v] : seen) mean.options[o] += h.weight * v;
+  }
+  for (size_t hi = 0; hi < belief.size(); ++hi) {
+    const Hypothesis& h = belief[hi];
+    AssistResult run;
+    if (h.weight < setup.weight_threshold) {
+      run.noops = remaining;  // the reference's no-op plan for ignored hypotheses
+      finish(setup, tspec, run);
+    } else {
+      search::Policy truth = *belief[true_hypothesis].policy;
+      search::Policy mine = *h.policy;
+      double coop = 0;
+      bool solo = false;
+      State s = setup.start;
+      for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
+        if (!solo && coop < -kLog10) {
+          s = model::freeze(task, s, setup.assistant);
+          solo = true;
+        }
+        truth.refine(s, setup.refine_options);
+        ActionId a;
+        if (ep.principal_turn(s) || solo) {
+          a = ep.principal_action(truth, s, !solo);
+        } else {
+          mine.refine(s, setup.refine_options);
+          auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;
+          a = b ? *b : ep.assistant_wait;
+          if (!solo) coop += ep.coop_increment(truth, s, a);
+        }
+        run.plan.push_back(a);
+        s = task.apply(s, a);
+        if (tspec.is_goal(s)) {
+          run.goal_reached = true;
+          break;
+        }
+      }
+      finish(setup, tspec, run);
+    }
+    mean.plan_length += h.weight * run.plan_length;
+    mean.plan_cost += h.weight * run.plan_cost;
+    mean.human_cost += h.weight * run.human_cost;
+    mean.success += h.weight * run.success;
+    if (h.weight > best_w) {
+      best_w = h.weight;
+      mean.plan = run.plan;
+      mean.noops = run.noops;
+    }
+  }
+  mean.goal_reached = mean.success >= 0.5;
+  return mean;
+}
+
+}  // namespace clips::assist

@@ -1,0 +1,85 @@
+#pragma once
+// Assistance (clips-spec.md section 9): given a belief over goal
+// specifications (weights + their RTAA* policies), the assistant acts in the
+// shared world while a simulated human principal pursues the true goal.
+//
+//   Hypothesis        weight + specification + policy (copied, then refined)
+//   AssistSetup       the world: task, start state s_T, the observed length T,
+//                     horizon, who is principal/assistant, the completed plan
+//                     the principal follows, and what counts as an option
+//   AssistResult      executed joint plan, success, length, costs, options
+//
+// Methods: Q_MDP offline (posterior fixed after the observed prefix), Q_MDP
+// online (belief updated after every action through an OnlineBelief), and the
+// policy mixture pi-bar_MDP (exact expectation over hypotheses).
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "search/rtaa.hpp"
+
+namespace clips::assist {
+
+struct Hypothesis {
+  double weight = 0;
+  std::shared_ptr<search::Policy> policy;  // owns its specification
+};
+
+struct AssistSetup {
+  std::shared_ptr<const pddl::Task> task;
+  pddl::State start;                 // s_T
+  int observed_steps = 0;            // T
+  int horizon = 100;                 // model timesteps T+1 .. horizon
+  std::string principal = "human";   // the simulated human
+  std::string assistant = "robot";
+  double noop_cost = 0.6;            // padding step cost (mean wait cost)
+  double weight_threshold = 0.02;    // hypotheses below are ignored by Q_MDP
+  std::vector<pddl::ActionId> completed;  // the ground-truth continuation from s_T
+  // The assistance option an action realises, if any (e.g. a key the robot
+  // picks up in a keys plan).
+  std::function<std::optional<std::string>(pddl::ActionId)> option_of;
+  search::SearchOptions refine_options;   // 2^16 nodes, 10 s per search by default
+  AssistSetup() {
+    refine_options.max_nodes = 1u << 16;
+    refine_options.max_seconds = 10;
+  }
+};
+
+struct AssistResult {
+  std::vector<pddl::ActionId> plan;       // the run's executed actions (mean run: most likely)
+  int noops = 0;                          // padding steps after a failure
+  bool goal_reached = false;
+  double plan_length = 0;                 // expected for stochastic methods
+  double plan_cost = 0;                   // under the true specification
+  double human_cost = 0;
+  double success = 0;                     // probability of reaching the goal
+  std::map<std::string, double> options;  // option -> probability
+};
+
+// Belief that keeps updating during online assistance (implemented by the
+// inference stage).
+class OnlineBelief {
+ public:
+  virtual ~OnlineBelief() = default;
+  // Called after the action `a` was taken in `pre` (assistant actions are
+  // interventions: they advance the state but carry no evidence).
+  virtual void observe(const pddl::State& pre, pddl::ActionId a) = 0;
+  virtual std::vector<Hypothesis>& hypotheses() = 0;
+};
+
+// The simulated principal's plan-following rule needs the true hypothesis.
+AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
+AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
+                         std::shared_ptr<const model::Specification> true_spec,
+                         std::shared_ptr<heuristics::Heuristic> true_heuristic);
+AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
+
+// Metrics shared by every method.
+double plan_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan);
+double human_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan,
+                  const std::string& principal);
+
+}  // namespace clips::assist

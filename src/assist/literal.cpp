@@ -1,0 +1,162 @@
+#include "assist/literal.hpp"
+
+#include <algorithm>
+
+#include "language/commands/grounding.hpp"
+#include "language/commands/sampling.hpp"
+
+namespace clips::assist {
+
+using pddl::ActionId;
+using pddl::State;
+
+namespace {
+
+struct TwoPhase {
+  std::vector<ActionId> plan;
+  int noops = 0;
+  size_t command_steps = 0;  // the phase-1 prefix of `plan`
+  bool command_ok = false, goal_ok = false;
+};
+
+std::vector<commands::Term> as_terms(const pddl::Task& task, const std::vector<ActionId>& plan) {
+  std::vector<commands::Term> out;
+  for (ActionId a : plan) out.push_back(commands::parse_term(task.action_name(a)));
+  return out;
+}
+
+TwoPhase two_phase(const LiteralSetup& ls, const std::string& command_goal) {
+  const AssistSetup& w = ls.world;
+  const pddl::Task& task = *w.task;
+  int remaining = w.horizon - w.observed_steps;
+  TwoPhase out;
+  search::SearchOptions so;
+  so.max_nodes = ls.max_nodes;
+  auto cmd_spec = std::make_shared<model::Specification>(w.task, command_goal, ls.truth->profile());
+  State end = w.start;
+  bool found = false;
+  for (bool freeze_human : {false, true}) {
+    State from = freeze_human ? model::freeze(task, w.start, w.principal) : w.start;
+    auto h = ls.make_heuristic();
+    auto r = search::plan(*cmd_spec, *h, from, so);
+    if (r.status == search::SearchStatus::Success) {
+      out.plan = r.plan;
+      end = pddl::simulate(task, from, r.plan).states.back();
+      found = true;
+      break;
+    }
+  }
+  out.command_ok = found && static_cast<int>(out.plan.size()) <= remaining;
+  out.command_steps = out.plan.size();
+  bool goal_found = false;
+  if (static_cast<int>(out.plan.size()) < remaining) {
+    State from = model::freeze(task, end, w.assistant);
+    auto h = ls.make_heuristic();
+    auto r = search::plan(*ls.truth, *h, from, so);
+    if (r.status == search::SearchStatus::Success) {
+      out.plan.insert(out.plan.end(), r.plan.begin(), r.plan.end());
+      goal_found = true;
+    }
+  }
+  if (goal_found) {
+    out.goal_ok = static_cast<int>(out.plan.size()) <= remaining;
+  } else {
+    out.noops = std::max(0, remaining - static_cast<int>(out.plan.size()));
+  }
+  if (static_cast<int>(out.plan.size()) > remaining) out.plan.resize(remaining);
+  return out;
+}
+
+struct Scored {
+  AssistResult r;
+  double cmd_ok = 0;
+};
+
+Scored score_run(const LiteralSetup& ls, const TwoPhase& tp) {
+  Scored s;
+  s.r.plan = tp.plan;
+  s.r.noops = tp.noops;
+  s.r.goal_reached = tp.goal_ok;
+  s.r.plan_length = static_cast<double>(tp.plan.size()) + tp.noops;
+  s.r.plan_cost = plan_cost(*ls.truth, tp.plan) + tp.noops * ls.world.noop_cost;
+  s.r.human_cost = human_cost(*ls.truth, tp.plan, ls.world.principal) + tp.noops * ls.world.noop_cost;
+  s.r.success = tp.goal_ok ? 1 : 0;
+  s.cmd_ok = tp.command_ok ? 1 : 0;
+  return s;
+}
+
+}  // namespace
+
+LiteralRun literal_assist(const LiteralSetup& ls, const language::ListenerResult& ranked, bool naive, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  LiteralRun out;
+  AssistResult& mean = out.result;
+  std::vector<double> probs;
+  for (auto& c : ranked.commands) probs.push_back(c.prob);
+  if (probs.empty()) {
+    mean.noops = ls.world.horizon - ls.world.observed_steps;
+    mean.plan_length = mean.noops;
+    mean.plan_cost = mean.human_cost = mean.noops * ls.world.noop_cost;
+    return out;
+  }
+  std::uniform_real_distribution<double> u(0.0, 1.0 / ls.samples);
+  auto samples = commands::systematic_sample(probs, u(rng), static_cast<size_t>(ls.samples));
+  double best_w = -1;
+  for (const auto& smp : samples) {
+    const commands::Command& cmd = ranked.commands[smp.index].command;
+    Scored agg;
+    std::map<std::string, double> options;
+    if (!naive) {
+      TwoPhase tp = two_phase(ls, cmd.to_goal_formula(ls.config));
+      agg = score_run(ls, tp);
+      // Options: objects bound to the command's focal variables in the phase-1 plan.
+      std::vector<ActionId> cmd_part(tp.plan.begin(),
+                                     tp.plan.begin() + static_cast<long>(std::min(tp.command_steps, tp.plan.size())));
+      for (auto& o : commands::match_focal_objects(cmd, as_terms(*ls.world.task, cmd_part), ls.config))
+        if (ls.is_option(o)) options[o] = 1.0;
+    } else {
+      auto groundings = commands::naive_groundings(cmd, ls.objects_by_type, ls.facts);
+      for (auto& g : groundings)
+        for (auto& o : commands::focal_objects(g.actions, ls.config))
+          if (ls.is_option(o)) options[o] += 1.0 / static_cast<double>(groundings.size());
+      if (groundings.size() > 10) {
+        std::shuffle(groundings.begin(), groundings.end(), rng);
+        groundings.resize(10);
+      }
+      if (groundings.empty()) {
+        agg.r.noops = ls.world.horizon - ls.world.observed_steps;
+        agg.r.plan_length = agg.r.noops;
+        agg.r.plan_cost = agg.r.human_cost = agg.r.noops * ls.world.noop_cost;
+      }
+      for (auto& g : groundings) {
+        commands::Command ground;
+        ground.actions = g.actions;
+        ground.predicates = g.predicates;
+        Scored s = score_run(ls, two_phase(ls, ground.to_goal_formula(ls.config)));
+        double k = 1.0 / static_cast<double>(groundings.size());
+        agg.r.plan_length += k * s.r.plan_length;
+        agg.r.plan_cost += k * s.r.plan_cost;
+        agg.r.human_cost += k * s.r.human_cost;
+        agg.r.success += k * s.r.success;
+        agg.cmd_ok += k * s.cmd_ok;
+        if (agg.r.plan.empty()) agg.r.plan = s.r.plan;
+      }
+    }
+    double w = smp.weight;
+    mean.plan_length += w * agg.r.plan_length;
+    mean.plan_cost += w * agg.r.plan_cost;
+    mean.human_cost += w * agg.r.human_cost;
+    mean.success += w * agg.r.success;
+    out.command_success += w * agg.cmd_ok;
+    for (auto& [o, p] : options) mean.options[o] += w * p;
+    if (w > best_w) {
+      best_w = w;
+      mean.plan = agg.r.plan;
+      mean.noops = agg.r.noops;
+    }
+  }
+  mean.goal_reached = mean.success >= 0.5;
+  return out;
+}
+
+}  // namespace clips::assist

@@ -1,0 +1,43 @@
+#pragma once
+// Literal-listener assistance (clips-spec.md 9.8-9.11, VH spec 7.5-7.6).
+// The listener ranks commands for the literal utterance; m = 10 commands are
+// drawn by systematic sampling; each is carried out by two-phase planning:
+//   phase 1  A* for the command's goal (joint plan; retried with the human
+//            frozen), phase 2  A* for the true goal with the robot frozen.
+// Efficient: plan for the lifted (existential) command directly. Naive: plan
+// for up to 10 random groundings of it, options spread over all groundings.
+#include <functional>
+#include <memory>
+#include <random>
+
+#include "assist/assist.hpp"
+#include "language/listener.hpp"
+
+namespace clips::assist {
+
+struct LiteralSetup {
+  AssistSetup world;                                   // task, s_T, T, horizon, agents, option_of
+  std::shared_ptr<const model::Specification> truth;   // true goal, true costs
+  commands::LanguageConfig config;
+  // Fresh heuristic per planning call (the domain's model heuristic).
+  std::function<std::shared_ptr<heuristics::Heuristic>()> make_heuristic;
+  // Is this object an assistance option (a key in keys plans, a door in doors plans)?
+  std::function<bool(const std::string&)> is_option;
+  size_t max_nodes = 1u << 16;
+  int samples = 10;
+  // Grounding search (naive): objects per type and the static facts they must satisfy.
+  std::map<std::string, std::vector<std::string>> objects_by_type;
+  std::vector<commands::Term> facts;
+};
+
+struct LiteralRun {
+  AssistResult result;
+  double command_success = 0;
+};
+
+// Runs one listener variant; `naive` selects the naive listener. `seed`
+// makes the systematic draw and the naive subsampling reproducible.
+LiteralRun literal_assist(const LiteralSetup& setup, const language::ListenerResult& ranked, bool naive,
+                          uint64_t seed);
+
+}  // namespace clips::assist

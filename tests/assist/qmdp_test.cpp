@@ -1,0 +1,127 @@
+// Assistance on a tiny hand-made map where the right help is obvious:
+//
+//   x: 1 2 3 4 5 6 7
+//   y1 g R . . . Y g     gem1 (red) behind red door1, gem2 (yellow) behind yellow door2
+//   y2 W W . h . W W
+//   y3 r . . m . . y     key1 red at (1,3), key2 yellow at (7,3); robot at (4,3)
+//
+// Human pick-ups cost 5 (profile C3), so the robot should fetch the key of
+// the door in front of the goal the assistant believes in.
+#include <gtest/gtest.h>
+
+#include "assist/assist.hpp"
+#include "heuristics/basic.hpp"
+#include "pddl/parser.hpp"
+#include "test_paths.hpp"
+
+using namespace clips;
+
+namespace {
+
+const char* kMap = R"(
+(define (problem two-doors) (:domain doors-keys-gems)
+  (:objects door1 door2 - door key1 key2 - key gem1 gem2 - gem red yellow blue green - color robot - robot human - human)
+  (:init (= (walls) (new-bit-matrix false 3 7))
+    (= (walls) (set-index walls true 2 1)) (= (walls) (set-index walls true 2 2))
+    (= (walls) (set-index walls true 2 6)) (= (walls) (set-index walls true 2 7))
+    (= (xloc door1) 2) (= (yloc door1) 1) (iscolor door1 red) (locked door1)
+    (= (xloc door2) 6) (= (yloc door2) 1) (iscolor door2 yellow) (locked door2)
+    (= (xloc key1) 1) (= (yloc key1) 3) (iscolor key1 red)
+    (= (xloc key2) 7) (= (yloc key2) 3) (iscolor key2 yellow)
+    (= (xloc gem1) 1) (= (yloc gem1) 1) (iscolor gem1 red) (forbidden robot gem1)
+    (= (xloc gem2) 7) (= (yloc gem2) 1) (iscolor gem2 yellow) (forbidden robot gem2)
+    (= (xloc human) 4) (= (yloc human) 2) (= (xloc robot) 4) (= (yloc robot) 3)
+    (active human) (next-turn human robot) (next-turn robot human))
+  (:goal (has human gem1))))";
+
+struct World {
+  std::shared_ptr<pddl::Domain> d = std::make_shared<pddl::Domain>(
+      pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
+  std::shared_ptr<pddl::Problem> p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, kMap, "two-doors"));
+  std::shared_ptr<pddl::Task> task = std::make_shared<pddl::Task>(d, p, pddl::GroundingOptions{{"frozen"}, {}, false, false});
+
+  std::shared_ptr<search::Policy> policy(int gem) {
+    auto spec = std::make_shared<model::Specification>(task, "(has human gem" + std::to_string(gem) + ")",
+                                                       model::dkg_profile(3));
+    return std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
+  }
+  assist::AssistSetup setup() {
+    assist::AssistSetup s;
+    s.task = task;
+    s.start = task->initial_state();
+    s.horizon = 60;
+    s.option_of = [this](pddl::ActionId a) -> std::optional<std::string> {
+      const auto& ga = task->action(a);
+      std::string name = task->domain().actions[ga.schema].name;
+      if (name == "pickup" && task->object_name(ga.args[0]) == "robot" && task->object_is_a(ga.args[1], "key"))
+        return task->object_name(ga.args[1]);
+      return std::nullopt;
+    };
+    return s;
+  }
+};
+
+}  // namespace
+
+TEST(QmdpOffline, FetchesTheKeyOfTheMostLikelyGoal) {
+  for (int truth : {1, 2}) {
+    World w;
+    std::vector<assist::Hypothesis> belief = {{truth == 1 ? 0.9 : 0.1, w.policy(1)}, {truth == 2 ? 0.9 : 0.1, w.policy(2)}};
+    auto r = assist::qmdp_offline(w.setup(), belief, truth - 1);
+    EXPECT_TRUE(r.goal_reached) << "truth gem" << truth;
+    std::string want = truth == 1 ? "key1" : "key2";
+    EXPECT_EQ(r.options.count(want), 1u) << "truth gem" << truth;
+    EXPECT_EQ(r.options.size(), 1u);
+    // The human never picks up a key: the robot's pick-up is cheaper (C3: human pickup 5).
+    for (auto a : r.plan) EXPECT_EQ(w.task->action_name(a).find("(pickup human key"), std::string::npos);
+    EXPECT_GT(r.human_cost, 0);
+    EXPECT_LT(r.human_cost, r.plan_cost);
+  }
+}
+
+TEST(QmdpOffline, IgnoresHypothesesBelowTheThreshold) {
+  World w;
+  // gem2 at weight 0.01 is below 0.02 and must not pull the robot anywhere.
+  std::vector<assist::Hypothesis> belief = {{0.99, w.policy(1)}, {0.01, w.policy(2)}};
+  auto r = assist::qmdp_offline(w.setup(), belief, 0);
+  EXPECT_TRUE(r.goal_reached);
+  EXPECT_EQ(r.options, (std::map<std::string, double>{{"key1", 1.0}}));
+}
+
+TEST(QmdpOffline, WrongBeliefMakesThePrincipalGiveUpOnTheAssistant) {
+  World w;
+  // The assistant is sure of gem2 while the human wants gem1: the robot's
+  // moves look random under the true goal, the principal goes solo and still
+  // reaches gem1 (fetching key1 itself).
+  std::vector<assist::Hypothesis> belief = {{0.0, w.policy(1)}, {1.0, w.policy(2)}};
+  auto r = assist::qmdp_offline(w.setup(), belief, 0);
+  EXPECT_TRUE(r.goal_reached);
+  bool human_picked_key1 = false;
+  for (auto a : r.plan) human_picked_key1 |= w.task->action_name(a) == "(pickup human key1)";
+  EXPECT_TRUE(human_picked_key1);
+}
+
+TEST(PiBar, OptionsAreWeightedByHypothesis) {
+  World w;
+  // As after inference: each policy has been refined at the start state.
+  auto p1 = w.policy(1), p2 = w.policy(2);
+  p1->refine(w.task->initial_state(), {});
+  p2->refine(w.task->initial_state(), {});
+  std::vector<assist::Hypothesis> belief = {{0.7, p1}, {0.3, p2}};
+  auto r = assist::pibar_mdp(w.setup(), belief, 0);
+  EXPECT_NEAR(r.options["key1"], 0.7, 1e-9);
+  EXPECT_NEAR(r.options["key2"], 0.3, 1e-9);
+  // Following hypothesis 2 with probability 0.3 makes the run longer on average
+  // than the offline Q_MDP run that fetches key1.
+  auto q = assist::qmdp_offline(w.setup(), belief, 0);
+  EXPECT_GE(r.plan_length, q.plan_length - 1e-9);
+  EXPECT_GT(r.success, 0.99);
+}
+
+TEST(AssistCosts, HumanCostCountsOnlyThePrincipalsActions) {
+  World w;
+  auto spec = w.policy(1)->spec_ptr();
+  std::vector<pddl::ActionId> plan = {*w.task->find_action("(up human)"), *w.task->find_action("(left robot)")};
+  EXPECT_DOUBLE_EQ(assist::plan_cost(*spec, plan), 2.0);
+  EXPECT_DOUBLE_EQ(assist::human_cost(*spec, plan, "human"), 1.0);
+}

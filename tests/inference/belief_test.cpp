@@ -1,0 +1,181 @@
+// Belief updates on a hand-made corridor where every number can be worked out
+// on paper, plus the do-operator and the three modalities.
+#include "inference/belief.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "pddl/parser.hpp"
+#include "test_paths.hpp"
+
+namespace clips::inference {
+namespace {
+
+// One row of five cells: gem1 (red) at x = 1, gem2 (yellow) at x = 5, the
+// human and the robot both at x = 3; the human moves first.
+const char* kCorridor = R"(
+(define (problem corridor) (:domain doors-keys-gems)
+  (:objects gem1 gem2 - gem red yellow - color robot - robot human - human)
+  (:init (= (walls) (new-bit-matrix false 1 5))
+         (= (xloc gem1) 1) (= (yloc gem1) 1) (iscolor gem1 red)
+         (= (xloc gem2) 5) (= (yloc gem2) 1) (iscolor gem2 yellow)
+         (= (xloc human) 3) (= (yloc human) 1)
+         (= (xloc robot) 3) (= (yloc robot) 1)
+         (active human) (next-turn human robot) (next-turn robot human)
+         (forbidden robot gem1) (forbidden robot gem2))
+  (:goal (has human gem1)))
+)";
+
+std::shared_ptr<const pddl::Task> corridor_task() {
+  auto d = std::make_shared<pddl::Domain>(pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
+  auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, kCorridor, "corridor.pddl"));
+  return std::make_shared<pddl::Task>(d, p, data::grounding_options(data::DomainKind::DoorsKeysGems));
+}
+
+Belief corridor_belief(const std::shared_ptr<const pddl::Task>& task) {
+  std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)"}, {"gem2", "(has human gem2)"}};
+  InferenceOptions opts;
+  opts.heuristic = "hmax";  // admissible, so the refined values are exact here
+  return Belief(task, data::DomainKind::DoorsKeysGems, goals, {model::dkg_profile(3), model::dkg_profile(4)}, opts);
+}
+
+pddl::ActionId act(const pddl::Task& task, const std::string& text) { return *task.find_action(text); }
+
+// An LM that prefers prompts whose command mentions the colour said in the utterance.
+class ColourLm : public lm::LanguageModel {
+ public:
+  std::string name() const override { return "colour"; }
+  std::vector<double> score(const std::vector<lm::ScoreRequest>& batch) override {
+    ++calls;
+    std::vector<double> out;
+    for (const auto& r : batch) {
+      const auto q = r.prompt.rfind("Input:");
+      const std::string cmd = q == std::string::npos ? "" : r.prompt.substr(q);
+      const bool red = r.continuation.find("red") != std::string::npos;
+      out.push_back(cmd.find(red ? "red" : "yellow") != std::string::npos ? -1.0 : -6.0);
+    }
+    return out;
+  }
+  int calls = 0;
+};
+
+TEST(Belief, CorridorPosteriorAfterOneStepMatchesHandComputation) {
+  // Hand computation. With the robot's best reply always (wait robot) = 0.6,
+  // reaching a gem d cells away costs, from the human's turn, d·(m + 0.6) + 5
+  // (d moves of cost m each followed by a robot wait, then the pickup, 5), and
+  // from the robot's turn 0.6 more. The human's actions in s0 are left, right,
+  // wait (up/down are blocked); after any of them it is the robot's turn.
+  //   C3 (m = 1), goal gem1: Q(left)  = -1   - (0.6 + 1·1.6 + 5) =  -8.2
+  //                          Q(right) = -1   - (0.6 + 3·1.6 + 5) = -11.4
+  //                          Q(wait)  = -0.6 - (0.6 + 2·1.6 + 5) =  -9.4
+  //   C4 (m = 2), goal gem1: Q(left)  = -2   - (0.6 + 1·2.6 + 5) = -10.2
+  //                          Q(right) = -2   - (0.6 + 3·2.6 + 5) = -15.4
+  //                          Q(wait)  = -0.6 - (0.6 + 2·2.6 + 5) = -11.4
+  // gem2 mirrors gem1 (left and right swapped). Observing (left human):
+  //   L(g, c) = Σ_k w_k exp(Q_left/T_k) / Σ_a exp(Q_a/T_k)   (w = mDKG prior)
+  //   P(gem1) = (L(1,C3) + L(1,C4)) / Σ_{g,c} L(g,c)   (uniform prior 1/4),
+  // which is ≈ 0.9464 (printed below).
+  auto task = corridor_task();
+  Belief b = corridor_belief(task);
+  const pddl::State s0 = task->initial_state();
+  b.start(s0);
+  struct Case { int h; std::vector<double> q; };  // q in order left, right, wait
+  const std::vector<Case> cases = {{0, {-8.2, -11.4, -9.4}},
+                                   {1, {-10.2, -15.4, -11.4}},
+                                   {2, {-11.4, -8.2, -9.4}},
+                                   {3, {-15.4, -10.2, -11.4}}};
+  double L[4];
+  for (const auto& c : cases) {
+    const auto qs = b.policies()[c.h].q_values(s0);
+    ASSERT_EQ(qs.size(), 3u);
+    EXPECT_EQ(task->action_name(qs[0].action), "(left human)");
+    EXPECT_EQ(task->action_name(qs[1].action), "(right human)");
+    EXPECT_EQ(task->action_name(qs[2].action), "(wait human)");
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(qs[i].q, c.q[i], 1e-9) << "h=" << c.h << " i=" << i;
+    L[c.h] = 0;
+    for (int k = 0; k < kNumTemperatures; ++k)
+      L[c.h] += dkg_temperature_prior()[k] * std::exp(boltzmann_log_probs(c.q, temperature_grid()[k])[0]);
+  }
+  const StepRecord r = b.observe(act(*task, "(left human)"), s0);
+  const double p_gem1 = (L[0] + L[1]) / (L[0] + L[1] + L[2] + L[3]);
+  EXPECT_TRUE(r.evidence);
+  EXPECT_NEAR(r[Modality::Both].goals[0], p_gem1, 1e-12);
+  EXPECT_NEAR(r[Modality::ActionOnly].goals[0], p_gem1, 1e-12);
+  EXPECT_NEAR(r[Modality::UtteranceOnly].goals[0], 0.5, 1e-12);
+  EXPECT_NEAR(r[Modality::Both].profiles[0], (L[0] + L[2]) / (L[0] + L[1] + L[2] + L[3]), 1e-12);
+  EXPECT_GT(p_gem1, 0.5);
+  std::printf("corridor: P(gem1 | left) = %.6f (L = %.6f %.6f %.6f %.6f)\n", p_gem1, L[0], L[1], L[2], L[3]);
+}
+
+TEST(Belief, RobotActionsAreInterventions) {
+  auto task = corridor_task();
+  Belief b = corridor_belief(task);
+  b.start(task->initial_state());
+  // Human left, then many rounds of robot wait / human wait: only human steps move the belief.
+  StepRecord last = b.observe(act(*task, "(left human)"));
+  for (int round = 0; round < 6; ++round) {
+    const auto temps_before = b.temperature(0).weights();
+    const StepRecord r = b.observe(act(*task, round % 2 ? "(wait robot)" : "(right robot)"));
+    EXPECT_FALSE(r.evidence);
+    for (Modality m : kModalities)
+      for (size_t h = 0; h < r[m].hypotheses.size(); ++h)
+        EXPECT_DOUBLE_EQ(r[m].hypotheses[h], last[m].hypotheses[h]) << "round " << round;
+    EXPECT_EQ(b.temperature(0).weights(), temps_before);
+    last = b.observe(act(*task, "(wait human)"));
+    EXPECT_TRUE(last.evidence);
+  }
+}
+
+TEST(Belief, ModalitiesWithoutActionsOrUtterances) {
+  auto task = corridor_task();
+  ColourLm lm;
+  {
+    // No actions, one utterance at index 0: action-only is the prior, both = utterance-only.
+    Belief b = corridor_belief(task);
+    const StepRecord r = b.start(task->initial_state(), {"Get the red gem"}, &lm);
+    for (double p : r[Modality::ActionOnly].hypotheses) EXPECT_DOUBLE_EQ(p, 0.25);
+    for (size_t h = 0; h < 4; ++h)
+      EXPECT_DOUBLE_EQ(r[Modality::Both].hypotheses[h], r[Modality::UtteranceOnly].hypotheses[h]);
+    ASSERT_EQ(r.utterances.size(), 1u);
+    // The robot only ever waits in these rollouts: no command, the "\n" prompt for everyone.
+    for (const auto& hu : r.utterances[0].hypotheses) EXPECT_TRUE(hu.commands.empty());
+    EXPECT_EQ(lm.calls, 1);
+  }
+  {
+    // Actions and no utterance: both = action-only, utterance-only = prior.
+    Belief b = corridor_belief(task);
+    b.start(task->initial_state());
+    StepRecord r = b.observe(act(*task, "(left human)"));
+    r = b.observe(act(*task, "(wait robot)"));
+    r = b.observe(act(*task, "(left human)"));
+    for (size_t h = 0; h < 4; ++h) {
+      EXPECT_NEAR(r[Modality::Both].hypotheses[h], r[Modality::ActionOnly].hypotheses[h], 1e-14);
+      EXPECT_NEAR(r[Modality::UtteranceOnly].hypotheses[h], 0.25, 1e-14);
+    }
+    EXPECT_GT(r[Modality::Both].goals[0], 0.9);
+  }
+}
+
+TEST(Belief, UtteranceIsScoredBeforeTheActionAtItsIndex) {
+  // Plan with an utterance after the last action but none observable: the
+  // records of run_inference-style stepping stay consistent.
+  auto task = corridor_task();
+  ColourLm lm;
+  Belief b = corridor_belief(task);
+  b.start(task->initial_state());
+  const pddl::State s0 = task->initial_state();
+  const StepRecord r = b.observe(act(*task, "(left human)"), s0, {"Get the red gem"}, &lm);
+  ASSERT_EQ(r.utterances.size(), 1u);
+  EXPECT_EQ(r.utterances[0].text, "Get the red gem");
+  EXPECT_EQ(lm.calls, 1);
+  // A constant utterance likelihood leaves both = action-only.
+  for (size_t h = 0; h < 4; ++h)
+    EXPECT_NEAR(r[Modality::Both].hypotheses[h], r[Modality::ActionOnly].hypotheses[h], 1e-12);
+  EXPECT_EQ(b.t(), 1);
+  EXPECT_EQ(b.state(), task->apply(s0, act(*task, "(left human)")));
+}
+
+}  // namespace
+}  // namespace clips::inference

@@ -1,0 +1,148 @@
+// Inference on the paper's datasets (skipped when ../shared/dataset is absent).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "inference/belief.hpp"
+#include "inference/vh_value.hpp"
+#include "language/listener.hpp"
+#include "test_paths.hpp"
+
+namespace clips::inference {
+namespace {
+
+std::shared_ptr<lm::LanguageModel> embedded_lm() {
+  try {
+    return language::make_language_model("embedded");
+  } catch (const std::exception& e) {
+    std::printf("embedded LM unavailable: %s\n", e.what());
+    return nullptr;
+  }
+}
+
+void expect_sane(const Posterior& p) {
+  double sum = 0;
+  for (double x : p.goals) {
+    EXPECT_GE(x, 0.0);
+    EXPECT_LE(x, 1.0);
+    sum += x;
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+}
+
+TEST(DkgDataset, UtteranceRaisesTrueGoalOn2_1Keys) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
+  auto lm = embedded_lm();
+  if (!lm) GTEST_SKIP() << "no embedded LM";
+  auto ds = data::Dataset::load(paths::dkg_dataset());
+  const auto& plan = ds.plan("2.1.keys");
+  const InferenceRun run = run_inference(ds, plan, *lm);
+  ASSERT_EQ(run.goals[run.true_goal], "gem2");
+  ASSERT_EQ(run.steps.size(), 11u);
+  EXPECT_EQ(run.belief->hypotheses().size(), 8u);
+  const double both = run.p_true_goal(Modality::Both), action = run.p_true_goal(Modality::ActionOnly),
+               utterance = run.p_true_goal(Modality::UtteranceOnly);
+  std::printf("2.1.keys P(gem2): both %.4f  action-only %.4f  utterance-only %.4f  (%.2f s)\n", both, action,
+              utterance, run.seconds);
+  EXPECT_GT(both, action);
+  // The utterance is attached to the last step (index 10 = T), scored at s_9.
+  ASSERT_EQ(run.steps.back().utterances.size(), 1u);
+  for (const auto& h : run.steps.back().utterances[0].hypotheses) {
+    double z = 0;
+    for (const auto& c : h.commands) z += c.posterior;
+    if (!h.commands.empty()) {
+      EXPECT_NEAR(z, 1.0, 1e-9);
+    }
+  }
+}
+
+TEST(DkgDataset, AllPlansThreeModalities) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
+  auto lm = embedded_lm();
+  if (!lm) GTEST_SKIP() << "no embedded LM";
+  auto ds = data::Dataset::load(paths::dkg_dataset());
+  std::printf("%-14s %8s %8s %8s %6s %8s\n", "plan", "both", "action", "utter", "steps", "seconds");
+  double total = 0, sum[3] = {0, 0, 0};
+  int n = 0;
+  std::vector<double> step_times;
+  for (const auto& plan : ds.plans()) {
+    const InferenceRun run = run_inference(ds, plan, *lm);
+    for (const auto& st : run.steps) {
+      for (Modality m : kModalities) expect_sane(st[m]);
+      step_times.push_back(st.seconds);
+    }
+    const double p[3] = {run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly),
+                         run.p_true_goal(Modality::UtteranceOnly)};
+    std::printf("%-14s %8.4f %8.4f %8.4f %6zu %8.2f\n", plan.id.c_str(), p[0], p[1], p[2], run.steps.size(),
+                run.seconds);
+    std::fflush(stdout);
+    if (plan.evaluated) {
+      for (int i = 0; i < 3; ++i) sum[i] += p[i];
+      ++n;
+    }
+    total += run.seconds;
+  }
+  std::sort(step_times.begin(), step_times.end());
+  std::printf("mean over %d evaluated plans: both %.4f  action %.4f  utterance %.4f; total %.1f s, median step %.4f s\n",
+              n, sum[0] / n, sum[1] / n, sum[2] / n, total, step_times[step_times.size() / 2]);
+}
+
+// VH spec Appendix A.2: h_g at s_0 of problem 2, without and with (nograb actor).
+TEST(VhDataset, HeuristicTestVectors) {
+  if (!std::filesystem::exists(paths::vh_dataset() + "/domain.pddl")) GTEST_SKIP() << "no VH dataset";
+  auto ds = data::Dataset::load(paths::vh_dataset());
+  auto task = ds.task("2");
+  VhValueHeuristic h(*task);
+  pddl::State s0 = task->initial_state();
+  pddl::State nograb = s0;
+  task->set(nograb, task->atom("nograb", {"actor"}), true);
+  struct Row { const char* goal; double h, h_nograb; };
+  for (const Row& r : {Row{"plate1", 4, 5}, Row{"set_table2", 15, 21}, Row{"set_table4b", 36, 52}}) {
+    model::Specification spec(task, ds.goal_definitions().at(r.goal), model::unit_profile());
+    h.prepare(spec, s0);
+    EXPECT_EQ(h.estimate(s0), r.h) << r.goal;
+    EXPECT_EQ(h.estimate(nograb), r.h_nograb) << r.goal;
+  }
+}
+
+// VH spec 6.7: commands of plan 2.1 at s_2 (the utterance's scoring state).
+TEST(VhDataset, CommandSetsOfPlan2_1) {
+  if (!std::filesystem::exists(paths::vh_dataset() + "/domain.pddl")) GTEST_SKIP() << "no VH dataset";
+  auto ds = data::Dataset::load(paths::vh_dataset());
+  const auto& plan = ds.plan("2.1.set_table1");
+  auto task = ds.task(plan.problem_id);
+  auto goals = ds.candidate_goals(plan);
+  Belief b(task, ds.kind(), goals, {model::unit_profile()});
+  EXPECT_FALSE(b.searches());
+  const auto sim = pddl::simulate(*task, task->initial_state(), plan.observed);
+  const pddl::State& s2 = sim.states[2];
+  auto count = [&](const std::string& label) {
+    for (size_t h = 0; h < b.hypotheses().size(); ++h)
+      if (goals[b.hypotheses()[h].goal].label == label)
+        return b.utterance_model().commands_at(b.policies()[h], s2).size();
+    return size_t{0};
+  };
+  EXPECT_EQ(count("set_table1"), 6u);
+  EXPECT_EQ(count("plate1"), 1u);
+  EXPECT_EQ(count("set_table1b"), 10u);
+  EXPECT_EQ(count("plate3"), 3u);
+}
+
+TEST(VhDataset, InferenceOnPlan2_1) {
+  if (!std::filesystem::exists(paths::vh_dataset() + "/domain.pddl")) GTEST_SKIP() << "no VH dataset";
+  auto lm = embedded_lm();
+  if (!lm) GTEST_SKIP() << "no embedded LM";
+  auto ds = data::Dataset::load(paths::vh_dataset());
+  const InferenceRun run = run_inference(ds, ds.plan("2.1.set_table1"), *lm);
+  for (const auto& st : run.steps)
+    for (Modality m : kModalities) expect_sane(st[m]);
+  std::printf("VH 2.1.set_table1 P(g_true): both %.4f action %.4f utterance %.4f (%.3f s)\n",
+              run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly),
+              run.p_true_goal(Modality::UtteranceOnly), run.seconds);
+}
+
+}  // namespace
+}  // namespace clips::inference

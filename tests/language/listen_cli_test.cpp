@@ -1,0 +1,117 @@
+// `clips listen` and `clips lm-score` through the built binary.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "test_paths.hpp"
+
+namespace {
+
+const std::string kBinary = std::string(CLIPS_BINARY_DIR) + "/clips";
+
+struct CliRun {
+  int status = -1;
+  std::string out;  // stdout and stderr together
+};
+
+CliRun run(const std::string& args, bool merge_stderr = false) {
+  const std::string cmd = "'" + kBinary + "' " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
+  CliRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  size_t n = 0;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+class ListenCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << "no binary " << kBinary;
+    if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "no dataset at " << clips::paths::dkg_dataset();
+  }
+  std::string dataset() const { return "--dataset '" + clips::paths::dkg_dataset() + "'"; }
+};
+
+TEST_F(ListenCli, JsonShape) {
+  const CliRun r = run("listen " + dataset() + " --plan 2.1.keys --json --top 5");
+  ASSERT_EQ(r.status, 0) << r.out;
+  // Exactly one JSON object on stdout.
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.size(), 2u);
+  EXPECT_EQ(j.at("utterance"), "Can you pass me the red key?");  // the literal utterance file
+  const auto& cmds = j.at("commands");
+  ASSERT_TRUE(cmds.is_array());
+  ASSERT_EQ(cmds.size(), 5u);
+  double previous = 1.0;
+  for (const auto& c : cmds) {
+    ASSERT_TRUE(c.is_object());
+    EXPECT_EQ(c.size(), 2u);
+    ASSERT_TRUE(c.at("command").is_string());
+    ASSERT_TRUE(c.at("prob").is_number());
+    EXPECT_EQ(c.at("command").get<std::string>().rfind("(", 0), 0u);
+    const double p = c.at("prob").get<double>();
+    EXPECT_GE(p, 0.0);
+    EXPECT_LE(p, previous);
+    previous = p;
+  }
+  // Display form: variables keep their '?'.
+  EXPECT_NE(cmds[0].at("command").get<std::string>().find("?key1"), std::string::npos);
+}
+
+TEST_F(ListenCli, AllCommandsSumToOne) {
+  const CliRun r = run("listen " + dataset() + " --plan 1.1.keys --utterance 'Can you open the red door?' --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("utterance"), "Can you open the red door?");
+  EXPECT_EQ(j.at("commands").size(), 26u);  // problem 1, see listener_test.cpp
+  double total = 0;
+  for (const auto& c : j.at("commands")) total += c.at("prob").get<double>();
+  EXPECT_NEAR(total, 1.0, 1e-9);
+}
+
+TEST_F(ListenCli, BlankUtteranceExitsTwo) {
+  const CliRun r = run("listen " + dataset() + " --plan 2.1.keys --utterance '   '", true);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("--utterance is empty"), std::string::npos) << r.out;
+}
+
+TEST_F(ListenCli, TableOutput) {
+  const CliRun r = run("listen " + dataset() + " --plan 13.1.doors --top 3");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("Can you open the blue door?"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rank"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("more; use --top"), std::string::npos) << r.out;
+}
+
+TEST_F(ListenCli, LmScorePrintsLogProbAndBackend) {
+  const auto prompt = std::filesystem::temp_directory_path() / "clips-lm-score-test-prompt.txt";
+  {
+    FILE* f = std::fopen(prompt.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("Input: (pickup you key1) where (iscolor key1 yellow)\nOutput: Please pick up the yellow key.\n"
+               "Input: (handover you me key1) where (iscolor key1 red)\nOutput:\n",
+               f);
+    std::fclose(f);
+  }
+  const CliRun r = run("lm-score --prompt-file '" + prompt.string() + "' --continuation 'Can you pass me the red key?'");
+  std::filesystem::remove(prompt);
+  ASSERT_EQ(r.status, 0) << r.out;
+  double score = 0;
+  char name[64] = {0};
+  ASSERT_EQ(std::sscanf(r.out.c_str(), "%lf\t%63s", &score, name), 2) << r.out;
+  EXPECT_LT(score, 0.0);
+  EXPECT_NE(std::string(name).find("embedded"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,683 @@
+// The Doors-Keys-Gems heuristics: the reference MST heuristic on hand-built
+// maps whose room labels, room graph, key/door sets and values are worked out
+// by hand below; its pruning; and the admissible distance heuristic checked
+// against exact cost-to-go (a uniform-cost search written here) and for
+// consistency on random walks over dataset problems.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <queue>
+#include <random>
+#include <sstream>
+#include <unordered_map>
+
+#include "data/dataset.hpp"
+#include "domains/dkg_heuristic.hpp"
+#include "domains/dkg_map.hpp"
+#include "pddl/parser.hpp"
+#include "test_paths.hpp"
+
+using namespace clips;
+using namespace clips::domains;
+using pddl::State;
+
+namespace {
+
+constexpr double kEps = 1e-9;
+
+// ---------------------------------------------------------------- map builder
+
+struct Obj {
+  std::string name, type, color;
+  int x = 0, y = 0;
+  bool locked = false;
+};
+
+// rows: 'W' wall, anything else floor; objects placed by coordinates.
+std::string problem_text(const std::vector<std::string>& rows, const std::vector<Obj>& objs, const std::string& goal) {
+  const int H = static_cast<int>(rows.size()), W = static_cast<int>(rows[0].size());
+  std::ostringstream o;
+  o << "(define (problem hand) (:domain doors-keys-gems)\n (:objects red yellow blue green - color";
+  for (auto& ob : objs) o << " " << ob.name << " - " << ob.type;
+  o << ")\n (:init (= (walls) (new-bit-matrix false " << H << " " << W << "))\n";
+  for (int y = 1; y <= H; ++y)
+    for (int x = 1; x <= W; ++x)
+      if (rows[y - 1][x - 1] == 'W') o << "  (= (walls) (set-index walls true " << y << " " << x << "))\n";
+  for (auto& ob : objs) {
+    o << "  (= (xloc " << ob.name << ") " << ob.x << ") (= (yloc " << ob.name << ") " << ob.y << ")\n";
+    if (!ob.color.empty()) o << "  (iscolor " << ob.name << " " << ob.color << ")\n";
+    if (ob.locked) o << "  (locked " << ob.name << ")\n";
+    if (ob.type == "gem") o << "  (forbidden robot " << ob.name << ")\n";
+  }
+  o << "  (active human) (next-turn human robot) (next-turn robot human))\n (:goal " << goal << "))\n";
+  return o.str();
+}
+
+struct Hand {
+  std::shared_ptr<pddl::Domain> d;
+  std::shared_ptr<const pddl::Task> task;
+
+  Hand(const std::vector<std::string>& rows, const std::vector<Obj>& objs) {
+    d = std::make_shared<pddl::Domain>(pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
+    auto p = std::make_shared<pddl::Problem>(
+        pddl::parse_problem(*d, problem_text(rows, objs, "(has human gem1)"), "hand.pddl"));
+    task = std::make_shared<pddl::Task>(d, p, pddl::GroundingOptions{{"frozen"}, {}, false, false});
+  }
+  model::Specification spec(const std::string& goal, int profile = 1) const {
+    return model::Specification(task, goal, model::dkg_profile(profile));
+  }
+  State run(const std::vector<std::string>& steps) const {
+    State s = task->initial_state();
+    for (auto& step : steps) {
+      auto a = task->find_action(step);
+      EXPECT_TRUE(a) << step;
+      if (!a) return s;
+      EXPECT_TRUE(task->applicable(*a, s.data())) << step;
+      s = task->apply(s, *a);
+    }
+    return s;
+  }
+  int idx(const DkgMapAnalysis& m, const std::string& name) const { return m.index_of(*task->find_object(name)); }
+};
+
+// Map A: 5 x 3, a locked red door between two rooms.
+//   y=1:  k1 .  W  .  .
+//   y=2:  h  .  D1 .  g1
+//   y=3:  m  .  W  .  .
+Hand make_map_a() {
+  return Hand({"..W..", ".....", "..W.."},
+              {{"human", "human", "", 1, 2}, {"robot", "robot", "", 1, 3}, {"key1", "key", "red", 1, 1},
+               {"door1", "door", "red", 3, 2, true}, {"gem1", "gem", "red", 5, 2}});
+}
+
+// Map B: 7 x 3, two red doors in a row.
+//   y=1:  k1 .  W  .  W  .  .
+//   y=2:  h  .  D1 .  D2 .  g1
+//   y=3:  k2 .  W  .  W  .  m
+Hand make_map_b(bool two_keys) {
+  std::vector<Obj> objs = {{"human", "human", "", 1, 2},         {"robot", "robot", "", 7, 3},
+                           {"key1", "key", "red", 1, 1},         {"door1", "door", "red", 3, 2, true},
+                           {"door2", "door", "red", 5, 2, true}, {"gem1", "gem", "red", 7, 2}};
+  if (two_keys) objs.push_back({"key2", "key", "red", 1, 3});
+  return Hand({"..W.W..", ".......", "..W.W.."}, objs);
+}
+
+// Map C: a 9 x 1 corridor.
+//   x:  1  2  3  4  5  6  7  8  9
+//       k1 h  D1 k2 D2 m  g1 D3 k3      (D1 red, D2 blue, D3 yellow; k1 red, k2 blue, k3 yellow)
+Hand make_map_c() {
+  return Hand({"........."},
+              {{"human", "human", "", 2, 1}, {"robot", "robot", "", 6, 1}, {"key1", "key", "red", 1, 1},
+               {"door1", "door", "red", 3, 1, true}, {"key2", "key", "blue", 4, 1},
+               {"door2", "door", "blue", 5, 1, true}, {"gem1", "gem", "red", 7, 1},
+               {"door3", "door", "yellow", 8, 1, true}, {"key3", "key", "yellow", 9, 1}});
+}
+
+// Map D: two routes to the gem room; the short one through a locked blue
+// door whose key lies behind a locked green door, the long one through two
+// unlocked doors (red door1, yellow door4).
+//   x:    1  2  3  4  5
+//   y=1:  k3 h  D2 .  g1
+//   y=2:  D1 W  W  W  D4
+//   y=3:  .  k1 m  k4 .
+//   y=4:  W  W  D3 W  W
+//   y=5:  W  W  k2 W  W
+Hand make_map_d() {
+  return Hand({".....", ".WWW.", ".....", "WW.WW", "WW.WW"},
+              {{"human", "human", "", 2, 1}, {"robot", "robot", "", 3, 3}, {"key1", "key", "red", 2, 3},
+               {"key2", "key", "blue", 3, 5}, {"key3", "key", "green", 1, 1}, {"key4", "key", "yellow", 4, 3},
+               {"door1", "door", "red", 1, 2, false}, {"door2", "door", "blue", 3, 1, true},
+               {"door3", "door", "green", 3, 4, true}, {"door4", "door", "yellow", 5, 2, false},
+               {"gem1", "gem", "red", 5, 1}});
+}
+
+double mst(const Hand& h, const std::string& goal, const State& s, int profile = 1) {
+  auto spec = h.spec(goal, profile);
+  DkgMstHeuristic heur;
+  heur.prepare(spec, h.task->initial_state());
+  return heur.estimate(s);
+}
+
+// ------------------------------------------------------- exact cost-to-go
+
+struct Exact {
+  double cost = model::kInf;
+  bool complete = false;  // false: the budget ran out before an answer
+};
+
+// Uniform-cost search over the full joint state space.
+Exact exact_cost(const pddl::Task& t, const model::Specification& spec, const State& start, size_t budget) {
+  std::unordered_map<State, double, pddl::StateHash> best;
+  using Item = std::pair<double, size_t>;
+  std::vector<State> states;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  states.push_back(start);
+  best[start] = 0;
+  open.push({0, 0});
+  std::vector<pddl::ActionId> acts;
+  while (!open.empty()) {
+    auto [g, i] = open.top();
+    open.pop();
+    State s = states[i];
+    if (g > best[s] + kEps) continue;
+    if (spec.is_goal(s)) return {g, true};
+    if (states.size() > budget) return {model::kInf, false};
+    t.applicable_actions(s.data(), acts);
+    for (auto a : acts) {
+      State n = t.apply(s, a);
+      double ng = g + spec.cost(a);
+      auto it = best.find(n);
+      if (it != best.end() && it->second <= ng + kEps) continue;
+      best[n] = ng;
+      states.push_back(std::move(n));
+      open.push({ng, states.size() - 1});
+    }
+  }
+  return {model::kInf, true};
+}
+
+State random_walk(const pddl::Task& t, State s, int steps, std::mt19937& rng) {
+  std::vector<pddl::ActionId> acts;
+  for (int i = 0; i < steps; ++i) {
+    t.applicable_actions(s.data(), acts);
+    if (acts.empty()) break;
+    s = t.apply(s, acts[std::uniform_int_distribution<size_t>(0, acts.size() - 1)(rng)]);
+  }
+  return s;
+}
+
+std::string dataset_dir() { return paths::dkg_dataset(); }
+
+}  // namespace
+
+// ======================================================= map analysis by hand
+
+TEST(DkgMap, RoomsGraphAndDistancesOfMapA) {
+  Hand h = make_map_a();
+  auto m = DkgMapAnalysis::build(h.task, h.task->initial_state());
+  // Column-major labelling: the left block (x 1-2) is room 1, the right block
+  // (x 4-5) room 2; door1 gets 2 + 1 = 3; walls 0.
+  EXPECT_EQ(m->num_rooms(), 2);
+  EXPECT_EQ(m->label(m->cell(1, 1)), 1);
+  EXPECT_EQ(m->label(m->cell(2, 3)), 1);
+  EXPECT_EQ(m->label(m->cell(5, 1)), 2);
+  EXPECT_EQ(m->label(m->cell(3, 2)), 3);
+  EXPECT_EQ(m->label(m->cell(3, 1)), 0);
+  EXPECT_EQ(m->room_neighbors(3), (std::vector<int>{1, 2}));
+  EXPECT_EQ(m->room_neighbors(1), (std::vector<int>{3}));
+  EXPECT_TRUE(m->room_adjacent(1, 3));
+  EXPECT_FALSE(m->room_adjacent(1, 2));
+  // Objects: human, robot, gem1, key1, door1.
+  EXPECT_EQ(m->name(0), "human");
+  EXPECT_EQ(m->name(1), "robot");
+  EXPECT_EQ(m->name(2), "gem1");
+  EXPECT_EQ(m->name(3), "key1");
+  EXPECT_EQ(m->name(4), "door1");
+  EXPECT_EQ(m->unlockers(4), (std::vector<int>{3}));
+  // Doors are passable for distances: (1,2) -> (5,2) is 4 steps.
+  EXPECT_EQ(m->dist(m->cell(1, 2), m->cell(5, 2)), 4);
+  EXPECT_EQ(m->dist(m->cell(1, 1), m->cell(3, 2)), 3);
+  EXPECT_EQ(m->dist(m->cell(1, 1), m->cell(3, 1)), DkgMapAnalysis::kNoPath);  // a wall
+}
+
+TEST(DkgMap, RecursiveKeepsTheReferenceQuirkOnMapD) {
+  Hand h = make_map_d();
+  auto m = DkgMapAnalysis::build(h.task, h.task->initial_state());
+  // Rooms (column-major): 1 = {(1,1),(2,1)}, 2 = row 3, 3 = {(3,5)}, 4 = {(4,1),(5,1)};
+  // doors: door1 5, door2 6, door3 7, door4 8.
+  ASSERT_EQ(m->num_rooms(), 4);
+  EXPECT_EQ(m->label(m->cell(4, 1)), 4);
+  EXPECT_EQ(m->label(m->cell(3, 5)), 3);
+  EXPECT_EQ(m->room_neighbors(1), (std::vector<int>{5, 6}));
+  EXPECT_EQ(m->room_neighbors(2), (std::vector<int>{5, 7, 8}));
+  EXPECT_EQ(m->room_neighbors(4), (std::vector<int>{6, 8}));
+  auto I = [&](const char* n) { return h.idx(*m, n); };
+  const int k1 = I("key1"), k2 = I("key2"), k3 = I("key3"), k4 = I("key4");
+  const int d1 = I("door1"), d2 = I("door2"), d3 = I("door3"), d4 = I("door4");
+  const int human = I("human"), gem = I("gem1");
+  auto v = m->read(h.task->initial_state());
+
+  // PATHSETS(1, 4): paths 1-6-4 (door2) then 1-5-2-8-4 (door1, door4).
+  KeyDoorSets p = m->pathsets(1, 4);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0], (KeyDoorSet{{k2}, {d2}}));
+  EXPECT_EQ(p[1], (KeyDoorSet{{k1, k4}, {d1, d4}}));
+
+  std::vector<int> targets{gem, human};
+  KeyDoorSets n = m->necessary(v, human, targets);
+  EXPECT_EQ(n, p);
+
+  // RECURSIVE: set 0 needs key2, which lies behind door3 (via door1: key1 +
+  // key3; or via door2, door4, door3). Set 1 needs nothing (both doors are
+  // unlocked) and, coming after set 0, is dropped — the reference's quirk.
+  // Iteration 2 merges the two routes to key2; iteration 3 changes nothing.
+  KeyDoorSets r = m->recursive(v, human, targets);
+  ASSERT_EQ(r.size(), 4u);
+  EXPECT_EQ(r[0], (KeyDoorSet{{k2, k1, k3}, {d2, d1, d3}}));
+  EXPECT_EQ(r[1], (KeyDoorSet{{k2, k1, k3, k4}, {d2, d1, d3, d4}}));
+  EXPECT_EQ(r[2], (KeyDoorSet{{k2, k4, k3, k1}, {d2, d4, d3, d1}}));
+  EXPECT_EQ(r[3], (KeyDoorSet{{k2, k4, k3}, {d2, d4, d3}}));
+  for (auto& kd : r) EXPECT_NE(kd, (KeyDoorSet{{k1, k4}, {d1, d4}}));
+}
+
+TEST(DkgMap, PathsetsNeedDistinctUnlockers) {
+  // Map B with one red key: the only route crosses two red doors, so no
+  // assignment of distinct keys exists and NECESSARY is empty.
+  Hand one = make_map_b(false);
+  auto m = DkgMapAnalysis::build(one.task, one.task->initial_state());
+  EXPECT_TRUE(m->pathsets(1, 3).empty());
+  // With two red keys both assignments appear, first door's key fastest:
+  // (key2, key1) before (key1, key2) since key1 < key2 in the unlocker list.
+  Hand two = make_map_b(true);
+  auto m2 = DkgMapAnalysis::build(two.task, two.task->initial_state());
+  auto I = [&](const char* n) { return two.idx(*m2, n); };
+  KeyDoorSets p = m2->pathsets(1, 3);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0], (KeyDoorSet{{I("key2"), I("key1")}, {I("door1"), I("door2")}}));
+  EXPECT_EQ(p[1], (KeyDoorSet{{I("key1"), I("key2")}, {I("door1"), I("door2")}}));
+}
+
+// ============================================================ MST values by hand
+
+TEST(DkgMstHeuristic, MapAInitialState) {
+  Hand h = make_map_a();
+  // C1: move 1, wait 0.6, pickup 1 (robot), unlock 1. S = [([key1],[door1])].
+  // Pendants: key1 1, gem1 1, door1 max(0, 1-1) = 0.
+  // Edges (x1.6): human-key1 1 -> 1.6, human-door1 2 -> 3.2, key1-door1 3 ->
+  // 4.8, door1-gem1 2 -> 3.2; human-gem1 not admitted (rooms 1 and 2).
+  // MST 1.6 + 3.2 + 3.2 = 8.0, + 2 = 10.0 (the robot only adds >= 1).
+  // The human moves next: 10.0 - 0.6 = 9.4.
+  EXPECT_NEAR(mst(h, "(has human gem1)", h.task->initial_state()), 9.4, kEps);
+  // C4 raises unlock_min to 2: the door pendant becomes 2 - 1 = 1.
+  EXPECT_NEAR(mst(h, "(has human gem1)", h.task->initial_state(), 4), 10.4, kEps);
+}
+
+TEST(DkgMstHeuristic, HeldKeyCostsNoPickupAndUsedKeyIsNotNeeded) {
+  Hand h = make_map_a();
+  // The human holds key1 at (1,1): key1 sits at its holder, pendant 0.
+  // human-key1 0, human-door1 3 -> 4.8, door1-gem1 3.2: 8.0 + gem 1 = 9.0,
+  // minus one wait: 8.4.
+  State held = h.run({"(up human)", "(wait robot)", "(pickup human key1)", "(wait robot)"});
+  EXPECT_NEAR(mst(h, "(has human gem1)", held), 8.4, kEps);
+  // After unlocking from (2,2): key1 is used, door1 unlocked, so key1 leaves
+  // the MST. human-door1 1.6 + door1-gem1 3.2 + gem 1 = 5.8; the robot moves
+  // next, so nothing is subtracted.
+  State used = h.run({"(up human)", "(wait robot)", "(pickup human key1)", "(wait robot)", "(down human)",
+                      "(wait robot)", "(right human)", "(wait robot)", "(unlock human key1 door1)"});
+  EXPECT_NEAR(mst(h, "(has human gem1)", used), 5.8, kEps);
+}
+
+TEST(DkgMstHeuristic, UsedKeyStillRequiredIsIsolated) {
+  Hand h = make_map_b(true);
+  // Initial state: both key sets give the same object set {human, key1,
+  // key2, door1, door2, gem1}; pendants 3; MST human-key1 1.6, human-key2
+  // 1.6, human-door1 3.2, door1-door2 3.2 (doors sharing room 2), door2-gem1
+  // 3.2 = 12.8; 15.8 - 0.6 = 15.2.
+  EXPECT_NEAR(mst(h, "(has human gem1)", h.task->initial_state()), 15.2, kEps);
+  // key1 used on door1: set ([key2,key1],[door1,door2]) needs the used key1
+  // for the locked door2 and gets +inf; set ([key1,key2],..) needs key2:
+  // pendants key2 1 + gem 1; MST human-door1 1.6, human-key2 3.2,
+  // door1-door2 3.2, door2-gem1 3.2 = 11.2; total 13.2 (robot to move).
+  State s = h.run({"(up human)", "(wait robot)", "(pickup human key1)", "(wait robot)", "(down human)",
+                   "(wait robot)", "(right human)", "(wait robot)", "(unlock human key1 door1)"});
+  EXPECT_NEAR(mst(h, "(has human gem1)", s), 13.2, kEps);
+}
+
+TEST(DkgMstHeuristic, UnreachableGoalsAreInfinite) {
+  // One red key for two red doors in a row: no key assignment.
+  Hand one = make_map_b(false);
+  EXPECT_EQ(mst(one, "(has human gem1)", one.task->initial_state()), model::kInf);
+  // A gem walled off completely.
+  Hand boxed({"...W.", "...W.", "...W."},
+             {{"human", "human", "", 1, 1}, {"robot", "robot", "", 2, 2}, {"gem1", "gem", "red", 5, 2}});
+  EXPECT_EQ(mst(boxed, "(has human gem1)", boxed.task->initial_state()), model::kInf);
+}
+
+TEST(DkgMstHeuristic, MapCCorridorAndDisjunctions) {
+  Hand h = make_map_c();
+  // S = [([key1,key2],[door1,door2])] (RECURSIVE adds nothing new).
+  // Pendants key1 1, key2 1, gem1 1; doors 0. MST: human-key1 1.6,
+  // human-door1 1.6, door1-key2 1.6, key2-door2 1.6, door2-gem1 3.2 = 9.6.
+  // 12.6 - 0.6 = 12.0.
+  State s0 = h.task->initial_state();
+  EXPECT_NEAR(mst(h, "(has human gem1)", s0), 12.0, kEps);
+  // (has human key1): key1 is in the human's room: 1.6 + 1 - 0.6 = 2.0, and a
+  // disjunction takes the cheaper clause.
+  EXPECT_NEAR(mst(h, "(has human key1)", s0), 2.0, kEps);
+  EXPECT_NEAR(mst(h, "(or (has human gem1) (has human key1))", s0), 2.0, kEps);
+  // A conjunction: one clause with both items; pickedup-by is dropped.
+  EXPECT_NEAR(mst(h, "(and (has human key1) (pickedup-by human key1))", s0), 2.0, kEps);
+  // The robot's goal (the human is active, so no wait is subtracted). Rooms
+  // of the 9 x 1 corridor: 1 = x 1-2, 2 = x 4, 3 = x 6-7, 4 = x 9; doors 5-7.
+  // From room 3, key2 (room 2) lies behind door2, opened by key2 itself:
+  // S = [([key2],[door2])], and RECURSIVE's sub-result for key2 is the same
+  // set, so S is unchanged. Objects robot, key2, door2: pendant key2 1;
+  // robot-door2 1 -> 1.6, door2-key2 1 -> 1.6; 4.2. The human as helper has
+  // no admissible edge (room 1) and gives +inf.
+  EXPECT_NEAR(mst(h, "(has robot key2)", s0), 4.2, kEps);
+}
+
+TEST(DkgMstHeuristic, SatisfiedGoalIsZero) {
+  Hand h = make_map_c();
+  State s = h.run({"(left human)", "(wait robot)", "(pickup human key1)"});
+  EXPECT_EQ(mst(h, "(has human key1)", s), 0.0);
+  EXPECT_EQ(mst(h, "(or (has human gem1) (has human key1))", s), 0.0);
+}
+
+TEST(DkgMstHeuristic, PruningKeepsOnlyNecessaryKeysAndDoors) {
+  Hand h = make_map_c();
+  auto spec = h.spec("(has human gem1)");
+  DkgMstHeuristic heur;
+  heur.prepare(spec, h.task->initial_state());
+  EXPECT_TRUE(heur.prunes());
+  const auto& m = *heur.map();
+  auto bit = [&](const char* n) { return uint64_t{1} << h.idx(m, n); };
+  EXPECT_EQ(heur.necessary_keys(), bit("key1") | bit("key2"));
+  EXPECT_EQ(heur.necessary_doors(), bit("door1") | bit("door2"));
+  EXPECT_EQ(heur.goal_items(), bit("gem1"));
+  auto keep = [&](const std::string& a) {
+    auto id = h.task->find_action(a);
+    EXPECT_TRUE(id) << a;
+    return id && heur.keep(*id);
+  };
+  EXPECT_TRUE(keep("(pickup human key1)"));
+  EXPECT_TRUE(keep("(pickup robot key2)"));
+  EXPECT_TRUE(keep("(pickup human gem1)"));
+  EXPECT_FALSE(keep("(pickup human key3)"));
+  EXPECT_FALSE(keep("(pickup robot key3)"));
+  EXPECT_TRUE(keep("(handover robot human key2)"));
+  EXPECT_FALSE(keep("(handover robot human key3)"));
+  EXPECT_TRUE(keep("(unlock human key1 door1)"));
+  EXPECT_TRUE(keep("(unlock robot key2 door2)"));
+  EXPECT_FALSE(keep("(unlock human key3 door3)"));  // door3 is not on the way
+  EXPECT_TRUE(keep("(up human)"));
+  EXPECT_TRUE(keep("(wait robot)"));
+
+  // A key that is itself the goal: the way to key3 (x 9) crosses door1,
+  // door2 and door3, so all three keys become necessary and key3, a goal
+  // item, may be picked up, handed over and used.
+  auto spec3 = h.spec("(has human key3)");
+  heur.prepare(spec3, h.task->initial_state());
+  EXPECT_EQ(heur.necessary_keys(), bit("key1") | bit("key2") | bit("key3"));
+  EXPECT_EQ(heur.necessary_doors(), bit("door1") | bit("door2") | bit("door3"));
+  EXPECT_TRUE(keep("(pickup human key3)"));
+  EXPECT_TRUE(keep("(handover robot human key3)"));
+  EXPECT_TRUE(keep("(unlock human key3 door3)"));
+}
+
+TEST(DkgMstHeuristic, SharedMapAnalysisAndMemoGiveFreshValues) {
+  Hand h = make_map_d();
+  auto spec = h.spec("(has human gem1)");
+  auto map = DkgMapAnalysis::build(h.task, h.task->initial_state());
+  DkgMstHeuristic shared(map);
+  shared.prepare(spec, h.task->initial_state());
+  EXPECT_EQ(shared.map(), map);
+  std::mt19937 rng(7);
+  for (int i = 0; i < 300; ++i) {
+    State s = random_walk(*h.task, h.task->initial_state(), i % 40, rng);
+    DkgMstHeuristic fresh(map);
+    fresh.prepare(spec, h.task->initial_state());
+    double a = shared.estimate(s), b = fresh.estimate(s);
+    if (std::isinf(a) || std::isinf(b)) EXPECT_EQ(a, b);
+    else EXPECT_NEAR(a, b, kEps);
+  }
+}
+
+TEST(DkgMstHeuristic, PropertiesAreDeclaredUnproven) {
+  DkgMstHeuristic h;
+  EXPECT_FALSE(h.admissible());
+  EXPECT_FALSE(h.consistent());
+  EXPECT_EQ(h.name(), "dkg-mst");
+  DkgDistanceHeuristic d;
+  EXPECT_TRUE(d.admissible());
+  EXPECT_TRUE(d.consistent());
+}
+
+// =========================================================== distance heuristic
+
+TEST(DkgDistanceHeuristic, HandValuesOnMapC) {
+  Hand h = make_map_c();
+  State s0 = h.task->initial_state();
+  DkgDistanceHeuristic d;
+  // (has human gem1), C1: only the human can take gems. d = 5 moves, pickup
+  // 5, n = 6 human actions, 5 robot turns in between at 0.6: 5 + 5 + 3 = 13.
+  d.prepare(h.spec("(has human gem1)"), s0);
+  EXPECT_NEAR(d.estimate(s0), 13.0, kEps);
+  // (has human key2): the human (d 2): 2 + 5 + 2 x 0.6 = 8.2; the robot (d 2,
+  // pickup 1, handover 1, 4 robot actions, 3 + 1 human turns (human active)
+  // at 0.6): 2 + 1 + 1 + 2.4 = 6.4.
+  d.prepare(h.spec("(has human key2)"), s0);
+  EXPECT_NEAR(d.estimate(s0), 6.4, kEps);
+  // Used keys are gone for good.
+  State used = h.run({"(left human)", "(wait robot)", "(pickup human key1)", "(wait robot)", "(right human)",
+                      "(wait robot)", "(unlock human key1 door1)"});
+  d.prepare(h.spec("(has human key1)"), s0);
+  EXPECT_EQ(d.estimate(used), model::kInf);
+  // Goal reached: 0; atoms other than `has` count 0.
+  State got = h.run({"(left human)", "(wait robot)", "(pickup human key1)"});
+  EXPECT_EQ(d.estimate(got), 0.0);
+  d.prepare(h.spec("(unlocked-by human door1)"), s0);
+  EXPECT_EQ(d.estimate(s0), 0.0);
+
+  // Map A: the robot fetches key1 for the human. While it holds the key, one
+  // handover (1) remains, plus one human turn first when the human is active.
+  Hand a = make_map_a();
+  DkgDistanceHeuristic da;
+  da.prepare(a.spec("(has human key1)"), a.task->initial_state());
+  State held = a.run({"(wait human)", "(up robot)", "(wait human)", "(up robot)", "(wait human)",
+                      "(pickup robot key1)"});
+  EXPECT_NEAR(da.estimate(held), 1.6, kEps);
+  held = a.task->apply(held, *a.task->find_action("(wait human)"));
+  EXPECT_NEAR(da.estimate(held), 1.0, kEps);
+}
+
+TEST(DkgDistanceHeuristic, AdmissibleAgainstExactCostOnHandMaps) {
+  std::vector<std::pair<Hand, std::vector<std::string>>> cases;
+  cases.push_back({make_map_a(), {"(has human gem1)", "(has human key1)", "(has robot key1)"}});
+  cases.push_back({make_map_b(true), {"(has human gem1)"}});
+  cases.push_back({make_map_c(), {"(has human gem1)", "(has human key2)", "(or (has human key2) (has robot key1))"}});
+  cases.push_back({make_map_d(), {"(has human gem1)", "(has human key2)"}});
+  std::mt19937 rng(11);
+  int checked = 0;
+  for (auto& [h, goals] : cases)
+    for (auto& g : goals)
+      for (int profile = 1; profile <= 4; ++profile) {
+        auto spec = h.spec(g, profile);
+        DkgDistanceHeuristic d;
+        d.prepare(spec, h.task->initial_state());
+        for (int i = 0; i < 8; ++i) {
+          State s = random_walk(*h.task, h.task->initial_state(), i * 3, rng);
+          Exact ex = exact_cost(*h.task, spec, s, 400000);
+          if (!ex.complete) continue;
+          double v = d.estimate(s);
+          std::vector<pddl::ActionId> acts;
+          h.task->applicable_actions(s.data(), acts);
+          for (auto a : acts)
+            EXPECT_LE(v, spec.cost(a) + d.estimate(h.task->apply(s, a)) + kEps) << g << " " << h.task->action_name(a);
+          if (ex.cost == model::kInf) continue;  // any value is admissible
+          EXPECT_LE(v, ex.cost + kEps) << g << " C" << profile << "\n" << h.task->state_str(s);
+          ++checked;
+        }
+      }
+  EXPECT_GT(checked, 100);
+}
+
+namespace {
+
+// Problems of the dataset that are cheap enough for exact search.
+const std::vector<std::string> kDatasetProblems = {"demo0", "demo1", "demo2", "1", "12", "15", "17", "18"};
+
+}  // namespace
+
+TEST(DkgDistanceHeuristic, ConsistentOnDatasetRandomWalks) {
+  const std::string dir = dataset_dir();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no dataset at " << dir;
+  auto ds = data::Dataset::load(dir);
+  std::mt19937 rng(3);
+  long edges = 0;
+  std::vector<pddl::ActionId> acts;
+  for (const auto& pid : kDatasetProblems) {
+    auto task = ds.task(pid);
+    // Gem goals, key goals for either agent (hand-overs and used keys), and
+    // a disjunction.
+    std::vector<std::string> goals;
+    for (auto o : task->objects_of_type("gem")) goals.push_back("(has human " + task->object_name(o) + ")");
+    for (auto o : task->objects_of_type("key")) {
+      goals.push_back("(has human " + task->object_name(o) + ")");
+      goals.push_back("(has robot " + task->object_name(o) + ")");
+    }
+    goals.push_back("(or " + goals[0] + " " + goals.back() + ")");
+    for (const auto& goal : goals)
+      for (int profile = 1; profile <= 4; ++profile) {
+        const std::string& gem = goal;
+        model::Specification spec(task, goal, model::dkg_profile(profile));
+        DkgDistanceHeuristic d;
+        d.prepare(spec, task->initial_state());
+        State s = task->initial_state();
+        for (int step = 0; step < 150; ++step) {
+          double hs = d.estimate(s);
+          if (spec.is_goal(s)) {
+            EXPECT_EQ(hs, 0.0);
+          }
+          task->applicable_actions(s.data(), acts);
+          for (auto a : acts) {
+            State n = task->apply(s, a);
+            double hn = d.estimate(n);
+            EXPECT_LE(hs, spec.cost(a) + hn + kEps) << pid << " " << gem << " C" << profile << " "
+                                                     << task->action_name(a) << "\n" << task->state_str(s);
+            ++edges;
+          }
+          s = task->apply(s, acts[std::uniform_int_distribution<size_t>(0, acts.size() - 1)(rng)]);
+        }
+      }
+  }
+  EXPECT_GT(edges, 10000);
+}
+
+TEST(DkgDistanceHeuristic, AdmissibleOnDatasetStates) {
+  const std::string dir = dataset_dir();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no dataset at " << dir;
+  auto ds = data::Dataset::load(dir);
+  std::mt19937 rng(5);
+  int checked = 0, skipped = 0;
+  for (const auto& pid : kDatasetProblems) {
+    auto task = ds.task(pid);
+    for (int profile : {1, 3}) {
+      for (const char* gem : {"gem1", "gem2", "gem3", "gem4"}) {
+        if (!task->find_object(gem)) continue;
+        model::Specification spec(task, std::string("(has human ") + gem + ")", model::dkg_profile(profile));
+        DkgDistanceHeuristic d;
+        d.prepare(spec, task->initial_state());
+        State s = random_walk(*task, task->initial_state(), std::uniform_int_distribution<int>(0, 20)(rng), rng);
+        Exact ex = exact_cost(*task, spec, s, 300000);
+        if (!ex.complete) {
+          ++skipped;
+          continue;
+        }
+        EXPECT_LE(d.estimate(s), ex.cost + kEps) << pid << " " << gem << " C" << profile;
+        ++checked;
+      }
+    }
+  }
+  std::cout << "[dkg-distance] admissibility checked on " << checked << " dataset states (" << skipped
+            << " skipped: search budget)\n";
+  EXPECT_GT(checked, 0);
+}
+
+// ============================================ MST over-estimation measurement
+
+TEST(DkgMstHeuristic, MeasureOverestimationOnSmallMaps) {
+  struct Case {
+    std::string label;
+    std::shared_ptr<const pddl::Task> task;
+    std::string goal;
+  };
+  std::vector<Hand> hands;  // keep the tasks' domains alive
+  hands.push_back(make_map_a());
+  hands.push_back(make_map_b(true));
+  hands.push_back(make_map_c());
+  hands.push_back(make_map_d());
+  std::vector<Case> cases = {{"A", hands[0].task, "(has human gem1)"},
+                             {"B", hands[1].task, "(has human gem1)"},
+                             {"C", hands[2].task, "(has human gem1)"},
+                             {"D", hands[3].task, "(has human gem1)"}};
+  const std::string dir = dataset_dir();
+  std::optional<data::Dataset> ds;
+  if (std::filesystem::exists(dir)) {
+    ds = data::Dataset::load(dir);
+    for (const char* pid : {"demo0", "demo1", "demo2", "12", "17"})
+      for (const char* gem : {"gem1", "gem2", "gem3", "gem4"}) cases.push_back({pid, ds->task(pid), std::string("(has human ") + gem + ")"});
+  }
+  std::mt19937 rng(17);
+  for (int profile : {1, 3}) {
+    int n = 0, over = 0, inf_mismatch = 0;
+    double max_excess = 0, sum_excess = 0, max_ratio = 0;
+    std::string worst;
+    for (auto& c : cases) {
+      model::Specification spec(c.task, c.goal, model::dkg_profile(profile));
+      DkgMstHeuristic h;
+      h.prepare(spec, c.task->initial_state());
+      for (int i = 0; i < 10; ++i) {
+        State s = random_walk(*c.task, c.task->initial_state(), std::uniform_int_distribution<int>(0, 40)(rng), rng);
+        Exact ex = exact_cost(*c.task, spec, s, 150000);
+        if (!ex.complete) continue;
+        double v = h.estimate(s);
+        ++n;
+        if (ex.cost == model::kInf || v == model::kInf) {
+          if ((ex.cost == model::kInf) != (v == model::kInf)) ++inf_mismatch;
+          continue;
+        }
+        EXPECT_GE(v, 0.0);
+        if (v > ex.cost + 1e-6) {
+          ++over;
+          double e = v - ex.cost;
+          sum_excess += e;
+          if (e > max_excess) {
+            max_excess = e;
+            worst = c.label + " " + c.goal + " h=" + std::to_string(v) + " h*=" + std::to_string(ex.cost);
+          }
+          max_ratio = std::max(max_ratio, v / ex.cost);
+        }
+      }
+    }
+    std::cout << "[dkg-mst C" << profile << "] " << n << " states, over h*: " << over << " ("
+              << (n ? 100.0 * over / n : 0) << "%), mean excess " << (over ? sum_excess / over : 0)
+              << ", max excess " << max_excess << " (" << worst << "), max ratio " << max_ratio
+              << ", inf mismatches " << inf_mismatch << "\n";
+    EXPECT_GT(n, 0);
+  }
+  // The quirk on map D by itself: the free route is ignored.
+  Hand d = make_map_d();
+  auto spec = d.spec("(has human gem1)", 1);
+  Exact ex = exact_cost(*d.task, spec, d.task->initial_state(), 1000000);
+  std::cout << "[dkg-mst] map D s0: H = " << mst(d, "(has human gem1)", d.task->initial_state())
+            << ", h* = " << ex.cost << "\n";
+}
+
+TEST(DkgMstHeuristic, EstimateSpeedOnDataset) {
+  const std::string dir = dataset_dir();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no dataset at " << dir;
+  auto ds = data::Dataset::load(dir);
+  for (const char* pid : {"1", "8", "11", "13"}) {
+    auto task = ds.task(pid);
+    model::Specification spec(task, "(has human gem2)", model::dkg_profile(3));
+    DkgMstHeuristic h;
+    h.prepare(spec, task->initial_state());
+    std::mt19937 rng(1);
+    std::vector<State> states;
+    for (int i = 0; i < 2000; ++i) states.push_back(random_walk(*task, task->initial_state(), i % 60, rng));
+    double sink = 0;
+    for (auto& s : states) sink += std::min(h.estimate(s), 1e6);  // warm the memo
+    auto t0 = std::chrono::steady_clock::now();
+    for (int rep = 0; rep < 10; ++rep)
+      for (auto& s : states) sink += std::min(h.estimate(s), 1e6);
+    double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+                (10.0 * states.size());
+    std::cout << "[dkg-mst] problem " << pid << ": " << ns << " ns per estimate (checksum " << sink << ")\n";
+    EXPECT_GT(sink, 0);
+  }
+}
