@@ -15,6 +15,8 @@ std::string default_dataset_hint();
 void register_validate(CLI::App& app);
 void register_show(CLI::App& app);
 void register_plan(CLI::App& app);
+void register_bench(CLI::App& app);
+void register_assist(CLI::App& app);
 void register_infer(CLI::App& app);
 void register_listen(CLI::App& app);
 void register_lm_score(CLI::App& app);

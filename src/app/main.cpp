@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   clips::app::register_validate(app);
   clips::app::register_show(app);
   clips::app::register_plan(app);
+  clips::app::register_assist(app);
+  clips::app::register_bench(app);
   clips::app::register_infer(app);
   clips::app::register_listen(app);
   clips::app::register_lm_score(app);

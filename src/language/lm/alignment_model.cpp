@@ -56,6 +56,34 @@ int char_index(char c) {
 
 int actions_bucket(int a) { return std::clamp(a, 0, kMaxActionsBucket); }
 
+// Lexical class bits of a word, for reading noun phrases and their modifiers.
+constexpr uint8_t kWordFunction = 1;     // closed class (is_function_word)
+constexpr uint8_t kWordNoun = 2;         // content word, noun-like (WordNet) or unknown
+constexpr uint8_t kWordVerb = 4;         // content word, verb-like
+constexpr uint8_t kWordModifier = 8;     // attribute value (colour) or adjective
+constexpr uint8_t kWordDeterminer = 16;  // opens a noun phrase ("a", "the", "this", "two")
+constexpr uint8_t kWordPronoun = 32;     // a whole noun phrase ("me", "it")
+constexpr uint8_t kWordPreposition = 64;  // may open a post-nominal modifier ("for", "to")
+constexpr uint8_t kWordIndefinite = 128;  // "something": a noun phrase that takes modifiers
+constexpr int kMaxModifierSpan = 5;       // tokens after the preposition, at most
+
+uint8_t closed_class_flags(std::string_view w) {
+  static const std::set<std::string_view> determiners = {
+      "a",    "an",   "the",   "this",    "that", "these", "those", "some",  "any",  "my",
+      "your", "our",  "his",   "her",     "their", "its",  "another", "each", "every", "both",
+      "one",  "two",  "three", "four",    "five",  "six",  "no"};
+  static const std::set<std::string_view> pronouns = {"me", "you", "us", "him", "her", "them",
+                                                      "it", "myself", "yourself", "ourselves"};
+  static const std::set<std::string_view> indefinite = {"something", "anything", "everything", "someone"};
+  uint8_t f = 0;
+  if (is_function_word(w)) f |= kWordFunction;
+  if (determiners.count(w) != 0) f |= kWordDeterminer;
+  if (pronouns.count(w) != 0) f |= kWordPronoun;
+  if (w == "for" || w == "to") f |= kWordPreposition;
+  if (indefinite.count(w) != 0) f |= kWordIndefinite;
+  return f;
+}
+
 double log_poisson(int n, double mu) {
   return n * std::log(mu) - mu - std::lgamma(n + 1.0);
 }
@@ -158,6 +186,7 @@ struct AlignmentModel::Bound {
     int table_index;  // -1 for lazily created tables (not trained)
     double weight;
     bool residual;    // the non-copy part of an attribute field
+    bool verb = false;  // a verb field (kept inside modifier spans)
   };
   struct Copy {
     int id;
@@ -172,6 +201,7 @@ struct AlignmentModel::Bound {
     int parent = -1;  // for an optional unit: index of its action group
     double unit_weight = 0;  // its weight relative to the group's own fields (which sum to 1)
     double log_on, log_off;
+    double nonverb_weight = 0;  // action group: weight of its noun/number fields (M in modifiers)
     std::vector<Field> fields;
     std::vector<Copy> copies;
   };
@@ -240,7 +270,65 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   if (u.clause_end.empty() || u.clause_end.back() != static_cast<int>(u.words.size())) {
     u.clause_end.push_back(static_cast<int>(u.words.size()));
   }
+  mark_modifiers(u);
   return u;
+}
+
+uint8_t AlignmentModel::word_flags(int id, const std::string& w) const {
+  if (id >= 0 && static_cast<size_t>(id) < word_flags_.size()) return word_flags_[static_cast<size_t>(id)];
+  // Unknown words: closed-class lists, else read as a noun (a name of something).
+  const uint8_t f = closed_class_flags(w);
+  return (f & kWordFunction) != 0 ? f : static_cast<uint8_t>(f | kWordNoun);
+}
+
+// Post-nominal prepositional modifiers, read left to right: a span opens after
+// "for"/"to" whose preceding word heads a noun phrase (a noun after a
+// determiner, possibly with adjectives between, or "something"), and covers the
+// following determiners, pronouns and adjectives up to and including the head
+// noun or pronoun. A verb right after the preposition is an infinitive ("a key
+// to open the door"): it ends the span, so its object is not inside it. The
+// flag of token i depends only on tokens before i.
+void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
+  const size_t n = u.words.size();
+  u.in_modifier.assign(n, 0);
+  std::vector<uint8_t> f(n);
+  for (size_t i = 0; i < n; ++i) f[i] = word_flags(u.ids[i], u.words[i]);
+  auto heads_noun_phrase = [&](size_t j) {
+    if ((f[j] & kWordIndefinite) != 0) return true;
+    const bool one = u.words[j] == "one" || u.words[j] == "ones";
+    if (!one && ((f[j] & kWordFunction) != 0 || (f[j] & kWordNoun) == 0)) return false;
+    for (size_t back = 1; back <= 3 && back <= j; ++back) {
+      const uint8_t g = f[j - back];
+      if ((g & kWordDeterminer) != 0) return true;
+      const bool modifier = (g & kWordModifier) != 0 || ((g & kWordFunction) == 0 && (g & kWordNoun) != 0 &&
+                                                         (g & kWordVerb) == 0);
+      if (!modifier) return false;
+    }
+    return false;
+  };
+  bool open = false;
+  int k = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (open) u.in_modifier[i] = 1;
+    if (is_clause_end(u.words[i])) {
+      open = false;
+      continue;
+    }
+    if (open) {
+      ++k;
+      const uint8_t g = f[i];
+      if ((g & kWordPronoun) != 0 || (k == 1 && (g & kWordVerb) != 0)) {
+        open = false;  // a pronoun, or an infinitive's verb ("a key to open ...")
+      } else if ((g & kWordFunction) != 0 || (g & kWordModifier) != 0) {
+        open = k < kMaxModifierSpan;
+      } else {
+        open = false;  // the head noun, or an infinitive's verb
+      }
+    } else if ((f[i] & kWordPreposition) != 0 && i > 0 && heads_noun_phrase(i - 1)) {
+      open = true;
+      k = 0;
+    }
+  }
 }
 
 const AlignmentModel::Table* AlignmentModel::find_or_make_table(const std::string& key) const {
@@ -288,8 +376,10 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
     // than merely diluting the group.
     const double z = kWeightVerb + (g.type.empty() ? 0 : kWeightNoun) + (g.count >= 2 ? kWeightNumber : 0);
     bg.fields.push_back(field_of(verb_key(g), kWeightVerb / z));
+    bg.fields.back().verb = true;
     if (!g.type.empty()) bg.fields.push_back(field_of(noun_key(g), kWeightNoun / z));
     if (g.count >= 2) bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
+    bg.nonverb_weight = 1.0 - kWeightVerb / z;
     const int parent = static_cast<int>(b->groups.size());
     b->groups.push_back(std::move(bg));
     for (const std::string& a : g.attributes) {
@@ -343,11 +433,14 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
   const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
   const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
+  const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
+  const bool have_spans = u.in_modifier.size() == n;
 
   // Per-token source probabilities; p_group[g * n + i] is unit g's own emission
   // (its fields' weights sum to 1 for an action group; for an optional unit
   // such as a recipient it is that unit's table alone).
-  std::vector<double> p_bg(n), p_you(n), p_me(n), p_gen(n), p_group(n * G);
+  // Inside a modifier span an action group's noun and number fields give way to M.
+  std::vector<double> p_bg(n), p_you(n), p_me(n), p_gen(n), p_mod(n, 0.0), p_group(n * G);
   for (size_t i = 0; i < n; ++i) {
     const int id = u.ids[i];
     const std::string& w = u.words[i];
@@ -355,8 +448,17 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     p_you[i] = a_you.at(id, w);
     p_me[i] = a_me.at(id, w);
     p_gen[i] = gen.at(id, w);
+    const bool in_mod = have_spans && u.in_modifier[i] != 0;
+    if (in_mod) p_mod[i] = mod.at(id, w);
     for (size_t g = 0; g < G; ++g) {
       double v = 0;
+      if (in_mod && c.groups[g].kind == 0) {
+        for (const Bound::Field& f : c.groups[g].fields) {
+          if (f.verb) v += f.weight * f.table->at(id, w);
+        }
+        p_group[g * n + i] = v + c.groups[g].nonverb_weight * p_mod[i];
+        continue;
+      }
       for (const Bound::Field& f : c.groups[g].fields) v += f.weight * f.table->at(id, w);
       for (const Bound::Copy& cp : c.groups[g].copies) {
         if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight;
@@ -482,6 +584,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const int id_you = table_ids_.at("A:you");
   const int id_me = table_ids_.at("A:me");
   const int id_gen = table_ids_.at("GEN");
+  const int id_mod = table_ids_.at("M");
   for (uint32_t mask = first_mask; mask != stop; ++mask) {
     const double pm = std::exp(log_m[mask - first_mask] - log_words);
     if (!(pm > 1e-9)) continue;
@@ -525,7 +628,10 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
             const size_t owner = grp.parent >= 0 ? static_cast<size_t>(grp.parent) : g;
             if (c.groups[owner].speaker != speaker) continue;
             const double unit = share * (grp.parent >= 0 ? grp.unit_weight : 1.0) / den[owner];
+            const bool in_mod = have_spans && u.in_modifier[i] != 0 && grp.kind == 0;
+            if (in_mod) counts->table[static_cast<size_t>(id_mod)][uid] += unit * grp.nonverb_weight * p_mod[i];
             for (const Bound::Field& f : grp.fields) {
+              if (in_mod && !f.verb) continue;
               const double e = unit * f.weight * f.table->at(id, u.words[i]);
               if (f.table_index >= 0) counts->table[static_cast<size_t>(f.table_index)][uid] += e;
               if (f.residual) counts->non_copy += e;
@@ -593,6 +699,7 @@ std::string AlignmentModel::explain(const std::string& command, const std::strin
   const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
   const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
   const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
+  const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
   std::string out = "alpha=" + std::to_string(copy_alpha_) + " rho_group=" + std::to_string(mention_[0]) +
                     " rho_recipient=" + std::to_string(mention_[1]) +
                     " rho_attribute=" + std::to_string(mention_[2]) + "\n";
@@ -600,9 +707,14 @@ std::string AlignmentModel::explain(const std::string& command, const std::strin
     const int id = u.ids[i];
     const std::string& w = u.words[i];
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%-12s bg=%.4f you=%.4f me=%.4f gen=%.4f", w.c_str(), bg_prob(id, w),
-                  a_you.at(id, w), a_me.at(id, w), gen.at(id, w));
+    const bool in_mod = u.in_modifier[i] != 0;
+    std::snprintf(buf, sizeof buf, "%-12s%s bg=%.4f you=%.4f me=%.4f gen=%.4f", w.c_str(), in_mod ? "[mod]" : "",
+                  bg_prob(id, w), a_you.at(id, w), a_me.at(id, w), gen.at(id, w));
     out += buf;
+    if (in_mod) {
+      std::snprintf(buf, sizeof buf, " M=%.4f", mod.at(id, w));
+      out += buf;
+    }
     for (const Bound::Group& g : c->groups) {
       out += " |";
       for (const Bound::Field& f : g.fields) {
@@ -685,6 +797,7 @@ struct Trainer {
       p /= static_cast<double>(residual_base.size());
     }
     bases["GEN"] = gen_base;
+    bases["M"] = gen_base;  // modifier heads: domain nouns ("door", "table"), learned by EM
     bases["R"] = residual_base;
     const size_t V2 = M.words_.size();
     (void)V;
@@ -745,6 +858,26 @@ struct Trainer {
       if (wc.noun_like) noun_ids.push_back(static_cast<int>(i));
       if (wc.verb_like) verb_ids.push_back(static_cast<int>(i));
     }
+    // Word classes for reading noun phrases (AlignmentModel::mark_modifiers).
+    // Attribute values (colours, also as residual words) are pure modifiers.
+    std::set<std::string> modifier_words(attributes.begin(), attributes.end());
+    for (const auto& [w, p] : residual_base) modifier_words.insert(w);
+    M.word_flags_.assign(V2, 0);
+    for (size_t i = 0; i < V2; ++i) {
+      const std::string& w = M.words_[i];
+      uint8_t f = closed_class_flags(w);
+      if ((f & kWordFunction) == 0 && !is_punctuation_token(w)) {
+        if (modifier_words.count(w) != 0) {
+          f |= kWordModifier;
+        } else {
+          const WordNetLexicon::WordClass wc = WordNetLexicon::instance().word_class(w);
+          if (wc.noun_like) f |= kWordNoun;
+          if (wc.verb_like) f |= kWordVerb;
+          if (wc.adjective_like) f |= kWordModifier;
+        }
+      }
+      M.word_flags_[i] = f;
+    }
     auto with_floor = [&](const WordDistribution& d, const std::vector<int>& floor_ids, double eps) {
       std::vector<std::pair<int, double>> out;
       for (const auto& [w, p] : d) out.emplace_back(M.word_ids_.at(w), (1 - eps) * p);
@@ -758,7 +891,7 @@ struct Trainer {
       const int ti = M.table_index(k);
       AlignmentModel::Table& t = *M.tables_[static_cast<size_t>(ti)];
       const bool agent = k[0] == 'A' || k[0] == 'P';
-      t.kappa = agent ? kKappaAgent : k == "GEN" ? kKappaGeneric : kKappaContent;
+      t.kappa = agent ? kKappaAgent : (k == "GEN" || k == "M") ? kKappaGeneric : kKappaContent;
       // The recipient unit is a closed set of words ("me", "my way", "here").
       static const std::vector<int> no_floor;
       const std::vector<int>& floor_ids = k[0] == 'P'   ? no_floor
@@ -770,7 +903,7 @@ struct Trainer {
       t.prob.assign(V2, 0.0);
       // GEN starts flat: it must not out-compete the command's own fields for
       // the words they co-occur with before EM has seen the data.
-      const double init_floor = k == "GEN" ? 0.95 : kInitialFloor;
+      const double init_floor = (k == "GEN" || k == "M") ? 0.95 : kInitialFloor;
       for (const auto& [id, p] : with_floor(d, floor_ids, init_floor)) t.prob[static_cast<size_t>(id)] += p;
     }
 

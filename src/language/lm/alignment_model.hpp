@@ -38,9 +38,23 @@
 //          else a shared residual table R. alpha is ONE parameter shared by all
 //          colours, so a colour seen once in training is as copyable as any;
 //       P  recipient: "me", "my way", "here", ... for hand-overs to the speaker.
+//  5. Modifiers. Tokens inside a post-nominal prepositional modifier ("I need a key [for
+//     this yellow door]", "the key [to that door]") are not object mentions of
+//     any action: there a group's noun and number fields are replaced by M, one
+//     shared "modifier" table (purpose/goal nouns), while its verb field and its
+//     optional units (colours, recipient) stay. So "door" in "a key for this
+//     door" is equally likely under every command and cannot vouch for an unlock
+//     action the utterance never asks for: an unlock group must be mentioned by
+//     its verb ("open", "unlock") or by its noun in object position ("get the
+//     door"), else it pays its mention odds. The modifier span starts after
+//     "for"/"to" that follows a noun introduced by a determiner ("a key for",
+//     "the red key to", "the yellow one for", "something for") and runs over
+//     determiners, pronouns and adjectives/colours up to its head noun (or
+//     pronoun: "the door for me"); an infinitive ("the key to open ...") ends it
+//     at the verb, so its object is read as usual.
 //
-// Every factor is a normalised distribution and the clause cuts depend only on
-// already generated tokens, so the sum over all token sequences is exactly 1.
+// Every factor is a normalised distribution and the clause cuts and modifier
+// spans depend only on already generated tokens, so the sum over all token sequences is exactly 1.
 // Emission tables are Dirichlet posteriors: expected counts from EM over the
 // training pairs (corpus + few-shot examples) plus kappa times a lexical base from
 // WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).
@@ -73,6 +87,10 @@ struct EncodedUtterance {
   std::vector<int> ids;             // vocabulary id, or -1 if unknown
   std::vector<std::string> words;   // the tokens themselves
   std::vector<int> clause_end;      // exclusive end index of each clause
+  // in_modifier[i] != 0: token i lies in a post-nominal prepositional modifier
+  // ("a key [for this red door]", "the key [to that door]"); decided from the
+  // tokens before i only, so the model stays a left-to-right process.
+  std::vector<char> in_modifier;
 };
 
 // Trained parameters. Immutable after train(), except for a thread-safe cache of
@@ -120,8 +138,14 @@ class AlignmentModel {
                   double weight) const;
   double length_log_prob(int actions, int n, bool complete) const;
 
+  // Lexical class bits of a vocabulary word (kWord* in the .cpp), for the
+  // noun-phrase reading of encode().
+  uint8_t word_flags(int id, const std::string& w) const;
+  void mark_modifiers(EncodedUtterance& u) const;
+
   std::unordered_map<std::string, int> word_ids_;
   std::vector<std::string> words_;
+  std::vector<uint8_t> word_flags_;  // per vocabulary id
   std::vector<double> char_first_;  // char bigram model: first char
   std::vector<double> char_next_;   // [prev * 37 + next], next 36 = end
   std::vector<double> bg_;          // background probs over the vocabulary

@@ -241,6 +241,8 @@ WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
   WordClass c;
   c.noun_like = n >= v;
   c.verb_like = v >= n;
+  const int a = senses(ADJ);
+  c.adjective_like = a > n && a > v;
   return c;
 }
 

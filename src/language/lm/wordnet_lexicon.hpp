@@ -41,6 +41,9 @@ class WordNetLexicon {
   struct WordClass {
     bool noun_like = true;
     bool verb_like = true;
+    // More adjective senses than noun and verb senses ("yellow", "locked" is not:
+    // WordNet lists it under the verb "lock"). Used to read noun-phrase modifiers.
+    bool adjective_like = false;
   };
   WordClass word_class(const std::string& word);
 

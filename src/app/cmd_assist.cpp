@@ -1,0 +1,80 @@
+// `clips assist`: one assistive run on one plan, with its metrics.
+#include <fmt/core.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli.hpp"
+#include "eval/experiment.hpp"
+#include "language/listener.hpp"
+
+namespace clips::app {
+
+void register_assist(CLI::App& app) {
+  auto* cmd = app.add_subcommand("assist", "Infer the goal from a plan's prefix and utterance, then assist; print metrics");
+  struct Opts {
+    std::string dataset, plan, method = "clips", assist = "qmdp_offline", lm = "embedded";
+    bool json = false;
+    uint64_t seed = 1;
+  };
+  auto o = std::make_shared<Opts>();
+  cmd->add_option("--dataset", o->dataset, "Dataset directory")->required();
+  cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys")->required();
+  cmd->add_option("--method", o->method, "clips, lang_only, action_only, literal_naive, literal_efficient (VH: literal)")
+      ->check(CLI::IsMember({"clips", "lang_only", "action_only", "literal_naive", "literal_efficient", "literal"}));
+  cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
+      ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
+  cmd->add_option("--lm", o->lm, "Language model: embedded (default) or openai");
+  cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
+  cmd->add_flag("--json", o->json, "Print one JSON object");
+  cmd->callback([o] {
+    auto ds = data::Dataset::load(o->dataset);
+    const auto& p = ds.plan(o->plan);
+    auto lm = language::make_language_model(o->lm, {});
+    eval::ExperimentOptions eo;
+    eo.seed = o->seed;
+    bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
+    std::string name = o->method;
+    if (ip && o->assist != "qmdp_offline") name += "/" + o->assist;
+    // Relative metrics need the CLIPS reference run on the same plan.
+    eo.methods = {"clips"};
+    if (name != "clips") eo.methods.push_back(name);
+    auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
+    if (!outcome.error.empty()) throw InputError(outcome.error);
+    const eval::MethodResult* r = outcome.find(name);
+    if (o->json) {
+      nlohmann::ordered_json j;
+      j["plan"] = p.id;
+      j["method"] = name;
+      j["goal_reached"] = r->goal_success >= 0.5;
+      j["goal_success"] = r->goal_success;
+      j["plan"] = r->plan;
+      j["plan_length"] = r->plan_length;
+      j["plan_cost"] = r->plan_cost;
+      j["human_cost"] = r->human_cost;
+      j["rel_plan_length"] = r->rel_plan_length;
+      j["rel_human_cost"] = r->rel_human_cost;
+      j["assist_options"] = r->options;
+      j["true_options"] = outcome.true_options;
+      j["assist_precision"] = r->precision;
+      j["assist_recall"] = r->recall;
+      if (r->p_true_goal) j["p_true_goal"] = *r->p_true_goal;
+      j["goals"] = outcome.goals;
+      j["goal_posterior"] = r->goal_posterior;
+      fmt::print("{}\n", j.dump());
+    } else {
+      fmt::print("plan {} method {}\n", p.id, name);
+      for (auto& a : r->plan) fmt::print("  {}\n", a);
+      fmt::print("goal reached: {} (success {:.2f}); length {:.2f}, cost {:.2f}, human cost {:.2f}\n",
+                 r->goal_success >= 0.5 ? "yes" : "no", r->goal_success, r->plan_length, r->plan_cost, r->human_cost);
+      std::string opts;
+      for (auto& [k, v] : r->options) opts += fmt::format(" {}={:.2f}", k, v);
+      std::string truth;
+      for (auto& t : outcome.true_options) truth += " " + t;
+      fmt::print("options:{}  (true:{})  precision {:.2f} recall {:.2f}\n", opts.empty() ? " none" : opts, truth,
+                 r->precision, r->recall);
+      if (r->p_true_goal) fmt::print("P(true goal) = {:.3f}\n", *r->p_true_goal);
+    }
+  });
+}
+
+}  // namespace clips::app

@@ -1,0 +1,52 @@
+// `clips bench`: reproduce the paper's result tables on a dataset directory.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "app/cli.hpp"
+#include "eval/bench.hpp"
+
+namespace clips::app {
+
+void register_bench(CLI::App& app) {
+  auto* cmd = app.add_subcommand("bench",
+                                 "Run every method on every plan of a dataset and print the paper's Table 1 "
+                                 "with the paper's numbers beside ours");
+  auto o = std::make_shared<eval::BenchOptions>();
+  auto out = std::make_shared<std::string>();
+  auto assist = std::make_shared<std::string>("default");
+  auto methods = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("--dataset", o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)")->required();
+  cmd->add_option("--out", *out, "Write results.csv and summary.json into this directory");
+  cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)");
+  cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines (default 1)");
+  cmd->add_option("--lm", o->lm, "Language model: embedded (default, offline) or openai");
+  cmd->add_option("--lm-base-url", o->lm_base_url, "OpenAI-compatible base URL (or $CLIPS_LM_BASE_URL)");
+  cmd->add_option("--lm-model", o->lm_model, "Model name for --lm openai (or $CLIPS_LM_MODEL)");
+  cmd->add_option("--assist", *assist, "default (offline Q_MDP) or all (adds online Q_MDP and pi-bar_MDP)")
+      ->check(CLI::IsMember({"default", "all"}));
+  cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive");
+  cmd->add_option("--plans", o->plans, "Only these plan ids");
+  cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
+  cmd->callback([=] {
+    o->experiment.all_assistance = *assist == "all";
+    o->experiment.methods = *methods;
+    auto rep = eval::run_bench(*o);
+    fmt::print("{}", eval::results_table(rep, std::string(CLIPS_SOURCE_DIR) + "/data/paper/results.json"));
+    if (!out->empty()) {
+      std::filesystem::create_directories(*out);
+      auto write = [&](const std::string& name, const std::string& text) {
+        std::string path = *out + "/" + name;
+        std::ofstream f(path);
+        if (!(f << text)) throw InputError("cannot write " + path);
+      };
+      write("summary.json", eval::summary_json(rep));
+      write("results.csv", eval::results_csv(rep));
+      fmt::print("wrote {}/summary.json and {}/results.csv\n", *out, *out);
+    }
+    g_exit_code = rep.failed_plans == 0 ? 0 : 1;
+  });
+}
+
+}  // namespace clips::app

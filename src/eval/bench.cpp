@@ -1,0 +1,206 @@
+#include "eval/bench.hpp"
+
+#include <fmt/core.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "language/listener.hpp"
+
+namespace clips::eval {
+
+namespace {
+
+const std::vector<std::string> kMetricNames = {"p_true_goal", "assist_precision", "assist_recall",
+                                               "rel_plan_length", "rel_human_cost", "goal_success"};
+
+void progress_line(int done, int total, double secs, bool tty) {
+  if (tty) {
+    int width = 30;
+    int filled = total ? done * width / total : width;
+    fmt::print(stderr, "\r[{}{}] {}/{} plans  {:.1f} s", std::string(filled, '#'), std::string(width - filled, '.'), done,
+               total, secs);
+    if (done == total) fmt::print(stderr, "\n");
+  } else {
+    fmt::print(stderr, "bench: {}/{} plans done, {:.1f} s\n", done, total, secs);
+  }
+}
+
+}  // namespace
+
+BenchReport run_bench(const BenchOptions& opts) {
+  auto t0 = std::chrono::steady_clock::now();
+  BenchReport rep;
+  auto ds0 = data::Dataset::load(opts.dataset);
+  rep.domain = data::to_string(ds0.kind());
+  rep.dataset = opts.dataset;
+  std::vector<const data::PlanRecord*> todo;
+  for (auto& p : ds0.plans()) {
+    bool wanted = opts.plans.empty() ? p.evaluated
+                                     : std::find(opts.plans.begin(), opts.plans.end(), p.id) != opts.plans.end();
+    if (wanted) todo.push_back(&p);
+  }
+  if (todo.empty()) throw InputError("no plans to evaluate in " + opts.dataset);
+  language::LanguageModelOptions lmo;
+  lmo.base_url = opts.lm_base_url;
+  lmo.model = opts.lm_model;
+  auto lm = language::make_language_model(opts.lm, lmo);
+  rep.lm = lm->name();
+  rep.plans.resize(todo.size());
+  int jobs = opts.jobs > 0 ? opts.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  jobs = std::min<int>(jobs, static_cast<int>(todo.size()));
+  std::atomic<size_t> next{0};
+  std::atomic<int> done{0};
+  std::mutex mu;
+  bool tty = opts.progress && isatty(STDERR_FILENO);
+  auto worker = [&] {
+    // Each worker grounds its own tasks: compiled conditions are not shared across threads.
+    auto ds = data::Dataset::load(opts.dataset);
+    for (;;) {
+      size_t i = next++;
+      if (i >= todo.size()) return;
+      const auto& p = ds.plan(todo[i]->id);
+      rep.plans[i] = evaluate_plan(ds, p, *lm, opts.experiment);
+      int d = ++done;
+      if (opts.progress) {
+        std::lock_guard<std::mutex> lock(mu);
+        progress_line(d, static_cast<int>(todo.size()),
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), tty);
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+
+  std::vector<std::string> order;
+  for (auto& p : rep.plans) {
+    if (!p.error.empty()) ++rep.failed_plans;
+    for (auto& m : p.methods)
+      if (std::find(order.begin(), order.end(), m.method) == order.end()) order.push_back(m.method);
+  }
+  for (auto& name : order) {
+    MethodSummary s;
+    s.method = name;
+    std::map<std::string, std::vector<double>> xs;
+    for (auto& p : rep.plans) {
+      const MethodResult* m = p.find(name);
+      if (!m) continue;
+      if (m->p_true_goal) xs["p_true_goal"].push_back(*m->p_true_goal);
+      xs["assist_precision"].push_back(m->precision);
+      xs["assist_recall"].push_back(m->recall);
+      xs["rel_plan_length"].push_back(m->rel_plan_length);
+      xs["rel_human_cost"].push_back(m->rel_human_cost);
+      xs["goal_success"].push_back(m->goal_success);
+    }
+    for (auto& [k, v] : xs) s.metrics[k] = mean_se(v);
+    rep.summary.push_back(s);
+  }
+  rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  rep.max_rss_kb = ru.ru_maxrss;
+  return rep;
+}
+
+std::string summary_json(const BenchReport& r) {
+  nlohmann::ordered_json j;
+  j["domain"] = r.domain;
+  j["dataset"] = r.dataset;
+  j["plans"] = r.plans.size();
+  j["failed_plans"] = r.failed_plans;
+  j["lm"] = r.lm;
+  j["wall_seconds"] = r.wall_seconds;
+  j["max_rss_mb"] = static_cast<double>(r.max_rss_kb) / 1024.0;
+  nlohmann::ordered_json methods = nlohmann::ordered_json::object();
+  for (auto& s : r.summary) {
+    nlohmann::ordered_json m = nlohmann::ordered_json::object();
+    for (auto& name : kMetricNames) {
+      auto it = s.metrics.find(name);
+      if (it == s.metrics.end()) continue;
+      m[name] = {{"mean", it->second.mean}, {"se", it->second.se}};
+    }
+    methods[s.method] = m;
+  }
+  j["methods"] = methods;
+  return j.dump(2) + "\n";
+}
+
+std::string results_csv(const BenchReport& r) {
+  std::string out = "plan,method,p_true_goal,assist_precision,assist_recall,plan_length,human_cost,plan_cost,"
+                    "rel_plan_length,rel_human_cost,goal_success,seconds,options,goal_posterior,error\n";
+  auto quote = [](std::string s) {
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  for (auto& p : r.plans) {
+    if (!p.error.empty()) {
+      out += p.plan_id + ",,,,,,,,,,,," + fmt::format("{:.3f}", p.seconds) + ",,," + quote(p.error) + "\n";
+      continue;
+    }
+    for (auto& m : p.methods) {
+      std::string opts, post;
+      for (auto& [o, v] : m.options) opts += (opts.empty() ? "" : ";") + o + "=" + fmt::format("{:.4g}", v);
+      for (size_t g = 0; g < m.goal_posterior.size(); ++g)
+        post += (g ? ";" : "") + p.goals[g] + "=" + fmt::format("{:.4g}", m.goal_posterior[g]);
+      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.3f},{},{},\n", p.plan_id,
+                         m.method, m.p_true_goal ? fmt::format("{:.6g}", *m.p_true_goal) : "", m.precision, m.recall,
+                         m.plan_length, m.human_cost, m.plan_cost, m.rel_plan_length, m.rel_human_cost, m.goal_success,
+                         m.seconds, quote(opts), quote(post));
+    }
+  }
+  return out;
+}
+
+std::string results_table(const BenchReport& r, const std::string& paper_json_path) {
+  nlohmann::json paper;
+  if (std::ifstream in(paper_json_path); in) {
+    try {
+      paper = nlohmann::json::parse(in);
+    } catch (...) {
+    }
+  }
+  const nlohmann::json* ours_paper = paper.contains(r.domain) ? &paper[r.domain] : nullptr;
+  std::vector<std::pair<std::string, std::string>> cols = {{"p_true_goal", "P(g_true)"},
+                                                           {"assist_precision", "precision"},
+                                                           {"assist_recall", "recall"},
+                                                           {"rel_plan_length", "rel. length"},
+                                                           {"rel_human_cost", "rel. human cost"}};
+  std::string out = fmt::format("{} — {} plans, LM: {}, {:.1f} s wall, max RSS {:.0f} MiB\n", r.domain, r.plans.size(),
+                                r.lm, r.wall_seconds, r.max_rss_kb / 1024.0);
+  out += fmt::format("{:<26}", "method");
+  for (auto& [k, label] : cols) out += fmt::format(" | {:^23}", label);
+  out += "\n" + fmt::format("{:<26}", "");
+  for (size_t i = 0; i < cols.size(); ++i) out += fmt::format(" | {:^11} {:^11}", "ours", "paper");
+  out += "\n" + std::string(26 + cols.size() * 26, '-') + "\n";
+  for (auto& s : r.summary) {
+    out += fmt::format("{:<26}", s.method);
+    for (auto& [k, label] : cols) {
+      auto it = s.metrics.find(k);
+      std::string ours = it == s.metrics.end() ? "–" : fmt::format("{:.2f} ({:.2f})", it->second.mean, it->second.se);
+      std::string theirs = "–";
+      if (ours_paper && ours_paper->contains(s.method) && (*ours_paper)[s.method].contains(k)) {
+        auto v = (*ours_paper)[s.method][k];
+        theirs = fmt::format("{:.2f} ({:.2f})", v[0].get<double>(), v[1].get<double>());
+      }
+      out += fmt::format(" | {:^11} {:^11}", ours, theirs);
+    }
+    out += "\n";
+  }
+  if (ours_paper && ours_paper->contains("multimodal") && !r.summary.empty()) {
+    bool ran = false;
+    for (auto& s : r.summary) ran |= s.method == "multimodal";
+    if (!ran) out += "multimodal (GPT-4V-style)  | skipped: no chat endpoint configured (see --help)\n";
+  }
+  if (r.failed_plans) out += fmt::format("{} plan(s) failed; see results.csv\n", r.failed_plans);
+  return out;
+}
+
+}  // namespace clips::eval

@@ -1,0 +1,46 @@
+#pragma once
+// `clips bench`: every plan of a dataset directory x every method, in
+// parallel over plans, with deterministic results for a given seed whatever
+// the number of jobs; aggregated like the paper's Table 1.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "eval/experiment.hpp"
+#include "eval/metrics.hpp"
+
+namespace clips::eval {
+
+struct BenchOptions {
+  std::string dataset;
+  int jobs = 0;  // 0: all cores
+  ExperimentOptions experiment;
+  std::string lm = "embedded";
+  std::string lm_base_url, lm_model;
+  std::vector<std::string> plans;  // empty: every evaluated plan
+  bool progress = true;
+};
+
+struct MethodSummary {
+  std::string method;
+  std::map<std::string, MeanSe> metrics;  // p_true_goal, assist_precision, ...
+};
+
+struct BenchReport {
+  std::string domain, dataset, lm;
+  std::vector<PlanOutcome> plans;  // in dataset order
+  std::vector<MethodSummary> summary;
+  double wall_seconds = 0;
+  long max_rss_kb = 0;
+  int failed_plans = 0;
+};
+
+BenchReport run_bench(const BenchOptions& opts);
+
+// Writers.
+std::string summary_json(const BenchReport& r);
+std::string results_csv(const BenchReport& r);
+// A table laid out like the paper's Table 1, with its numbers beside ours.
+std::string results_table(const BenchReport& r, const std::string& paper_json_path);
+
+}  // namespace clips::eval

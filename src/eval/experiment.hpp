@@ -1,0 +1,56 @@
+#pragma once
+// The experiment runner behind `clips bench` and `clips assist`: for one
+// dataset plan, run inference once (three modalities), assistance for every
+// method, and score each run with the paper's metrics (clips-spec.md 10).
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "data/dataset.hpp"
+#include "language/lm/language_model.hpp"
+
+namespace clips::eval {
+
+// Method names are an interface (summary.json keys): keep them stable.
+//   clips, lang_only, action_only            inference + offline Q_MDP
+//   <m>/qmdp_online, <m>/pibar               with --assist all
+//   literal_efficient, literal_naive         mDKG literal listeners
+//   literal                                  VirtualHome literal listener
+struct MethodResult {
+  std::string method;
+  std::optional<double> p_true_goal;  // inference methods only
+  std::vector<double> goal_posterior;
+  double precision = 0, recall = 0;
+  double plan_length = 0, human_cost = 0, plan_cost = 0;
+  double rel_plan_length = 0, rel_human_cost = 0;  // / CLIPS offline Q_MDP on the same plan
+  double goal_success = 0;
+  std::map<std::string, double> options;
+  std::vector<std::string> plan;  // executed actions (the most likely run)
+  double seconds = 0;
+};
+
+struct PlanOutcome {
+  std::string plan_id;
+  std::vector<std::string> goals;
+  int true_goal = -1;
+  std::vector<std::string> true_options;
+  std::vector<MethodResult> methods;
+  double seconds = 0;
+  std::string error;  // non-empty when the plan could not be evaluated
+  const MethodResult* find(const std::string& m) const;
+};
+
+struct ExperimentOptions {
+  std::vector<std::string> methods;  // empty: all default methods of the domain
+  bool all_assistance = false;       // add qmdp_online and pibar for the IP methods
+  uint64_t seed = 1;
+};
+
+std::vector<std::string> default_methods(data::DomainKind kind, bool all_assistance);
+
+// Runs every requested method on one plan. Thread-safe for distinct Datasets.
+PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                          const ExperimentOptions& opts);
+
+}  // namespace clips::eval
