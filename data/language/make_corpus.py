@@ -350,7 +350,7 @@ DKG_FREE = [
     ("(handover you me key1) where (iscolor key1 yellow)", "Get me something to open the yellow door."),
     ("(unlock you key1 door1) where (iscolor door1 blue)", "Find a key for the blue door and open it."),
     ("(unlock you key1 door1) where (iscolor door1 red)", "Use the key you have on the red door."),
-    ("(unlock you key1 door1) where (iscolor door1 green)", "Can you find a key for this green door?"),
+    ("(pickup you key1) where (iscolor key1 green)", "Can you find a key for this green door?"),
     ("(unlock you key1 door1) where (iscolor door1 yellow)", "The yellow door is in my way."),
     ("(unlock you key1 door1) where (iscolor door1 red)", "Get the red door for me."),
     ("(unlock you key1 door1) where (iscolor door1 blue)", "Get that blue door."),
@@ -399,6 +399,52 @@ def dkg_key_for_door(rows, count):
                          request(rng.choice(OPEN_WITH_KEY).format(c=col))))
 
 
+# Purpose modifiers: "a key for/to <door>" asks for the key, not for the door to
+# be opened (no opening verb). Drawn from their own generator so that adding them
+# leaves every other generated row unchanged.
+prng = random.Random(20240611)
+PURPOSE_DOOR = ["the {c} door", "that {c} door", "this {c} door", "the {c} door over there",
+                "the locked {c} door", "the {c} door ahead"]
+PURPOSE_HANDOVER = ["bring me the key to {d}", "hand me a key for {d}", "pass me the key to {d}",
+                    "give me the {c} key for {d0}", "fetch me a key for {d}", "toss me the key for {d}",
+                    "bring me the {c} one for {d0}", "find me the key to {d}"]
+PURPOSE_HANDOVER_STATEMENTS = ["I need the key to {d}.", "I'd like a key for {d}.", "Can I have the key to {d}?",
+                               "I'm missing a key for {d}.", "The key for {d}, please.",
+                               "I want a key for {d}, can you bring it?", "Could I get the key to {d}?"]
+PURPOSE_PICKUP = ["pick up the key to {d}", "grab a key for {d}", "go find the key to {d}",
+                  "collect the {c} key for {d0}", "look for a key for {d}", "pick up the {c} one for {d0}",
+                  "go get the {c} key for {d0}", "fetch the key for {d}",
+                  "search for the key to {d}"]
+PURPOSE_FRAMES = ["Can you {vp}?", "Could you {vp}?", "Please {vp}.", "{VP}.", "Would you {vp}?",
+                  "{VP}, please.", "I need you to {vp}.", "Hey, could you {vp}?"]
+PURPOSE_PLAIN_DOOR = ["that door", "this door", "the door", "the door over there", "the locked door"]
+
+
+def dkg_purpose(rows, count):
+    for _ in range(count):
+        col = prng.choice(COLOURS)
+        coloured = prng.random() < 0.8
+        d = prng.choice(PURPOSE_DOOR).format(c=col) if coloured else prng.choice(PURPOSE_PLAIN_DOOR)
+        d0 = prng.choice(PURPOSE_PLAIN_DOOR)
+        r = prng.random()
+        if r < 0.25:
+            utt = prng.choice(PURPOSE_HANDOVER_STATEMENTS).format(d=d)
+            utt = utt[0].upper() + utt[1:]
+            action = "handover"
+        else:
+            action = "handover" if r < 0.6 else "pickup"
+            tmpl = prng.choice(PURPOSE_HANDOVER if action == "handover" else PURPOSE_PICKUP)
+            if "{c}" in tmpl:
+                coloured = True
+            vp = tmpl.format(c=col, d=d, d0=d0)
+            frame = prng.choice(PURPOSE_FRAMES)
+            utt = frame.replace("{vp}", vp).replace("{VP}", cap(vp))
+        cmd = f"({action} you me key1)" if action == "handover" else "(pickup you key1)"
+        if coloured:
+            cmd += f" where (iscolor key1 {col})"
+        rows.append((cmd, utt))
+
+
 def build_dkg():
     rows = []
     dkg_single(rows, 300)
@@ -410,6 +456,7 @@ def build_dkg():
     dkg_key_for_door(rows, 45)
     joint(rows, 120)
     rows.extend(DKG_FREE)
+    dkg_purpose(rows, 60)
     return rows
 
 

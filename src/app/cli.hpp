@@ -21,5 +21,6 @@ void register_infer(CLI::App& app);
 void register_listen(CLI::App& app);
 void register_lm_score(CLI::App& app);
 void register_export_strips(CLI::App& app);
+void register_render(CLI::App& app);
 
 }  // namespace clips::app

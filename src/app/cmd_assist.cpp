@@ -19,19 +19,26 @@ void register_assist(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   cmd->add_option("--dataset", o->dataset, "Dataset directory")->required();
   cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys")->required();
-  cmd->add_option("--method", o->method, "clips, lang_only, action_only, literal_naive, literal_efficient (VH: literal)")
-      ->check(CLI::IsMember({"clips", "lang_only", "action_only", "literal_naive", "literal_efficient", "literal"}));
+  cmd->add_option("--method", o->method,
+                  "clips, lang_only, action_only, literal_naive, literal_efficient (VH: literal), multimodal")
+      ->check(CLI::IsMember({"clips", "lang_only", "action_only", "literal_naive", "literal_efficient", "literal",
+                             "multimodal"}));
+  auto mm = std::make_shared<eval::MultimodalOptions>();
+  cmd->add_option("--chat-base-url", mm->base_url,
+                  "multimodal: OpenAI-compatible chat endpoint (or $CLIPS_CHAT_BASE_URL, else the OpenAI API)");
+  cmd->add_option("--chat-model", mm->model, "multimodal: chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
       ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
   cmd->add_option("--lm", o->lm, "Language model: embedded (default) or openai");
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
   cmd->add_flag("--json", o->json, "Print one JSON object");
-  cmd->callback([o] {
+  cmd->callback([o, mm] {
     auto ds = data::Dataset::load(o->dataset);
     const auto& p = ds.plan(o->plan);
     auto lm = language::make_language_model(o->lm, {});
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
+    eo.multimodal = *mm;
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;
     if (ip && o->assist != "qmdp_offline") name += "/" + o->assist;
@@ -41,6 +48,8 @@ void register_assist(CLI::App& app) {
     auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
     if (!outcome.error.empty()) throw InputError(outcome.error);
     const eval::MethodResult* r = outcome.find(name);
+    if (!r->error.empty()) throw InputError(name + ": " + r->error);
+    for (auto& n : r->notes) fmt::print(stderr, "{}: {}\n", name, n);
     if (o->json) {
       nlohmann::ordered_json j;
       j["plan"] = p.id;

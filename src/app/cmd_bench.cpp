@@ -1,11 +1,13 @@
 // `clips bench`: reproduce the paper's result tables on a dataset directory.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "app/cli.hpp"
 #include "eval/bench.hpp"
+#include "eval/report.hpp"
 
 namespace clips::app {
 
@@ -28,10 +30,20 @@ void register_bench(CLI::App& app) {
       ->check(CLI::IsMember({"default", "all"}));
   cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive");
   cmd->add_option("--plans", o->plans, "Only these plan ids");
+  // issue 8: HTML report and the multimodal baseline's chat endpoint.
+  auto report = std::make_shared<std::string>();
+  cmd->add_option("--report", *report,
+                  "Also write DIR/report.html with per-plan GIFs and posterior plots (renders every plan: slower)");
+  cmd->add_option("--chat-base-url", o->experiment.multimodal.base_url,
+                  "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped");
+  cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
   cmd->callback([=] {
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
+    bool wants_mm = std::find(methods->begin(), methods->end(), "multimodal") != methods->end();
+    if (wants_mm && !o->experiment.multimodal.configured())
+      throw InputError("--methods multimodal needs a chat endpoint: --chat-base-url URL or $CLIPS_CHAT_BASE_URL");
     auto rep = eval::run_bench(*o);
     fmt::print("{}", eval::results_table(rep, std::string(CLIPS_SOURCE_DIR) + "/data/paper/results.json"));
     if (!out->empty()) {
@@ -44,6 +56,13 @@ void register_bench(CLI::App& app) {
       write("summary.json", eval::summary_json(rep));
       write("results.csv", eval::results_csv(rep));
       fmt::print("wrote {}/summary.json and {}/results.csv\n", *out, *out);
+    }
+    if (!report->empty()) {
+      eval::ReportOptions ro;
+      ro.dir = *report;
+      ro.paper_json = std::string(CLIPS_SOURCE_DIR) + "/data/paper/results.json";
+      ro.jobs = o->jobs;
+      fmt::print("wrote {}\n", eval::write_report(rep, ro));
     }
     g_exit_code = rep.failed_plans == 0 ? 0 : 1;
   });

