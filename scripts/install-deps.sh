@@ -9,6 +9,7 @@ PKGS=(
   libcurl4-openssl-dev libcpp-httplib-dev
   wordnet-dev wordnet-base
   libcairo2-dev libpng-dev libgif-dev
+  chromium
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
-# The main job behind `make run`: validate the bundled examples and, where
-# present, the paper's dataset ($CLIPS_DATASET or ../shared/dataset).
+# The main job behind `make run`: validate the bundled examples and the
+# paper's dataset ($CLIPS_DATASET or ../shared/dataset) where present, then
+# reproduce the result tables with `clips bench` (results under out/).
 set -euo pipefail
 BUILD_DIR=${1:-build}
 DATASET=${2:-../shared/dataset}
 CLIPS="$BUILD_DIR/clips"
 status=0
-echo "== bundled examples"
-"$CLIPS" validate --dataset data/examples/doors-keys-gems || status=1
+echo "== validate: bundled examples"
+"$CLIPS" validate --dataset data/examples/doors-keys-gems --quiet || status=1
 for dom in doors-keys-gems virtual-home; do
   if [ -f "$DATASET/$dom/domain.pddl" ]; then
-    echo "== $DATASET/$dom"
+    echo "== validate: $DATASET/$dom"
     "$CLIPS" validate --dataset "$DATASET/$dom" --quiet || status=1
+  fi
+done
+echo "== bench: bundled examples"
+"$CLIPS" bench --dataset data/examples/doors-keys-gems --out out/examples || status=1
+for dom in doors-keys-gems virtual-home; do
+  if [ -f "$DATASET/$dom/domain.pddl" ]; then
+    echo "== bench: $DATASET/$dom"
+    "$CLIPS" bench --dataset "$DATASET/$dom" --out "out/$dom" --report "out/$dom/report" || status=1
   else
     echo "== $DATASET/$dom not found: skipped (set CLIPS_DATASET to the folder holding doors-keys-gems/ and virtual-home/)"
   fi

@@ -65,7 +65,7 @@ void register_render(CLI::App& app) {
         throw InputError(fmt::format("render: --step {} is out of range for plan {}: 0..{} ({} observed, {} assisted)",
                                      step, p.id, frames.size() - 1, T, frames.assisted_steps));
       eval::write_plan_png(frames, static_cast<size_t>(step), o->out, ro);
-      fmt::print("wrote {} (plan {}, step {} of {} observed)\n", o->out, p.id, step, T);
+      fmt::print("wrote {} (plan {}, step {}; {} observed steps)\n", o->out, p.id, step, T);
     }
     if (!o->gif.empty()) {
       eval::write_plan_gif(frames, o->gif, ro);

@@ -1,5 +1,6 @@
 #include "assist/assist.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include "model/spec.hpp"
@@ -60,10 +61,15 @@ struct Episode {
 
   // clips-spec.md 9.2: follow the completed plan where the state matches,
   // else the true goal's joint policy, else wait.
-  ActionId principal_action(const search::Policy& truth, const State& s_h, bool follow_plan) const {
+  // k: 1-based step of the assistance episode (t - T).
+  ActionId principal_action(const search::Policy& truth, const State& s_h, bool follow_plan, int k = 0) const {
     if (follow_plan) {
       if (const int* j = trajectory.find(s_h.data())) {
         ActionId a = setup.completed[*j];
+        if (task.applicable(a, s_h.data())) return a;
+      }
+      if (setup.follow_plan_by_index && k >= 1 && k <= static_cast<int>(setup.completed.size())) {
+        ActionId a = setup.completed[k - 1];
         if (task.applicable(a, s_h.data())) return a;
       }
     }
@@ -119,18 +125,19 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
       solo = true;
       s_h = model::freeze(task, s, setup.assistant);
     }
-    truth.refine(s_h, setup.refine_options);
+    if (setup.refine) truth.refine(s_h, setup.refine_options);
     ActionId a;
     if (ep.principal_turn(s) || solo) {
-      a = ep.principal_action(truth, s_h, !solo);
+      a = ep.principal_action(truth, s_h, !solo, t - setup.observed_steps);
     } else {
+      auto d0 = std::chrono::steady_clock::now();
       std::vector<const Hypothesis*> live;
       for (auto& h : belief)
         if (h.weight >= setup.weight_threshold) live.push_back(&h);
       std::optional<ActionId> common;
       bool all_same = true;
       for (const Hypothesis* h : live) {
-        h->policy->refine(s, setup.refine_options);
+        if (setup.refine) h->policy->refine(s, setup.refine_options);
         auto b = h->policy->best_action(s);
         if (!b || (common && *common != *b)) all_same = false;
         if (b && !common) common = b;
@@ -154,6 +161,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
           if (qa[i] > qa[best]) best = i;
         a = acts[best];
       }
+      r.decision_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
     }
@@ -178,16 +186,16 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
   double coop = 0;
   State s = setup.start;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
-    truth.refine(s, setup.refine_options);
+    if (setup.refine) truth.refine(s, setup.refine_options);
     ActionId a;
     if (ep.principal_turn(s)) {
       if (coop < -kLog10) {
         // Lost trust: plan as if the assistant were frozen, keep acting on own turns only.
         State s_h = model::freeze(task, s, setup.assistant);
-        truth.refine(s_h, setup.refine_options);
+        if (setup.refine) truth.refine(s_h, setup.refine_options);
         a = ep.principal_action(truth, s_h, false);
       } else {
-        a = ep.principal_action(truth, s, true);
+        a = ep.principal_action(truth, s, true, t - setup.observed_steps);
       }
     } else {
       auto& hyps = belief.hypotheses();
@@ -197,7 +205,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
       std::optional<ActionId> common;
       bool all_same = true;
       for (Hypothesis* h : live) {
-        h->policy->refine(s, setup.refine_options);
+        if (setup.refine) h->policy->refine(s, setup.refine_options);
         auto b = h->policy->best_action(s);
         if (!b || (common && *common != *b)) all_same = false;
         if (b && !common) common = b;
@@ -266,12 +274,12 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
           s = model::freeze(task, s, setup.assistant);
           solo = true;
         }
-        truth.refine(s, setup.refine_options);
+        if (setup.refine) truth.refine(s, setup.refine_options);
         ActionId a;
         if (ep.principal_turn(s) || solo) {
-          a = ep.principal_action(truth, s, !solo);
+          a = ep.principal_action(truth, s, !solo, t - setup.observed_steps);
         } else {
-          mine.refine(s, setup.refine_options);
+          if (setup.refine) mine.refine(s, setup.refine_options);
           auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;
           a = b ? *b : ep.assistant_wait;
           if (!solo) coop += ep.coop_increment(truth, s, a);

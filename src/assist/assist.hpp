@@ -42,6 +42,13 @@ struct AssistSetup {
   // picks up in a keys plan).
   std::function<std::optional<std::string>(pddl::ActionId)> option_of;
   search::SearchOptions refine_options;   // 2^16 nodes, 10 s per search by default
+  // False where the model's values are the heuristic itself (VirtualHome:
+  // V = -h_g, no search), so policies are read but never refined.
+  bool refine = true;
+  // VirtualHome's principal also takes the k-th completed-plan action when it
+  // is legal in the current state, even off the completed trajectory
+  // (clips-spec-virtual-home.md 8.3).
+  bool follow_plan_by_index = false;
   AssistSetup() {
     refine_options.max_nodes = 1u << 16;
     refine_options.max_seconds = 10;
@@ -57,6 +64,7 @@ struct AssistResult {
   double human_cost = 0;
   double success = 0;                     // probability of reaching the goal
   std::map<std::string, double> options;  // option -> probability
+  std::vector<double> decision_seconds;   // wall time of each assistant decision (Q_MDP)
 };
 
 // Belief that keeps updating during online assistance (implemented by the

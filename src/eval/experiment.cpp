@@ -9,6 +9,7 @@
 #include "domains/registry.hpp"
 #include "eval/metrics.hpp"
 #include "inference/belief.hpp"
+#include "inference/vh_value.hpp"
 #include "language/listener.hpp"
 
 namespace clips::eval {
@@ -128,6 +129,8 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     setup.noop_cost = df.noop_cost;
     setup.completed = resolve_all(*task, setup.start, p.completed);
     setup.option_of = option_rule(*task, ds.kind(), p.tag, df.assistant);
+    setup.refine = belief.searches();
+    setup.follow_plan_by_index = ds.kind() == data::DomainKind::VirtualHome;  // VirtualHome reads V = -h_g and never searches
 
     auto modality_of = [](const std::string& base) {
       return base == "clips" ? Modality::Both : base == "lang_only" ? Modality::UtteranceOnly : Modality::ActionOnly;
@@ -140,6 +143,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
       r.human_cost = a.human_cost;
       r.plan_cost = a.plan_cost;
       r.goal_success = a.success;
+      r.decision_seconds = a.decision_seconds;
       for (auto act : a.plan) r.plan.push_back(task->action_name(act));
     };
 
@@ -163,8 +167,10 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
           score(r, assist::pibar_mdp(setup, hyps, true_h));
         } else if (how == "qmdp_online") {
           OnlineAdapter online(belief, mod);
-          auto h = domains::make_heuristic(domains::model_heuristic(ds.kind()), *task, ds.kind());
-          score(r, assist::qmdp_online(setup, online, true_spec, std::shared_ptr<heuristics::Heuristic>(std::move(h))));
+          std::shared_ptr<heuristics::Heuristic> h = inference::make_inference_heuristic(
+              inference::inference_heuristic_name(ds.kind()), *task, ds.kind());
+          if (!setup.refine) h->prepare(*true_spec, setup.start);
+          score(r, assist::qmdp_online(setup, online, true_spec, h));
         } else {
           throw InputError("unknown assistance method '" + how + "' (known: qmdp_offline, qmdp_online, pibar)");
         }
@@ -181,6 +187,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
         ls.config = lsetup.config;
         data::DomainKind kind = ds.kind();
         ls.make_heuristic = [task, kind]() -> std::shared_ptr<heuristics::Heuristic> {
+          if (kind == data::DomainKind::VirtualHome) return std::make_shared<inference::VhPlanningHeuristic>(*task);
           return domains::make_heuristic(domains::model_heuristic(kind), *task, kind);
         };
         std::string tag = p.tag;

@@ -28,6 +28,7 @@ struct MethodResult {
   double goal_success = 0;
   std::map<std::string, double> options;
   std::vector<std::string> plan;  // executed actions (the most likely run)
+  std::vector<double> decision_seconds;  // per assistant decision (Q_MDP)
   double seconds = 0;
   // (issue 8) A method that failed on this plan (e.g. the multimodal endpoint
   // or its answer); such results are left out of the aggregates.

@@ -82,7 +82,11 @@ std::string metric_svg(const Column& col, const BenchReport& r, const nlohmann::
     if (ours) hi = std::max(hi, ours->mean + ours->se);
     if (theirs) hi = std::max(hi, (*theirs)[0].get<double>() + (*theirs)[1].get<double>());
   }
-  if (!col.unit_range) hi = std::max(1.0, std::ceil(hi * 4) / 4);
+  double tick = 0.25;
+  if (!col.unit_range) {
+    tick = hi <= 2 ? 0.5 : 1.0;
+    hi = std::max(1.0, std::ceil(hi / tick) * tick);
+  }
   const int label_w = 150, plot_w = 230, row_h = 22, top = 26, bottom = 22;
   const int w = label_w + plot_w + 20, h = top + static_cast<int>(rows.size()) * row_h + bottom;
   auto X = [&](double v) { return label_w + plot_w * std::clamp(v / hi, 0.0, 1.0); };
@@ -91,8 +95,8 @@ std::string metric_svg(const Column& col, const BenchReport& r, const nlohmann::
       "aria-label=\"{}\">\n",
       w, h, w, h, html_escape(col.label));
   svg += fmt::format("<text x=\"{}\" y=\"16\" class=\"ct\">{}</text>\n", 4, html_escape(col.label));
-  for (int k = 0; k <= 4; ++k) {
-    double v = hi * k / 4;
+  for (int k = 0; k * tick <= hi + 1e-9; ++k) {
+    double v = k * tick;
     double x = X(v);
     svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{}\" x2=\"{:.1f}\" y2=\"{}\" stroke=\"#e3e0d8\"/>\n", x, top - 4, x,
                        h - bottom + 2);
@@ -184,8 +188,8 @@ std::string posterior_svg(const std::vector<std::string>& goals, const std::vect
   for (int u : utterance_steps) {
     svg += fmt::format(
         "<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#888\" stroke-dasharray=\"4 3\"/>"
-        "<text x=\"{0:.1f}\" y=\"{3}\" font-size=\"10\" fill=\"#555\" text-anchor=\"middle\">utterance</text>\n",
-        X(u), top, top + ph, top + 8);
+        "<text x=\"{0:.1f}\" y=\"{3}\" font-size=\"10\" fill=\"#555\" text-anchor=\"{4}\">utterance</text>\n",
+        X(u), top, top + ph, top + 8, X(u) > width - 40 ? "end" : X(u) < left + 30 ? "start" : "middle");
   }
   svg += fmt::format("<text x=\"{:.1f}\" y=\"{}\" font-size=\"10\" fill=\"#777\" text-anchor=\"middle\">step (0..{})</text>\n",
                      left + pw / 2, height - bottom + 13, static_cast<int>(steps.size()) - 1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <regex>
+#include <set>
 
 #include "util/error.hpp"
 
@@ -110,6 +111,57 @@ double VhValueHeuristic::estimate(const uint64_t* s) {
     }
   }
   return item_cost + move_cost;
+}
+
+}  // namespace clips::inference
+
+namespace clips::inference {
+
+void VhPlanningHeuristic::prepare(const model::Specification& spec, const pddl::State& root) {
+  VhValueHeuristic::prepare(spec, root);
+  const pddl::Task& task = *task_;
+  std::set<pddl::ObjectId> gi, gf;
+  static const std::regex atom(R"(\(\s*(placed|holding|next-to)\s+([^\s()]+)\s+([^\s()]+)\s*\))");
+  const std::string& text = spec.goal_text();
+  for (std::sregex_iterator it(text.begin(), text.end(), atom), end; it != end; ++it) {
+    auto a = task.find_object((*it)[2]);
+    auto b = task.find_object((*it)[3]);
+    if (!a || !b) continue;
+    if ((*it)[1] == "placed") {
+      gi.insert(*a);
+      gf.insert(*b);
+    } else if ((*it)[1] == "holding") {
+      gi.insert(*b);
+    } else {
+      gf.insert(*b);
+    }
+  }
+  auto placed = task.domain().find_predicate("placed");
+  std::set<pddl::ObjectId> holds_goal_item = gf;
+  for (auto f : task.objects_of_type("fixture"))
+    for (auto i : gi)
+      if (placed && task.test(root, task.atom(*placed, {i, f}))) holds_goal_item.insert(f);
+  auto nograb = [&](pddl::ObjectId agent) {
+    auto p = task.domain().find_predicate("nograb");
+    return p && task.test(root, task.atom(*p, {agent}));
+  };
+  keep_.assign(task.num_actions(), 1);
+  for (pddl::ActionId a = 0; a < task.num_actions(); ++a) {
+    const auto& ga = task.action(a);
+    const std::string& name = task.domain().actions[ga.schema].name;
+    bool ng = !ga.args.empty() && nograb(ga.args[0]);
+    bool k = true;
+    if (name == "stack") {
+      k = false;
+    } else if (name == "move" && ga.args.size() == 3) {
+      k = gf.count(ga.args[2]) || (!ng && holds_goal_item.count(ga.args[2]));
+    } else if (name == "grab" && ga.args.size() == 3) {
+      k = !ng && gi.count(ga.args[1]);
+    } else if (name == "put" && ga.args.size() == 3) {
+      k = gi.count(ga.args[1]) ? gf.count(ga.args[2]) > 0 : !ng;
+    }
+    keep_[a] = k;
+  }
 }
 
 }  // namespace clips::inference

@@ -41,3 +41,24 @@ class VhValueHeuristic : public heuristics::Heuristic {
 };
 
 }  // namespace clips::inference
+
+namespace clips::inference {
+
+// VH heuristic plus the action filter used by the literal listener's A*
+// (clips-spec-virtual-home.md 4.3). The filter is fixed per planning call from
+// the root state: nograb flags never change during a search, and fixtures that
+// hold goal items at the root are a superset of those holding them later.
+class VhPlanningHeuristic : public VhValueHeuristic {
+ public:
+  explicit VhPlanningHeuristic(const pddl::Task& task) : VhValueHeuristic(task), task_(&task) {}
+  std::string name() const override { return "vh-filtered"; }
+  void prepare(const model::Specification& spec, const pddl::State& root) override;
+  bool prunes() const override { return true; }
+  bool keep(pddl::ActionId a) const override { return keep_[a]; }
+
+ private:
+  const pddl::Task* task_;
+  std::vector<char> keep_;
+};
+
+}  // namespace clips::inference

@@ -60,6 +60,7 @@ struct FakeOpenAiServer::Impl {
   mutable std::mutex mutex;  // guards everything below
   FakeFaults faults;
   Scorer scorer;
+  ChatRule chat_rule;
   int completion_requests = 0;
   int chat_requests = 0;
   std::vector<std::size_t> prompts_per_request;
@@ -84,6 +85,11 @@ void FakeOpenAiServer::set_faults(const FakeFaults& faults) {
 void FakeOpenAiServer::set_scorer(Scorer scorer) {
   std::lock_guard lock(impl_->mutex);
   impl_->scorer = std::move(scorer);
+}
+
+void FakeOpenAiServer::set_chat_rule(ChatRule rule) {
+  std::lock_guard lock(impl_->mutex);
+  impl_->chat_rule = std::move(rule);
 }
 
 int FakeOpenAiServer::completion_requests() const {
@@ -328,7 +334,7 @@ void FakeOpenAiServer::start() {
     if (!apply_body_fault(f.reply, text, res)) res.set_content(text, "application/json");
   });
 
-  s.server.Post("/v1/chat/completions", [preamble](const httplib::Request& req, httplib::Response& res) {
+  s.server.Post("/v1/chat/completions", [preamble, &s](const httplib::Request& req, httplib::Response& res) {
     json body;
     auto faults = preamble(req, res, true, body);
     if (!faults) return;
@@ -354,7 +360,12 @@ void FakeOpenAiServer::start() {
                    {"images", images},
                    {"images_valid", images_valid},
                    {"json_mode", body.contains("response_format")}};
-    json message = {{"role", "assistant"}, {"content", answer.dump()}};
+    ChatRule rule;
+    {
+      std::lock_guard lock(s.mutex);
+      rule = s.chat_rule;
+    }
+    json message = {{"role", "assistant"}, {"content", rule ? rule(body) : answer.dump()}};
     if (f.reply == FakeReply::NonJsonAnswer) message["content"] = "Sure! Here it is: {oops";
     if (f.reply == FakeReply::MissingContent) {
       message["content"] = nullptr;

@@ -71,6 +71,10 @@ class FakeOpenAiServer {
 
   void set_faults(const FakeFaults& faults);
   void set_scorer(Scorer scorer);  // empty = the built-in unigram-ish model
+  // The chat answer's content for a request body; empty = the built-in JSON
+  // summary of what was asked. Faults (NonJsonAnswer, ...) still apply.
+  using ChatRule = std::function<std::string(const nlohmann::json& request)>;
+  void set_chat_rule(ChatRule rule);
 
   // Server-side bookkeeping, for assertions.
   int completion_requests() const;
