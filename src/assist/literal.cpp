@@ -48,7 +48,9 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
   auto cmd_spec = std::make_shared<model::Specification>(w.task, command_goal, ls.truth->profile());
   State end = w.start;
   bool found = false;
+  bool hopeless = ls.goal_unsatisfiable && ls.goal_unsatisfiable(command_goal);
   for (bool freeze_human : {false, true}) {
+    if (hopeless) break;
     State from = freeze_human ? model::freeze(task, w.start, w.principal) : w.start;
     auto h = ls.make_heuristic();
     auto r = search::plan(*cmd_spec, *h, from, so);

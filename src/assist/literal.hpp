@@ -24,6 +24,8 @@ struct LiteralSetup {
   // Is this object an assistance option (a key in keys plans, a door in doors plans)?
   std::function<bool(const std::string&)> is_option;
   size_t max_nodes = 1u << 16;
+  // Domain knowledge: goals that can never hold (their search can only fail).
+  std::function<bool(const std::string&)> goal_unsatisfiable;
   int samples = 10;
   // Grounding search (naive): objects per type and the static facts they must satisfy.
   std::map<std::string, std::vector<std::string>> objects_by_type;

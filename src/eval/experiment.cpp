@@ -6,6 +6,7 @@
 #include "assist/assist.hpp"
 #include "assist/literal.hpp"
 #include "data/validate.hpp"
+#include "domains/dkg_goals.hpp"
 #include "domains/registry.hpp"
 #include "eval/metrics.hpp"
 #include "inference/belief.hpp"
@@ -190,6 +191,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
           if (kind == data::DomainKind::VirtualHome) return std::make_shared<inference::VhPlanningHeuristic>(*task);
           return domains::make_heuristic(domains::model_heuristic(kind), *task, kind);
         };
+        if (kind == data::DomainKind::DoorsKeysGems) ls.goal_unsatisfiable = domains::dkg_goal_unsatisfiable;
         std::string tag = p.tag;
         ls.is_option = [task, kind, tag](const std::string& o) {
           auto id = task->find_object(o);
