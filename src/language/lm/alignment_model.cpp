@@ -253,6 +253,23 @@ double AlignmentModel::char_prob(const std::string& w) const {
   return p * char_next_[static_cast<size_t>(prev * (kCharSymbols + 1) + kCharSymbols)];
 }
 
+double AlignmentModel::log_prob_unprimed(const EncodedUtterance& u, bool complete) const {
+  double lp = length_log_prob(0, static_cast<int>(u.words.size()), complete);
+  for (size_t i = 0; i < u.words.size(); ++i) {
+    const int id = u.ids[i];
+    double closed = 0;
+    if (id >= 0 && (word_flags_[static_cast<size_t>(id)] & kWordFunction) && closed_mass_ > 0)
+      closed = bg_[static_cast<size_t>(id)] / closed_mass_;
+    if (id >= 0 && !(word_flags_[static_cast<size_t>(id)] & (kWordNoun | kWordVerb | kWordModifier)) &&
+        char_index(u.words[i][0]) < 0 && closed_mass_ > 0)
+      closed = bg_[static_cast<size_t>(id)] / closed_mass_;  // punctuation
+    const double p = 0.5 * closed + 0.5 * char_prob(u.words[i]);
+    if (p <= 0) return -std::numeric_limits<double>::infinity();
+    lp += std::log(p);
+  }
+  return lp;
+}
+
 double AlignmentModel::bg_prob(int id, const std::string& w) const {
   if (id >= 0) return bg_[static_cast<size_t>(id)];
   return bg_unknown_scale_ * char_prob(w);
@@ -1008,7 +1025,17 @@ struct Trainer {
 };
 
 std::shared_ptr<AlignmentModel> AlignmentModel::train(const std::vector<TrainingPair>& pairs, int iterations) {
-  return Trainer::run(pairs, iterations);
+  auto m = Trainer::run(pairs, iterations);
+  // Mass of the closed-class words and punctuation, for log_prob_unprimed.
+  double closed = 0;
+  for (size_t id = 0; id < m->words_.size() && id < m->bg_.size() && id < m->word_flags_.size(); ++id) {
+    const uint8_t f = m->word_flags_[id];
+    const bool punct = !m->words_[id].empty() && char_index(m->words_[id][0]) < 0 &&
+                       !(f & (kWordNoun | kWordVerb | kWordModifier));
+    if ((f & kWordFunction) || punct) closed += m->bg_[id];
+  }
+  m->closed_mass_ = closed;
+  return m;
 }
 
 }  // namespace clips::lm

@@ -109,6 +109,13 @@ class AlignmentModel {
   // log P(u | c). If `complete` is false the text is a prefix and the result is
   // the probability of all utterances starting with these tokens.
   double log_prob(const Bound& c, const EncodedUtterance& u, bool complete) const;
+  // log P(u) with no context at all: the empty-command prompt "\n" of the
+  // utterance model. An unprimed language model has no reason to expect this
+  // domain's content words, so each token is a mixture (weights 1/2, 1/2) of
+  // the background restricted to closed-class words and punctuation, and the
+  // character model that spells any word out; the length model is the
+  // zero-action one. Both parts are proper distributions, so this is one too.
+  double log_prob_unprimed(const EncodedUtterance& u, bool complete) const;
 
   // For tests: the total probability that the next token is drawn from the
   // model's vocabulary plus the mass of all unknown strings, given a command,
@@ -151,6 +158,7 @@ class AlignmentModel {
   std::vector<double> char_next_;   // [prev * 37 + next], next 36 = end
   std::vector<double> bg_;          // background probs over the vocabulary
   double bg_unknown_scale_ = 0;     // BG(unknown w) = scale * char_prob(w)
+  double closed_mass_ = 0;          // total background mass of closed-class words
 
   std::vector<std::unique_ptr<Table>> tables_;
   std::unordered_map<std::string, int> table_ids_;

@@ -171,8 +171,10 @@ std::shared_ptr<const AlignmentModel> EmbeddedLanguageModel::model_for_prompt(co
 double EmbeddedLanguageModel::score_one(const std::string& prompt, const std::string& continuation) {
   const auto [block, command] = split_prompt(prompt);
   auto state = block_state(block);
-  auto frame = state->frame(command);
   const bool complete = !continuation.empty() && continuation.back() == '\n';
+  // The empty-command prompt "\n" carries no context: score unprimed.
+  if (block.empty() && command.empty()) return state->model->log_prob_unprimed(state->model->encode(continuation), complete);
+  auto frame = state->frame(command);
   return state->model->log_prob(*frame, state->model->encode(continuation), complete);
 }
 
