@@ -287,6 +287,12 @@ class Grounder {
       case CNode::Ge: return add_c({CNode::Lt, n.a, n.b});
       case CNode::Le: return add_c({CNode::Gt, n.a, n.b});
       case CNode::Gt: return add_c({CNode::Le, n.a, n.b});
+      case CNode::SlotConst: case CNode::SlotSlot: {
+        static const int flip[6] = {1, 0, 5, 4, 3, 2};  // Eq<->Ne, Lt<->Ge, Le<->Gt
+        CNode m = n;
+        m.c = (n.c & ~7) | flip[n.c & 7];
+        return add_c(m);
+      }
       default: return add_c({CNode::Not, c, 0});
     }
   }
@@ -319,6 +325,17 @@ class Grounder {
     using K = NumExpr::Kind;
     auto bin = [&](NNode::Op op) -> NumResult {
       int l = num_int(x.kids[0], b), r = num_int(x.kids[1], b);
+      // fluent +/- constant (and constant + fluent) stay a single fluent node
+      if ((op == NNode::Add || op == NNode::Sub) && t_.nnodes_[l].op == NNode::Fluent && is_const_n(r)) {
+        NNode f = t_.nnodes_[l];
+        f.a += static_cast<int>(op == NNode::Add ? t_.nnodes_[r].v : -t_.nnodes_[r].v);
+        return {add_n(f), -1};
+      }
+      if (op == NNode::Add && is_const_n(l) && t_.nnodes_[r].op == NNode::Fluent) {
+        NNode f = t_.nnodes_[r];
+        f.a += static_cast<int>(t_.nnodes_[l].v);
+        return {add_n(f), -1};
+      }
       if (is_const_n(l) && is_const_n(r)) {
         int64_t a = t_.nnodes_[l].v, c = t_.nnodes_[r].v;
         int64_t v = op == NNode::Add ? a + c : op == NNode::Sub ? a - c : op == NNode::Mul ? a * c : (c ? a / c : 0);
@@ -442,6 +459,18 @@ class Grounder {
       bool v = op == CNode::Eq ? x == y : op == CNode::Lt ? x < y : op == CNode::Le ? x <= y : op == CNode::Gt ? x > y : x >= y;
       return v ? Task::kTrue : Task::kFalse;
     }
+    // Fast paths. Comparison codes: Eq 0, Ne 1, Lt 2, Le 3, Gt 4, Ge 5.
+    auto code = [](CNode::Op o) { return o == CNode::Eq ? 0 : o == CNode::Lt ? 2 : o == CNode::Le ? 3 : o == CNode::Gt ? 4 : 5; };
+    static const int mirror[6] = {0, 1, 4, 5, 2, 3};  // x < y  <=>  y > x
+    const NNode& na = t_.nnodes_[a];
+    const NNode& nz = t_.nnodes_[z];
+    auto small = [](int64_t v) { return v > -(1 << 27) && v < (1 << 27); };
+    if (na.op == NNode::Fluent && is_const_n(z) && small(nz.v - na.a))  // slot + ka  op  c
+      return add_c({CNode::SlotConst, static_cast<int>(na.v), static_cast<int>(nz.v - na.a), code(op)});
+    if (nz.op == NNode::Fluent && is_const_n(a) && small(na.v - nz.a))  // c  op  slot + kz
+      return add_c({CNode::SlotConst, static_cast<int>(nz.v), static_cast<int>(na.v - nz.a), mirror[code(op)]});
+    if (na.op == NNode::Fluent && nz.op == NNode::Fluent)  // slot_a + ka  op  slot_z + kz
+      return add_c({CNode::SlotSlot, static_cast<int>(na.v), static_cast<int>(nz.v), code(op) | ((nz.a - na.a) << 3)});
     return add_c({op, a, z});
   }
 
@@ -738,7 +767,7 @@ int64_t Task::eval_num(int n, const uint64_t* s) const {
   const NNode& x = nnodes_[n];
   switch (x.op) {
     case NNode::Const: return x.v;
-    case NNode::Fluent: return get_num(s, atom_words_, static_cast<int>(x.v));
+    case NNode::Fluent: return get_num(s, atom_words_, static_cast<int>(x.v)) + x.a;
     case NNode::Add: return eval_num(x.a, s) + eval_num(x.b, s);
     case NNode::Sub: return eval_num(x.a, s) - eval_num(x.b, s);
     case NNode::Mul: return eval_num(x.a, s) * eval_num(x.b, s);
@@ -779,6 +808,19 @@ bool Task::eval(CondId c, const uint64_t* s) const {
     case CNode::Le: return eval_num(n.a, s) <= eval_num(n.b, s);
     case CNode::Gt: return eval_num(n.a, s) > eval_num(n.b, s);
     case CNode::Ge: return eval_num(n.a, s) >= eval_num(n.b, s);
+    case CNode::SlotConst:
+    case CNode::SlotSlot: {
+      const int x = get_num(s, atom_words_, n.a);
+      const int y = n.op == CNode::SlotConst ? n.b : get_num(s, atom_words_, n.b) + (n.c >> 3);
+      switch (n.c & 7) {
+        case 0: return x == y;
+        case 1: return x != y;
+        case 2: return x < y;
+        case 3: return x <= y;
+        case 4: return x > y;
+        default: return x >= y;
+      }
+    }
   }
   return false;
 }

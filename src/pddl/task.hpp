@@ -156,15 +156,19 @@ class Task {
 
   // Compiled expression pool (public for heuristics that inspect structure).
   struct CNode {
-    enum Op : uint8_t { True, False, Atom, NotAtom, And, Or, Not, Eq, Ne, Lt, Le, Gt, Ge };
+    // SlotConst / SlotSlot are compiled fast paths for the common comparisons
+    // "fluent (+k) vs constant" and "fluent vs fluent (+k)".
+    enum Op : uint8_t { True, False, Atom, NotAtom, And, Or, Not, Eq, Ne, Lt, Le, Gt, Ge, SlotConst, SlotSlot };
     Op op;
-    int a = 0, b = 0;  // Atom: bit; And/Or: kids range [a, a+b); Not: kid a; Cmp: num nodes a, b
+    int a = 0, b = 0;  // Atom: bit; And/Or: kids range [a, a+b); Not: kid a; Cmp: num nodes a, b;
+                       // SlotConst: slot a vs constant b; SlotSlot: slot a vs slot b + k
+    int c = 0;         // SlotConst/SlotSlot: comparison (Eq..Ge as 0..5) | k << 3
   };
   struct NNode {
     enum Op : uint8_t { Const, Fluent, Add, Sub, Mul, Div, Neg, GetIndex };
     Op op;
     int64_t v = 0;  // Const value; Fluent slot; GetIndex matrix index
-    int a = 0, b = 0;
+    int a = 0, b = 0;  // Fluent: a = constant offset added to the slot's value
   };
   const CNode& cnode(CondId c) const { return cnodes_[c]; }
   const std::vector<int>& ckids() const { return ckids_; }
