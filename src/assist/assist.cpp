@@ -78,6 +78,37 @@ struct Episode {
     return a ? *a : wait_of_active(s_h);
   }
 
+  // The Q_MDP choice at timestep t (spec 9.3): the common best action when
+  // every hypothesis above the threshold agrees, else the argmax of the
+  // weighted Q-values, each floored at the cost of waiting to the horizon.
+  ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t) const {
+    std::vector<const Hypothesis*> live;
+    for (auto& h : belief)
+      if (h.weight >= setup.weight_threshold) live.push_back(&h);
+    std::optional<ActionId> common;
+    bool all_same = true;
+    for (const Hypothesis* h : live) {
+      if (setup.refine) h->policy->refine(s, setup.refine_options);
+      auto b = h->policy->best_action(s);
+      if (!b || (common && *common != *b)) all_same = false;
+      if (b && !common) common = b;
+    }
+    if (all_same && common) return *common;
+    auto acts = task.applicable_actions(s);
+    std::vector<double> qa(acts.size(), 0.0);
+    for (const Hypothesis* h : live) {
+      auto qs = h->policy->q_values(s);
+      const auto& spec = h->policy->spec();
+      double wait_cost = spec.cost(assistant_wait);
+      for (size_t i = 0; i < acts.size(); ++i)
+        qa[i] += h->weight * std::max(qs[i].q, -((setup.horizon - t) * wait_cost + spec.cost(acts[i])));
+    }
+    size_t best = 0;
+    for (size_t i = 1; i < acts.size(); ++i)
+      if (qa[i] > qa[best]) best = i;
+    return acts[best];
+  }
+
   // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true
   // policy versus uniform over the assistant's available actions.
   double coop_increment(const search::Policy& truth, const State& s, ActionId a) const {
@@ -131,36 +162,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
       a = ep.principal_action(truth, s_h, !solo, t - setup.observed_steps);
     } else {
       auto d0 = std::chrono::steady_clock::now();
-      std::vector<const Hypothesis*> live;
-      for (auto& h : belief)
-        if (h.weight >= setup.weight_threshold) live.push_back(&h);
-      std::optional<ActionId> common;
-      bool all_same = true;
-      for (const Hypothesis* h : live) {
-        if (setup.refine) h->policy->refine(s, setup.refine_options);
-        auto b = h->policy->best_action(s);
-        if (!b || (common && *common != *b)) all_same = false;
-        if (b && !common) common = b;
-      }
-      if (all_same && common) {
-        a = *common;
-      } else {
-        auto acts = task.applicable_actions(s);
-        std::vector<double> qa(acts.size(), 0.0);
-        for (const Hypothesis* h : live) {
-          auto qs = h->policy->q_values(s);
-          const auto& spec = h->policy->spec();
-          double wait_cost = spec.cost(ep.assistant_wait);
-          for (size_t i = 0; i < acts.size(); ++i) {
-            double floor = -((setup.horizon - t) * wait_cost + spec.cost(acts[i]));
-            qa[i] += h->weight * std::max(qs[i].q, floor);
-          }
-        }
-        size_t best = 0;
-        for (size_t i = 1; i < acts.size(); ++i)
-          if (qa[i] > qa[best]) best = i;
-        a = acts[best];
-      }
+      a = ep.qmdp_decide(belief, s, t);
       r.decision_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
@@ -198,35 +200,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
         a = ep.principal_action(truth, s, true, t - setup.observed_steps);
       }
     } else {
-      auto& hyps = belief.hypotheses();
-      std::vector<Hypothesis*> live;
-      for (auto& h : hyps)
-        if (h.weight >= setup.weight_threshold) live.push_back(&h);
-      std::optional<ActionId> common;
-      bool all_same = true;
-      for (Hypothesis* h : live) {
-        if (setup.refine) h->policy->refine(s, setup.refine_options);
-        auto b = h->policy->best_action(s);
-        if (!b || (common && *common != *b)) all_same = false;
-        if (b && !common) common = b;
-      }
-      if (all_same && common) {
-        a = *common;
-      } else {
-        auto acts = task.applicable_actions(s);
-        std::vector<double> qa(acts.size(), 0.0);
-        for (Hypothesis* h : live) {
-          auto qs = h->policy->q_values(s);
-          const auto& spec = h->policy->spec();
-          double wait_cost = spec.cost(ep.assistant_wait);
-          for (size_t i = 0; i < acts.size(); ++i)
-            qa[i] += h->weight * std::max(qs[i].q, -((setup.horizon - t) * wait_cost + spec.cost(acts[i])));
-        }
-        size_t best = 0;
-        for (size_t i = 1; i < acts.size(); ++i)
-          if (qa[i] > qa[best]) best = i;
-        a = acts[best];
-      }
+      a = ep.qmdp_decide(belief.hypotheses(), s, t);
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
     }
