@@ -633,6 +633,60 @@ Task::Task(std::shared_ptr<const Domain> domain, std::shared_ptr<const Problem> 
     : domain_(std::move(domain)), problem_(std::move(problem)), opts_(opts) {
   Grounder g(*this);
   g.run();
+  flatten_preconditions();
+}
+
+void Task::flatten_preconditions() {
+  prims_.clear();
+  rests_.clear();
+  prim_begin_.assign(1, 0);
+  rest_begin_.assign(1, 0);
+  auto primitive = [](const CNode& n) {
+    return n.op == CNode::Atom || n.op == CNode::NotAtom || n.op == CNode::SlotConst || n.op == CNode::SlotSlot ||
+           n.op == CNode::False;
+  };
+  for (const GroundAction& g : actions_) {
+    const CNode& root = cnodes_[g.pre];
+    std::vector<CondId> kids;
+    if (root.op == CNode::And)
+      for (int i = 0; i < root.b; ++i) kids.push_back(ckids_[root.a + i]);
+    else if (root.op != CNode::True)
+      kids.push_back(g.pre);
+    for (CondId k : kids) {
+      if (primitive(cnodes_[k])) prims_.push_back(cnodes_[k]);
+      else rests_.push_back(k);
+    }
+    prim_begin_.push_back(static_cast<int>(prims_.size()));
+    rest_begin_.push_back(static_cast<int>(rests_.size()));
+  }
+}
+
+bool Task::test_prim(const CNode& n, const uint64_t* s) const {
+  switch (n.op) {
+    case CNode::Atom: return get_bit(s, n.a);
+    case CNode::NotAtom: return !get_bit(s, n.a);
+    case CNode::False: return false;
+    default: {
+      const int x = get_num(s, atom_words_, n.a);
+      const int y = n.op == CNode::SlotConst ? n.b : get_num(s, atom_words_, n.b) + (n.c >> 3);
+      switch (n.c & 7) {
+        case 0: return x == y;
+        case 1: return x != y;
+        case 2: return x < y;
+        case 3: return x <= y;
+        case 4: return x > y;
+        default: return x >= y;
+      }
+    }
+  }
+}
+
+bool Task::applicable(ActionId a, const uint64_t* s) const {
+  for (int i = prim_begin_[a], e = prim_begin_[a + 1]; i < e; ++i)
+    if (!test_prim(prims_[i], s)) return false;
+  for (int i = rest_begin_[a], e = rest_begin_[a + 1]; i < e; ++i)
+    if (!eval(rests_[i], s)) return false;
+  return true;
 }
 
 bool Task::object_is_a(ObjectId o, const std::string& type) const {
@@ -885,12 +939,12 @@ void Task::applicable_actions(const uint64_t* s, std::vector<ActionId>& out) con
     if (!get_bit(s, bit)) continue;
     ++sources;
     for (ActionId a : acts)
-      if (eval(actions_[a].pre, s)) out.push_back(a);
+      if (applicable(a, s)) out.push_back(a);
   }
   if (!untriggered_.empty()) {
     ++sources;
     for (ActionId a : untriggered_)
-      if (eval(actions_[a].pre, s)) out.push_back(a);
+      if (applicable(a, s)) out.push_back(a);
   }
   if (sources > 1) std::sort(out.begin(), out.end());
 }

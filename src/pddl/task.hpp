@@ -134,7 +134,7 @@ class Task {
   std::optional<ActionId> find_action(const std::string& text) const;  // parses "(name args)"
   std::optional<ActionId> find_action(int schema, const std::vector<ObjectId>& args) const;
 
-  bool applicable(ActionId a, const uint64_t* s) const { return eval(actions_[a].pre, s); }
+  bool applicable(ActionId a, const uint64_t* s) const;
   void apply(ActionId a, const uint64_t* src, uint64_t* dst) const;
   State apply(const State& s, ActionId a) const;
   // Applicable actions in enumeration order.
@@ -203,6 +203,15 @@ class Task {
   std::map<std::vector<int>, ActionId> action_index_;  // [schema, args...] -> id
   std::vector<std::pair<int, std::vector<ActionId>>> trigger_groups_;  // bit -> actions
   std::vector<ActionId> untriggered_;
+  // Preconditions flattened for speed: per action, its primitive top-level
+  // conjuncts (atoms, slot comparisons) in prims_[prim_begin_[a] ..
+  // prim_begin_[a+1]) and the remaining conjuncts as compiled conditions.
+  std::vector<CNode> prims_;
+  std::vector<int> prim_begin_;
+  std::vector<int> rest_begin_;
+  std::vector<CondId> rests_;
+  void flatten_preconditions();
+  bool test_prim(const CNode& n, const uint64_t* s) const;
 
   mutable std::vector<CNode> cnodes_;
   mutable std::vector<int> ckids_;
