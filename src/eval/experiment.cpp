@@ -11,6 +11,7 @@
 #include "eval/metrics.hpp"
 #include "inference/belief.hpp"
 #include "inference/vh_value.hpp"
+#include "language/commands/utterance_merge.hpp"
 #include "language/listener.hpp"
 
 namespace clips::eval {
@@ -176,12 +177,29 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
           throw InputError("unknown assistance method '" + how + "' (known: qmdp_offline, qmdp_online, pibar)");
         }
       } else if (base == "literal_efficient" || base == "literal_naive" || base == "literal") {
+        const data::DomainKind kind_of_ds = ds.kind();
         std::string domain = language::language_domain_of(*task);
         auto lsetup = language::literal_listener_setup(domain);
         std::string utt = p.literal_utterance ? *p.literal_utterance
                           : p.observed.utterances.empty() ? std::string() : p.observed.utterances.back().text;
         if (utt.empty()) throw InputError("plan " + p.id + " has no utterance for the literal listener");
         auto ranked = language::literal_listener(*task, setup.start, utt, lsetup, lm);
+        if (kind_of_ds == data::DomainKind::VirtualHome && p.observed.utterances.size() > 1) {
+          // VH spec 7.3: every utterance is heard in s_T; rankings are merged
+          // (most probable prefix of the first, then each later one).
+          auto to_cmd = [](const language::ListenerResult& lr) {
+            std::vector<commands::RankedCommand> v;
+            for (auto& c : lr.commands) v.push_back({c.command, c.prob, c.log_likelihood});
+            return v;
+          };
+          auto kept = commands::probable_prefix(
+              to_cmd(language::literal_listener(*task, setup.start, p.observed.utterances[0].text, lsetup, lm)));
+          for (size_t u = 1; u < p.observed.utterances.size(); ++u)
+            kept = commands::combine_utterance_rankings(
+                kept, to_cmd(language::literal_listener(*task, setup.start, p.observed.utterances[u].text, lsetup, lm)));
+          ranked.commands.clear();
+          for (auto& k : kept) ranked.commands.push_back({k.command, k.score, k.probability});
+        }
         assist::LiteralSetup ls;
         ls.world = setup;
         ls.truth = true_spec;
