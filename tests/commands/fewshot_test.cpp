@@ -1,6 +1,8 @@
 // Few-shot examples, prompt orders and prompt strings (spec 7.7-7.9, VH spec 10).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "commands/fixtures.hpp"
 #include "language/commands/enumerate.hpp"
 #include "language/commands/fewshot.hpp"
@@ -29,6 +31,18 @@ TEST(FewShotFile, ShippedExamplesMatchTheReferenceLists) {
   EXPECT_FALSE(examples[12].in_literal_prompt);
   EXPECT_EQ(examples[18].domain, "virtual-home");
   EXPECT_EQ(examples[18].command, "(grab you plate1)");
+}
+
+TEST(FewShotFile, SharedReferenceFileLoadsAndAgrees) {
+  const std::string shared = CLIPS_SOURCE_DIR "/../shared/reference/fewshot-examples.tsv";
+  if (!std::filesystem::exists(shared)) GTEST_SKIP() << "shared reference not present";
+  const auto theirs = load_fewshot_examples(shared);
+  const auto ours = load_fewshot_examples(kTsv);
+  ASSERT_EQ(theirs.size(), ours.size());
+  for (size_t i = 0; i < ours.size(); ++i) {
+    EXPECT_EQ(theirs[i].command, ours[i].command);
+    EXPECT_EQ(theirs[i].utterance, ours[i].utterance);
+  }
 }
 
 TEST(FewShotFile, ShippedPromptOrders) {
