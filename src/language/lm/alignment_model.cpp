@@ -1,6 +1,7 @@
 #include "language/lm/alignment_model.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 #include <cmath>
 #include <limits>
@@ -24,6 +25,7 @@ constexpr double kPiContent = 0.4;
 constexpr double kGenericShare = 0.08;  // share of GEN inside Content when groups are active
 constexpr double kMention = 0.85;       // prior mean of the rho (Beta pseudo-counts 2)
 constexpr double kRequestClause = 0.8;
+constexpr size_t kMaxAnchors = 4;  // action groups whose mention requires an anchor token
 constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
 
 // Field weights inside a group, renormalised over the fields present.
@@ -536,6 +538,91 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   };
 
   std::vector<double> mix(n * 2);
+  // log of the anchored likelihood of the tokens (see below) for the k
+  // mentioned action groups K, given the per-token mixtures `mix` and each
+  // group's own emission emit(j, i); for a prefix, marginalised over the
+  // unseen length (divided by P(N >= n), which the caller adds back).
+  auto anchored_log = [&](const size_t* /*K*/, size_t k, const std::vector<double>& mx, auto&& emit) {
+    const uint32_t full = (1u << k) - 1u;
+    double a[2][1u << kMaxAnchors] = {};
+    double b[2][1u << kMaxAnchors];
+    double e[1u << kMaxAnchors];
+    double single[kMaxAnchors];
+    a[0][0] = kRequestClause;
+    a[1][0] = 1 - kRequestClause;
+    double log_scale = 0;
+    size_t clause = 0;
+    for (size_t i = 0; i < n; ++i) {
+      for (size_t j = 0; j < k; ++j) single[j] = emit(j, i);
+      e[0] = 0;
+      for (uint32_t S = 1; S <= full; ++S) {
+        double v = 0;
+        int cnt = 0;
+        for (size_t j = 0; j < k; ++j) {
+          if ((S >> j) & 1u) {
+            v += single[j];
+            ++cnt;
+          }
+        }
+        e[S] = v / cnt;
+      }
+      double zsum = 0;
+      for (int t = 0; t < 2; ++t) {
+        const double m = mx[2 * i + static_cast<size_t>(t)];
+        for (uint32_t A = 0; A <= full; ++A) {
+          double v = a[t][A] * m;
+          for (uint32_t S = A; S != 0; S = (S - 1) & A) v += a[t][A ^ S] * e[S];
+          b[t][A] = v;
+          zsum += v;
+        }
+      }
+      if (!(zsum > 0)) return -std::numeric_limits<double>::infinity();
+      log_scale += std::log(zsum);
+      for (int t = 0; t < 2; ++t) {
+        for (uint32_t A = 0; A <= full; ++A) a[t][A] = b[t][A] / zsum;
+      }
+      if (clause < clauses && i + 1 == static_cast<size_t>(u.clause_end[clause])) {
+        ++clause;
+        if (i + 1 < n) {
+          for (uint32_t A = 0; A <= full; ++A) {
+            const double sA = a[0][A] + a[1][A];
+            a[0][A] = kRequestClause * sA;
+            a[1][A] = (1 - kRequestClause) * sA;
+          }
+        }
+      }
+    }
+    const double kd = static_cast<double>(k);
+    if (complete) {
+      return log_scale + std::log(a[0][full] + a[1][full]) - kd * std::log(static_cast<double>(n));
+    }
+    // Prefix: sum over total lengths N >= n of P_len(N) P(prefix | N), where a
+    // group's anchor lies in the prefix with probability n / N.
+    const std::vector<double>& pmf = length_[static_cast<size_t>(actions_bucket(c.num_actions))];
+    double F[1u << kMaxAnchors];
+    int pc[1u << kMaxAnchors];
+    for (uint32_t A = 0; A <= full; ++A) {
+      F[A] = a[0][A] + a[1][A];
+      pc[A] = std::popcount(A);
+    }
+    double s = 0, below = 0;
+    const double L = static_cast<double>(n);
+    for (size_t N = n; N <= static_cast<size_t>(kMaxLen); ++N) {
+      const double Nd = static_cast<double>(N);
+      double v = 0;
+      for (uint32_t A = 0; A <= full; ++A) {
+        v += F[A] * std::pow(Nd, -pc[A]) * std::pow((Nd - L) / Nd, static_cast<double>(k) - pc[A]);
+      }
+      s += pmf[N] * v;
+      below += pmf[N];
+    }
+    const double tail = std::exp(length_log_prob(c.num_actions, static_cast<int>(n), false));
+    const double rest = std::max(0.0, tail - below);
+    const double Nt = static_cast<double>(kMaxLen + 1);
+    s += rest * F[0] * std::pow((Nt - L) / Nt, kd);
+    if (!(s > 0)) return -std::numeric_limits<double>::infinity();
+    return log_scale + std::log(s) - std::log(tail);
+  };
   std::vector<double> log_m(static_cast<size_t>(end_mask - first_mask) + (enumerate ? 0 : 1),
                             -std::numeric_limits<double>::infinity());
   std::vector<double> clause_log;  // [mask][clause][type] when counting
@@ -585,6 +672,36 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
         clause_log[base + 1] = ls - lk;
       }
       start = end;
+    }
+    // Required mentions: every mentioned action group emits one anchor token,
+    // at a position drawn uniformly from the n positions (independently per
+    // group); an anchored token is drawn from the anchoring groups' own
+    // emissions (uniform mixture when several share it), every other token
+    // from the mixture above. Exact sum over anchor placements by a forward
+    // pass whose state is the set of groups already anchored.
+    if (n > 0) {
+      size_t K[kMaxAnchors];
+      size_t k = 0;
+      for (size_t g = 0; g < G && k < kMaxAnchors; ++g) {
+        if (c.groups[g].parent < 0 && on[g]) K[k++] = g;
+      }
+      if (k > 0) {
+        double prior = 0;
+        for (size_t g = 0; g < G; ++g) {
+          const Bound::Group& grp = c.groups[g];
+          if (grp.parent >= 0 && !on[static_cast<size_t>(grp.parent)]) continue;
+          if (enumerate) prior += on[g] ? grp.log_on : grp.log_off;
+        }
+        const double f = anchored_log(K, k, mix, [&](size_t j, size_t i) {
+          const size_t g = K[j];
+          double v = p_group[g * n + i];
+          for (size_t h = 0; h < G; ++h) {
+            if (on[h] && c.groups[h].parent == static_cast<int>(g)) v += c.groups[h].unit_weight * p_group[h * n + i];
+          }
+          return v / den[g];
+        });
+        lp = prior + f;
+      }
     }
     log_m[mask - first_mask] = lp;
   }

@@ -15,6 +15,17 @@
 //     actions or colours the utterance never talks about (a fertility model).
 //     The rho are estimated by EM (clamped to [0.05, 0.95]); the exact sum over
 //     all mention patterns is taken (at most 2^10 patterns).
+//     A mentioned action group (the first 4) is REQUIRED to speak: it emits one
+//     anchor token at a position drawn uniformly from the n positions
+//     (independently per group; n > 0); an anchored token comes from its
+//     anchoring groups' own emission (fields plus mentioned units, uniform over
+//     groups sharing the position), every other token from the mixture of 4.
+//     So a group the utterance never talks about pays about log(1 - rho) rather
+//     than mere dilution. The sum over anchor placements is exact (a forward pass
+//     over tokens whose state is the set of groups already anchored, times the
+//     clause type); for a prefix, the unseen length is summed out. The E-step
+//     credits table counts by the mixture responsibilities (anchors ignored), an
+//     approximation; mention counts use the exact posteriors.
 //  3. Clauses: the tokens are cut into clauses after punctuation and a few
 //     conjunctions; each clause independently gets a speech-act type t:
 //     R (a request to the listener, "can you open the blue door") with P = 0.8 or
