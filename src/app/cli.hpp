@@ -2,7 +2,10 @@
 // The `clips` command line: one register_* function per subcommand. Each
 // subcommand is a thin layer over the library API of the same name.
 #include <CLI/CLI.hpp>
+#include <memory>
 #include <string>
+
+#include "language/lm/language_model.hpp"
 
 namespace clips::app {
 
@@ -11,6 +14,15 @@ extern int g_exit_code;
 
 // The dataset directory default: $CLIPS_DATASET, else ../shared/dataset/<domain>.
 std::string default_dataset_hint();
+
+// The language-model flags every subcommand that scores utterances shares:
+// --lm embedded|openai, --lm-base-url, --lm-model (key from $OPENAI_API_KEY).
+struct LmFlags {
+  std::string kind = "embedded";
+  std::string base_url, model;
+};
+void add_lm_options(CLI::App* cmd, LmFlags& flags);
+std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);
 
 void register_validate(CLI::App& app);
 void register_show(CLI::App& app);

@@ -12,7 +12,8 @@ namespace clips::app {
 void register_assist(CLI::App& app) {
   auto* cmd = app.add_subcommand("assist", "Infer the goal from a plan's prefix and utterance, then assist; print metrics");
   struct Opts {
-    std::string dataset, plan, method = "clips", assist = "qmdp_offline", lm = "embedded";
+    std::string dataset, plan, method = "clips", assist = "qmdp_offline";
+    LmFlags lm;
     bool json = false;
     uint64_t seed = 1;
   };
@@ -29,13 +30,13 @@ void register_assist(CLI::App& app) {
   cmd->add_option("--chat-model", mm->model, "multimodal: chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
       ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
-  cmd->add_option("--lm", o->lm, "Language model: embedded (default) or openai");
+  add_lm_options(cmd, o->lm);
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->callback([o, mm] {
     auto ds = data::Dataset::load(o->dataset);
     const auto& p = ds.plan(o->plan);
-    auto lm = language::make_language_model(o->lm, {});
+    auto lm = make_lm(o->lm);
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
     eo.multimodal = *mm;

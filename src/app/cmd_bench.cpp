@@ -23,9 +23,8 @@ void register_bench(CLI::App& app) {
   cmd->add_option("--out", *out, "Write results.csv and summary.json into this directory");
   cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)");
   cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines (default 1)");
-  cmd->add_option("--lm", o->lm, "Language model: embedded (default, offline) or openai");
-  cmd->add_option("--lm-base-url", o->lm_base_url, "OpenAI-compatible base URL (or $CLIPS_LM_BASE_URL)");
-  cmd->add_option("--lm-model", o->lm_model, "Model name for --lm openai (or $CLIPS_LM_MODEL)");
+  auto lm = std::make_shared<LmFlags>();
+  add_lm_options(cmd, *lm);
   cmd->add_option("--assist", *assist, "default (offline Q_MDP) or all (adds online Q_MDP and pi-bar_MDP)")
       ->check(CLI::IsMember({"default", "all"}));
   cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive");
@@ -39,6 +38,9 @@ void register_bench(CLI::App& app) {
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
   cmd->callback([=] {
+    o->lm = lm->kind;
+    o->lm_base_url = lm->base_url;
+    o->lm_model = lm->model;
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     bool wants_mm = std::find(methods->begin(), methods->end(), "multimodal") != methods->end();

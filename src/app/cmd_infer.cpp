@@ -14,7 +14,8 @@ namespace clips::app {
 void register_infer(CLI::App& app) {
   auto* cmd = app.add_subcommand("infer", "Infer the human's goal from a plan's actions and instruction (CLIPS)");
   struct Opts {
-    std::string dataset, plan, modalities = "both", lm = "embedded";
+    std::string dataset, plan, modalities = "both";
+    LmFlags lm;
     bool json = false;
     size_t max_nodes = size_t{1} << 18;
   };
@@ -24,15 +25,14 @@ void register_infer(CLI::App& app) {
   cmd->add_option("--modalities", o->modalities,
                   "Which evidence the reported posterior uses: both (CLIPS, default), utterance or action")
       ->check(CLI::IsMember({"both", "utterance", "action"}));
-  cmd->add_option("--lm", o->lm, "Language model: embedded (default, offline) or openai")
-      ->check(CLI::IsMember({"embedded", "openai"}));
+  add_lm_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)");
   cmd->add_flag("--json", o->json, "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object");
   cmd->callback([o] {
     auto ds = data::Dataset::load(o->dataset);
     const auto& plan = ds.plan(o->plan);
     const inference::Modality modality = inference::parse_modality(o->modalities);
-    auto lm = language::make_language_model(o->lm);
+    auto lm = make_lm(o->lm);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
     const inference::InferenceRun run = inference::run_inference(ds, plan, *lm, opts);

@@ -31,7 +31,8 @@ void register_listen(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "listen", "Literal listener: rank the commands an utterance may ask for, at the end of an observed plan");
   struct Opts {
-    std::string dataset, plan, lm = "embedded", lm_base_url, lm_model;
+    std::string dataset, plan;
+    LmFlags lm;
     std::optional<std::string> utterance;
     int top = -1;
     bool json = false;
@@ -43,12 +44,7 @@ void register_listen(CLI::App& app) {
   cmd->add_option("--utterance", o->utterance,
                   "The instruction (default: the plan's literal utterance file, else the last utterance of the "
                   "observed plan)");
-  cmd->add_option("--lm", o->lm, "Language model: embedded (offline, default) or openai")
-      ->check(CLI::IsMember(language::language_model_kinds()));
-  cmd->add_option("--lm-base-url", o->lm_base_url,
-                  "openai: completions API base URL (default $CLIPS_LM_BASE_URL, else https://api.openai.com/v1; "
-                  "the key is read from $OPENAI_API_KEY)");
-  cmd->add_option("--lm-model", o->lm_model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
+  add_lm_options(cmd, o->lm);
   cmd->add_option("--top", o->top, "Show only the N most probable commands (default: 10 in the table, all with --json)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", o->json,
@@ -66,10 +62,7 @@ void register_listen(CLI::App& app) {
     const std::string utterance = o->utterance ? *o->utterance : default_utterance(p);
 
     const auto setup = language::literal_listener_setup(language::language_domain_of(*task));
-    language::LanguageModelOptions lm_opts;
-    lm_opts.base_url = o->lm_base_url;
-    lm_opts.model = o->lm_model;
-    auto lm = language::make_language_model(o->lm, lm_opts);
+    auto lm = make_lm(o->lm);
     const auto result = language::literal_listener(*task, s_T, utterance, setup, *lm);
 
     const size_t n_all = result.commands.size();

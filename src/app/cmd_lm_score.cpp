@@ -35,7 +35,8 @@ std::string read_prompt(const std::string& path) {
 void register_lm_score(CLI::App& app) {
   auto* cmd = app.add_subcommand("lm-score", "Print log P(continuation | prompt) under a language model");
   struct Opts {
-    std::string prompt_file, continuation, lm = "embedded", lm_base_url, lm_model;
+    std::string prompt_file, continuation;
+    LmFlags lm;
     bool raw = false;
   };
   auto o = std::make_shared<Opts>();
@@ -47,12 +48,7 @@ void register_lm_score(CLI::App& app) {
                   "The utterance; scored as \" <utterance>\\n\" like the listener does, unless --raw")
       ->required();
   cmd->add_flag("--raw", o->raw, "Score the prompt file and the continuation byte for byte");
-  cmd->add_option("--lm", o->lm, "Language model: embedded (offline, default) or openai")
-      ->check(CLI::IsMember(language::language_model_kinds()));
-  cmd->add_option("--lm-base-url", o->lm_base_url,
-                  "openai: completions API base URL (default $CLIPS_LM_BASE_URL, else https://api.openai.com/v1; "
-                  "the key is read from $OPENAI_API_KEY)");
-  cmd->add_option("--lm-model", o->lm_model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
+  add_lm_options(cmd, o->lm);
   cmd->callback([o] {
     std::string prompt = read_prompt(o->prompt_file);
     std::string continuation = o->continuation;
@@ -62,10 +58,7 @@ void register_lm_score(CLI::App& app) {
         throw InputError("--continuation is empty");
       continuation = commands::utterance_continuation(continuation);
     }
-    language::LanguageModelOptions lm_opts;
-    lm_opts.base_url = o->lm_base_url;
-    lm_opts.model = o->lm_model;
-    auto lm = language::make_language_model(o->lm, lm_opts);
+    auto lm = make_lm(o->lm);
     const double score = lm->score({{prompt, continuation}}).at(0);
     fmt::print("{:.6f}\t{}\n", score, lm->name());
   });

@@ -16,7 +16,8 @@ void register_render(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "render", "Draw a plan: one state as PNG (--out) or the observed and assisted run as an animated GIF (--gif)");
   struct Opts {
-    std::string dataset, plan, out, gif, lm = "embedded";
+    std::string dataset, plan, out, gif;
+    LmFlags lm;
     int step = -1;
     int cell = 32;
   };
@@ -29,7 +30,7 @@ void register_render(CLI::App& app) {
   cmd->add_option("--out", o->out, "Write one frame as PNG");
   cmd->add_option("--gif", o->gif, "Write the observed prefix + CLIPS offline Q_MDP assistance as an animated GIF");
   cmd->add_option("--cell", o->cell, "Pixels per grid cell (default 32)")->check(CLI::Range(8, 128));
-  cmd->add_option("--lm", o->lm, "Language model for inference: embedded (default) or openai");
+  add_lm_options(cmd, o->lm);
   cmd->callback([o] {
     if (o->out.empty() && o->gif.empty()) throw InputError("render: give --out F.png and/or --gif F.gif");
     if (o->step >= 0 && o->out.empty()) throw InputError("render: --step applies to --out (one frame)");
@@ -38,7 +39,7 @@ void register_render(CLI::App& app) {
     const int T = static_cast<int>(p.observed.actions.size());
     if (o->step < -1) throw InputError(fmt::format("render: --step {} is negative", o->step));
     const int step = o->step < 0 ? T : o->step;
-    auto lm = language::make_language_model(o->lm, {});
+    auto lm = make_lm(o->lm);
     eval::PlanRun run;
     bool need_assist = !o->gif.empty() || step > T;
     if (need_assist) {

@@ -87,17 +87,20 @@ struct Episode {
       if (h.weight >= setup.weight_threshold) live.push_back(&h);
     std::optional<ActionId> common;
     bool all_same = true;
+    std::vector<std::vector<search::QValue>> qvals;  // per live hypothesis, computed once
     for (const Hypothesis* h : live) {
       if (setup.refine) h->policy->refine(s, setup.refine_options);
-      auto b = h->policy->best_action(s);
+      qvals.push_back(h->policy->q_values(s));
+      auto b = h->policy->best_action(s, qvals.back());
       if (!b || (common && *common != *b)) all_same = false;
       if (b && !common) common = b;
     }
     if (all_same && common) return *common;
     auto acts = task.applicable_actions(s);
     std::vector<double> qa(acts.size(), 0.0);
-    for (const Hypothesis* h : live) {
-      auto qs = h->policy->q_values(s);
+    for (size_t k = 0; k < live.size(); ++k) {
+      const Hypothesis* h = live[k];
+      const auto& qs = qvals[k];
       const auto& spec = h->policy->spec();
       double wait_cost = spec.cost(assistant_wait);
       for (size_t i = 0; i < acts.size(); ++i)

@@ -863,18 +863,7 @@ bool Task::eval(CondId c, const uint64_t* s) const {
     case CNode::Gt: return eval_num(n.a, s) > eval_num(n.b, s);
     case CNode::Ge: return eval_num(n.a, s) >= eval_num(n.b, s);
     case CNode::SlotConst:
-    case CNode::SlotSlot: {
-      const int x = get_num(s, atom_words_, n.a);
-      const int y = n.op == CNode::SlotConst ? n.b : get_num(s, atom_words_, n.b) + (n.c >> 3);
-      switch (n.c & 7) {
-        case 0: return x == y;
-        case 1: return x != y;
-        case 2: return x < y;
-        case 3: return x <= y;
-        case 4: return x > y;
-        default: return x >= y;
-      }
-    }
+    case CNode::SlotSlot: return test_prim(n, s);
   }
   return false;
 }

@@ -95,9 +95,14 @@ std::vector<QValue> Policy::q_values(const pddl::State& s) const {
 
 std::optional<pddl::ActionId> Policy::best_action(const pddl::State& s) const {
   if (const pddl::ActionId* a = tree_.find(s.data()); a && spec_->task().applicable(*a, s.data())) return *a;
+  return best_action(s, q_values(s));
+}
+
+std::optional<pddl::ActionId> Policy::best_action(const pddl::State& s, const std::vector<QValue>& qs) const {
+  if (const pddl::ActionId* a = tree_.find(s.data()); a && spec_->task().applicable(*a, s.data())) return *a;
   std::optional<pddl::ActionId> best;
   double bq = -kInf;
-  for (const QValue& q : q_values(s))
+  for (const QValue& q : qs)
     if (q.q > bq) {
       bq = q.q;
       best = q.action;

@@ -48,6 +48,8 @@ class Policy {
   // Tree action when s lies on a stored goal path, else the first action of
   // maximal Q; nullopt if every Q is -inf or nothing is applicable.
   std::optional<pddl::ActionId> best_action(const pddl::State& s) const;
+  // The same, from Q-values already computed by q_values(s).
+  std::optional<pddl::ActionId> best_action(const pddl::State& s, const std::vector<QValue>& qs) const;
   // Greedy rollout of best_action for at most `max_steps`, stopping at the goal.
   std::vector<pddl::ActionId> rollout(const pddl::State& s, int max_steps) const;
 

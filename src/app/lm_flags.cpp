@@ -1,0 +1,23 @@
+// Shared --lm flags of the subcommands.
+#include "app/cli.hpp"
+#include "language/listener.hpp"
+
+namespace clips::app {
+
+void add_lm_options(CLI::App* cmd, LmFlags& f) {
+  cmd->add_option("--lm", f.kind, "Language model: embedded (offline, default) or openai")
+      ->check(CLI::IsMember(language::language_model_kinds()));
+  cmd->add_option("--lm-base-url", f.base_url,
+                  "openai: completions API base URL (default $CLIPS_LM_BASE_URL, else https://api.openai.com/v1; "
+                  "the key is read from $OPENAI_API_KEY)");
+  cmd->add_option("--lm-model", f.model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
+}
+
+std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) {
+  language::LanguageModelOptions o;
+  o.base_url = f.base_url;
+  o.model = f.model;
+  return language::make_language_model(f.kind, o);
+}
+
+}  // namespace clips::app
