@@ -20,8 +20,11 @@ std::string default_dataset_hint();
 struct LmFlags {
   std::string kind = "embedded";
   std::string base_url, model;
+  std::string speaker_rule = "paper";  // CLIPS speaker commands: paper or code (spec 13 item 2)
 };
 void add_lm_options(CLI::App* cmd, LmFlags& flags);
+// --speaker-rule, for the subcommands that run CLIPS inference.
+void add_speaker_rule_option(CLI::App* cmd, LmFlags& flags);
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);
 
 void register_validate(CLI::App& app);

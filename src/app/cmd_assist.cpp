@@ -31,6 +31,7 @@ void register_assist(CLI::App& app) {
   cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
       ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
   add_lm_options(cmd, o->lm);
+  add_speaker_rule_option(cmd, o->lm);
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->callback([o, mm] {
@@ -39,6 +40,7 @@ void register_assist(CLI::App& app) {
     auto lm = make_lm(o->lm);
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
+    eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     eo.multimodal = *mm;
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;

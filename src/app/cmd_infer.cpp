@@ -26,6 +26,7 @@ void register_infer(CLI::App& app) {
                   "Which evidence the reported posterior uses: both (CLIPS, default), utterance or action")
       ->check(CLI::IsMember({"both", "utterance", "action"}));
   add_lm_options(cmd, o->lm);
+  add_speaker_rule_option(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)");
   cmd->add_flag("--json", o->json, "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object");
   cmd->callback([o] {
@@ -35,6 +36,7 @@ void register_infer(CLI::App& app) {
     auto lm = make_lm(o->lm);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
+    opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     const inference::InferenceRun run = inference::run_inference(ds, plan, *lm, opts);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";
     if (o->json) {

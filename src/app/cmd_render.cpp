@@ -31,6 +31,7 @@ void register_render(CLI::App& app) {
   cmd->add_option("--gif", o->gif, "Write the observed prefix + CLIPS offline Q_MDP assistance as an animated GIF");
   cmd->add_option("--cell", o->cell, "Pixels per grid cell (default 32)")->check(CLI::Range(8, 128));
   add_lm_options(cmd, o->lm);
+  add_speaker_rule_option(cmd, o->lm);
   cmd->callback([o] {
     if (o->out.empty() && o->gif.empty()) throw InputError("render: give --out F.png and/or --gif F.gif");
     if (o->step >= 0 && o->out.empty()) throw InputError("render: --step applies to --out (one frame)");
@@ -45,6 +46,7 @@ void register_render(CLI::App& app) {
     if (need_assist) {
       eval::ExperimentOptions eo;
       eo.methods = {"clips"};
+      eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
       auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
       if (!outcome.error.empty()) throw InputError(outcome.error);
       const eval::MethodResult* c = outcome.find("clips");
@@ -54,7 +56,9 @@ void register_render(CLI::App& app) {
       run.assisted = c->plan;
       run.label = "CLIPS";
     } else {
-      auto inf = inference::run_inference(ds, p, *lm);
+      inference::InferenceOptions io;
+      io.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+      auto inf = inference::run_inference(ds, p, *lm, io);
       run.goals = inf.goals;
       for (auto& st : inf.steps) run.observed_posterior.push_back(st[inference::Modality::Both].goals);
     }

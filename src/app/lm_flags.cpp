@@ -13,6 +13,13 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
   cmd->add_option("--lm-model", f.model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
 }
 
+void add_speaker_rule_option(CLI::App* cmd, LmFlags& f) {
+  cmd->add_option("--speaker-rule", f.speaker_rule,
+                  "Which of the human's own actions the CLIPS speaker model's commands keep: paper (default; joint "
+                  "commands keep them) or code (the reference code drops them all)")
+      ->check(CLI::IsMember({"paper", "code"}));
+}
+
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) {
   language::LanguageModelOptions o;
   o.base_url = f.base_url;

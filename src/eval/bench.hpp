@@ -28,6 +28,7 @@ struct MethodSummary {
 
 struct BenchReport {
   std::string domain, dataset, lm;
+  std::string speaker_rule;  // the CLIPS speaker model's command rule
   std::vector<PlanOutcome> plans;  // in dataset order
   std::vector<MethodSummary> summary;
   double wall_seconds = 0;

@@ -109,7 +109,9 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     auto methods = opts.methods.empty() ? default_methods(ds.kind(), opts.all_assistance) : opts.methods;
     if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back("multimodal");  // issue 8
 
-    inference::InferenceRun inf = inference::run_inference(ds, p, lm);
+    inference::InferenceOptions io;
+    io.utterance.speaker_rule = opts.speaker_rule;
+    inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
     out.goals = inf.goals;
     out.true_goal = inf.true_goal;
     for (const auto& st : inf.steps) out.goal_posterior_steps.push_back(st[Modality::Both].goals);  // issue 8

@@ -9,6 +9,7 @@
 
 #include "data/dataset.hpp"
 #include "eval/multimodal.hpp"
+#include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
 
 namespace clips::eval {
@@ -53,6 +54,8 @@ struct ExperimentOptions {
   std::vector<std::string> methods;  // empty: all default methods of the domain
   bool all_assistance = false;       // add qmdp_online and pibar for the IP methods
   uint64_t seed = 1;
+  // The CLIPS speaker model's command rule (spec 13 item 2).
+  inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

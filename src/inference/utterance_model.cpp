@@ -24,6 +24,14 @@ double log_sum_exp(const std::vector<double>& x) {
 
 }  // namespace
 
+SpeakerRule parse_speaker_rule(const std::string& text) {
+  if (text == "paper") return SpeakerRule::Paper;
+  if (text == "code") return SpeakerRule::Code;
+  throw InputError("unknown speaker rule '" + text + "' (expected paper or code)");
+}
+
+std::string to_string(SpeakerRule r) { return r == SpeakerRule::Paper ? "paper" : "code"; }
+
 UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, data::DomainKind kind,
                                const UtteranceModelOptions& options)
     : task_(std::move(task)),
@@ -31,6 +39,10 @@ UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, data::Dom
                                                     : commands::doors_keys_gems_language()),
       rollout_kind_(kind == data::DomainKind::VirtualHome ? RolloutKind::WeightedAStarNoGrab : RolloutKind::Greedy),
       options_(options) {
+  if (options_.speaker_rule == SpeakerRule::Paper) {
+    config_.speaker_actions = config_.paper_speaker_actions;
+    config_.exclude_chains = config_.paper_exclude_chains;
+  }
   const std::string dir = options_.language_dir.empty() ? std::string(CLIPS_SOURCE_DIR) + "/data/language"
                                                         : options_.language_dir;
   auto all = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");

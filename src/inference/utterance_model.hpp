@@ -31,7 +31,19 @@ enum class RolloutKind {
   WeightedAStarNoGrab // VH: weighted A* towards g with (nograb speaker) set (VH spec 6.1)
 };
 
+// Which of the speaker's own actions the CLIPS speaker's commands may hold
+// (spec 13 item 2). Paper: joint commands keep the speaker's part ("I'm going
+// for the red key, can you get the yellow one?"), commands that are all the
+// speaker's and chains on one object are dropped. Code: the reference code's
+// default, every speaker action removed before enumeration. We default to the
+// paper: with the embedded model it matches the paper's CLIPS row more closely
+// (docs/decisions.md); the literal listener is unaffected.
+enum class SpeakerRule { Paper, Code };
+SpeakerRule parse_speaker_rule(const std::string& text);  // "paper" or "code"; throws InputError
+std::string to_string(SpeakerRule r);
+
 struct UtteranceModelOptions {
+  SpeakerRule speaker_rule = SpeakerRule::Paper;
   int rollout_steps = 100;                 // greedy rollout bound (mDKG)
   size_t astar_max_nodes = size_t{1} << 16;  // VH rollout budget
   double astar_weight = 2.0;               // VH rollout: f = g + 2h

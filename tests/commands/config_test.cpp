@@ -26,6 +26,8 @@ void expect_same(const LanguageConfig& a, const LanguageConfig& b) {
   EXPECT_EQ(a.max_qualifier_values_per_action_type, b.max_qualifier_values_per_action_type);
   EXPECT_EQ(a.speaker_actions, b.speaker_actions);
   EXPECT_EQ(a.exclude_chains, b.exclude_chains);
+  EXPECT_EQ(a.paper_speaker_actions, b.paper_speaker_actions);
+  EXPECT_EQ(a.paper_exclude_chains, b.paper_exclude_chains);
   EXPECT_EQ(a.variable_naming, b.variable_naming);
   EXPECT_EQ(a.printed_form, b.printed_form);
   EXPECT_EQ(a.goal_atoms, b.goal_atoms);

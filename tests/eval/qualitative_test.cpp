@@ -90,3 +90,24 @@ TEST(PaperBehaviour, LanguageBeatsActionsAloneOnAmbiguousPredicates) {
   auto o = fixture().run("2.1.keys", {"clips", "action_only"});
   EXPECT_GT(*o.find("clips")->p_true_goal, *o.find("action_only")->p_true_goal);
 }
+
+TEST(PaperBehaviour, SpeakersOwnPartOfAJointInstructionIsEvidence) {
+  REQUIRE_DATASET();
+  // 6.1.keys: "I'm going for the red key, can you get the yellow key?" The
+  // yellow and green gems both need a yellow key from the robot; only the
+  // green gem's plan has the human fetch a red key. With the paper's command
+  // rule the speaker's own part counts and the robot helps; with the reference
+  // code's rule (speaker actions dropped) the two goals tie exactly.
+  auto& f = fixture();
+  const auto& plan = f.ds.plan("6.1.keys");
+  eval::ExperimentOptions o;
+  o.methods = {"clips"};
+  auto paper = eval::evaluate_plan(f.ds, plan, *f.lm, o);
+  o.speaker_rule = inference::SpeakerRule::Code;
+  auto code = eval::evaluate_plan(f.ds, plan, *f.lm, o);
+  ASSERT_EQ(paper.error, "");
+  ASSERT_EQ(code.error, "");
+  EXPECT_GT(*paper.find("clips")->p_true_goal, 0.8);
+  EXPECT_NEAR(*code.find("clips")->p_true_goal, 0.5, 1e-6);
+  EXPECT_EQ(options_of(paper, "clips"), (std::map<std::string, double>{{"key4", 1.0}}));
+}

@@ -162,6 +162,33 @@ TEST(EmbeddedModel, SpeakerClausesDoNotClaimTheListenersColour) {
             score(pragmatic_prompt("(pickup you key1) where (iscolor key1 green)"), v));
 }
 
+TEST(EmbeddedModel, ColoursBindToNounsOfTheirObjectsType) {
+  // "red door": the red belongs to a door. A command whose only red object is
+  // a gem must not explain it by copying the gem's colour, and a command with
+  // a red door must win.
+  const std::string red_door = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 red)");
+  const std::string red_gem =
+      pragmatic_prompt("(unlock you key1 door1) (pickup me gem1) where (iscolor door1 blue) (iscolor gem1 red)");
+  const std::string blue_door = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 blue)");
+  const char* u = "Can you come and open this red door?";
+  EXPECT_GT(score(red_door, u), score(red_gem, u) + 2.0);
+  // The gem's colour buys (almost) nothing over a command with no red at all.
+  EXPECT_LT(score(red_gem, u), score(blue_door, u) + 1.0);
+  // ... while "the red gem" may still copy it.
+  const char* v = "Can you open the blue door? I'm going for the red gem.";
+  EXPECT_GT(score(red_gem, v), score(blue_door, v));
+  // In "a key for this yellow door" the colour may come from the key (keys
+  // open doors of their colour), not from a yellow gem.
+  const std::string yellow_key = pragmatic_prompt("(pickup you key1) where (iscolor key1 yellow)");
+  const std::string yellow_gem =
+      pragmatic_prompt("(pickup you key1) (pickup me gem1) where (iscolor key1 blue) (iscolor gem1 yellow)");
+  const char* w = "I need a key for this yellow door.";
+  EXPECT_GT(score(yellow_key, w), score(yellow_gem, w));
+  // A colour whose head says nothing about the type ("the yellow one") is unconstrained.
+  const char* x = "Could you pick up the yellow one?";
+  EXPECT_GT(score(yellow_key, x), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), x));
+}
+
 TEST(EmbeddedModel, UnseenItemTypesUseWordNet) {
   // "mug" never occurs in the corpus; WordNet links "cup" and "mugs" to it.
   const std::string mug = vh_prompt("(grab you mug1)");

@@ -41,6 +41,8 @@ LanguageConfig doors_keys_gems_language() {
   c.max_qualifier_values_per_action_type = 1;
   c.variable_naming = VariableNaming::ObjectType;
   c.printed_form = PrintedForm::WhereClause;
+  c.paper_speaker_actions = SpeakerActionRule::ExcludeSpeakerOnlyCommands;
+  c.paper_exclude_chains = true;
   c.goal_atoms = {{"pickup", {"(has $1 $2)"}},
                   {"handover", {"(has $2 $3)", "(pickedup-by $1 $3)"}},
                   {"unlock", {"(unlocked-by $1 $3)", "(unlocked-with $2 $3)"}}};
@@ -138,7 +140,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   static const std::set<std::string> known = {
       "domain", "salient_actions", "qualifier", "speaker", "listener", "max_command_actions",
       "max_action_types", "max_qualifier_values_per_action_type", "speaker_actions",
-      "exclude_chains", "variable_naming", "printed_form", "goal_atoms", "goal_variables",
+      "exclude_chains", "paper_speaker_actions", "paper_exclude_chains", "variable_naming", "printed_form", "goal_atoms", "goal_variables",
       "comment"};
   for (const auto& [key, value] : doc.items())
     if (!known.contains(key)) r.fail(key, "unknown key");
@@ -180,6 +182,13 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
         {{"exclude-all", SpeakerActionRule::ExcludeAll},
          {"exclude-speaker-only-commands", SpeakerActionRule::ExcludeSpeakerOnlyCommands}});
   if (doc.contains("exclude_chains")) c.exclude_chains = r.boolean(doc["exclude_chains"], "exclude_chains");
+  if (doc.contains("paper_speaker_actions"))
+    c.paper_speaker_actions = r.choice<SpeakerActionRule>(
+        doc["paper_speaker_actions"], "paper_speaker_actions",
+        {{"exclude-all", SpeakerActionRule::ExcludeAll},
+         {"exclude-speaker-only-commands", SpeakerActionRule::ExcludeSpeakerOnlyCommands}});
+  if (doc.contains("paper_exclude_chains"))
+    c.paper_exclude_chains = r.boolean(doc["paper_exclude_chains"], "paper_exclude_chains");
   if (doc.contains("variable_naming"))
     c.variable_naming = r.choice<VariableNaming>(
         doc["variable_naming"], "variable_naming",

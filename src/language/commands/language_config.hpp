@@ -68,6 +68,13 @@ struct LanguageConfig {
   SpeakerActionRule speaker_actions = SpeakerActionRule::ExcludeAll;
   // Paper rule: drop commands in which an object occurs in two actions.
   bool exclude_chains = false;
+  // The same two settings as the paper describes them for the CLIPS speaker
+  // model (spec 13 item 2). The speaker model uses these by default
+  // (inference::SpeakerRule::Paper); the literal listener always uses the two
+  // fields above. mDKG: speaker-only commands dropped, chains dropped; VH:
+  // every speaker action dropped (the paper's VH rule equals the code's).
+  SpeakerActionRule paper_speaker_actions = SpeakerActionRule::ExcludeAll;
+  bool paper_exclude_chains = false;
 
   VariableNaming variable_naming = VariableNaming::ObjectType;
   PrintedForm printed_form = PrintedForm::WhereClause;

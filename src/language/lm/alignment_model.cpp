@@ -68,6 +68,11 @@ constexpr uint8_t kWordPronoun = 32;     // a whole noun phrase ("me", "it")
 constexpr uint8_t kWordPreposition = 64;  // may open a post-nominal modifier ("for", "to")
 constexpr uint8_t kWordIndefinite = 128;  // "something": a noun phrase that takes modifiers
 constexpr int kMaxModifierSpan = 5;       // tokens after the preposition, at most
+// Colour binding (header, item 6).
+constexpr double kTypedNoun = 1e-3;    // a head noun names a type if some noun table gives it this much
+constexpr double kBindRatio = 0.1;     // the owner's type must give it this share of the best type's mass
+constexpr double kMisboundCopy = 0.02; // copy weight left to a colour bound to another type's noun
+constexpr int kMaxHeadDistance = 3;    // the head noun follows within this many tokens
 
 uint8_t closed_class_flags(std::string_view w) {
   static const std::set<std::string_view> determiners = {
@@ -204,6 +209,9 @@ struct AlignmentModel::Bound {
     double unit_weight = 0;  // its weight relative to the group's own fields (which sum to 1)
     double log_on, log_off;
     double nonverb_weight = 0;  // action group: weight of its noun/number fields (M in modifiers)
+    // Attribute unit: the noun tables of its object's type (singular, plural),
+    // for colour binding; null when the group has no typed object.
+    const Table* type_nouns[2] = {nullptr, nullptr};
     std::vector<Field> fields;
     std::vector<Copy> copies;
   };
@@ -238,6 +246,7 @@ int AlignmentModel::table_index(const std::string& key) {
   tables_.push_back(std::move(t));
   const int id = static_cast<int>(tables_.size()) - 1;
   table_ids_.emplace(key, id);
+  if (key.rfind("N:", 0) == 0) noun_tables_.push_back(id);
   return id;
 }
 
@@ -325,10 +334,27 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
     }
     return false;
   };
+  // Head nouns of adjectives and colours: the first following token that is
+  // neither a closed-class word nor a modifier, if it is a noun and comes
+  // within kMaxHeadDistance tokens without crossing a clause end.
+  u.noun_heads.assign(n, {-1, -1});
+  for (size_t i = 0; i < n; ++i) {
+    if ((f[i] & kWordModifier) == 0) continue;
+    for (size_t j = i + 1; j < n && j <= i + kMaxHeadDistance; ++j) {
+      if (is_clause_end(u.words[j]) || (f[j] & kWordFunction) != 0) break;
+      if ((f[j] & kWordModifier) != 0) continue;
+      if ((f[j] & kWordNoun) != 0) u.noun_heads[i][0] = static_cast<int>(j);
+      break;
+    }
+  }
   bool open = false;
   int k = 0;
+  int anchor = -1;  // the noun the open span attaches to
   for (size_t i = 0; i < n; ++i) {
-    if (open) u.in_modifier[i] = 1;
+    if (open) {
+      u.in_modifier[i] = 1;
+      if ((f[i] & kWordModifier) != 0) u.noun_heads[i][1] = anchor;
+    }
     if (is_clause_end(u.words[i])) {
       open = false;
       continue;
@@ -348,6 +374,7 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
     } else if ((f[i] & kWordPreposition) != 0 && i > 0 && heads_noun_phrase(i - 1)) {
       open = true;
       k = 0;
+      anchor = static_cast<int>(i) - 1;
     }
   }
 }
@@ -413,6 +440,10 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
       at.log_off = std::log(1 - mention_[2]);
       auto it = word_ids_.find(a);
       at.copies.push_back(Bound::Copy{it == word_ids_.end() ? -1 : it->second, a, copy_alpha_});
+      if (!g.type.empty()) {
+        at.type_nouns[0] = find_or_make_table("N:" + g.type + "/sg");
+        at.type_nouns[1] = find_or_make_table("N:" + g.type + "/pl");
+      }
       at.fields.push_back(Bound::Field{residual, residual_index, 1 - copy_alpha_, true});
       b->groups.push_back(std::move(at));
     }
@@ -456,6 +487,26 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
   const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
   const bool have_spans = u.in_modifier.size() == n;
+  const bool have_heads = u.noun_heads.size() == n;
+
+  // Colour binding (header, item 6): the share of its copy weight that
+  // attribute unit g keeps at token i.
+  auto bind_factor = [&](const Bound::Group& grp, size_t i) {
+    if (!have_heads || grp.type_nouns[0] == nullptr) return 1.0;
+    bool typed = false;
+    for (int j : u.noun_heads[i]) {
+      if (j < 0) continue;
+      const int hid = u.ids[static_cast<size_t>(j)];
+      const std::string& hw = u.words[static_cast<size_t>(j)];
+      double best = 0;
+      for (int t : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(t)]->at(hid, hw));
+      if (best < kTypedNoun) return 1.0;  // "one", "thing": says nothing about the type
+      typed = true;
+      const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
+      if (own >= kBindRatio * best) return 1.0;
+    }
+    return typed ? kMisboundCopy : 1.0;
+  };
 
   // Per-token source probabilities; p_group[g * n + i] is unit g's own emission
   // (its fields' weights sum to 1 for an action group; for an optional unit
@@ -482,7 +533,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       }
       for (const Bound::Field& f : c.groups[g].fields) v += f.weight * f.table->at(id, w);
       for (const Bound::Copy& cp : c.groups[g].copies) {
-        if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight;
+        if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight * bind_factor(c.groups[g], i);
       }
       p_group[g * n + i] = v;
     }
@@ -773,7 +824,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
               if (f.residual) counts->non_copy += e;
             }
             for (const Bound::Copy& cp : grp.copies) {
-              if (id == cp.id) counts->copy += unit * cp.weight;
+              if (id == cp.id) counts->copy += unit * cp.weight * bind_factor(grp, i);
             }
           }
         }

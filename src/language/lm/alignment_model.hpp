@@ -64,15 +64,30 @@
 //     pronoun: "the door for me"); an infinitive ("the key to open ...") ends it
 //     at the verb, so its object is read as usual.
 //
-// Every factor is a normalised distribution and the clause cuts and modifier
-// spans depend only on already generated tokens, so the sum over all token
-// sequences is exactly 1.
+//  6. Colour binding. A colour copied from an object's attribute must describe
+//     a noun that can name that object's type: in "can you open the red door"
+//     the "red" is not a copy of a red gem's colour. The noun a colour describes
+//     is read from the utterance (encode(): the head of its noun phrase, and in a
+//     modifier span also the noun the span attaches to, so "a key for this
+//     yellow door" lets a yellow key's colour through). A head noun names a type
+//     when some trained noun table gives it real mass; an attribute unit may copy
+//     the colour at full weight only if its own type's noun tables give the head
+//     at least kBindRatio of the best type's mass, else at kMisboundCopy of it.
+//     Untyped heads ("one", "thing") and colours with no head are unconstrained.
+//
+// Apart from the colour binding, which looks ahead to the head noun, every
+// factor is a normalised distribution and the clause cuts and modifier spans
+// depend only on already generated tokens, so the sum over all token sequences
+// is exactly 1 (with binding it is at most 1: a deficient model, which only
+// lowers the score of commands whose colours the utterance attaches to nouns
+// of another type).
 // Emission tables are Dirichlet posteriors: expected counts from EM over the
 // training pairs (corpus + few-shot examples) plus kappa times a lexical base from
 // WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).
 // Content fields never emit closed-class words unless their base contains them;
 // verb fields only learn verb-like words and noun fields noun-like ones (WordNet
 // sense counts), so a noun table shared by several actions cannot soak up verbs.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <shared_mutex>
@@ -103,6 +118,12 @@ struct EncodedUtterance {
   // ("a key [for this red door]", "the key [to that door]"); decided from the
   // tokens before i only, so the model stays a left-to-right process.
   std::vector<char> in_modifier;
+  // noun_heads[i]: for an adjective or colour token, the noun tokens it may
+  // describe (-1: none): [0] the head noun of its own noun phrase ("red" in
+  // "the red door" -> "door"); [1] inside a modifier span, the noun the span
+  // attaches to ("yellow" in "a key for this yellow door" -> "key"). Used to
+  // bind a copied colour to an object of a matching type (see evaluate()).
+  std::vector<std::array<int, 2>> noun_heads;
 };
 
 // Trained parameters. Immutable after train(), except for a thread-safe cache of
@@ -173,6 +194,7 @@ class AlignmentModel {
 
   std::vector<std::unique_ptr<Table>> tables_;
   std::unordered_map<std::string, int> table_ids_;
+  std::vector<int> noun_tables_;  // ids of the trained noun tables ("N:<type>/sg|pl")
   double copy_alpha_ = 0.8;
   double mention_[3] = {0.85, 0.85, 0.85};  // rho: action groups, recipients, attribute values
   std::vector<std::vector<double>> length_;  // [actions][n] for n <= kMaxLen
