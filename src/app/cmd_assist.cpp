@@ -40,6 +40,7 @@ void register_assist(CLI::App& app) {
     auto lm = make_lm(o->lm);
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
+    eo.inference_threads = 0;  // one plan: use every core
     eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     eo.multimodal = *mm;
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";

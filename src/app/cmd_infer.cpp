@@ -36,6 +36,7 @@ void register_infer(CLI::App& app) {
     auto lm = make_lm(o->lm);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
+    opts.threads = 0;  // one plan: use every core
     opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     const inference::InferenceRun run = inference::run_inference(ds, plan, *lm, opts);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";

@@ -46,6 +46,7 @@ void register_render(CLI::App& app) {
     if (need_assist) {
       eval::ExperimentOptions eo;
       eo.methods = {"clips"};
+      eo.inference_threads = 0;
       eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
       auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
       if (!outcome.error.empty()) throw InputError(outcome.error);
@@ -58,6 +59,7 @@ void register_render(CLI::App& app) {
     } else {
       inference::InferenceOptions io;
       io.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+      io.threads = 0;
       auto inf = inference::run_inference(ds, p, *lm, io);
       run.goals = inf.goals;
       for (auto& st : inf.steps) run.observed_posterior.push_back(st[inference::Modality::Both].goals);

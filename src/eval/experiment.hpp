@@ -56,6 +56,9 @@ struct ExperimentOptions {
   uint64_t seed = 1;
   // The CLIPS speaker model's command rule (spec 13 item 2).
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
+  // Threads per inference (InferenceOptions::threads): 1 when plans already
+  // run in parallel (`clips bench`), 0 (all cores) for a single plan.
+  int inference_threads = 1;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

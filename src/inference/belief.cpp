@@ -99,6 +99,10 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, st
   utterance_ll_.assign(hyps_.size(), 0.0);
   if (auto sp = task_->find_object(utterance_model_->config().speaker)) speaker_ = *sp;
   state_ = s0;
+  if (search_ && options_.threads != 1 && hyps_.size() > 1) {
+    auto pool = std::make_shared<util::WorkerPool>(options_.threads);
+    if (pool->threads() > 1) pool_ = std::move(pool);
+  }
 }
 
 bool Belief::is_speaker_action(pddl::ActionId a) const {
@@ -110,7 +114,9 @@ bool Belief::is_speaker_action(pddl::ActionId a) const {
 
 void Belief::refine_all(const pddl::State& s) {
   if (!search_) return;  // VH: V = -h_g, nothing to refine
-  for (size_t h = 0; h < policies_.size(); ++h) {
+  // Each hypothesis owns its policy and heuristic, so the refinements are
+  // independent and may run on several threads.
+  auto refine_one = [&](size_t h) {
     search::Policy& pi = policies_[h];
     pi.refine(s, options_.refine);
     if (!pi.best_action(s)) {
@@ -118,6 +124,11 @@ void Belief::refine_all(const pddl::State& s) {
       pi = search::Policy(hyps_[h].spec, heuristics_[h]);
       pi.refine(s, options_.refine);
     }
+  };
+  if (pool_) {
+    pool_->run(policies_.size(), refine_one);
+  } else {
+    for (size_t h = 0; h < policies_.size(); ++h) refine_one(h);
   }
 }
 

@@ -37,6 +37,7 @@
 #include "language/lm/language_model.hpp"
 #include "model/spec.hpp"
 #include "search/rtaa.hpp"
+#include "util/worker_pool.hpp"
 
 namespace clips::inference {
 
@@ -75,6 +76,10 @@ struct InferenceOptions {
   // change only the log marginal likelihood, never a posterior).
   bool speak_factors = true;
   double p_speak = 0.05;
+  // Threads refining the hypotheses' policies in parallel (they are
+  // independent, so results do not depend on it). 1: sequential (callers that
+  // already run several inferences at once, like `clips bench`); 0: all cores.
+  int threads = 1;
 };
 
 struct Hypothesis {
@@ -166,6 +171,7 @@ class Belief {
   pddl::State state_;
   int t_ = 0;
   pddl::ObjectId speaker_ = -1;
+  std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
 };
 
 // Inference over one dataset plan: INIT at s_0, then one step per observed

@@ -1,7 +1,7 @@
 #include "search/astar.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <queue>
 #include <tuple>
 
 namespace clips::search {
@@ -18,53 +18,78 @@ std::string to_string(SearchStatus s) {
 
 namespace {
 
-struct Entry {
-  double f, h;
-  uint64_t counter;
-  int node;
-  uint32_t version;
-  bool operator>(const Entry& o) const { return std::tie(f, h, counter) > std::tie(o.f, o.h, o.counter); }
+// The frontier order: a min-heap on (f, h, counter), kept with the standard
+// heap algorithms on a reusable vector.
+struct Later {
+  bool operator()(const OpenEntry& a, const OpenEntry& b) const {
+    return std::tie(a.f, a.h, a.counter) > std::tie(b.f, b.h, b.counter);
+  }
 };
 
 }  // namespace
 
 SearchResult astar(const model::Specification& spec, heuristics::Heuristic& heur, const pddl::State& start,
                    const SearchOptions& opts) {
+  SearchWorkspace ws;
+  astar(spec, heur, start, opts, ws);
+  return std::move(ws.result);
+}
+
+const SearchResult& astar(const model::Specification& spec, heuristics::Heuristic& heur, const pddl::State& start,
+                          const SearchOptions& opts, SearchWorkspace& ws) {
   using clock = std::chrono::steady_clock;
   auto t0 = clock::now();
   const pddl::Task& task = spec.task();
-  SearchResult r;
-  r.registry = std::make_shared<StateRegistry>(task.num_words());
+  SearchResult& r = ws.result;
+  // Reuse the previous registry unless someone else still holds it.
+  std::shared_ptr<StateRegistry> registry = std::move(r.registry);
+  if (registry && registry.use_count() == 1 && registry->words() == task.num_words()) registry->clear();
+  else registry = std::make_shared<StateRegistry>(task.num_words());
+  std::vector<SearchNode> nodes = std::move(r.nodes);
+  std::vector<pddl::ActionId> plan = std::move(r.plan);
+  nodes.clear();
+  plan.clear();
+  r = SearchResult{};
+  r.registry = std::move(registry);
+  r.nodes = std::move(nodes);
+  r.plan = std::move(plan);
   StateRegistry& reg = *r.registry;
-  auto& nodes = r.nodes;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  auto& nodes_ref = r.nodes;
+  auto& open = ws.open;
+  open.clear();
   uint64_t counter = 0;
 
   auto push = [&](int id, bool fresh_counter) {
-    SearchNode& n = nodes[id];
+    SearchNode& n = nodes_ref[id];
     if (fresh_counter) n.counter = counter;
     n.open = true;
     ++n.version;
     double f = n.g + opts.h_weight * n.h;
-    open.push(Entry{f, n.h, n.counter, id, n.version});
+    open.push_back(OpenEntry{f, n.h, n.counter, id, n.version});
+    std::push_heap(open.begin(), open.end(), Later{});
+  };
+  auto pop = [&] {
+    std::pop_heap(open.begin(), open.end(), Later{});
+    open.pop_back();
   };
 
   int root = reg.insert(start.data());
-  nodes.emplace_back();
-  nodes[root].h = heur.estimate(start.data());
+  nodes_ref.emplace_back();
+  nodes_ref[root].h = heur.estimate(start.data());
   push(root, true);
   r.generated = 1;
 
-  std::vector<pddl::ActionId> acts;
-  std::vector<uint64_t> child(task.num_words());
+  std::vector<pddl::ActionId>& acts = ws.acts;
+  std::vector<uint64_t>& child = ws.child;
+  child.resize(task.num_words());
   const bool prune = opts.prune && heur.prunes();
 
-  auto finish = [&](SearchStatus st, int term) {
+  auto finish = [&](SearchStatus st, int term) -> const SearchResult& {
     r.status = st;
     r.terminal = term;
-    if (term >= 0) r.cost = nodes[term].g;
+    if (term >= 0) r.cost = nodes_ref[term].g;
     if (st == SearchStatus::Success) {
-      for (int n = term; nodes[n].parent >= 0; n = nodes[n].parent) r.plan.push_back(nodes[n].action);
+      for (int n = term; nodes_ref[n].parent >= 0; n = nodes_ref[n].parent) r.plan.push_back(nodes_ref[n].action);
       std::reverse(r.plan.begin(), r.plan.end());
     }
     r.seconds = std::chrono::duration<double>(clock::now() - t0).count();
@@ -72,10 +97,10 @@ SearchResult astar(const model::Specification& spec, heuristics::Heuristic& heur
   };
 
   while (!open.empty()) {
-    Entry top = open.top();
-    SearchNode& best = nodes[top.node];
+    const OpenEntry top = open.front();
+    SearchNode& best = nodes_ref[top.node];
     if (!best.open || top.version != best.version) {
-      open.pop();
+      pop();
       continue;
     }
     const uint64_t* s = reg.get(top.node);
@@ -85,21 +110,21 @@ SearchResult astar(const model::Specification& spec, heuristics::Heuristic& heur
         std::chrono::duration<double>(clock::now() - t0).count() >= opts.max_seconds)
       return finish(SearchStatus::MaxTime, top.node);
     if (opts.fail_fast && top.f == model::kInf) return finish(SearchStatus::Failure, top.node);
-    open.pop();
-    int id = top.node;
-    nodes[id].open = false;
-    nodes[id].expanded = true;
+    pop();
+    const int id = top.node;
+    best.open = false;
+    best.expanded = true;
     ++r.expanded;
     task.applicable_actions(reg.get(id), acts);
     for (pddl::ActionId a : acts) {
       if (prune && !heur.keep(a)) continue;
       task.apply(a, reg.get(id), child.data());
-      double g = nodes[id].g + spec.cost(a);
+      double g = nodes_ref[id].g + spec.cost(a);
       bool added = false;
       int cid = reg.insert(child.data(), &added);
       if (added) {
-        nodes.emplace_back();
-        SearchNode& c = nodes[cid];
+        nodes_ref.emplace_back();
+        SearchNode& c = nodes_ref[cid];
         c.parent = id;
         c.action = a;
         c.g = g;
@@ -109,7 +134,7 @@ SearchResult astar(const model::Specification& spec, heuristics::Heuristic& heur
         push(cid, true);
         continue;
       }
-      SearchNode& c = nodes[cid];
+      SearchNode& c = nodes_ref[cid];
       if (g >= c.g) continue;
       c.parent = id;
       c.action = a;

@@ -57,6 +57,29 @@ struct SearchResult {
 SearchResult astar(const model::Specification& spec, heuristics::Heuristic& h, const pddl::State& start,
                    const SearchOptions& opts = {});
 
+// A frontier entry: smaller (f, h, counter) first.
+struct OpenEntry {
+  double f, h;
+  uint64_t counter;
+  int node;
+  uint32_t version;
+};
+
+// Buffers for callers that run many searches (RTAA* runs one per applicable
+// action and step): the result's registry and nodes, the frontier and the
+// successor scratch keep their capacity from one search to the next.
+struct SearchWorkspace {
+  SearchResult result;
+  std::vector<OpenEntry> open;
+  std::vector<pddl::ActionId> acts;
+  std::vector<uint64_t> child;
+};
+
+// The same search as astar() above, with its result in ws.result (valid
+// until the next search with `ws`).
+const SearchResult& astar(const model::Specification& spec, heuristics::Heuristic& h, const pddl::State& start,
+                          const SearchOptions& opts, SearchWorkspace& ws);
+
 // Convenience: prepares `h` at `start`, then runs A*.
 SearchResult plan(const model::Specification& spec, heuristics::Heuristic& h, const pddl::State& start,
                   const SearchOptions& opts = {});

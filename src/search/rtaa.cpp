@@ -7,17 +7,54 @@ namespace clips::search {
 using model::kInf;
 
 Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h)
-    : spec_(std::move(spec)), h_(std::move(h)), V_(spec_->task().num_words()), tree_(spec_->task().num_words()) {}
+    : spec_(std::move(spec)),
+      h_(std::move(h)),
+      V_(spec_->task().num_words()),
+      tree_(spec_->task().num_words()),
+      h_cache_(spec_->task().num_words()) {}
 
 double Policy::value(const uint64_t* s) const {
   if (const double* v = V_.find(s)) return *v;
   return -h_->estimate(s);
 }
 
+double Policy::learned_estimate(const uint64_t* x) {
+  // One hash serves both tables (they share the state layout).
+  const uint64_t hx = V_.hash(x);
+  if (const double* v = V_.find_hashed(x, hx)) return -*v;
+  bool added = false;
+  double& h = h_cache_.insert_hashed(x, hx, &added);
+  if (added) h = h_->estimate(x);
+  return h;
+}
+
+namespace {
+
+// One workspace per thread: lookahead searches reuse its buffers. A nested
+// refine on the same thread (not expected) falls back to a private one.
+struct ThreadWorkspace {
+  SearchWorkspace ws;
+  bool busy = false;
+};
+thread_local ThreadWorkspace tls_workspace;
+
+}  // namespace
+
 RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
   RefineStats st;
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
+  h_cache_.clear();        // estimates are only known fixed until the next prepare()
+  std::optional<SearchWorkspace> own;
+  SearchWorkspace* ws = &tls_workspace.ws;
+  if (tls_workspace.busy) ws = &own.emplace();
+  else tls_workspace.busy = true;
+  struct Release {
+    bool on;
+    ~Release() {
+      if (on) tls_workspace.busy = false;
+    }
+  } release{ws == &tls_workspace.ws};
   SearchOptions opts = opts_in;
   opts.extra_goal = [this](const uint64_t* x) { return tree_.contains(x); };
   // Lookahead heuristic: the learned value where known, else H.
@@ -28,10 +65,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
     bool admissible() const override { return p->h_->admissible(); }
     bool consistent() const override { return false; }
     void prepare(const model::Specification&, const pddl::State&) override {}
-    double estimate(const uint64_t* x) override {
-      if (const double* v = p->V_.find(x)) return -*v;
-      return p->h_->estimate(x);
-    }
+    double estimate(const uint64_t* x) override { return p->learned_estimate(x); }
     bool prunes() const override { return p->h_->prunes(); }
     bool keep(pddl::ActionId a) const override { return p->h_->keep(a); }
   } learned(this);
@@ -46,7 +80,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
       V_[child.data()] = 0;
     } else {
       child_state.words.assign(child.begin(), child.end());
-      SearchResult r = astar(*spec_, learned, child_state, opts);
+      const SearchResult& r = astar(*spec_, learned, child_state, opts, *ws);
       ++st.searches;
       st.expanded += r.expanded;
       update(r);

@@ -58,11 +58,15 @@ class Policy {
 
  private:
   void update(const SearchResult& r);
+  double learned_estimate(const uint64_t* s);
 
   std::shared_ptr<const model::Specification> spec_;
   std::shared_ptr<heuristics::Heuristic> h_;
   StateMap<double> V_;
   StateMap<pddl::ActionId> tree_;
+  // H estimates made during the current refine(): its lookahead searches
+  // overlap, and H stays fixed between two prepare() calls.
+  StateMap<double> h_cache_;
 };
 
 }  // namespace clips::search
