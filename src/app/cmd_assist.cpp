@@ -31,7 +31,7 @@ void register_assist(CLI::App& app) {
   cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
       ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
   add_lm_options(cmd, o->lm);
-  add_speaker_rule_option(cmd, o->lm);
+  add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->callback([o, mm] {
@@ -42,6 +42,7 @@ void register_assist(CLI::App& app) {
     eo.seed = o->seed;
     eo.inference_threads = 0;  // one plan: use every core
     eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+    eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
     eo.multimodal = *mm;
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;

@@ -26,7 +26,7 @@ void register_infer(CLI::App& app) {
                   "Which evidence the reported posterior uses: both (CLIPS, default), utterance or action")
       ->check(CLI::IsMember({"both", "utterance", "action"}));
   add_lm_options(cmd, o->lm);
-  add_speaker_rule_option(cmd, o->lm);
+  add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)");
   cmd->add_flag("--json", o->json, "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object");
   cmd->callback([o] {
@@ -38,6 +38,7 @@ void register_infer(CLI::App& app) {
     opts.refine.max_nodes = o->max_nodes;
     opts.threads = 0;  // one plan: use every core
     opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+    opts.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
     const inference::InferenceRun run = inference::run_inference(ds, plan, *lm, opts);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";
     if (o->json) {

@@ -31,7 +31,7 @@ void register_render(CLI::App& app) {
   cmd->add_option("--gif", o->gif, "Write the observed prefix + CLIPS offline Q_MDP assistance as an animated GIF");
   cmd->add_option("--cell", o->cell, "Pixels per grid cell (default 32)")->check(CLI::Range(8, 128));
   add_lm_options(cmd, o->lm);
-  add_speaker_rule_option(cmd, o->lm);
+  add_speaker_model_options(cmd, o->lm);
   cmd->callback([o] {
     if (o->out.empty() && o->gif.empty()) throw InputError("render: give --out F.png and/or --gif F.gif");
     if (o->step >= 0 && o->out.empty()) throw InputError("render: --step applies to --out (one frame)");
@@ -48,6 +48,7 @@ void register_render(CLI::App& app) {
       eo.methods = {"clips"};
       eo.inference_threads = 0;
       eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+      eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
       auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
       if (!outcome.error.empty()) throw InputError(outcome.error);
       const eval::MethodResult* c = outcome.find("clips");
@@ -59,6 +60,7 @@ void register_render(CLI::App& app) {
     } else {
       inference::InferenceOptions io;
       io.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+      io.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
       io.threads = 0;
       auto inf = inference::run_inference(ds, p, *lm, io);
       run.goals = inf.goals;

@@ -13,7 +13,11 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
   cmd->add_option("--lm-model", f.model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
 }
 
-void add_speaker_rule_option(CLI::App* cmd, LmFlags& f) {
+void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
+  cmd->add_option("--utterance-timing", f.utterance_timing,
+                  "State that explains an utterance given after k actions: after (default; s_k, where it was "
+                  "said, as in the paper) or before (s_{k-1}, the reference code's alignment)")
+      ->check(CLI::IsMember({"before", "after"}));
   cmd->add_option("--speaker-rule", f.speaker_rule,
                   "Which of the human's own actions the CLIPS speaker model's commands keep: paper (default; joint "
                   "commands keep them) or code (the reference code drops them all)")

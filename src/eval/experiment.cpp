@@ -112,6 +112,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     inference::InferenceOptions io;
     io.utterance.speaker_rule = opts.speaker_rule;
     io.threads = opts.inference_threads;
+    io.utterance_timing = opts.utterance_timing;
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
     out.goals = inf.goals;
     out.true_goal = inf.true_goal;

@@ -56,6 +56,7 @@ struct ExperimentOptions {
   uint64_t seed = 1;
   // The CLIPS speaker model's command rule (spec 13 item 2).
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
+  inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   // Threads per inference (InferenceOptions::threads): 1 when plans already
   // run in parallel (`clips bench`), 0 (all cores) for a single plan.
   int inference_threads = 1;

@@ -187,6 +187,31 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
   return record(task_->action_name(action), evidence, std::move(utts), seconds_since(t0));
 }
 
+StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::LanguageModel& lm, StepRecord last) {
+  if (utterances.empty()) return last;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (options_.speak_factors) {
+    // The step already counted "no utterance"; it had one after all.
+    const double fix = std::log(options_.p_speak) - std::log1p(-options_.p_speak);
+    for (double& u : utterance_ll_) u += fix;
+  }
+  const bool factors = options_.speak_factors;
+  options_.speak_factors = false;  // corrected above
+  refine_all(state_);
+  std::vector<UtteranceRecord> utts;
+  try {
+    utts = score_utterances(state_, utterances, &lm);
+  } catch (...) {
+    options_.speak_factors = factors;
+    throw;
+  }
+  options_.speak_factors = factors;
+  StepRecord r = record(last.action, last.evidence, std::move(last.utterances), last.seconds);
+  for (auto& u : utts) r.utterances.push_back(std::move(u));
+  r.seconds += seconds_since(t0);
+  return r;
+}
+
 Posterior Belief::posterior(Modality m) const {
   Posterior p;
   const size_t n = hyps_.size();
@@ -254,8 +279,19 @@ InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord&
 
   run.belief = std::make_shared<Belief>(task, dataset.kind(), std::move(goals), std::move(ps.profiles), options);
   Belief& b = *run.belief;
-  run.steps.push_back(b.start(s0, utterances[0], &lm));
-  for (int t = 1; t <= T; ++t) run.steps.push_back(b.observe(sim.actions[t - 1], sim.states[t - 1], utterances[t], &lm));
+  if (options.utterance_timing == UtteranceTiming::Before) {
+    run.steps.push_back(b.start(s0, utterances[0], &lm));
+    for (int t = 1; t <= T; ++t)
+      run.steps.push_back(b.observe(sim.actions[t - 1], sim.states[t - 1], utterances[t], &lm));
+  } else {
+    // Index k is heard in s_k: k = 0 at the start, 0 < k < T in step k+1
+    // (whose refinement is at s_k), k = T after the last step.
+    run.steps.push_back(b.start(s0, utterances[0], &lm));
+    const std::vector<std::string> none;
+    for (int t = 1; t <= T; ++t)
+      run.steps.push_back(b.observe(sim.actions[t - 1], sim.states[t - 1], t >= 2 ? utterances[t - 1] : none, &lm));
+    if (T >= 1 && !utterances[T].empty()) run.steps.back() = b.hear(utterances[T], lm, std::move(run.steps.back()));
+  }
   run.seconds = seconds_since(t0);
   return run;
 }

@@ -7,9 +7,10 @@
 // both agents (turns alternate) and, at each step,
 //   * act:   a_t ~ Boltzmann(Q_h(s_{t-1}, ·) / T), T unknown with a discrete
 //            inverse-gamma prior (temperature.hpp), marginalised exactly;
-//   * speak: with p_speak = 0.05, an utterance u ~ P(u | s_{t-1}, π_h)
-//            (utterance_model.hpp), scored in the state BEFORE a_t
-//            (reference alignment, spec 7.10; index 0 at s_0).
+//   * speak: with p_speak = 0.05, an utterance u ~ P(u | s, π_h)
+//            (utterance_model.hpp), where s is the state the speaker was in
+//            (s_k for an utterance after k actions; the reference code's
+//            s_{k-1} alignment of spec 7.10 is an option; index 0 at s_0).
 // The assistant's own actions are interventions, do(a): they move the state
 // but carry no evidence (likelihood 1, temperatures untouched).
 //
@@ -76,6 +77,11 @@ struct InferenceOptions {
   // change only the log marginal likelihood, never a posterior).
   bool speak_factors = true;
   double p_speak = 0.05;
+  // Which state explains an utterance annotated after k actions (spec 13.3,
+  // VH spec 11.1): After = s_k, the state the speaker was in when speaking,
+  // with the policies refined at s_k (the paper's model; default); Before =
+  // s_{k-1}, the reference code's alignment. docs/decisions.md has the numbers.
+  UtteranceTiming utterance_timing = UtteranceTiming::After;
   // Threads refining the hypotheses' policies in parallel (they are
   // independent, so results do not depend on it). 1: sequential (callers that
   // already run several inferences at once, like `clips bench`); 0: all cores.
@@ -129,6 +135,11 @@ class Belief {
                      lm::LanguageModel* lm = nullptr);
   // Same, at the current state.
   StepRecord observe(pddl::ActionId action) { return observe(action, state_, {}, nullptr); }
+  // Utterances heard in the current state s_t after the last step (the
+  // "after" timing): refine at s_t, score them there. Returns `last` (the
+  // record of the step that led to s_t) with the posteriors updated and the
+  // utterances added; the speak factor of that step becomes log p_speak.
+  StepRecord hear(const std::vector<std::string>& utterances, lm::LanguageModel& lm, StepRecord last);
 
   Posterior posterior(Modality m) const;
 
@@ -175,7 +186,8 @@ class Belief {
 };
 
 // Inference over one dataset plan: INIT at s_0, then one step per observed
-// action; utterances with index k are scored at s_{k-1} (index 0 at s_0).
+// action; utterances with index k are scored at s_k (default) or s_{k-1}
+// (InferenceOptions::utterance_timing); index 0 at s_0.
 struct InferenceRun {
   std::string plan_id;
   std::vector<std::string> goals;     // labels

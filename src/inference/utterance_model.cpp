@@ -32,6 +32,14 @@ SpeakerRule parse_speaker_rule(const std::string& text) {
 
 std::string to_string(SpeakerRule r) { return r == SpeakerRule::Paper ? "paper" : "code"; }
 
+UtteranceTiming parse_utterance_timing(const std::string& text) {
+  if (text == "before") return UtteranceTiming::Before;
+  if (text == "after") return UtteranceTiming::After;
+  throw InputError("unknown utterance timing '" + text + "' (expected before or after)");
+}
+
+std::string to_string(UtteranceTiming t) { return t == UtteranceTiming::Before ? "before" : "after"; }
+
 UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, data::DomainKind kind,
                                const UtteranceModelOptions& options)
     : task_(std::move(task)),

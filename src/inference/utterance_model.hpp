@@ -42,6 +42,12 @@ enum class SpeakerRule { Paper, Code };
 SpeakerRule parse_speaker_rule(const std::string& text);  // "paper" or "code"; throws InputError
 std::string to_string(SpeakerRule r);
 
+// Which state explains an utterance annotated after k actions: s_{k-1}
+// (Before, the reference code) or s_k (After). See InferenceOptions.
+enum class UtteranceTiming { Before, After };
+UtteranceTiming parse_utterance_timing(const std::string& text);  // "before" or "after"; throws InputError
+std::string to_string(UtteranceTiming t);
+
 struct UtteranceModelOptions {
   SpeakerRule speaker_rule = SpeakerRule::Paper;
   int rollout_steps = 100;                 // greedy rollout bound (mDKG)
