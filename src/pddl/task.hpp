@@ -213,6 +213,55 @@ class Task {
   void flatten_preconditions();
   bool test_prim(const CNode& n, const uint64_t* s) const;
 
+  // Successor generation. The actions of each trigger group (and the
+  // untriggered ones) are cut, in ascending order, into chunks of at most 64.
+  // Every atom literal some precondition of a chunk requires is tested once
+  // per state, and clears the chunk's actions that need the other value; only
+  // the survivors test the rest of their precondition (gen_prims_: slot
+  // comparisons, then the non-primitive conjuncts rests_).
+  struct LitFilter {
+    int bit = 0;
+    uint64_t kill_if_set = 0, kill_if_clear = 0;  // chunk-local action masks
+  };
+  struct Chunk {
+    int trigger = -1;                // bit that must be set, -1 for none
+    int first = 0, count = 0;        // actions chunk_actions_[first, first + count)
+    int lit_begin = 0, lit_end = 0;  // filters lit_filters_[lit_begin, lit_end)
+  };
+  std::vector<Chunk> chunks_;
+  std::vector<ActionId> chunk_actions_;
+  std::vector<LitFilter> lit_filters_;
+  std::vector<CNode> gen_prims_;   // per action: [gen_begin_[a], gen_begin_[a+1])
+  std::vector<int> gen_begin_;
+  void build_chunks();
+  bool applicable_rest(ActionId a, const uint64_t* s) const;
+
+  // rests_ recompiled for the generator (gen_rests_[i] is rests_[i]'s root):
+  // primitives inline, and a comparison of a static matrix cell at fluent
+  // (+k) coordinates with a constant (the walls test) as one node; any
+  // other condition defers to eval().
+  struct GNode {
+    enum Op : uint8_t { Prim, Prims, And, Or, Not, Cell, Cond };
+    Op op = Cond;
+    CNode prim{CNode::True};  // Prim
+    int a = 0, b = 0;         // And/Or: kids [a, a+b) of gkids_; Prims: a conjunction of
+                              // gprims_[a, a+b); Not: kid a; Cell: cells_ index; Cond: CondId
+  };
+  struct CellTest {
+    int matrix = 0;
+    int row_slot = -1, row_k = 0;  // row = value(row_slot) + row_k, or row_k when row_slot < 0
+    int col_slot = -1, col_k = 0;
+    CNode::Op cmp = CNode::Eq;     // cell value (-1 off the matrix)  cmp  value
+    int64_t value = 0;
+  };
+  std::vector<GNode> gnodes_;
+  std::vector<int> gkids_;
+  std::vector<CNode> gprims_;
+  std::vector<CellTest> cells_;
+  std::vector<int> gen_rests_;
+  int compile_gen(CondId c);
+  bool eval_gen(int g, const uint64_t* s) const;
+
   mutable std::vector<CNode> cnodes_;
   mutable std::vector<int> ckids_;
   mutable std::vector<NNode> nnodes_;

@@ -9,23 +9,22 @@ using model::kInf;
 Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h)
     : spec_(std::move(spec)),
       h_(std::move(h)),
-      V_(spec_->task().num_words()),
       tree_(spec_->task().num_words()),
-      h_cache_(spec_->task().num_words()) {}
+      table_(spec_->task().num_words()) {}
 
 double Policy::value(const uint64_t* s) const {
-  if (const double* v = V_.find(s)) return *v;
+  if (const double* v = find_value(s)) return *v;
   return -h_->estimate(s);
 }
 
 double Policy::learned_estimate(const uint64_t* x) {
-  // One hash serves both tables (they share the state layout).
-  const uint64_t hx = V_.hash(x);
-  if (const double* v = V_.find_hashed(x, hx)) return -*v;
-  bool added = false;
-  double& h = h_cache_.insert_hashed(x, hx, &added);
-  if (added) h = h_->estimate(x);
-  return h;
+  Entry& e = table_[x];
+  if (e.has_v) return -e.v;
+  if (!e.has_h) {
+    e.h = h_->estimate(x);  // does not touch table_, so `e` stays valid
+    e.has_h = true;
+  }
+  return e.h;
 }
 
 namespace {
@@ -44,7 +43,6 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
   RefineStats st;
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
-  h_cache_.clear();        // estimates are only known fixed until the next prepare()
   std::optional<SearchWorkspace> own;
   SearchWorkspace* ws = &tls_workspace.ws;
   if (tls_workspace.busy) ws = &own.emplace();
@@ -75,9 +73,9 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
   double best = -kInf;
   for (pddl::ActionId a : task.applicable_actions(s)) {
     task.apply(a, s.data(), child.data());
-    if (const double* v = V_.find(child.data()); v && *v == -kInf) continue;
+    if (const double* v = find_value(child.data()); v && *v == -kInf) continue;
     if (spec_->is_goal(child.data())) {
-      V_[child.data()] = 0;
+      set_value(child.data(), 0);
     } else {
       child_state.words.assign(child.begin(), child.end());
       const SearchResult& r = astar(*spec_, learned, child_state, opts, *ws);
@@ -87,25 +85,25 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }
-  V_[s.data()] = best;
+  set_value(s.data(), best);
   return st;
 }
 
 void Policy::update(const SearchResult& r) {
   const StateRegistry& reg = *r.registry;
   if (r.status == SearchStatus::Failure) {
-    for (int id = 0; id < reg.size(); ++id) V_[reg.get(id)] = -kInf;
+    for (int id = 0; id < reg.size(); ++id) set_value(reg.get(id), -kInf);
     return;
   }
   int t = r.terminal;
   double h_t = r.nodes[t].h;
   double f_t = r.nodes[t].g + h_t;
-  V_[reg.get(t)] = -h_t;
+  set_value(reg.get(t), -h_t);
   for (int id = 0; id < reg.size(); ++id) {
     const SearchNode& n = r.nodes[id];
     if (n.open && id != t) continue;  // frontier nodes keep their values
     if (id == t) continue;
-    V_[reg.get(id)] = -(f_t - n.g);
+    set_value(reg.get(id), -(f_t - n.g));
   }
   if (r.status == SearchStatus::Success) {
     // Store the path root..t: each node records the action toward the goal.
@@ -120,7 +118,7 @@ std::vector<QValue> Policy::q_values(const pddl::State& s) const {
   std::vector<uint64_t> child(task.num_words());
   for (pddl::ActionId a : task.applicable_actions(s)) {
     task.apply(a, s.data(), child.data());
-    double v = spec_->is_goal(child.data()) ? (V_.contains(child.data()) ? *V_.find(child.data()) : 0.0)
+    double v = spec_->is_goal(child.data()) ? (has_value(child.data()) ? *find_value(child.data()) : 0.0)
                                             : value(child.data());
     out.push_back({a, -spec_->cost(a) + v});
   }

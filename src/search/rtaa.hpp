@@ -37,7 +37,7 @@ class Policy {
   // V(s): table value, else -H(s).
   double value(const uint64_t* s) const;
   double value(const pddl::State& s) const { return value(s.data()); }
-  bool has_value(const uint64_t* s) const { return V_.contains(s); }
+  bool has_value(const uint64_t* s) const { return find_value(s) != nullptr; }
 
   // One RTAA* policy update at s (spec REFINE). `opts` holds the budgets.
   RefineStats refine(const pddl::State& s, const SearchOptions& opts);
@@ -53,7 +53,7 @@ class Policy {
   // Greedy rollout of best_action for at most `max_steps`, stopping at the goal.
   std::vector<pddl::ActionId> rollout(const pddl::State& s, int max_steps) const;
 
-  size_t table_size() const { return V_.size(); }
+  size_t table_size() const { return num_values_; }
   size_t tree_size() const { return tree_.size(); }
 
  private:
@@ -62,11 +62,29 @@ class Policy {
 
   std::shared_ptr<const model::Specification> spec_;
   std::shared_ptr<heuristics::Heuristic> h_;
-  StateMap<double> V_;
   StateMap<pddl::ActionId> tree_;
-  // H estimates made during the current refine(): its lookahead searches
-  // overlap, and H stays fixed between two prepare() calls.
-  StateMap<double> h_cache_;
+  // One table for the learned values V and cached H estimates, so a lookup
+  // in the lookahead searches probes one hash table, not two. H estimates
+  // are kept across refine() calls: every heuristic here gives the same
+  // estimates for this spec whatever root prepare() was given (the root only
+  // shapes keep()).
+  struct Entry {
+    double v = 0;  // V(s) when has_v
+    double h = 0;  // H(s) when has_h
+    bool has_v = false, has_h = false;
+  };
+  StateMap<Entry> table_;
+  size_t num_values_ = 0;  // entries with has_v
+  const double* find_value(const uint64_t* s) const {
+    const Entry* e = table_.find(s);
+    return e && e->has_v ? &e->v : nullptr;
+  }
+  void set_value(const uint64_t* s, double v) {
+    Entry& e = table_[s];
+    if (!e.has_v) ++num_values_;
+    e.has_v = true;
+    e.v = v;
+  }
 };
 
 }  // namespace clips::search
