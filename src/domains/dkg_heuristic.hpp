@@ -56,6 +56,9 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   std::string name() const override { return "dkg-mst"; }
   bool admissible() const override { return false; }
   bool consistent() const override { return false; }
+  // The root shapes only the pruning sets (keep()); the map analysis is fixed
+  // at the first call.
+  bool estimates_depend_on_root() const override { return false; }
   void prepare(const model::Specification& spec, const pddl::State& root) override;
   double estimate(const uint64_t* state) override;
   using heuristics::Heuristic::estimate;
@@ -122,6 +125,7 @@ class DkgDistanceHeuristic : public heuristics::Heuristic {
   std::string name() const override { return "dkg-distance"; }
   bool admissible() const override { return true; }
   bool consistent() const override { return true; }
+  bool estimates_depend_on_root() const override { return false; }
   void prepare(const model::Specification& spec, const pddl::State& root) override;
   double estimate(const uint64_t* state) override;
   using heuristics::Heuristic::estimate;

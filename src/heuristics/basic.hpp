@@ -19,6 +19,7 @@ class BlindHeuristic : public Heuristic {
   bool consistent() const override { return true; }
   void prepare(const model::Specification&, const pddl::State&) override {}
   double estimate(const uint64_t*) override { return 0; }
+  bool estimates_depend_on_root() const override { return false; }
 };
 
 class HMaxHeuristic : public Heuristic {
@@ -26,6 +27,7 @@ class HMaxHeuristic : public Heuristic {
   std::string name() const override { return "hmax"; }
   bool admissible() const override { return true; }
   bool consistent() const override { return true; }
+  bool estimates_depend_on_root() const override { return false; }  // the goal only
   void prepare(const model::Specification& spec, const pddl::State& root) override;
   double estimate(const uint64_t* s) override;
 

@@ -24,6 +24,10 @@ class Heuristic {
   // Estimated cost-to-go; model::kInf for a recognised dead end.
   virtual double estimate(const uint64_t* state) = 0;
   double estimate(const pddl::State& s) { return estimate(s.data()); }
+  // Whether estimate() can change when prepare() is called again with the
+  // same specification and another root. RTAA* policies cache estimates
+  // across refinements only when it cannot; the default is the safe answer.
+  virtual bool estimates_depend_on_root() const { return true; }
   // Action pruning inside search (default: keep everything).
   virtual bool prunes() const { return false; }
   virtual bool keep(pddl::ActionId) const { return true; }

@@ -43,6 +43,8 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
   RefineStats st;
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
+  if (h_->estimates_depend_on_root())
+    for (Entry& e : table_.values()) e.has_h = false;  // cached estimates may be stale now
   std::optional<SearchWorkspace> own;
   SearchWorkspace* ws = &tls_workspace.ws;
   if (tls_workspace.busy) ws = &own.emplace();

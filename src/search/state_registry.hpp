@@ -116,6 +116,8 @@ class StateMap {
     return id < 0 ? nullptr : &vals_[id];
   }
   bool contains(const uint64_t* s) const { return reg_.find(s) >= 0; }
+  // Every stored value, in insertion order (states themselves are not exposed).
+  std::vector<T>& values() { return vals_; }
   T& operator[](const uint64_t* s) { return insert_hashed(s, hash(s)); }
   // operator[] with a precomputed hash; *added tells whether `s` was new.
   T& insert_hashed(const uint64_t* s, uint64_t h, bool* added = nullptr) {

@@ -207,3 +207,46 @@ TEST(Rtaa, PathReuseMakesLaterRefinementsCheaper) {
   auto sim = pddl::simulate(spec->task(), next, plan);
   EXPECT_TRUE(spec->is_goal(sim.states.back()));
 }
+
+namespace {
+
+// h_max that counts its estimate() calls and declares whether its estimates
+// may depend on the root of prepare().
+struct CountingHMax : heuristics::HMaxHeuristic {
+  bool root_dependent = false;
+  size_t calls = 0;
+  double estimate(const uint64_t* s) override {
+    ++calls;
+    return heuristics::HMaxHeuristic::estimate(s);
+  }
+  using heuristics::HMaxHeuristic::estimate;
+  bool estimates_depend_on_root() const override { return root_dependent; }
+};
+
+}  // namespace
+
+TEST(Rtaa, CachedEstimatesAreReusedOnlyWhenTheHeuristicAllowsIt) {
+  // Two refinements at the same state: the second may reuse the first's
+  // estimates of frontier states unless the heuristic says estimates depend
+  // on the root; either way the learned values are the same (h_max does not
+  // depend on it).
+  auto ds = data::Dataset::load(paths::examples_dir() + "/doors-keys-gems");
+  auto spec = spec_for(ds, "e2", 1, 1);
+  const pddl::State s0 = spec->task().initial_state();
+  size_t second[2];
+  double values[2];
+  for (int dep = 0; dep < 2; ++dep) {
+    auto h = std::make_shared<CountingHMax>();
+    h->root_dependent = dep == 1;
+    search::Policy pi(spec, h);
+    search::SearchOptions o;
+    o.max_nodes = 64;  // small searches leave frontier states behind
+    pi.refine(s0, o);
+    const size_t first = h->calls;
+    pi.refine(s0, o);
+    second[dep] = h->calls - first;
+    values[dep] = pi.value(s0);
+  }
+  EXPECT_LT(second[0], second[1]);
+  EXPECT_EQ(values[0], values[1]);
+}
