@@ -56,7 +56,12 @@ BenchReport run_bench(const BenchOptions& opts) {
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);
   rep.plans.resize(todo.size());
   int jobs = opts.jobs > 0 ? opts.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  jobs = std::min<int>(jobs, static_cast<int>(todo.size()));
+  jobs = std::max(1, std::min<int>(jobs, static_cast<int>(todo.size())));
+  // Cores the plan-level jobs leave idle refine each plan's hypotheses in
+  // parallel instead (results do not depend on it).
+  ExperimentOptions experiment = opts.experiment;
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (experiment.inference_threads == 1 && cores / jobs > 1) experiment.inference_threads = cores / jobs;
   std::atomic<size_t> next{0};
   std::atomic<int> done{0};
   std::mutex mu;
@@ -68,7 +73,7 @@ BenchReport run_bench(const BenchOptions& opts) {
       size_t i = next++;
       if (i >= todo.size()) return;
       const auto& p = ds.plan(todo[i]->id);
-      rep.plans[i] = evaluate_plan(ds, p, *lm, opts.experiment);
+      rep.plans[i] = evaluate_plan(ds, p, *lm, experiment);
       int d = ++done;
       if (opts.progress) {
         std::lock_guard<std::mutex> lock(mu);
