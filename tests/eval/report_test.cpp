@@ -43,6 +43,9 @@ TEST_F(BenchReportTest, SummaryJson) {
   for (const char* k : {"domain", "dataset", "plans", "failed_plans", "lm", "wall_seconds", "max_rss_mb", "methods"})
     EXPECT_TRUE(j.contains(k)) << k;
   EXPECT_EQ(j["domain"], "doors-keys-gems");
+  // The speaker-model choices that produced the numbers (defaults: the paper's).
+  EXPECT_EQ(j.value("speaker_rule", ""), "paper");
+  EXPECT_EQ(j.value("utterance_timing", ""), "after");
   EXPECT_EQ(j["plans"], kPlans.size());
   EXPECT_EQ(j["failed_plans"], 0);
   EXPECT_GT(j["wall_seconds"].get<double>(), 0);
