@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "model/spec.hpp"
 
@@ -10,6 +12,13 @@ namespace clips::assist {
 using model::kInf;
 using pddl::ActionId;
 using pddl::State;
+
+namespace {
+bool debug_qmdp() {
+  static const bool on = std::getenv("CLIPS_DEBUG_QMDP") != nullptr;
+  return on;
+}
+}  // namespace
 
 double plan_cost(const model::Specification& spec, const std::vector<ActionId>& plan) {
   double c = 0;
@@ -109,6 +118,16 @@ struct Episode {
     size_t best = 0;
     for (size_t i = 1; i < acts.size(); ++i)
       if (qa[i] > qa[best]) best = i;
+    if (debug_qmdp()) {
+      // CLIPS_DEBUG_QMDP=1: each contested decision, per live hypothesis.
+      std::fprintf(stderr, "qmdp t=%d choose %s\n", t, task.action_name(acts[best]).c_str());
+      for (size_t k = 0; k < live.size(); ++k) {
+        std::fprintf(stderr, "  w=%.3f %s:", live[k]->weight, live[k]->policy->spec().goal_text().c_str());
+        for (const auto& q : qvals[k]) std::fprintf(stderr, " %s=%.2f", task.action_name(q.action).c_str(), q.q);
+        std::fprintf(stderr, "\n");
+      }
+      for (size_t i = 0; i < acts.size(); ++i) std::fprintf(stderr, "  QA %s=%.3f\n", task.action_name(acts[i]).c_str(), qa[i]);
+    }
     return acts[best];
   }
 
