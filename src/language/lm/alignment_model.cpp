@@ -349,7 +349,9 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
   }
   bool open = false;
   int k = 0;
-  int anchor = -1;  // the noun the open span attaches to
+  int anchor = -1;   // the noun the open span attaches to
+  int purpose = -1;  // after "a key to open": that noun, for the verb's object
+  int pk = 0;
   for (size_t i = 0; i < n; ++i) {
     if (open) {
       u.in_modifier[i] = 1;
@@ -357,13 +359,25 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
     }
     if (is_clause_end(u.words[i])) {
       open = false;
+      purpose = -1;
       continue;
+    }
+    if (purpose >= 0 && !open) {
+      // The object of a purpose infinitive ("a key to open [this yellow
+      // door]") is read as usual, but its colours may describe the key too.
+      if ((f[i] & kWordModifier) != 0) u.noun_heads[i][1] = purpose;
+      const bool np_word = (f[i] & kWordFunction) != 0 || (f[i] & kWordModifier) != 0;
+      if (++pk > kMaxModifierSpan || !np_word) purpose = -1;
     }
     if (open) {
       ++k;
       const uint8_t g = f[i];
-      if ((g & kWordPronoun) != 0 || (k == 1 && (g & kWordVerb) != 0)) {
-        open = false;  // a pronoun, or an infinitive's verb ("a key to open ...")
+      if ((g & kWordPronoun) == 0 && k == 1 && (g & kWordVerb) != 0) {
+        open = false;  // an infinitive's verb ("a key to open ..."): its object follows
+        purpose = anchor;
+        pk = 0;
+      } else if ((g & kWordPronoun) != 0 || (k == 1 && (g & kWordVerb) != 0)) {
+        open = false;  // a pronoun
       } else if ((g & kWordFunction) != 0 || (g & kWordModifier) != 0 ||
                  ((g & kWordVerb) != 0 && (g & kWordNoun) == 0)) {
         // Determiners, adjectives, colours and participles ("the locked door").

@@ -68,8 +68,9 @@
 //     a noun that can name that object's type: in "can you open the red door"
 //     the "red" is not a copy of a red gem's colour. The noun a colour describes
 //     is read from the utterance (encode(): the head of its noun phrase, and in a
-//     modifier span also the noun the span attaches to, so "a key for this
-//     yellow door" lets a yellow key's colour through). A head noun names a type
+//     modifier span or the object of a purpose infinitive also the noun they
+//     attach to, so "a key for this yellow door" and "a key to open this yellow
+//     door" let a yellow key's colour through). A head noun names a type
 //     when some trained noun table gives it real mass; an attribute unit may copy
 //     the colour at full weight only if its own type's noun tables give the head
 //     at least kBindRatio of the best type's mass, else at kMisboundCopy of it.
@@ -120,8 +121,9 @@ struct EncodedUtterance {
   std::vector<char> in_modifier;
   // noun_heads[i]: for an adjective or colour token, the noun tokens it may
   // describe (-1: none): [0] the head noun of its own noun phrase ("red" in
-  // "the red door" -> "door"); [1] inside a modifier span, the noun the span
-  // attaches to ("yellow" in "a key for this yellow door" -> "key"). Used to
+  // "the red door" -> "door"); [1] inside a modifier span or the object of a
+  // purpose infinitive, the noun they attach to ("yellow" in "a key for this
+  // yellow door" or "a key to open this yellow door" -> "key"). Used to
   // bind a copied colour to an object of a matching type (see evaluate()).
   std::vector<std::array<int, 2>> noun_heads;
 };
