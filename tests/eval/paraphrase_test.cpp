@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <regex>
 
 #include "eval/experiment.hpp"
@@ -93,4 +95,79 @@ TEST(Paraphrases, InferenceKeepsThePapersOrdering) {
   EXPECT_GT(mean(precision["clips"]), mean(precision["action_only"]));
   EXPECT_GE(mean(p_true["clips"]), 0.6);
   EXPECT_GE(mean(precision["clips"]), 0.8);
+}
+
+namespace {
+
+// tests/eval/data/free-paraphrases.tsv: plan id -> utterance, for one set.
+std::map<std::string, std::string> free_paraphrases(const std::string& set) {
+  std::ifstream in(std::string(CLIPS_SOURCE_DIR) + "/tests/eval/data/free-paraphrases.tsv");
+  std::map<std::string, std::string> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    auto a = line.find('\t'), b = line.find('\t', a + 1);
+    if (a == std::string::npos || b == std::string::npos) continue;
+    if (line.substr(a + 1, b - a - 1) == set) out[line.substr(0, a)] = line.substr(b + 1);
+  }
+  return out;
+}
+
+// A copy of the dataset whose observed utterances (and pragmatic utterance
+// files) are replaced by `utterances`.
+std::string reworded_copy(const std::map<std::string, std::string>& utterances, const std::string& tag) {
+  fs::path dst = fs::temp_directory_path() / ("clips-reworded-" + tag + "-" + std::to_string(::getpid()));
+  fs::remove_all(dst);
+  fs::copy(paths::dkg_dataset(), dst, fs::copy_options::recursive);
+  for (const auto& [id, u] : utterances) {
+    fs::path plan = dst / "plans" / "observed" / (id + ".pddl");
+    std::ifstream in(plan);
+    std::string line, out;
+    while (std::getline(in, line)) out += (!line.empty() && line[0] == ';' ? "; " + u : line) + "\n";
+    in.close();
+    std::ofstream(plan) << out;
+    std::ofstream(dst / "utterances" / "pragmatic" / (id + ".txt")) << u << "\n";
+  }
+  fs::remove(dst / "stimuli.json");
+  return dst.string();
+}
+
+}  // namespace
+
+// Freer rewordings (two sets written for this test: word order, ellipsis,
+// statements instead of requests, "Red key please!") keep CLIPS ahead and its
+// assistance precise.
+TEST(Paraphrases, FreeRewordingsKeepClipsAheadAndPrecise) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not present";
+  auto lm = language::make_language_model("embedded", {});
+  eval::ExperimentOptions o;
+  o.methods = {"clips", "lang_only", "action_only"};
+  for (const char* set : {"A", "B"}) {
+    auto utterances = free_paraphrases(set);
+    ASSERT_GE(utterances.size(), 20u) << set;
+    std::string dir = reworded_copy(utterances, set);
+    auto ds = data::Dataset::load(dir);
+    std::map<std::string, std::vector<double>> p_true, precision, recall;
+    for (auto& p : ds.plans()) {
+      if (!p.evaluated || !utterances.contains(p.id)) continue;
+      auto out = eval::evaluate_plan(ds, p, *lm, o);
+      ASSERT_EQ(out.error, "") << p.id;
+      for (auto& m : out.methods) {
+        p_true[m.method].push_back(*m.p_true_goal);
+        precision[m.method].push_back(m.precision);
+        recall[m.method].push_back(m.recall);
+      }
+    }
+    fs::remove_all(dir);
+    auto mean = [](const std::vector<double>& v) { return eval::mean_se(v).mean; };
+    std::cout << "free rewordings " << set << " (" << p_true["clips"].size() << " plans): P(g_true) clips "
+              << mean(p_true["clips"]) << ", lang_only " << mean(p_true["lang_only"]) << ", action_only "
+              << mean(p_true["action_only"]) << "; clips precision " << mean(precision["clips"]) << ", recall "
+              << mean(recall["clips"]) << "\n";
+    EXPECT_GT(mean(p_true["clips"]), mean(p_true["lang_only"])) << set;
+    EXPECT_GT(mean(p_true["lang_only"]), mean(p_true["action_only"])) << set;
+    EXPECT_GE(mean(p_true["clips"]), 0.7) << set;
+    EXPECT_GE(mean(precision["clips"]), 0.9) << set;
+    EXPECT_GE(mean(recall["clips"]), 0.9) << set;
+  }
 }
