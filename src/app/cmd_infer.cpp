@@ -1,6 +1,8 @@
 // `clips infer`: goal inference over one dataset plan (clips-spec.md 8).
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
@@ -11,12 +13,86 @@
 
 namespace clips::app {
 
+namespace {
+
+std::string hypothesis_label(const inference::InferenceRun& run, size_t h) {
+  const auto& hy = run.belief->hypotheses().at(h);
+  return run.goals.at(hy.goal) + "/" + run.profiles.at(hy.profile);
+}
+
+// Commands of one hypothesis, most probable first, at most `top`.
+std::vector<const inference::CommandScore*> top_commands(const inference::HypothesisUtterance& hu, int top) {
+  std::vector<const inference::CommandScore*> cs;
+  for (const auto& c : hu.commands) cs.push_back(&c);
+  std::stable_sort(cs.begin(), cs.end(), [](auto* a, auto* b) { return a->posterior > b->posterior; });
+  if (cs.size() > static_cast<size_t>(top)) cs.resize(static_cast<size_t>(top));
+  return cs;
+}
+
+std::vector<std::string> rollout_of(const inference::InferenceRun& run, size_t h) {
+  const inference::Belief& b = *run.belief;
+  std::vector<std::string> out;
+  for (pddl::ActionId a : b.utterance_model().rollout(b.policies().at(h), b.state()))
+    out.push_back(b.task().action_name(a));
+  return out;
+}
+
+nlohmann::json explain_json(const inference::InferenceRun& run, const inference::StepRecord& st, int top) {
+  nlohmann::json us = nlohmann::json::array();
+  for (const auto& u : st.utterances) {
+    nlohmann::json hs = nlohmann::json::array();
+    for (size_t h = 0; h < u.hypotheses.size(); ++h) {
+      nlohmann::json cs = nlohmann::json::array();
+      for (const auto* c : top_commands(u.hypotheses[h], top))
+        cs.push_back({{"command", c->command}, {"log_lm", c->log_lm}, {"posterior", c->posterior}});
+      hs.push_back({{"hypothesis", hypothesis_label(run, h)},
+                    {"log_likelihood", u.hypotheses[h].log_likelihood},
+                    {"commands", std::move(cs)},
+                    {"num_commands", u.hypotheses[h].commands.size()}});
+    }
+    us.push_back({{"text", u.text}, {"hypotheses", std::move(hs)}});
+  }
+  return us;
+}
+
+nlohmann::json rollouts_json(const inference::InferenceRun& run) {
+  nlohmann::json out = nlohmann::json::object();
+  for (size_t h = 0; h < run.belief->hypotheses().size(); ++h) out[hypothesis_label(run, h)] = rollout_of(run, h);
+  return out;
+}
+
+void print_explanation(const inference::InferenceRun& run, int top) {
+  for (const auto& st : run.steps)
+    for (const auto& u : st.utterances) {
+      fmt::print("\nutterance \"{}\" (step {}): log-likelihood per hypothesis, then its most probable commands\n",
+                 u.text, st.t);
+      for (size_t h = 0; h < u.hypotheses.size(); ++h) {
+        const auto& hu = u.hypotheses[h];
+        fmt::print("  {:<14} {:>9.3f}  ({} command{})\n", hypothesis_label(run, h), hu.log_likelihood,
+                   hu.commands.size(), hu.commands.size() == 1 ? "" : "s");
+        if (hu.commands.empty()) fmt::print("      (no command: scored with the empty prompt)\n");
+        for (const auto* c : top_commands(hu, top))
+          fmt::print("      {:.3f}  {}\n", c->posterior, c->command);
+      }
+    }
+  fmt::print("\nrolled-out joint plans after the last step:\n");
+  for (size_t h = 0; h < run.belief->hypotheses().size(); ++h) {
+    auto plan = rollout_of(run, h);
+    std::string text;
+    for (const auto& a : plan) text += (text.empty() ? "" : " ") + a;
+    fmt::print("  {:<14} {}\n", hypothesis_label(run, h), text.empty() ? "(none)" : text);
+  }
+}
+
+}  // namespace
+
 void register_infer(CLI::App& app) {
   auto* cmd = app.add_subcommand("infer", "Infer the human's goal from a plan's actions and instruction (CLIPS)");
   struct Opts {
     std::string dataset, plan, modalities = "both";
     LmFlags lm;
-    bool json = false;
+    bool json = false, explain = false;
+    int top = 3;
     size_t max_nodes = size_t{1} << 18;
   };
   auto o = std::make_shared<Opts>();
@@ -28,6 +104,11 @@ void register_infer(CLI::App& app) {
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)");
+  cmd->add_flag("--explain", o->explain,
+                "Also show, per utterance and hypothesis (goal x cost profile), its likelihood and most probable "
+                "commands, and each hypothesis' rolled-out joint plan at the end");
+  cmd->add_option("--top", o->top, "With --explain: commands shown per hypothesis (default 3)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", o->json, "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object");
   cmd->callback([o] {
     auto ds = data::Dataset::load(o->dataset);
@@ -48,7 +129,12 @@ void register_infer(CLI::App& app) {
       j["goals"] = run.goals;
       j["true_goal"] = true_goal;
       j["steps"] = nlohmann::json::array();
-      for (const auto& st : run.steps) j["steps"].push_back({{"t", st.t}, {"posterior", st[modality].goals}});
+      for (const auto& st : run.steps) {
+        nlohmann::json step = {{"t", st.t}, {"posterior", st[modality].goals}};
+        if (o->explain && !st.utterances.empty()) step["utterances"] = explain_json(run, st, o->top);
+        j["steps"].push_back(std::move(step));
+      }
+      if (o->explain) j["rollouts"] = rollouts_json(run);
       j["seconds"] = run.seconds;
       fmt::print("{}\n", j.dump());
       return;
@@ -69,6 +155,7 @@ void register_infer(CLI::App& app) {
     fmt::print("; cost profiles:");
     for (size_t c = 0; c < run.profiles.size(); ++c) fmt::print(" {} {:.4f}", run.profiles[c], fin.profiles[c]);
     fmt::print("; log marginal likelihood {:.4f}; {:.3f} s ({})\n", fin.log_marginal, run.seconds, lm->name());
+    if (o->explain) print_explanation(run, o->top);
   });
 }
 
