@@ -133,9 +133,9 @@ void Belief::refine_all(const pddl::State& s) {
 }
 
 std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
-                                                      lm::LanguageModel* lm) {
+                                                      lm::LanguageModel* lm, bool speak_factor) {
   std::vector<UtteranceRecord> out;
-  if (options_.speak_factors) {
+  if (options_.speak_factors && speak_factor) {
     // Goal-independent: they move only the log marginal likelihood.
     const double f = utterances.empty() ? std::log1p(-options_.p_speak) : std::log(options_.p_speak);
     for (double& u : utterance_ll_) u += f;
@@ -190,22 +190,13 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
 StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::LanguageModel& lm, StepRecord last) {
   if (utterances.empty()) return last;
   const auto t0 = std::chrono::steady_clock::now();
+  refine_all(state_);
+  auto utts = score_utterances(state_, utterances, &lm, /*speak_factor=*/false);
   if (options_.speak_factors) {
     // The step already counted "no utterance"; it had one after all.
     const double fix = std::log(options_.p_speak) - std::log1p(-options_.p_speak);
     for (double& u : utterance_ll_) u += fix;
   }
-  const bool factors = options_.speak_factors;
-  options_.speak_factors = false;  // corrected above
-  refine_all(state_);
-  std::vector<UtteranceRecord> utts;
-  try {
-    utts = score_utterances(state_, utterances, &lm);
-  } catch (...) {
-    options_.speak_factors = factors;
-    throw;
-  }
-  options_.speak_factors = factors;
   StepRecord r = record(last.action, last.evidence, std::move(last.utterances), last.seconds);
   for (auto& u : utts) r.utterances.push_back(std::move(u));
   r.seconds += seconds_since(t0);

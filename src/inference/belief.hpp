@@ -162,8 +162,10 @@ class Belief {
 
  private:
   void refine_all(const pddl::State& s);
+  // Scores `utterances` in s and adds them to the utterance part; with
+  // speak_factor, also this step's goal-independent speak/no-speak factor.
   std::vector<UtteranceRecord> score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
-                                                lm::LanguageModel* lm);
+                                                lm::LanguageModel* lm, bool speak_factor = true);
   StepRecord record(std::string action, bool evidence, std::vector<UtteranceRecord> utts, double seconds) const;
   bool is_speaker_action(pddl::ActionId a) const;
 
