@@ -662,6 +662,22 @@ void Task::flatten_preconditions() {
   build_chunks();
 }
 
+namespace {
+
+// x op y for the comparison codes Eq..Ge = 0..5 (CNode::c & 7, CNode::Op - Eq).
+[[gnu::always_inline]] inline bool compare(int64_t x, int op, int64_t y) {
+  switch (op) {
+    case 0: return x == y;
+    case 1: return x != y;
+    case 2: return x < y;
+    case 3: return x <= y;
+    case 4: return x > y;
+    default: return x >= y;
+  }
+}
+
+}  // namespace
+
 void Task::build_chunks() {
   chunks_.clear();
   chunk_actions_.clear();
@@ -809,14 +825,7 @@ bool Task::eval_gen(int gi, const uint64_t* s) const {
       int64_t r = t.row_slot < 0 ? t.row_k : int64_t{get_num(s, atom_words_, t.row_slot)} + t.row_k;
       int64_t c = t.col_slot < 0 ? t.col_k : int64_t{get_num(s, atom_words_, t.col_slot)} + t.col_k;
       int64_t x = (r < 1 || r > m.rows || c < 1 || c > m.cols) ? -1 : m.get(static_cast<int>(r - 1), static_cast<int>(c - 1));
-      switch (t.cmp) {
-        case CNode::Eq: return x == t.value;
-        case CNode::Ne: return x != t.value;
-        case CNode::Lt: return x < t.value;
-        case CNode::Le: return x <= t.value;
-        case CNode::Gt: return x > t.value;
-        default: return x >= t.value;
-      }
+      return compare(x, t.cmp - CNode::Eq, t.value);
     }
     case GNode::Cond: return eval(g.a, s);
   }
@@ -832,14 +841,7 @@ bool Task::eval_gen(int gi, const uint64_t* s) const {
     default: {
       const int x = get_num(s, atom_words_, n.a);
       const int y = n.op == CNode::SlotConst ? n.b : get_num(s, atom_words_, n.b) + (n.c >> 3);
-      switch (n.c & 7) {
-        case 0: return x == y;
-        case 1: return x != y;
-        case 2: return x < y;
-        case 3: return x <= y;
-        case 4: return x > y;
-        default: return x >= y;
-      }
+      return compare(x, n.c & 7, y);
     }
   }
 }

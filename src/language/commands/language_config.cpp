@@ -176,17 +176,15 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   if (doc.contains("max_qualifier_values_per_action_type"))
     c.max_qualifier_values_per_action_type = r.positive_int(
         doc["max_qualifier_values_per_action_type"], "max_qualifier_values_per_action_type", 0);
-  if (doc.contains("speaker_actions"))
-    c.speaker_actions = r.choice<SpeakerActionRule>(
-        doc["speaker_actions"], "speaker_actions",
+  auto speaker_rule = [&](const char* key) {
+    return r.choice<SpeakerActionRule>(
+        doc[key], key,
         {{"exclude-all", SpeakerActionRule::ExcludeAll},
          {"exclude-speaker-only-commands", SpeakerActionRule::ExcludeSpeakerOnlyCommands}});
+  };
+  if (doc.contains("speaker_actions")) c.speaker_actions = speaker_rule("speaker_actions");
   if (doc.contains("exclude_chains")) c.exclude_chains = r.boolean(doc["exclude_chains"], "exclude_chains");
-  if (doc.contains("paper_speaker_actions"))
-    c.paper_speaker_actions = r.choice<SpeakerActionRule>(
-        doc["paper_speaker_actions"], "paper_speaker_actions",
-        {{"exclude-all", SpeakerActionRule::ExcludeAll},
-         {"exclude-speaker-only-commands", SpeakerActionRule::ExcludeSpeakerOnlyCommands}});
+  if (doc.contains("paper_speaker_actions")) c.paper_speaker_actions = speaker_rule("paper_speaker_actions");
   if (doc.contains("paper_exclude_chains"))
     c.paper_exclude_chains = r.boolean(doc["paper_exclude_chains"], "paper_exclude_chains");
   if (doc.contains("variable_naming"))
