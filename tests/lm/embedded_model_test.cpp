@@ -192,6 +192,26 @@ TEST(EmbeddedModel, ColoursBindToNounsOfTheirObjectsType) {
   EXPECT_GT(score(yellow_key, x), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), x));
 }
 
+TEST(EmbeddedModel, MiscolouringTheCommandsObjectCostsMoreThanSilence) {
+  // A speaker who means the blue door does not call it red: "red door" under
+  // a blue-door command must cost more than under a command silent on colour.
+  const std::string red_door = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 red)");
+  const std::string blue_door = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 blue)");
+  const std::string any_door = pragmatic_prompt("(unlock you key1 door1)");
+  const char* u = "Can you unlock the red door?";
+  EXPECT_GT(score(red_door, u), score(any_door, u));
+  EXPECT_LT(score(blue_door, u), score(any_door, u) - 1.0);
+  // Only objects in the clause's own role count: the speaker's "red key" says
+  // nothing about the colour of the key the listener is asked to get ...
+  const std::string yellow_key = pragmatic_prompt("(pickup you key1) where (iscolor key1 yellow)");
+  const std::string red_key = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
+  const std::string any_key = pragmatic_prompt("(pickup you key1)");
+  const char* j = "I'm going for the red key. Can you get the yellow key?";
+  EXPECT_GT(score(yellow_key, j), score(any_key, j) + 1.0);
+  // ... while "the yellow key" in the request does contradict a red one.
+  EXPECT_LT(score(red_key, j), score(any_key, j));
+}
+
 TEST(EmbeddedModel, UnseenItemTypesUseWordNet) {
   // "mug" never occurs in the corpus; WordNet links "cup" and "mugs" to it.
   const std::string mug = vh_prompt("(grab you mug1)");

@@ -73,6 +73,8 @@ constexpr double kTypedNoun = 1e-3;    // a head noun names a type if some noun 
 constexpr double kBindRatio = 0.1;     // the owner's type must give it this share of the best type's mass
 constexpr double kMisboundCopy = 0.02; // copy weight left to a colour bound to another type's noun
 constexpr int kMaxHeadDistance = 3;    // the head noun follows within this many tokens
+// Contradicted colours (header, item 7).
+constexpr double kContradictedColour = 0.02;  // factor on a token that miscolours the command's object
 
 uint8_t closed_class_flags(std::string_view w) {
   static const std::set<std::string_view> determiners = {
@@ -442,6 +444,10 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
     if (!g.type.empty()) bg.fields.push_back(field_of(noun_key(g), kWeightNoun / z));
     if (g.count >= 2) bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
     bg.nonverb_weight = 1.0 - kWeightVerb / z;
+    if (!g.type.empty()) {
+      bg.type_nouns[0] = find_or_make_table("N:" + g.type + "/sg");
+      bg.type_nouns[1] = find_or_make_table("N:" + g.type + "/pl");
+    }
     const int parent = static_cast<int>(b->groups.size());
     b->groups.push_back(std::move(bg));
     for (const std::string& a : g.attributes) {
@@ -521,6 +527,55 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     }
     return typed ? kMisboundCopy : 1.0;
   };
+
+  // Contradicted colours (header, item 7): contra[2 * i + t] is the factor on
+  // token i in a clause of type t (0: request, groups of "you"; 1: statement,
+  // groups of "me").
+  std::vector<double> contra(2 * n, 1.0);
+  if (have_heads) {
+    for (size_t i = 0; i < n; ++i) {
+      const int id = u.ids[i];
+      if (id < 0 || static_cast<size_t>(id) >= attribute_word_.size() || !attribute_word_[static_cast<size_t>(id)])
+        continue;
+      for (int t = 0; t < 2; ++t) {
+        bool typed = false, contradicted = true;
+        for (int j : u.noun_heads[i]) {
+          if (j < 0) continue;
+          const int hid = u.ids[static_cast<size_t>(j)];
+          const std::string& hw = u.words[static_cast<size_t>(j)];
+          double best = 0;
+          for (int tb : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(tb)]->at(hid, hw));
+          if (best < kTypedNoun) {
+            contradicted = false;  // "one", "thing": may be anything of any colour
+            break;
+          }
+          typed = true;
+          // The command's objects this head can name, in this clause's role.
+          bool named = false, consistent = false;
+          for (size_t g = 0; g < G; ++g) {
+            const Bound::Group& grp = c.groups[g];
+            if (grp.kind != 0 || grp.speaker != (t == 1) || grp.type_nouns[0] == nullptr) continue;
+            const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
+            if (own < kBindRatio * best) continue;
+            named = true;
+            bool coloured = false;
+            for (size_t k = 0; k < G; ++k) {
+              const Bound::Group& unit = c.groups[k];
+              if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
+              coloured = true;
+              for (const Bound::Copy& cp : unit.copies) consistent = consistent || cp.id == id;
+            }
+            consistent = consistent || !coloured;  // a colourless object may be any colour
+          }
+          if (!named || consistent) {
+            contradicted = false;
+            break;
+          }
+        }
+        if (typed && contradicted) contra[2 * i + static_cast<size_t>(t)] = kContradictedColour;
+      }
+    }
+  }
 
   // Per-token source probabilities; p_group[g * n + i] is unit g's own emission
   // (its fields' weights sum to 1 for an action group; for an optional unit
@@ -635,8 +690,9 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       for (int t = 0; t < 2; ++t) {
         const double m = mx[2 * i + static_cast<size_t>(t)];
         for (uint32_t A = 0; A <= full; ++A) {
-          double v = a[t][A] * m;
-          for (uint32_t S = A; S != 0; S = (S - 1) & A) v += a[t][A ^ S] * e[S];
+          double anchored = 0;
+          for (uint32_t S = A; S != 0; S = (S - 1) & A) anchored += a[t][A ^ S] * e[S];
+          const double v = a[t][A] * m + anchored * contra[2 * i + static_cast<size_t>(t)];
           b[t][A] = v;
           zsum += v;
         }
@@ -705,8 +761,8 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           n_you > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_you / n_you : p_gen[i];
       const double content_me =
           n_me > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_me / n_me : p_gen[i];
-      mix[2 * i] = kPiBackground * p_bg[i] + kPiAgent * p_you[i] + kPiContent * content_you;
-      mix[2 * i + 1] = kPiBackground * p_bg[i] + kPiAgent * p_me[i] + kPiContent * content_me;
+      mix[2 * i] = contra[2 * i] * (kPiBackground * p_bg[i] + kPiAgent * p_you[i] + kPiContent * content_you);
+      mix[2 * i + 1] = contra[2 * i + 1] * (kPiBackground * p_bg[i] + kPiAgent * p_me[i] + kPiContent * content_me);
     }
     size_t start = 0;
     for (size_t k = 0; k < clauses; ++k) {
@@ -1066,6 +1122,8 @@ struct Trainer {
     std::set<std::string> modifier_words(attributes.begin(), attributes.end());
     for (const auto& [w, p] : residual_base) modifier_words.insert(w);
     M.word_flags_.assign(V2, 0);
+    M.attribute_word_.assign(V2, 0);
+    for (const std::string& a : attributes) M.attribute_word_[static_cast<size_t>(M.word_ids_.at(a))] = 1;
     for (size_t i = 0; i < V2; ++i) {
       const std::string& w = M.words_[i];
       uint8_t f = closed_class_flags(w);

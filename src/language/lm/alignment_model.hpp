@@ -75,13 +75,22 @@
 //     the colour at full weight only if its own type's noun tables give the head
 //     at least kBindRatio of the best type's mass, else at kMisboundCopy of it.
 //     Untyped heads ("one", "thing") and colours with no head are unconstrained.
+//  7. Contradicted colours. A speaker who means the command's blue door does
+//     not call it red, whatever source the word would come from. A colour token
+//     whose typed head nouns (item 6) can each name some object of the
+//     command, all of whose colours are known and differ from the token, is
+//     multiplied by kContradictedColour in every source. Roles count: in a
+//     request clause only the listener's ("you") objects are checked, in a
+//     statement only the speaker's, so "I'm going for the red key" says nothing
+//     against a command asking the listener for the yellow key. A command that
+//     leaves an object's colour open is never contradicted.
 //
-// Apart from the colour binding, which looks ahead to the head noun, every
+// Apart from the colour binding and contradiction, which look ahead to the head noun, every
 // factor is a normalised distribution and the clause cuts and modifier spans
 // depend only on already generated tokens, so the sum over all token sequences
-// is exactly 1 (with binding it is at most 1: a deficient model, which only
-// lowers the score of commands whose colours the utterance attaches to nouns
-// of another type).
+// is exactly 1 (with items 6 and 7 it is at most 1: a deficient model, which
+// only lowers the score of commands whose colours the utterance attaches to
+// nouns of another type, or contradicts).
 // Emission tables are Dirichlet posteriors: expected counts from EM over the
 // training pairs (corpus + few-shot examples) plus kappa times a lexical base from
 // WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).
@@ -188,6 +197,7 @@ class AlignmentModel {
   std::unordered_map<std::string, int> word_ids_;
   std::vector<std::string> words_;
   std::vector<uint8_t> word_flags_;  // per vocabulary id
+  std::vector<char> attribute_word_;  // per vocabulary id: an attribute value of some training command
   std::vector<double> char_first_;  // char bigram model: first char
   std::vector<double> char_next_;   // [prev * 37 + next], next 36 = end
   std::vector<double> bg_;          // background probs over the vocabulary
