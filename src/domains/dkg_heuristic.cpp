@@ -187,9 +187,6 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
     }
   }
 
-  pair_w_.assign(static_cast<size_t>(n) * n, 0);
-  pair_stamp_.assign(static_cast<size_t>(n) * n, 0);
-  stamp_ = 0;
   nodes_.reserve(n);
   prim_d_.assign(n, 0);
   prim_in_.assign(n, 0);
@@ -227,31 +224,17 @@ const std::vector<uint64_t>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c
   return memo_.emplace(key_, std::move(masks)).first->second;
 }
 
-double DkgMstHeuristic::pair_weight(int i, int j) {
+double DkgMstHeuristic::pair_weight(int i, int j) const {
   const DkgMapAnalysis& m = *map_;
-  const size_t idx = static_cast<size_t>(i) * m.num_objects() + j;
-  if (pair_stamp_[idx] == stamp_) return pair_w_[idx];
-  double w = kInf;
-  int li = view_.room[i], lj = view_.room[j];
-  bool doors = m.kind(i) == DkgMapAnalysis::Kind::Door && m.kind(j) == DkgMapAnalysis::Kind::Door;
-  // Edge admission by room labels: same label, neighbouring labels in the
-  // room graph, or two doors opening onto a common room.
-  if (li == lj || m.room_adjacent(li, lj) || (doors && m.share_neighbor(li, lj))) {
-    uint16_t d = m.dist(view_.cell[i], view_.cell[j]);
-    if (d != DkgMapAnalysis::kNoPath) {
-      bool agents = i < m.num_agents() && j < m.num_agents();
-      // Between two agents no one waits; otherwise the other agent waits
-      // once per move.
-      // Written as d*move + d*wait, as the reference sums it, so the float
-      // values match to the last bit.
-      w = agents ? d * costs_.move : d * costs_.move + d * costs_.wait;
-    }
-  }
-  pair_w_[idx] = w;
-  pair_stamp_[idx] = stamp_;
-  pair_w_[static_cast<size_t>(j) * m.num_objects() + i] = w;
-  pair_stamp_[static_cast<size_t>(j) * m.num_objects() + i] = stamp_;
-  return w;
+  const bool doors = m.kind(i) == DkgMapAnalysis::Kind::Door && m.kind(j) == DkgMapAnalysis::Kind::Door;
+  // Edge admission by room labels, precomputed per cell pair (edge_dist).
+  const uint16_t d = m.edge_dist(view_.cell[i], view_.cell[j], doors);
+  if (d == DkgMapAnalysis::kNoPath) return kInf;
+  // Between two agents no one waits; otherwise the other agent waits once
+  // per move. Written as d*move + d*wait, as the reference sums it, so the
+  // float values match to the last bit.
+  const bool agents = i < m.num_agents() && j < m.num_agents();
+  return agents ? d * costs_.move : d * costs_.move + d * costs_.wait;
 }
 
 double DkgMstHeuristic::mst_weight(uint64_t objects) {
@@ -319,10 +302,6 @@ double DkgMstHeuristic::clause_cost(const ClauseInfo& c, const uint64_t* s) {
 double DkgMstHeuristic::estimate(const uint64_t* s) {
   if (info_.empty()) return 0;
   map_->read(s, view_);
-  if (++stamp_ == 0) {  // wrapped: invalidate every cached pair weight
-    std::fill(pair_stamp_.begin(), pair_stamp_.end(), 0);
-    stamp_ = 1;
-  }
   double best = kInf;
   for (const auto& c : info_) {
     best = std::min(best, clause_cost(c, s));
@@ -333,10 +312,6 @@ double DkgMstHeuristic::estimate(const uint64_t* s) {
 
 double DkgMstHeuristic::clause_cost(size_t c, const uint64_t* s) {
   map_->read(s, view_);
-  if (++stamp_ == 0) {
-    std::fill(pair_stamp_.begin(), pair_stamp_.end(), 0);
-    stamp_ = 1;
-  }
   return clause_cost(info_.at(c), s);
 }
 

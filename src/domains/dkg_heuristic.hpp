@@ -90,7 +90,7 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   };
   const std::vector<uint64_t>& key_door_masks(const ClauseInfo& c);
   double clause_cost(const ClauseInfo& c, const uint64_t* state);
-  double pair_weight(int i, int j);
+  double pair_weight(int i, int j) const;
 
   std::shared_ptr<const DkgMapAnalysis> map_;
   int max_iters_;
@@ -102,9 +102,6 @@ class DkgMstHeuristic : public heuristics::Heuristic {
 
   // Per-state scratch, reused to keep estimate() allocation-free.
   DkgStateView view_;
-  std::vector<double> pair_w_;
-  std::vector<uint32_t> pair_stamp_;
-  uint32_t stamp_ = 0;
   std::vector<int> nodes_;
   std::vector<double> prim_d_;
   std::vector<uint8_t> prim_in_;

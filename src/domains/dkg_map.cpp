@@ -203,6 +203,22 @@ std::shared_ptr<const DkgMapAnalysis> DkgMapAnalysis::build(std::shared_ptr<cons
       }
     }
   }
+
+  // MST edge admission by room labels (spec 5.5), per cell pair, so the
+  // heuristic reads one table entry per object pair: same label or
+  // neighbouring labels; for two doors also a common neighbouring room.
+  m->edge_.assign(static_cast<size_t>(N) * N, kNoPath);
+  m->door_edge_.assign(static_cast<size_t>(N) * N, kNoPath);
+  for (int c1 = 0; c1 < N; ++c1)
+    for (int c2 = 0; c2 < N; ++c2) {
+      const size_t k = static_cast<size_t>(c1) * N + c2;
+      const uint16_t d = m->dist_[k];
+      if (d == kNoPath) continue;
+      const int l1 = m->labels_[c1], l2 = m->labels_[c2];
+      const bool near = l1 == l2 || m->room_adjacent(l1, l2);
+      if (near) m->edge_[k] = d;
+      if (near || m->share_neighbor(l1, l2)) m->door_edge_[k] = d;
+    }
   return m;
 }
 

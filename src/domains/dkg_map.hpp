@@ -78,6 +78,13 @@ class DkgMapAnalysis {
   // BFS distance over non-wall cells (doors passable), kNoPath if disconnected.
   static constexpr uint16_t kNoPath = 0xffff;
   uint16_t dist(int c1, int c2) const { return dist_[static_cast<size_t>(c1) * num_cells() + c2]; }
+  // dist(c1, c2) if the MST heuristic admits an edge between objects on these
+  // cells (their room labels are equal or adjacent, or, when both objects are
+  // doors, open onto a common room), else kNoPath.
+  uint16_t edge_dist(int c1, int c2, bool both_doors) const {
+    const size_t k = static_cast<size_t>(c1) * num_cells() + c2;
+    return both_doors ? door_edge_[k] : edge_[k];
+  }
 
   // ---- state access (hot path: no allocation once `out` has been sized)
   void read(const uint64_t* s, DkgStateView& out) const;
@@ -108,6 +115,7 @@ class DkgMapAnalysis {
   std::vector<std::vector<int>> room_adj_;
   std::vector<uint8_t> adj_, share_;  // num_labels^2
   std::vector<uint16_t> dist_;        // num_cells^2
+  std::vector<uint16_t> edge_, door_edge_;  // num_cells^2, see edge_dist()
 
   // State layout: per object x/y fluents, per (agent, item) `has` atom, per
   // door `locked`, per agent `active`.

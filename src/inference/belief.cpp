@@ -126,7 +126,20 @@ void Belief::refine_all(const pddl::State& s) {
     }
   };
   if (pool_) {
-    pool_->run(policies_.size(), refine_one);
+    // Longest first (by the last step's time): the step ends when the slowest
+    // thread does, and a long refinement started last would leave the other
+    // threads idle. The order does not change any result.
+    refine_seconds_.resize(policies_.size(), 0.0);
+    std::vector<size_t> order(policies_.size());
+    for (size_t h = 0; h < order.size(); ++h) order[h] = h;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return refine_seconds_[a] > refine_seconds_[b]; });
+    pool_->run(order.size(), [&](size_t i) {
+      const size_t h = order[i];
+      const auto t0 = std::chrono::steady_clock::now();
+      refine_one(h);
+      refine_seconds_[h] = seconds_since(t0);
+    });
   } else {
     for (size_t h = 0; h < policies_.size(); ++h) refine_one(h);
   }

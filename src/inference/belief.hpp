@@ -185,6 +185,7 @@ class Belief {
   int t_ = 0;
   pddl::ObjectId speaker_ = -1;
   std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
+  std::vector<double> refine_seconds_;      // per hypothesis, its last refinement (scheduling only)
 };
 
 // Inference over one dataset plan: INIT at s_0, then one step per observed

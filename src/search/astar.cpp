@@ -15,52 +15,6 @@ std::string to_string(SearchStatus s) {
   return "?";
 }
 
-namespace {
-
-// The frontier: a 4-ary min-heap on (f, h, counter) in a reusable vector
-// (shallower than a binary heap, so fewer cache misses per pop). Live
-// entries have distinct keys (counters are unique per node), so the
-// expansion order is the same as with any other exact priority queue.
-bool before(const OpenEntry& a, const OpenEntry& b) {
-  if (a.f < b.f) return true;
-  if (b.f < a.f) return false;
-  if (a.h < b.h) return true;
-  if (b.h < a.h) return false;
-  return a.counter < b.counter;
-}
-
-void heap_push(std::vector<OpenEntry>& v, const OpenEntry& e) {
-  size_t i = v.size();
-  v.push_back(e);
-  while (i > 0) {
-    size_t p = (i - 1) / 4;
-    if (!before(e, v[p])) break;
-    v[i] = v[p];
-    i = p;
-  }
-  v[i] = e;
-}
-
-void heap_pop(std::vector<OpenEntry>& v) {
-  const OpenEntry last = v.back();
-  v.pop_back();
-  const size_t n = v.size();
-  if (n == 0) return;
-  size_t i = 0;
-  while (true) {
-    size_t c = 4 * i + 1;
-    if (c >= n) break;
-    size_t m = c;
-    for (size_t k = c + 1, e = std::min(c + 4, n); k < e; ++k)
-      if (before(v[k], v[m])) m = k;
-    if (!before(v[m], last)) break;
-    v[i] = v[m];
-    i = m;
-  }
-  v[i] = last;
-}
-
-}  // namespace
 
 SearchResult astar(const model::Specification& spec, heuristics::Heuristic& heur, const pddl::State& start,
                    const SearchOptions& opts) {
@@ -99,9 +53,9 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
     n.open = true;
     ++n.version;
     double f = n.g + opts.h_weight * n.h;
-    heap_push(open, OpenEntry{f, n.h, n.counter, id, n.version});
+    open_push(open, OpenEntry{f, n.h, n.counter, id, n.version});
   };
-  auto pop = [&] { heap_pop(open); };
+  auto pop = [&] { open_pop(open); };
 
   int root = reg.insert(start.data());
   nodes_ref.emplace_back();

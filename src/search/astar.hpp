@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "heuristics/heuristic.hpp"
+#include "search/open_list.hpp"
 #include "search/state_registry.hpp"
 
 namespace clips::search {
@@ -57,13 +58,6 @@ struct SearchResult {
 SearchResult astar(const model::Specification& spec, heuristics::Heuristic& h, const pddl::State& start,
                    const SearchOptions& opts = {});
 
-// A frontier entry: smaller (f, h, counter) first.
-struct OpenEntry {
-  double f, h;
-  uint64_t counter;
-  int node;
-  uint32_t version;
-};
 
 // Buffers for callers that run many searches (RTAA* runs one per applicable
 // action and step): the result's registry and nodes, the frontier and the

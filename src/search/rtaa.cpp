@@ -1,5 +1,7 @@
 #include "search/rtaa.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace clips::search {
@@ -7,111 +9,231 @@ namespace clips::search {
 using model::kInf;
 
 Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h)
-    : spec_(std::move(spec)),
-      h_(std::move(h)),
-      tree_(spec_->task().num_words()),
-      table_(spec_->task().num_words()) {}
+    : spec_(std::move(spec)), h_(std::move(h)), table_(spec_->task().num_words()) {}
 
 double Policy::value(const uint64_t* s) const {
   if (const double* v = find_value(s)) return *v;
   return -h_->estimate(s);
 }
 
-double Policy::learned_estimate(const uint64_t* x) {
-  Entry& e = table_[x];
+double Policy::learned_estimate(int id) {
+  Entry& e = table_.at(id);
   if (e.has_v) return -e.v;
   if (!e.has_h) {
-    e.h = h_->estimate(x);  // does not touch table_, so `e` stays valid
+    e.h = h_->estimate(table_.key(id));  // does not touch table_, so `e` stays valid
     e.has_h = true;
   }
   return e.h;
 }
 
+bool Policy::is_goal_entry(int id) {
+  Entry& e = table_.at(id);
+  if (e.goal < 0) e.goal = spec_->is_goal(table_.key(id)) ? 1 : 0;
+  return e.goal == 1;
+}
+
+// Buffers of the lookahead searches, one set per thread.
+struct Policy::Lookahead {
+  std::vector<uint8_t> keep;  // per action: expanded under this refine's pruning rule
+  std::vector<LookaheadNode> nodes;
+  std::vector<OpenEntry> open;
+  std::vector<pddl::ActionId> acts;
+  std::vector<uint64_t> parent, child;
+};
+
 namespace {
 
-// One workspace per thread: lookahead searches reuse its buffers. A nested
-// refine on the same thread (not expected) falls back to a private one.
-struct ThreadWorkspace {
-  SearchWorkspace ws;
+// A nested refine on the same thread (not expected) falls back to private buffers.
+template <class T>
+struct ThreadBuffers {
+  T buffers;
   bool busy = false;
 };
-thread_local ThreadWorkspace tls_workspace;
 
 }  // namespace
 
-RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts_in) {
+void Policy::cache_successors(int id, Lookahead& ws) {
+  const pddl::Task& task = spec_->task();
+  // Copy the state out: inserting its successors may move the table's storage.
+  ws.parent.assign(table_.key(id), table_.key(id) + task.num_words());
+  ws.child.resize(task.num_words());
+  task.applicable_actions(ws.parent.data(), ws.acts);
+  const int begin = static_cast<int>(succ_.size());
+  for (pddl::ActionId a : ws.acts) {
+    task.apply(a, ws.parent.data(), ws.child.data());
+    succ_.push_back({a, table_.insert_id(ws.child.data()), spec_->cost(a)});
+  }
+  mark_.resize(static_cast<size_t>(table_.size()), 0);
+  Entry& e = table_.at(id);
+  e.succ_begin = begin;
+  e.succ_count = static_cast<int>(ws.acts.size());
+}
+
+size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  if (++epoch_ == 0) {  // wrapped: forget every old search
+    std::fill(mark_.begin(), mark_.end(), 0);
+    epoch_ = 1;
+  }
+  const uint32_t epoch = epoch_;
+  auto& nodes = ws.nodes;
+  auto& open = ws.open;
+  nodes.clear();
+  open.clear();
+  uint64_t counter = 0;
+  size_t expanded = 0;
+
+  auto push = [&](int id, bool fresh_counter) {
+    LookaheadNode& n = nodes[static_cast<size_t>(id)];
+    if (fresh_counter) n.counter = counter;
+    n.open = true;
+    ++n.version;
+    open_push(open, OpenEntry{n.g + opts.h_weight * n.h, n.h, n.counter, id, n.version});
+  };
+  auto add_node = [&](int entry, int parent, pddl::ActionId a, double g) {
+    const int id = static_cast<int>(nodes.size());
+    mark_[static_cast<size_t>(entry)] = (uint64_t{epoch} << 32) | static_cast<uint32_t>(id);
+    LookaheadNode n;
+    n.entry = entry;
+    n.parent = parent;
+    n.action = a;
+    n.g = g;
+    n.h = learned_estimate(entry);
+    nodes.push_back(n);
+    return id;
+  };
+
+  push(add_node(root, -1, -1, 0.0), true);
+  SearchStatus status = SearchStatus::Failure;
+  int terminal = -1;
+  while (!open.empty()) {
+    const OpenEntry top = open.front();
+    if (!nodes[static_cast<size_t>(top.node)].open || top.version != nodes[static_cast<size_t>(top.node)].version) {
+      open_pop(open);
+      continue;
+    }
+    const int id = top.node;
+    const int eid = nodes[static_cast<size_t>(id)].entry;
+    if (is_goal_entry(eid) || table_.at(eid).tree_action >= 0) {
+      status = SearchStatus::Success;
+      terminal = id;
+      break;
+    }
+    if (expanded >= opts.max_nodes) {
+      status = SearchStatus::MaxNodes;
+      terminal = id;
+      break;
+    }
+    if ((expanded & 255) == 0 && opts.max_seconds < std::numeric_limits<double>::infinity() &&
+        std::chrono::duration<double>(clock::now() - t0).count() >= opts.max_seconds) {
+      status = SearchStatus::MaxTime;
+      terminal = id;
+      break;
+    }
+    if (opts.fail_fast && top.f == kInf) {
+      terminal = id;
+      break;
+    }
+    open_pop(open);
+    nodes[static_cast<size_t>(id)].open = false;
+    ++expanded;
+    if (table_.at(eid).succ_begin < 0) cache_successors(eid, ws);
+    const Entry& pe = table_.at(eid);
+    const double g0 = nodes[static_cast<size_t>(id)].g;
+    for (int k = pe.succ_begin, end = pe.succ_begin + pe.succ_count; k < end; ++k) {
+      const Successor sc = succ_[static_cast<size_t>(k)];
+      if (prune && !ws.keep[static_cast<size_t>(sc.action)]) continue;
+      const double g = g0 + sc.cost;
+      const uint64_t mark = mark_[static_cast<size_t>(sc.child)];
+      if (static_cast<uint32_t>(mark >> 32) != epoch) {
+        ++counter;
+        push(add_node(sc.child, id, sc.action, g), true);
+        continue;
+      }
+      const int cnode = static_cast<int>(static_cast<uint32_t>(mark));
+      LookaheadNode& c = nodes[static_cast<size_t>(cnode)];
+      if (g >= c.g) continue;
+      c.parent = id;
+      c.action = sc.action;
+      c.g = g;
+      if (c.open) {
+        push(cnode, false);  // decrease-key: same h and insertion counter
+      } else {
+        c.h = learned_estimate(sc.child);  // reopen with a fresh estimate
+        ++counter;
+        push(cnode, true);
+      }
+    }
+  }
+
+  // RTAA* update (spec UPDATE).
+  if (status == SearchStatus::Failure) {
+    for (const LookaheadNode& n : nodes) set_value(n.entry, -kInf);
+    return expanded;
+  }
+  const LookaheadNode& t = nodes[static_cast<size_t>(terminal)];
+  const double f_t = t.g + t.h;
+  set_value(t.entry, -t.h);
+  for (size_t id = 0; id < nodes.size(); ++id) {
+    const LookaheadNode& n = nodes[id];
+    if (n.open || static_cast<int>(id) == terminal) continue;  // frontier nodes keep their values
+    set_value(n.entry, -(f_t - n.g));
+  }
+  if (status == SearchStatus::Success) {
+    // Store the path root..t: each node records the action toward the goal.
+    for (int id = terminal; nodes[static_cast<size_t>(id)].parent >= 0; id = nodes[static_cast<size_t>(id)].parent) {
+      Entry& pe = table_.at(nodes[static_cast<size_t>(nodes[static_cast<size_t>(id)].parent)].entry);
+      if (pe.tree_action < 0) {
+        pe.tree_action = nodes[static_cast<size_t>(id)].action;
+        ++tree_size_;
+      }
+    }
+  }
+  return expanded;
+}
+
+RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   RefineStats st;
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
   if (h_->estimates_depend_on_root())
     for (Entry& e : table_.values()) e.has_h = false;  // cached estimates may be stale now
-  std::optional<SearchWorkspace> own;
-  SearchWorkspace* ws = &tls_workspace.ws;
-  if (tls_workspace.busy) ws = &own.emplace();
-  else tls_workspace.busy = true;
+  thread_local ThreadBuffers<Lookahead> tls;
+  std::optional<Lookahead> own;
+  Lookahead* ws = &tls.buffers;
+  if (tls.busy) ws = &own.emplace();
+  else tls.busy = true;
   struct Release {
-    bool on;
+    bool* flag;
     ~Release() {
-      if (on) tls_workspace.busy = false;
+      if (flag) *flag = false;
     }
-  } release{ws == &tls_workspace.ws};
-  SearchOptions opts = opts_in;
-  opts.extra_goal = [this](const uint64_t* x) { return tree_.contains(x); };
-  // Lookahead heuristic: the learned value where known, else H.
-  struct Learned : heuristics::Heuristic {
-    Policy* p;
-    explicit Learned(Policy* pp) : p(pp) {}
-    std::string name() const override { return "learned"; }
-    bool admissible() const override { return p->h_->admissible(); }
-    bool consistent() const override { return false; }
-    void prepare(const model::Specification&, const pddl::State&) override {}
-    double estimate(const uint64_t* x) override { return p->learned_estimate(x); }
-    bool prunes() const override { return p->h_->prunes(); }
-    bool keep(pddl::ActionId a) const override { return p->h_->keep(a); }
-  } learned(this);
+  } release{ws == &tls.buffers ? &tls.busy : nullptr};
+  const bool prune = opts.prune && h_->prunes();
+  if (prune) {
+    // The pruning rule is fixed for this refine: ask it once per action.
+    ws->keep.resize(static_cast<size_t>(task.num_actions()));
+    for (pddl::ActionId a = 0; a < task.num_actions(); ++a) ws->keep[static_cast<size_t>(a)] = h_->keep(a) ? 1 : 0;
+  }
 
   std::vector<uint64_t> child(task.num_words());
-  pddl::State child_state;
   double best = -kInf;
   for (pddl::ActionId a : task.applicable_actions(s)) {
     task.apply(a, s.data(), child.data());
-    if (const double* v = find_value(child.data()); v && *v == -kInf) continue;
-    if (spec_->is_goal(child.data())) {
-      set_value(child.data(), 0);
+    const int cid = table_.insert_id(child.data());
+    mark_.resize(static_cast<size_t>(table_.size()), 0);
+    if (const Entry& e = table_.at(cid); e.has_v && e.v == -kInf) continue;
+    if (is_goal_entry(cid)) {
+      set_value(cid, 0);
     } else {
-      child_state.words.assign(child.begin(), child.end());
-      const SearchResult& r = astar(*spec_, learned, child_state, opts, *ws);
       ++st.searches;
-      st.expanded += r.expanded;
-      update(r);
+      st.expanded += search_and_update(cid, opts, prune, *ws);
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }
-  set_value(s.data(), best);
+  set_value(table_.insert_id(s.data()), best);
   return st;
-}
-
-void Policy::update(const SearchResult& r) {
-  const StateRegistry& reg = *r.registry;
-  if (r.status == SearchStatus::Failure) {
-    for (int id = 0; id < reg.size(); ++id) set_value(reg.get(id), -kInf);
-    return;
-  }
-  int t = r.terminal;
-  double h_t = r.nodes[t].h;
-  double f_t = r.nodes[t].g + h_t;
-  set_value(reg.get(t), -h_t);
-  for (int id = 0; id < reg.size(); ++id) {
-    const SearchNode& n = r.nodes[id];
-    if (n.open && id != t) continue;  // frontier nodes keep their values
-    if (id == t) continue;
-    set_value(reg.get(id), -(f_t - n.g));
-  }
-  if (r.status == SearchStatus::Success) {
-    // Store the path root..t: each node records the action toward the goal.
-    for (int id = t; r.nodes[id].parent >= 0; id = r.nodes[id].parent)
-      tree_.try_emplace(reg.get(r.nodes[id].parent), r.nodes[id].action);
-  }
 }
 
 std::vector<QValue> Policy::q_values(const pddl::State& s) const {
@@ -128,12 +250,14 @@ std::vector<QValue> Policy::q_values(const pddl::State& s) const {
 }
 
 std::optional<pddl::ActionId> Policy::best_action(const pddl::State& s) const {
-  if (const pddl::ActionId* a = tree_.find(s.data()); a && spec_->task().applicable(*a, s.data())) return *a;
+  if (const Entry* e = tree_entry(s.data()); e && spec_->task().applicable(e->tree_action, s.data()))
+    return e->tree_action;
   return best_action(s, q_values(s));
 }
 
 std::optional<pddl::ActionId> Policy::best_action(const pddl::State& s, const std::vector<QValue>& qs) const {
-  if (const pddl::ActionId* a = tree_.find(s.data()); a && spec_->task().applicable(*a, s.data())) return *a;
+  if (const Entry* e = tree_entry(s.data()); e && spec_->task().applicable(e->tree_action, s.data()))
+    return e->tree_action;
   std::optional<pddl::ActionId> best;
   double bq = -kInf;
   for (const QValue& q : qs)

@@ -54,36 +54,72 @@ class Policy {
   std::vector<pddl::ActionId> rollout(const pddl::State& s, int max_steps) const;
 
   size_t table_size() const { return num_values_; }
-  size_t tree_size() const { return tree_.size(); }
+  size_t tree_size() const { return tree_size_; }
 
  private:
-  void update(const SearchResult& r);
-  double learned_estimate(const uint64_t* s);
-
-  std::shared_ptr<const model::Specification> spec_;
-  std::shared_ptr<heuristics::Heuristic> h_;
-  StateMap<pddl::ActionId> tree_;
-  // One table for the learned values V and cached H estimates, so a lookup
-  // in the lookahead searches probes one hash table, not two. H estimates
-  // are kept across refine() calls: every heuristic here gives the same
-  // estimates for this spec whatever root prepare() was given (the root only
-  // shapes keep()).
+  // One entry per state the policy has seen: the learned value V, the cached
+  // estimate H, the state's successors once it has been expanded (RTAA*
+  // re-expands the same states in search after search, so they are
+  // generated once), its place on the reusable tree, and its node in the
+  // current lookahead search. The lookahead A* works on entry ids, so it
+  // hashes a state only when it first generates it.
   struct Entry {
     double v = 0;  // V(s) when has_v
     double h = 0;  // H(s) when has_h
+    int succ_begin = -1;              // first cached successor in succ_; -1: none yet
+    int succ_count = 0;
+    pddl::ActionId tree_action = -1;  // next action on a stored goal path; -1: not a tree node
     bool has_v = false, has_h = false;
+    int8_t goal = -1;                 // cached goal test: -1 unknown, 0 no, 1 yes
   };
+  struct Successor {
+    pddl::ActionId action;
+    int child;    // entry id
+    double cost;  // of the action under this specification
+  };
+  struct LookaheadNode {
+    int entry;
+    int parent = -1;  // node index
+    pddl::ActionId action = -1;
+    double g = 0, h = 0;
+    bool open = false;
+    uint32_t version = 0;
+    uint64_t counter = 0;
+  };
+  struct Lookahead;  // per-thread buffers (rtaa.cpp)
+
+  // A* from entry `root` with the learned estimates, stopping at a goal or
+  // tree state (spec REFINE); then the RTAA* update of the values and tree.
+  size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws);
+  void cache_successors(int id, Lookahead& ws);
+  double learned_estimate(int id);
+  bool is_goal_entry(int id);
+
+  std::shared_ptr<const model::Specification> spec_;
+  std::shared_ptr<heuristics::Heuristic> h_;
+  // H estimates are kept across refine() calls unless the heuristic says
+  // they depend on the root prepare() was given.
   StateMap<Entry> table_;
+  std::vector<Successor> succ_;
+  // Per entry id: (epoch << 32) | node of the lookahead search that last
+  // generated it (the duplicate test of every generated successor).
+  std::vector<uint64_t> mark_;
   size_t num_values_ = 0;  // entries with has_v
+  size_t tree_size_ = 0;   // entries with a tree action
+  uint32_t epoch_ = 0;
   const double* find_value(const uint64_t* s) const {
     const Entry* e = table_.find(s);
     return e && e->has_v ? &e->v : nullptr;
   }
-  void set_value(const uint64_t* s, double v) {
-    Entry& e = table_[s];
+  void set_value(int id, double v) {
+    Entry& e = table_.at(id);
     if (!e.has_v) ++num_values_;
     e.has_v = true;
     e.v = v;
+  }
+  const Entry* tree_entry(const uint64_t* s) const {
+    const Entry* e = table_.find(s);
+    return e && e->tree_action >= 0 ? e : nullptr;
   }
 };
 

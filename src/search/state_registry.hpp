@@ -116,6 +116,19 @@ class StateMap {
     return id < 0 ? nullptr : &vals_[id];
   }
   bool contains(const uint64_t* s) const { return reg_.find(s) >= 0; }
+  // Id access, for callers that keep ids instead of states (ids are stable,
+  // in insertion order; references from at() die with the next insertion).
+  int find_id(const uint64_t* s) const { return reg_.find(s); }
+  int insert_id(const uint64_t* s, bool* added = nullptr) {
+    bool is_new = false;
+    const int id = reg_.insert(s, &is_new);
+    if (is_new) vals_.emplace_back();
+    if (added) *added = is_new;
+    return id;
+  }
+  T& at(int id) { return vals_[static_cast<size_t>(id)]; }
+  const T& at(int id) const { return vals_[static_cast<size_t>(id)]; }
+  const uint64_t* key(int id) const { return reg_.get(id); }
   // Every stored value, in insertion order (states themselves are not exposed).
   std::vector<T>& values() { return vals_; }
   T& operator[](const uint64_t* s) { return insert_hashed(s, hash(s)); }

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <map>
 #include <random>
+#include <set>
 
 #include "data/dataset.hpp"
 #include "domains/registry.hpp"
@@ -249,4 +252,99 @@ TEST(Rtaa, CachedEstimatesAreReusedOnlyWhenTheHeuristicAllowsIt) {
   }
   EXPECT_LT(second[0], second[1]);
   EXPECT_EQ(values[0], values[1]);
+}
+
+namespace {
+
+// The spec's REFINE / UPDATE (clips-spec.md 5.3) written directly on the
+// generic A*, with its own value table and tree: the reference the
+// Policy's specialised lookahead (cached successors, entry ids) must match.
+struct ReferenceRefine {
+  std::shared_ptr<const model::Specification> spec;
+  std::shared_ptr<heuristics::Heuristic> h;
+  std::map<std::vector<uint64_t>, double> v;
+  std::set<std::vector<uint64_t>> tree;
+
+  std::vector<uint64_t> key(const uint64_t* s) const { return {s, s + spec->task().num_words()}; }
+  double value(const uint64_t* s) const {
+    auto it = v.find(key(s));
+    return it != v.end() ? it->second : -h->estimate(s);
+  }
+
+  void refine(const pddl::State& s, const search::SearchOptions& opts_in) {
+    const pddl::Task& task = spec->task();
+    h->prepare(*spec, s);
+    struct Learned : heuristics::Heuristic {
+      ReferenceRefine* r;
+      explicit Learned(ReferenceRefine* rr) : r(rr) {}
+      std::string name() const override { return "reference-learned"; }
+      bool admissible() const override { return false; }
+      bool consistent() const override { return false; }
+      void prepare(const model::Specification&, const pddl::State&) override {}
+      double estimate(const uint64_t* x) override { return -r->value(x); }
+      bool prunes() const override { return r->h->prunes(); }
+      bool keep(pddl::ActionId a) const override { return r->h->keep(a); }
+    } learned(this);
+    search::SearchOptions opts = opts_in;
+    opts.extra_goal = [this](const uint64_t* x) { return tree.count(key(x)) != 0; };
+    double best = -model::kInf;
+    for (pddl::ActionId a : task.applicable_actions(s)) {
+      const pddl::State c = task.apply(s, a);
+      auto known = v.find(c.words);
+      if (known != v.end() && known->second == -model::kInf) continue;
+      if (spec->is_goal(c)) {
+        v[c.words] = 0;
+      } else {
+        const search::SearchResult r = search::astar(*spec, learned, c, opts);
+        const search::StateRegistry& reg = *r.registry;
+        if (r.status == search::SearchStatus::Failure) {
+          for (int id = 0; id < reg.size(); ++id) v[key(reg.get(id))] = -model::kInf;
+        } else {
+          const auto& t = r.nodes[r.terminal];
+          const double f_t = t.g + t.h;
+          v[key(reg.get(r.terminal))] = -t.h;
+          for (int id = 0; id < reg.size(); ++id)
+            if (!r.nodes[id].open && id != r.terminal) v[key(reg.get(id))] = -(f_t - r.nodes[id].g);
+          if (r.status == search::SearchStatus::Success)
+            for (int id = r.terminal; r.nodes[id].parent >= 0; id = r.nodes[id].parent)
+              tree.insert(key(reg.get(r.nodes[id].parent)));
+        }
+      }
+      best = std::max(best, -spec->cost(a) + value(c.data()));
+    }
+    v[s.words] = best;
+  }
+};
+
+}  // namespace
+
+TEST(Rtaa, LookaheadMatchesTheSpecsRefineOnPlainAStar) {
+  // Refinements along a random walk (so the pruning sets change with the
+  // root), with budgets small enough to stop searches early and unlimited:
+  // the learned values and Q-values equal the reference's exactly.
+  auto ds = data::Dataset::load(paths::examples_dir() + "/doors-keys-gems");
+  for (const char* problem : {"e1", "e2"}) {
+    for (size_t budget : {size_t{16}, size_t{200}, std::numeric_limits<size_t>::max()}) {
+      auto spec = spec_for(ds, problem, 1, 3);
+      const pddl::Task& task = spec->task();
+      search::Policy pol(spec, domains::make_heuristic("dkg-mst", task, data::DomainKind::DoorsKeysGems));
+      ReferenceRefine ref{spec, domains::make_heuristic("dkg-mst", task, data::DomainKind::DoorsKeysGems), {}, {}};
+      search::SearchOptions o;
+      o.max_nodes = budget;
+      std::mt19937 rng(7);
+      pddl::State s = task.initial_state();
+      for (int step = 0; step < 25 && !spec->is_goal(s); ++step) {
+        pol.refine(s, o);
+        ref.refine(s, o);
+        ASSERT_EQ(pol.value(s), ref.value(s.data())) << problem << " budget " << budget << " step " << step;
+        const auto acts = task.applicable_actions(s);
+        for (pddl::ActionId a : acts) {
+          const pddl::State c = task.apply(s, a);
+          EXPECT_EQ(pol.value(c), ref.value(c.data())) << problem << " step " << step << " " << task.action_name(a);
+        }
+        s = task.apply(s, acts[std::uniform_int_distribution<size_t>(0, acts.size() - 1)(rng)]);
+      }
+      EXPECT_EQ(pol.tree_size(), ref.tree.size()) << problem << " budget " << budget;
+    }
+  }
 }
