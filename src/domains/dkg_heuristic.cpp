@@ -190,6 +190,9 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
   nodes_.reserve(n);
   prim_d_.assign(n, 0);
   prim_in_.assign(n, 0);
+  prim_cell_.assign(n, 0);
+  prim_door_.assign(n, 0);
+  prim_agent_.assign(n, 0);
   key_.reserve(8 + 2 * n + 8);
   m.read(root.data(), view_);
 }
@@ -224,20 +227,7 @@ const std::vector<uint64_t>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c
   return memo_.emplace(key_, std::move(masks)).first->second;
 }
 
-double DkgMstHeuristic::pair_weight(int i, int j) const {
-  const DkgMapAnalysis& m = *map_;
-  const bool doors = m.kind(i) == DkgMapAnalysis::Kind::Door && m.kind(j) == DkgMapAnalysis::Kind::Door;
-  // Edge admission by room labels, precomputed per cell pair (edge_dist).
-  const uint16_t d = m.edge_dist(view_.cell[i], view_.cell[j], doors);
-  if (d == DkgMapAnalysis::kNoPath) return kInf;
-  // Between two agents no one waits; otherwise the other agent waits once
-  // per move. Written as d*move + d*wait, as the reference sums it, so the
-  // float values match to the last bit.
-  const bool agents = i < m.num_agents() && j < m.num_agents();
-  return agents ? d * costs_.move : d * costs_.move + d * costs_.wait;
-}
-
-double DkgMstHeuristic::mst_weight(uint64_t objects) {
+double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   const DkgMapAnalysis& m = *map_;
   nodes_.clear();
   double total = 0;
@@ -257,16 +247,34 @@ double DkgMstHeuristic::mst_weight(uint64_t objects) {
     }
     nodes_.push_back(o);
   }
-  // Prim on the dense object graph (missing edges weigh +inf, and an MST that
-  // needs one is not spanning, which is +inf too).
+  // Edges weigh >= 0, so once the running total reaches the bound the
+  // caller's minimum cannot change.
+  if (total >= bound) return total;
   const size_t k = nodes_.size();
   if (k <= 1) return total;
+  // Per node: its cell and whether it is a door or an agent, for the edges.
   for (size_t i = 0; i < k; ++i) {
+    const int o = nodes_[i];
+    prim_cell_[i] = view_.cell[o];
+    prim_door_[i] = m.kind(o) == DkgMapAnalysis::Kind::Door;
+    prim_agent_[i] = o < m.num_agents();
     prim_in_[i] = 0;
     prim_d_[i] = kInf;
   }
+  const double move = costs_.move, wait = costs_.wait;
+  // Edge weight: room-label admission precomputed per cell pair (edge_dist).
+  // Between two agents no one waits; otherwise the other agent waits once
+  // per move. Written as d*move + d*wait, as the reference sums it, so the
+  // float values match to the last bit.
+  auto weight = [&](size_t a, size_t b) {
+    const uint16_t d = m.edge_dist(prim_cell_[a], prim_cell_[b], prim_door_[a] && prim_door_[b]);
+    if (d == DkgMapAnalysis::kNoPath) return kInf;
+    return prim_agent_[a] && prim_agent_[b] ? d * move : d * move + d * wait;
+  };
+  // Prim on the dense object graph (missing edges weigh +inf, and an MST that
+  // needs one is not spanning, which is +inf too).
   prim_in_[0] = 1;
-  for (size_t i = 1; i < k; ++i) prim_d_[i] = pair_weight(nodes_[0], nodes_[i]);
+  for (size_t i = 1; i < k; ++i) prim_d_[i] = weight(0, i);
   for (size_t step = 1; step < k; ++step) {
     size_t best = k;
     double bd = kInf;
@@ -274,9 +282,10 @@ double DkgMstHeuristic::mst_weight(uint64_t objects) {
       if (!prim_in_[i] && (best == k || prim_d_[i] < bd)) best = i, bd = prim_d_[i];
     if (bd == kInf) return kInf;
     total += bd;
+    if (total >= bound) return total;
     prim_in_[best] = 1;
     for (size_t i = 1; i < k; ++i)
-      if (!prim_in_[i]) prim_d_[i] = std::min(prim_d_[i], pair_weight(nodes_[best], nodes_[i]));
+      if (!prim_in_[i]) prim_d_[i] = std::min(prim_d_[i], weight(best, i));
   }
   return total;
 }
@@ -293,7 +302,7 @@ double DkgMstHeuristic::clause_cost(const ClauseInfo& c, const uint64_t* s) {
   double cost = kInf;
   const uint64_t base = c.agents | c.items;
   for (uint64_t kd : masks)
-    for (uint64_t hs : c.helper_sets) cost = std::min(cost, mst_weight(base | kd | hs));
+    for (uint64_t hs : c.helper_sets) cost = std::min(cost, mst_weight(base | kd | hs, cost));
   // The goal agent moving next saves the first wait of the other agent.
   if (view_.active >= 0 && in(c.agents, view_.active)) cost = std::max(0.0, cost - costs_.wait);
   return cost;

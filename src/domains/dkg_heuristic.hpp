@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <map>
+#include <limits>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -75,8 +76,10 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   uint64_t goal_items() const { return goal_items_; }
   // CLAUSE_COST of clause `c` of the last prepare() in `state`.
   double clause_cost(size_t c, const uint64_t* state);
-  // MSTW(s, set) for an object-index mask, on the last state read.
-  double mst_weight(uint64_t objects);
+  // MSTW(s, set) for an object-index mask, on the last state read. With a
+  // finite `bound` it may stop early and return any value >= bound once the
+  // weight is known to reach it.
+  double mst_weight(uint64_t objects, double bound = std::numeric_limits<double>::infinity());
 
  private:
   struct ClauseInfo {
@@ -90,7 +93,6 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   };
   const std::vector<uint64_t>& key_door_masks(const ClauseInfo& c);
   double clause_cost(const ClauseInfo& c, const uint64_t* state);
-  double pair_weight(int i, int j) const;
 
   std::shared_ptr<const DkgMapAnalysis> map_;
   int max_iters_;
@@ -105,6 +107,8 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   std::vector<int> nodes_;
   std::vector<double> prim_d_;
   std::vector<uint8_t> prim_in_;
+  std::vector<int> prim_cell_;
+  std::vector<uint8_t> prim_door_, prim_agent_;
 
   // RECURSIVE(s, A[1], I ++ A) depends on the state only through the rooms
   // of agents and items and which doors are locked, which change rarely
