@@ -22,10 +22,13 @@ struct LmFlags {
   std::string base_url, model;
   std::string speaker_rule = "paper";  // CLIPS speaker commands: paper or code (spec 13 item 2)
   std::string utterance_timing = "after";  // state explaining an utterance: after (s_k) or before (s_{k-1})
+  std::string qa_floor = "dead-ends";      // Q_MDP floor: dead-ends or horizon (assist::QaFloor)
 };
 void add_lm_options(CLI::App* cmd, LmFlags& flags);
 // --speaker-rule and --utterance-timing, for the subcommands that run CLIPS inference.
 void add_speaker_model_options(CLI::App* cmd, LmFlags& flags);
+// --qa-floor, for the subcommands that run Q_MDP assistance.
+void add_assistance_options(CLI::App* cmd, LmFlags& flags);
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);
 
 void register_validate(CLI::App& app);

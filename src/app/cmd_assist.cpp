@@ -32,6 +32,7 @@ void register_assist(CLI::App& app) {
       ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
+  add_assistance_options(cmd, o->lm);
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->callback([o, mm] {
@@ -43,6 +44,7 @@ void register_assist(CLI::App& app) {
     eo.inference_threads = 0;  // one plan: use every core
     eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
+    eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
     eo.multimodal = *mm;
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;

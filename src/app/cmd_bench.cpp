@@ -26,6 +26,7 @@ void register_bench(CLI::App& app) {
   auto lm = std::make_shared<LmFlags>();
   add_lm_options(cmd, *lm);
   add_speaker_model_options(cmd, *lm);
+  add_assistance_options(cmd, *lm);
   cmd->add_option("--assist", *assist, "default (offline Q_MDP) or all (adds online Q_MDP and pi-bar_MDP)")
       ->check(CLI::IsMember({"default", "all"}));
   cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive");
@@ -44,6 +45,7 @@ void register_bench(CLI::App& app) {
     o->lm_model = lm->model;
     o->experiment.speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->experiment.utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
+    o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     bool wants_mm = std::find(methods->begin(), methods->end(), "multimodal") != methods->end();

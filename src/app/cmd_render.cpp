@@ -32,6 +32,7 @@ void register_render(CLI::App& app) {
   cmd->add_option("--cell", o->cell, "Pixels per grid cell (default 32)")->check(CLI::Range(8, 128));
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
+  add_assistance_options(cmd, o->lm);
   cmd->callback([o] {
     if (o->out.empty() && o->gif.empty()) throw InputError("render: give --out F.png and/or --gif F.gif");
     if (o->step >= 0 && o->out.empty()) throw InputError("render: --step applies to --out (one frame)");
@@ -49,6 +50,7 @@ void register_render(CLI::App& app) {
       eo.inference_threads = 0;
       eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
       eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
+      eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
       auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
       if (!outcome.error.empty()) throw InputError(outcome.error);
       const eval::MethodResult* c = outcome.find("clips");

@@ -24,6 +24,13 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
       ->check(CLI::IsMember({"paper", "code"}));
 }
 
+void add_assistance_options(CLI::App* cmd, LmFlags& f) {
+  cmd->add_option("--qa-floor", f.qa_floor,
+                  "Which Q-values Q_MDP floors at the cost of waiting to the horizon: dead-ends (default; only "
+                  "unreachable goals, the spec's stated purpose) or horizon (every value, the reference formula)")
+      ->check(CLI::IsMember({"dead-ends", "horizon"}));
+}
+
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) {
   language::LanguageModelOptions o;
   o.base_url = f.base_url;

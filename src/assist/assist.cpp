@@ -11,6 +11,14 @@ namespace clips::assist {
 
 using model::kInf;
 using pddl::ActionId;
+
+std::string to_string(QaFloor f) { return f == QaFloor::Horizon ? "horizon" : "dead-ends"; }
+
+QaFloor parse_qa_floor(const std::string& text) {
+  if (text == "dead-ends") return QaFloor::DeadEnds;
+  if (text == "horizon") return QaFloor::Horizon;
+  throw InputError("unknown Q_MDP floor '" + text + "' (expected dead-ends or horizon)");
+}
 using pddl::State;
 
 namespace {
@@ -89,7 +97,8 @@ struct Episode {
 
   // The Q_MDP choice at timestep t (spec 9.3): the common best action when
   // every hypothesis above the threshold agrees, else the argmax of the
-  // weighted Q-values, each floored at the cost of waiting to the horizon.
+  // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
+  // floored at the cost of waiting to the horizon.
   ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t) const {
     std::vector<const Hypothesis*> live;
     for (auto& h : belief)
@@ -112,8 +121,12 @@ struct Episode {
       const auto& qs = qvals[k];
       const auto& spec = h->policy->spec();
       double wait_cost = spec.cost(assistant_wait);
-      for (size_t i = 0; i < acts.size(); ++i)
-        qa[i] += h->weight * std::max(qs[i].q, -((setup.horizon - t) * wait_cost + spec.cost(acts[i])));
+      for (size_t i = 0; i < acts.size(); ++i) {
+        const double floor = -((setup.horizon - t) * wait_cost + spec.cost(acts[i]));
+        const double q = setup.qa_floor == QaFloor::Horizon ? std::max(qs[i].q, floor)
+                                                             : (qs[i].q == -kInf ? floor : qs[i].q);
+        qa[i] += h->weight * q;
+      }
     }
     size_t best = 0;
     for (size_t i = 1; i < acts.size(); ++i)

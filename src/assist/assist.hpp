@@ -28,6 +28,19 @@ struct Hypothesis {
   std::shared_ptr<search::Policy> policy;  // owns its specification
 };
 
+// How Q_MDP bounds a hypothesis' Q-values (spec 9.3) before weighting them.
+// The spec gives max(Q, -((horizon - t) * cost(wait) + cost(a))) and says its
+// purpose is to replace dead ends (-inf) by the cost of waiting until the
+// horizon. Taken literally it also floors FINITE values: a hypothesis whose
+// goal costs more than waiting out the horizon then prefers waiting, and the
+// assistant procrastinates although its goal is reachable.
+//   DeadEnds: only -inf is replaced (the stated purpose; default).
+//   Horizon:  the formula as written (the reference code).
+// docs/decisions.md has the numbers.
+enum class QaFloor { DeadEnds, Horizon };
+std::string to_string(QaFloor f);         // "dead-ends", "horizon"
+QaFloor parse_qa_floor(const std::string& text);  // throws InputError
+
 struct AssistSetup {
   std::shared_ptr<const pddl::Task> task;
   pddl::State start;                 // s_T
@@ -37,6 +50,7 @@ struct AssistSetup {
   std::string assistant = "robot";
   double noop_cost = 0.6;            // padding step cost (mean wait cost)
   double weight_threshold = 0.02;    // hypotheses below are ignored by Q_MDP
+  QaFloor qa_floor = QaFloor::DeadEnds;
   std::vector<pddl::ActionId> completed;  // the ground-truth continuation from s_T
   // The assistance option an action realises, if any (e.g. a key the robot
   // picks up in a keys plan).

@@ -30,6 +30,7 @@ struct BenchReport {
   std::string domain, dataset, lm;
   std::string speaker_rule;      // the CLIPS speaker model's command rule
   std::string utterance_timing;  // before or after the action at the utterance's index
+  std::string qa_floor;          // Q_MDP floor: dead-ends or horizon
   std::vector<PlanOutcome> plans;  // in dataset order
   std::vector<MethodSummary> summary;
   double wall_seconds = 0;

@@ -136,6 +136,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     setup.completed = resolve_all(*task, setup.start, p.completed);
     setup.option_of = option_rule(*task, ds.kind(), p.tag, df.assistant);
     setup.refine = belief.searches();
+    setup.qa_floor = opts.qa_floor;
     setup.follow_plan_by_index = ds.kind() == data::DomainKind::VirtualHome;  // VirtualHome reads V = -h_g and never searches
 
     auto modality_of = [](const std::string& base) {

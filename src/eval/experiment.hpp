@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "data/dataset.hpp"
+#include "assist/assist.hpp"
 #include "eval/multimodal.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
@@ -57,6 +58,8 @@ struct ExperimentOptions {
   // The CLIPS speaker model's command rule (spec 13 item 2).
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
+  // Which Q-values Q_MDP floors at the cost of waiting to the horizon.
+  assist::QaFloor qa_floor = assist::QaFloor::DeadEnds;
   // Threads per inference (InferenceOptions::threads): 1 when plans already
   // run in parallel (`clips bench`), 0 (all cores) for a single plan.
   int inference_threads = 1;

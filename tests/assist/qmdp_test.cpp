@@ -13,6 +13,7 @@
 #include "heuristics/basic.hpp"
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"
+#include "util/error.hpp"
 
 using namespace clips;
 
@@ -124,4 +125,35 @@ TEST(AssistCosts, HumanCostCountsOnlyThePrincipalsActions) {
   std::vector<pddl::ActionId> plan = {*w.task->find_action("(up human)"), *w.task->find_action("(left robot)")};
   EXPECT_DOUBLE_EQ(assist::plan_cost(*spec, plan), 2.0);
   EXPECT_DOUBLE_EQ(assist::human_cost(*spec, plan, "human"), 1.0);
+}
+
+TEST(QmdpOffline, OnlyDeadEndsAreFlooredByDefault) {
+  // With a horizon of 30 steps, fetching key1 for gem1 costs more than
+  // waiting until the horizon. Flooring every Q-value at that waiting cost
+  // (the reference formula) makes both hypotheses indifferent and the robot
+  // waits forever; flooring only dead ends (the default) lets it help.
+  for (auto floor : {assist::QaFloor::DeadEnds, assist::QaFloor::Horizon}) {
+    World w;
+    std::vector<assist::Hypothesis> belief = {{0.7, w.policy(1)}, {0.3, w.policy(2)}};
+    auto s = w.setup();
+    s.horizon = 30;
+    s.qa_floor = floor;
+    auto r = assist::qmdp_offline(s, belief, 0);
+    std::vector<std::string> robot;
+    for (auto a : r.plan)
+      if (w.task->action_name(a).find(" robot") != std::string::npos) robot.push_back(w.task->action_name(a));
+    ASSERT_FALSE(robot.empty());
+    if (floor == assist::QaFloor::DeadEnds) {
+      EXPECT_TRUE(r.goal_reached);
+      EXPECT_EQ(r.options, (std::map<std::string, double>{{"key1", 1.0}}));
+      EXPECT_EQ(robot.front(), "(left robot)");
+    } else {
+      EXPECT_FALSE(r.goal_reached);
+      EXPECT_TRUE(r.options.empty());
+      EXPECT_EQ(robot.front(), "(wait robot)");
+    }
+  }
+  EXPECT_EQ(assist::parse_qa_floor("horizon"), assist::QaFloor::Horizon);
+  EXPECT_EQ(assist::to_string(assist::parse_qa_floor("dead-ends")), "dead-ends");
+  EXPECT_THROW(assist::parse_qa_floor("none"), InputError);
 }
