@@ -187,6 +187,9 @@ TEST(EmbeddedModel, ColoursBindToNounsOfTheirObjectsType) {
   // The same through a purpose infinitive: "a key to open this yellow door".
   const char* w2 = "Could you get me a key to open this yellow door?";
   EXPECT_GT(score(yellow_key, w2), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), w2) + 0.5);
+  // ... and through a relative clause: "the key that opens the yellow door".
+  const char* w3 = "Get me the key that opens the yellow door.";
+  EXPECT_GT(score(yellow_key, w3), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), w3) + 0.5);
   // A colour whose head says nothing about the type ("the yellow one") is unconstrained.
   const char* x = "Could you pick up the yellow one?";
   EXPECT_GT(score(yellow_key, x), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), x));

@@ -76,6 +76,8 @@ constexpr int kMaxHeadDistance = 3;    // the head noun follows within this many
 // Contradicted colours (header, item 7).
 constexpr double kContradictedColour = 0.02;  // factor on a token that miscolours the command's object
 
+bool is_relative_pronoun(std::string_view w) { return w == "that" || w == "which"; }
+
 uint8_t closed_class_flags(std::string_view w) {
   static const std::set<std::string_view> determiners = {
       "a",    "an",   "the",   "this",    "that", "these", "those", "some",  "any",  "my",
@@ -353,6 +355,7 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
   int k = 0;
   int anchor = -1;   // the noun the open span attaches to
   int purpose = -1;  // after "a key to open": that noun, for the verb's object
+  int relative = -1;  // after "the key that": that noun, once the verb is read
   int pk = 0;
   for (size_t i = 0; i < n; ++i) {
     if (open) {
@@ -361,7 +364,7 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
     }
     if (is_clause_end(u.words[i])) {
       open = false;
-      purpose = -1;
+      purpose = relative = -1;
       continue;
     }
     if (purpose >= 0 && !open) {
@@ -370,6 +373,11 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
       if ((f[i] & kWordModifier) != 0) u.noun_heads[i][1] = purpose;
       const bool np_word = (f[i] & kWordFunction) != 0 || (f[i] & kWordModifier) != 0;
       if (++pk > kMaxModifierSpan || !np_word) purpose = -1;
+    }
+    if (relative >= 0 && i > 0 && is_relative_pronoun(u.words[i - 1])) {
+      purpose = relative;  // token i is the relative clause's verb
+      pk = 0;
+      relative = -1;
     }
     if (open) {
       ++k;
@@ -391,6 +399,11 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
       open = true;
       k = 0;
       anchor = static_cast<int>(i) - 1;
+    } else if (is_relative_pronoun(u.words[i]) && i > 0 && i + 1 < n && heads_noun_phrase(i - 1) &&
+               (f[i + 1] & kWordVerb) != 0 && (f[i + 1] & kWordModifier) == 0) {
+      // A relative clause ("the key that opens this yellow door") reads like
+      // a purpose infinitive: its object's colours may describe the noun too.
+      relative = static_cast<int>(i) - 1;  // takes effect after the verb
     }
   }
 }

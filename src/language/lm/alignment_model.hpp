@@ -68,9 +68,10 @@
 //     a noun that can name that object's type: in "can you open the red door"
 //     the "red" is not a copy of a red gem's colour. The noun a colour describes
 //     is read from the utterance (encode(): the head of its noun phrase, and in a
-//     modifier span or the object of a purpose infinitive also the noun they
-//     attach to, so "a key for this yellow door" and "a key to open this yellow
-//     door" let a yellow key's colour through). A head noun names a type
+//     modifier span, the object of a purpose infinitive or of a relative clause
+//     also the noun they attach to, so "a key for this yellow door", "a key to
+//     open this yellow door" and "the key that opens the yellow door" let a
+//     yellow key's colour through). A head noun names a type
 //     when some trained noun table gives it real mass; an attribute unit may copy
 //     the colour at full weight only if its own type's noun tables give the head
 //     at least kBindRatio of the best type's mass, else at kMisboundCopy of it.
