@@ -81,6 +81,8 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, st
       kind_ == data::DomainKind::VirtualHome ? vh_temperature_prior() : dkg_temperature_prior());
   utterance_model_ = std::make_shared<UtteranceModel>(task_, kind_, options_.utterance);
   const pddl::State s0 = task_->initial_state();
+  // One state graph for all hypotheses: they search the same neighbourhood.
+  if (search_) graph_ = std::make_shared<search::StateGraph>(task_);
   for (int g = 0; g < static_cast<int>(goals_.size()); ++g)
     for (int c = 0; c < static_cast<int>(profiles_.size()); ++c) {
       auto spec = std::make_shared<model::Specification>(task_, goals_[g].condition, profiles_[c]);
@@ -89,7 +91,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, st
       // Without search, V = -h is read directly, so bind h to the goal now.
       if (!search_) h->prepare(*spec, s0);
       hyps_.push_back({g, c, spec});
-      policies_.emplace_back(spec, h);
+      policies_.emplace_back(spec, h, graph_);
       heuristics_.push_back(std::move(h));
       temps_.emplace_back(prior);
     }
@@ -121,7 +123,7 @@ void Belief::refine_all(const pddl::State& s) {
     pi.refine(s, options_.refine);
     if (!pi.best_action(s)) {
       // Spec 5.4: a policy with no usable action here is recomputed from scratch.
-      pi = search::Policy(hyps_[h].spec, heuristics_[h]);
+      pi = search::Policy(hyps_[h].spec, heuristics_[h], graph_);
       pi.refine(s, options_.refine);
     }
   };

@@ -177,6 +177,7 @@ class Belief {
   bool search_ = true;
   std::shared_ptr<const UtteranceModel> utterance_model_;
   std::vector<Hypothesis> hyps_;
+  std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)
   std::vector<search::Policy> policies_;
   std::vector<std::shared_ptr<heuristics::Heuristic>> heuristics_;
   std::vector<TemperatureBelief> temps_;

@@ -3,13 +3,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace clips::search {
 
 using model::kInf;
 
-Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h)
-    : spec_(std::move(spec)), h_(std::move(h)), table_(spec_->task().num_words()) {}
+Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h,
+               std::shared_ptr<StateGraph> graph)
+    : spec_(std::move(spec)), h_(std::move(h)), graph_(std::move(graph)) {
+  if (!graph_) graph_ = std::make_shared<StateGraph>(spec_->task_ptr());
+  if (&graph_->task() != &spec_->task())
+    throw std::invalid_argument("Policy: the state graph belongs to another task than the specification");
+}
 
 double Policy::value(const uint64_t* s) const {
   if (const double* v = find_value(s)) return *v;
@@ -17,18 +23,18 @@ double Policy::value(const uint64_t* s) const {
 }
 
 double Policy::learned_estimate(int id) {
-  Entry& e = table_.at(id);
+  Entry& e = entry(id);
   if (e.has_v) return -e.v;
   if (!e.has_h) {
-    e.h = h_->estimate(table_.key(id));  // does not touch table_, so `e` stays valid
+    e.h = h_->estimate(graph_->state(id));  // does not touch entries_, so `e` stays valid
     e.has_h = true;
   }
   return e.h;
 }
 
 bool Policy::is_goal_entry(int id) {
-  Entry& e = table_.at(id);
-  if (e.goal < 0) e.goal = spec_->is_goal(table_.key(id)) ? 1 : 0;
+  Entry& e = entry(id);
+  if (e.goal < 0) e.goal = spec_->is_goal(graph_->state(id)) ? 1 : 0;
   return e.goal == 1;
 }
 
@@ -37,8 +43,6 @@ struct Policy::Lookahead {
   std::vector<uint8_t> keep;  // per action: expanded under this refine's pruning rule
   std::vector<LookaheadNode> nodes;
   std::vector<OpenEntry> open;
-  std::vector<pddl::ActionId> acts;
-  std::vector<uint64_t> parent, child;
 };
 
 namespace {
@@ -51,23 +55,6 @@ struct ThreadBuffers {
 };
 
 }  // namespace
-
-void Policy::cache_successors(int id, Lookahead& ws) {
-  const pddl::Task& task = spec_->task();
-  // Copy the state out: inserting its successors may move the table's storage.
-  ws.parent.assign(table_.key(id), table_.key(id) + task.num_words());
-  ws.child.resize(task.num_words());
-  task.applicable_actions(ws.parent.data(), ws.acts);
-  const int begin = static_cast<int>(succ_.size());
-  for (pddl::ActionId a : ws.acts) {
-    task.apply(a, ws.parent.data(), ws.child.data());
-    succ_.push_back({a, table_.insert_id(ws.child.data()), spec_->cost(a)});
-  }
-  mark_.resize(static_cast<size_t>(table_.size()), 0);
-  Entry& e = table_.at(id);
-  e.succ_begin = begin;
-  e.succ_count = static_cast<int>(ws.acts.size());
-}
 
 size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws) {
   using clock = std::chrono::steady_clock;
@@ -93,13 +80,14 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   };
   auto add_node = [&](int entry, int parent, pddl::ActionId a, double g) {
     const int id = static_cast<int>(nodes.size());
+    const double h = learned_estimate(entry);  // also sizes mark_ for `entry`
     mark_[static_cast<size_t>(entry)] = (uint64_t{epoch} << 32) | static_cast<uint32_t>(id);
     LookaheadNode n;
     n.entry = entry;
     n.parent = parent;
     n.action = a;
     n.g = g;
-    n.h = learned_estimate(entry);
+    n.h = h;
     nodes.push_back(n);
     return id;
   };
@@ -115,7 +103,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     }
     const int id = top.node;
     const int eid = nodes[static_cast<size_t>(id)].entry;
-    if (is_goal_entry(eid) || table_.at(eid).tree_action >= 0) {
+    if (is_goal_entry(eid) || entry(eid).tree_action >= 0) {
       status = SearchStatus::Success;
       terminal = id;
       break;
@@ -138,14 +126,12 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     open_pop(open);
     nodes[static_cast<size_t>(id)].open = false;
     ++expanded;
-    if (table_.at(eid).succ_begin < 0) cache_successors(eid, ws);
-    const Entry& pe = table_.at(eid);
     const double g0 = nodes[static_cast<size_t>(id)].g;
-    for (int k = pe.succ_begin, end = pe.succ_begin + pe.succ_count; k < end; ++k) {
-      const Successor sc = succ_[static_cast<size_t>(k)];
+    for (const StateGraph::Successor sc : graph_->successors(eid)) {
       if (prune && !ws.keep[static_cast<size_t>(sc.action)]) continue;
-      const double g = g0 + sc.cost;
-      const uint64_t mark = mark_[static_cast<size_t>(sc.child)];
+      const double g = g0 + spec_->cost(sc.action);
+      // A state beyond mark_ is new to this policy, so not in this search.
+      const uint64_t mark = static_cast<size_t>(sc.child) < mark_.size() ? mark_[static_cast<size_t>(sc.child)] : 0;
       if (static_cast<uint32_t>(mark >> 32) != epoch) {
         ++counter;
         push(add_node(sc.child, id, sc.action, g), true);
@@ -183,7 +169,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   if (status == SearchStatus::Success) {
     // Store the path root..t: each node records the action toward the goal.
     for (int id = terminal; nodes[static_cast<size_t>(id)].parent >= 0; id = nodes[static_cast<size_t>(id)].parent) {
-      Entry& pe = table_.at(nodes[static_cast<size_t>(nodes[static_cast<size_t>(id)].parent)].entry);
+      Entry& pe = entry(nodes[static_cast<size_t>(nodes[static_cast<size_t>(id)].parent)].entry);
       if (pe.tree_action < 0) {
         pe.tree_action = nodes[static_cast<size_t>(id)].action;
         ++tree_size_;
@@ -198,7 +184,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
   if (h_->estimates_depend_on_root())
-    for (Entry& e : table_.values()) e.has_h = false;  // cached estimates may be stale now
+    for (Entry& e : entries_) e.has_h = false;  // cached estimates may be stale now
   thread_local ThreadBuffers<Lookahead> tls;
   std::optional<Lookahead> own;
   Lookahead* ws = &tls.buffers;
@@ -221,9 +207,8 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   double best = -kInf;
   for (pddl::ActionId a : task.applicable_actions(s)) {
     task.apply(a, s.data(), child.data());
-    const int cid = table_.insert_id(child.data());
-    mark_.resize(static_cast<size_t>(table_.size()), 0);
-    if (const Entry& e = table_.at(cid); e.has_v && e.v == -kInf) continue;
+    const int cid = graph_->insert(child.data());
+    if (const Entry& e = entry(cid); e.has_v && e.v == -kInf) continue;
     if (is_goal_entry(cid)) {
       set_value(cid, 0);
     } else {
@@ -232,7 +217,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }
-  set_value(table_.insert_id(s.data()), best);
+  set_value(graph_->insert(s.data()), best);
   return st;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "search/astar.hpp"
+#include "search/state_graph.hpp"
 
 namespace clips::search {
 
@@ -28,7 +29,11 @@ struct RefineStats {
 
 class Policy {
  public:
-  Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h);
+  // `graph` holds the states and successors this policy searches; policies
+  // over the same task may share one (see state_graph.hpp). Null: a graph of
+  // its own.
+  Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr<heuristics::Heuristic> h,
+         std::shared_ptr<StateGraph> graph = nullptr);
 
   const model::Specification& spec() const { return *spec_; }
   std::shared_ptr<const model::Specification> spec_ptr() const { return spec_; }
@@ -57,25 +62,16 @@ class Policy {
   size_t tree_size() const { return tree_size_; }
 
  private:
-  // One entry per state the policy has seen: the learned value V, the cached
-  // estimate H, the state's successors once it has been expanded (RTAA*
-  // re-expands the same states in search after search, so they are
-  // generated once), its place on the reusable tree, and its node in the
-  // current lookahead search. The lookahead A* works on entry ids, so it
-  // hashes a state only when it first generates it.
+  // Per state id of the graph (ids this policy has not touched yet lie beyond
+  // the end): the learned value V, the cached estimate H, the state's place
+  // on the reusable tree and the cached goal test. The lookahead A* works on
+  // ids, so it hashes a state only when the graph first generates it.
   struct Entry {
     double v = 0;  // V(s) when has_v
     double h = 0;  // H(s) when has_h
-    int succ_begin = -1;              // first cached successor in succ_; -1: none yet
-    int succ_count = 0;
     pddl::ActionId tree_action = -1;  // next action on a stored goal path; -1: not a tree node
     bool has_v = false, has_h = false;
     int8_t goal = -1;                 // cached goal test: -1 unknown, 0 no, 1 yes
-  };
-  struct Successor {
-    pddl::ActionId action;
-    int child;    // entry id
-    double cost;  // of the action under this specification
   };
   struct LookaheadNode {
     int entry;
@@ -88,37 +84,48 @@ class Policy {
   };
   struct Lookahead;  // per-thread buffers (rtaa.cpp)
 
-  // A* from entry `root` with the learned estimates, stopping at a goal or
+  // A* from state `root` with the learned estimates, stopping at a goal or
   // tree state (spec REFINE); then the RTAA* update of the values and tree.
   size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws);
-  void cache_successors(int id, Lookahead& ws);
   double learned_estimate(int id);
   bool is_goal_entry(int id);
+  // The entry of state `id`, growing the per-id arrays to the graph's size.
+  Entry& entry(int id) {
+    if (static_cast<size_t>(id) >= entries_.size()) {
+      entries_.resize(static_cast<size_t>(graph_->size()));
+      mark_.resize(entries_.size(), 0);
+    }
+    return entries_[static_cast<size_t>(id)];
+  }
+  const Entry* find_entry(const uint64_t* s) const {
+    const int id = graph_->find(s);
+    return id >= 0 && static_cast<size_t>(id) < entries_.size() ? &entries_[static_cast<size_t>(id)] : nullptr;
+  }
 
   std::shared_ptr<const model::Specification> spec_;
   std::shared_ptr<heuristics::Heuristic> h_;
+  std::shared_ptr<StateGraph> graph_;
   // H estimates are kept across refine() calls unless the heuristic says
   // they depend on the root prepare() was given.
-  StateMap<Entry> table_;
-  std::vector<Successor> succ_;
-  // Per entry id: (epoch << 32) | node of the lookahead search that last
+  std::vector<Entry> entries_;
+  // Per state id: (epoch << 32) | node of the lookahead search that last
   // generated it (the duplicate test of every generated successor).
   std::vector<uint64_t> mark_;
   size_t num_values_ = 0;  // entries with has_v
   size_t tree_size_ = 0;   // entries with a tree action
   uint32_t epoch_ = 0;
   const double* find_value(const uint64_t* s) const {
-    const Entry* e = table_.find(s);
+    const Entry* e = find_entry(s);
     return e && e->has_v ? &e->v : nullptr;
   }
   void set_value(int id, double v) {
-    Entry& e = table_.at(id);
+    Entry& e = entry(id);
     if (!e.has_v) ++num_values_;
     e.has_v = true;
     e.v = v;
   }
   const Entry* tree_entry(const uint64_t* s) const {
-    const Entry* e = table_.find(s);
+    const Entry* e = find_entry(s);
     return e && e->tree_action >= 0 ? e : nullptr;
   }
 };
