@@ -227,24 +227,31 @@ const std::vector<uint64_t>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c
   return memo_.emplace(key_, std::move(masks)).first->second;
 }
 
+double DkgMstHeuristic::node_weight(int o) const {
+  const DkgMapAnalysis& m = *map_;
+  // An object with no location (consumed key) is isolated with its pendant:
+  // no set holding it can be spanned.
+  if (view_.cell[o] < 0) return kInf;
+  switch (m.kind(o)) {
+    case DkgMapAnalysis::Kind::Agent: return 0;
+    case DkgMapAnalysis::Kind::Key:
+    case DkgMapAnalysis::Kind::Gem: return view_.holder[o] >= 0 ? 0.0 : costs_.pickup;
+    case DkgMapAnalysis::Kind::Door:
+      // The distance already counts the step onto the door cell.
+      return m.locked(view_, o) ? std::max(0.0, costs_.unlock - costs_.move) : 0.0;
+  }
+  return 0;
+}
+
 double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   const DkgMapAnalysis& m = *map_;
   nodes_.clear();
   double total = 0;
   for (uint64_t rest = objects; rest; rest &= rest - 1) {
     int o = __builtin_ctzll(rest);
-    // An object with no location (consumed key) is isolated with its
-    // pendant: the induced graph cannot be spanned.
-    if (view_.cell[o] < 0) return kInf;
-    switch (m.kind(o)) {
-      case DkgMapAnalysis::Kind::Agent: break;
-      case DkgMapAnalysis::Kind::Key:
-      case DkgMapAnalysis::Kind::Gem: total += view_.holder[o] >= 0 ? 0.0 : costs_.pickup; break;
-      case DkgMapAnalysis::Kind::Door:
-        // The distance already counts the step onto the door cell.
-        if (m.locked(view_, o)) total += std::max(0.0, costs_.unlock - costs_.move);
-        break;
-    }
+    const double w = node_weight(o);
+    if (w == kInf) return kInf;
+    total += w;
     nodes_.push_back(o);
   }
   // Edges weigh >= 0, so once the running total reaches the bound the
@@ -290,7 +297,7 @@ double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   return total;
 }
 
-double DkgMstHeuristic::clause_cost(const ClauseInfo& c, const uint64_t* s) {
+double DkgMstHeuristic::clause_cost(const ClauseInfo& c, const uint64_t* s, double bound) {
   bool holds = true;
   for (int b : c.bits)
     if (!pddl::get_bit(s, b)) {
@@ -298,14 +305,22 @@ double DkgMstHeuristic::clause_cost(const ClauseInfo& c, const uint64_t* s) {
       break;
     }
   if (holds) return 0;
+  // The goal agent moving next saves the first wait of the other agent.
+  const double saved = view_.active >= 0 && in(c.agents, view_.active) ? costs_.wait : 0.0;
+  // Every spanning tree below holds the clause's own agents and items, so
+  // their node weights bound the cost from below: a clause that cannot get
+  // under `bound` is left before its key/door sets are looked up. The margin
+  // keeps "cannot change the caller's minimum" safe from rounding.
+  const uint64_t base = c.agents | c.items;
+  const double cut = bound + saved + 1e-9;
+  double lower = 0;
+  for (uint64_t rest = base; rest; rest &= rest - 1) lower += node_weight(__builtin_ctzll(rest));
+  if (lower >= cut) return std::max(0.0, lower - saved);
   const auto& masks = key_door_masks(c);
   double cost = kInf;
-  const uint64_t base = c.agents | c.items;
   for (uint64_t kd : masks)
-    for (uint64_t hs : c.helper_sets) cost = std::min(cost, mst_weight(base | kd | hs, cost));
-  // The goal agent moving next saves the first wait of the other agent.
-  if (view_.active >= 0 && in(c.agents, view_.active)) cost = std::max(0.0, cost - costs_.wait);
-  return cost;
+    for (uint64_t hs : c.helper_sets) cost = std::min(cost, mst_weight(base | kd | hs, std::min(cost, cut)));
+  return std::max(0.0, cost - saved);
 }
 
 double DkgMstHeuristic::estimate(const uint64_t* s) {
@@ -313,7 +328,7 @@ double DkgMstHeuristic::estimate(const uint64_t* s) {
   map_->read(s, view_);
   double best = kInf;
   for (const auto& c : info_) {
-    best = std::min(best, clause_cost(c, s));
+    best = std::min(best, clause_cost(c, s, best));
     if (best == 0) break;
   }
   return best;

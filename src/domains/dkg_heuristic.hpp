@@ -92,7 +92,12 @@ class DkgMstHeuristic : public heuristics::Heuristic {
     int memo_id = 0;
   };
   const std::vector<uint64_t>& key_door_masks(const ClauseInfo& c);
-  double clause_cost(const ClauseInfo& c, const uint64_t* state);
+  // CLAUSE_COST; with a finite `bound` it may return any value >= bound once
+  // the clause is known not to get below it (the caller keeps a minimum).
+  double clause_cost(const ClauseInfo& c, const uint64_t* state,
+                     double bound = std::numeric_limits<double>::infinity());
+  // An object's node weight in MSTW on the last state read (+inf: no location).
+  double node_weight(int o) const;
 
   std::shared_ptr<const DkgMapAnalysis> map_;
   int max_iters_;

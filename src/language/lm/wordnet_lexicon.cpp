@@ -7,6 +7,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "language/lm/language_model.hpp"
@@ -221,7 +222,11 @@ std::string WordNetLexicon::noun_lemma(const std::string& word) {
 }
 
 WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
+  // Memoised: training asks for every vocabulary word, twice, and each lookup
+  // costs WordNet several seeks and reads of its index files.
+  static std::unordered_map<std::string, WordClass> memo;
   std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(word); it != memo.end()) return it->second;
   auto senses = [&](int pos) {
     int best = 0;
     std::vector<std::string> forms = wn_base_forms(word, pos);
@@ -243,6 +248,7 @@ WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
   c.verb_like = v >= n;
   const int a = senses(ADJ);
   c.adjective_like = a > n && a > v;
+  memo.emplace(word, c);
   return c;
 }
 
