@@ -1,8 +1,11 @@
 // EmbeddedLanguageModel: normalisation, determinism, prompt handling, errors.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -270,6 +273,140 @@ TEST(EmbeddedModel, MissingOrMalformedCorpusIsAClearError) {
     EXPECT_NE(std::string(e.what()).find("bad2.tsv:1"), std::string::npos) << e.what();
   }
   std::filesystem::remove_all(tmp);
+}
+
+// ---- the on-disk cache of trained models ----------------------------------------
+
+std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+EmbeddedModelOptions with_cache(const std::string& dir) {
+  EmbeddedModelOptions o;
+  o.cache_dir = dir;
+  return o;
+}
+
+// Commands and utterances scored by the snapshot tests (DKG and VH prompts,
+// seen and unseen words, the empty-command prompt).
+std::vector<ScoreRequest> probe_batch() {
+  std::vector<ScoreRequest> batch;
+  for (const char* c : {"(pickup you key1) where (iscolor key1 red)", "(unlock you key1 door1) where (iscolor door1 blue)",
+                        "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)"}) {
+    for (const char* u : {" Could you grab the red key for me?\n", " Unlock the blue door.\n", " Fetch both keys pls\n",
+                          " Bring me both red", " zyzzyva quux!\n"}) {
+      batch.push_back({literal_prompt(c), u});
+      batch.push_back({pragmatic_prompt(c), u});
+    }
+    batch.push_back({vh_prompt("(grab you mug1) (grab you plate1)"), " Get a mug and a plate.\n"});
+  }
+  batch.push_back({"\n", " Hello there.\n"});
+  return batch;
+}
+
+TEST(EmbeddedSnapshot, LoadedModelScoresBitForBitLikeTheTrainedOne) {
+  EmbeddedModelOptions off;
+  off.cache_dir = "off";
+  EmbeddedLanguageModel trained(off);
+  EXPECT_TRUE(trained.cache_dir().empty());
+  auto m = trained.model_for_prompt(literal_prompt("(pickup you key1)"));
+  const std::string bytes = m->save();
+  auto loaded = AlignmentModel::load(bytes);
+  EXPECT_EQ(loaded->vocabulary_size(), m->vocabulary_size());
+  EXPECT_EQ(loaded->save(), bytes);
+  for (const auto& r : probe_batch()) {
+    if (r.prompt == "\n") continue;
+    const std::string cmd = split_prompt(r.prompt).second;
+    const bool complete = r.continuation.back() == '\n';
+    EXPECT_EQ(loaded->log_prob(*loaded->bind(cmd), loaded->encode(r.continuation), complete),
+              m->log_prob(*m->bind(cmd), m->encode(r.continuation), complete))
+        << cmd << " /" << r.continuation;
+  }
+  EXPECT_EQ(loaded->log_prob_unprimed(loaded->encode(" Hello there.\n"), true),
+            m->log_prob_unprimed(m->encode(" Hello there.\n"), true));
+}
+
+TEST(EmbeddedSnapshot, DamagedSnapshotsAreRejected) {
+  EmbeddedModelOptions off;
+  off.cache_dir = "off";
+  EmbeddedLanguageModel trained(off);
+  const std::string bytes = trained.model_for_prompt("\n")->save();
+  EXPECT_THROW(AlignmentModel::load(""), LmError);
+  EXPECT_THROW(AlignmentModel::load("not a snapshot at all"), LmError);
+  for (size_t cut : {size_t{8}, size_t{9}, bytes.size() / 3, bytes.size() / 2, bytes.size() - 1})
+    EXPECT_THROW(AlignmentModel::load(bytes.substr(0, cut)), LmError) << "cut at " << cut;
+  EXPECT_THROW(AlignmentModel::load(bytes + "x"), LmError);
+  std::string wrong_magic = bytes;
+  wrong_magic[7] = '9';
+  EXPECT_THROW(AlignmentModel::load(wrong_magic), LmError);
+  // A length field blown up to more than the file holds.
+  std::string huge = bytes;
+  const uint64_t big = uint64_t{1} << 40;
+  std::memcpy(huge.data() + 8, &big, sizeof(big));
+  EXPECT_THROW(AlignmentModel::load(huge), LmError);
+}
+
+TEST(EmbeddedCache, SecondInstanceLoadsWhatTheFirstTrainedAndScoresAlike) {
+  const auto dir = fresh_dir("clips_lm_cache_test");
+  const auto batch = probe_batch();
+  EmbeddedModelOptions off;
+  off.cache_dir = "off";
+  const std::vector<double> reference = EmbeddedLanguageModel(off).score(batch);
+
+  EmbeddedLanguageModel first(with_cache(dir.string()));
+  ASSERT_EQ(first.cache_dir(), dir.string());
+  EXPECT_EQ(first.score(batch), reference);
+  EXPECT_EQ(first.cache_hits(), 0u);
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path().extension() == ".bin";
+  EXPECT_EQ(files, first.trained_blocks());  // literal, pragmatic, VH and empty blocks
+
+  EmbeddedLanguageModel second(with_cache(dir.string()));
+  EXPECT_EQ(second.score(batch), reference);
+  EXPECT_EQ(second.cache_hits(), second.trained_blocks());
+
+  // A damaged entry is trained again and rewritten, with the same scores.
+  for (const auto& e : std::filesystem::directory_iterator(dir)) std::filesystem::resize_file(e.path(), 100);
+  EmbeddedLanguageModel third(with_cache(dir.string()));
+  EXPECT_EQ(third.score(batch), reference);
+  EXPECT_EQ(third.cache_hits(), 0u);
+  EmbeddedLanguageModel fourth(with_cache(dir.string()));
+  EXPECT_EQ(fourth.score(batch), reference);
+  EXPECT_EQ(fourth.cache_hits(), fourth.trained_blocks());
+  std::filesystem::remove_all(dir);
+}
+
+TEST(EmbeddedCache, DifferentTrainingDataGetsItsOwnEntry) {
+  const auto dir = fresh_dir("clips_lm_cache_iter_test");
+  const std::string prompt = literal_prompt("(pickup you key1)");
+  EmbeddedModelOptions a = with_cache(dir.string());
+  EmbeddedModelOptions b = a;
+  b.em_iterations = 3;
+  const double sa = EmbeddedLanguageModel(a).score({{prompt, " Get the key.\n"}})[0];
+  EmbeddedLanguageModel mb(b);
+  const double sb = mb.score({{prompt, " Get the key.\n"}})[0];
+  EXPECT_EQ(mb.cache_hits(), 0u);  // not served a's model
+  EXPECT_NE(sa, sb);
+  // An unwritable cache directory only means training every time.
+  const auto file = dir / "plain-file";
+  std::ofstream(file) << "x";
+  EmbeddedLanguageModel blocked(with_cache((file / "sub").string()));
+  EXPECT_EQ(blocked.score({{prompt, " Get the key.\n"}})[0], sa);
+  EXPECT_EQ(blocked.cache_hits(), 0u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(EmbeddedCache, OffByEnvironment) {
+  const char* old = std::getenv("CLIPS_LM_CACHE_DIR");
+  const std::string saved = old ? old : "";
+  ::setenv("CLIPS_LM_CACHE_DIR", "off", 1);
+  EXPECT_TRUE(EmbeddedLanguageModel().cache_dir().empty());
+  ::setenv("CLIPS_LM_CACHE_DIR", "/tmp/clips-cache-env-test", 1);
+  EXPECT_EQ(EmbeddedLanguageModel().cache_dir(), "/tmp/clips-cache-env-test");
+  if (old) ::setenv("CLIPS_LM_CACHE_DIR", saved.c_str(), 1);
+  else ::unsetenv("CLIPS_LM_CACHE_DIR");
 }
 
 }  // namespace

@@ -171,6 +171,13 @@ class AlignmentModel {
   // Human-readable per-token source probabilities (all groups mentioned), for debugging.
   std::string explain(const std::string& command, const std::string& utterance) const;
 
+  // A binary snapshot of the trained parameters, for the embedded model's
+  // on-disk cache (tables created on demand are not part of it). load() throws
+  // LmError on anything but a complete snapshot of this format; a loaded model
+  // scores bit for bit like the one saved.
+  std::string save() const;
+  static std::shared_ptr<AlignmentModel> load(const std::string& bytes);
+
   ~AlignmentModel();
   AlignmentModel(const AlignmentModel&) = delete;
   AlignmentModel& operator=(const AlignmentModel&) = delete;

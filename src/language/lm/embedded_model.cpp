@@ -1,8 +1,14 @@
 #include "language/lm/embedded_model.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <shared_mutex>
+#include <sstream>
 #include <unordered_map>
 
 #include "language/lm/alignment_model.hpp"
@@ -57,6 +63,121 @@ std::vector<TrainingPair> read_corpus(const std::string& path) {
   }
   if (out.empty()) throw LmError("embedded LM: corpus file " + path + " holds no pairs");
   return out;
+}
+
+// ---- on-disk cache of trained models ------------------------------------------
+
+namespace fs = std::filesystem;
+
+std::string env_or_empty(const char* name) {
+  const char* v = std::getenv(name);
+  return v == nullptr ? std::string() : std::string(v);
+}
+
+std::string resolve_cache_dir(const std::string& option) {
+  std::string dir = option.empty() ? env_or_empty("CLIPS_LM_CACHE_DIR") : option;
+  if (dir == "off") return "";
+  if (dir.empty()) {
+    if (std::string x = env_or_empty("XDG_CACHE_HOME"); !x.empty()) dir = x + "/clips";
+    else if (std::string h = env_or_empty("HOME"); !h.empty()) dir = h + "/.cache/clips";
+  }
+  return dir;
+}
+
+// Size and modification time of a file, as text ("" if it cannot be read).
+std::string file_stamp(const fs::path& p) {
+  std::error_code ec;
+  const auto size = fs::file_size(p, ec);
+  if (ec) return "";
+  const auto mtime = fs::last_write_time(p, ec);
+  if (ec) return "";
+  return p.string() + ":" + std::to_string(size) + ":" + std::to_string(mtime.time_since_epoch().count());
+}
+
+// What a trained model depends on besides its training pairs: the code that
+// trains it (this executable's file) and the WordNet database. "" if the
+// executable cannot be identified: then nothing is cached.
+std::string cache_identity() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  std::string id = file_stamp(exe);
+  if (id.empty()) return "";
+  std::string wn_dir = env_or_empty("WNSEARCHDIR");
+  if (wn_dir.empty()) wn_dir = "/usr/share/wordnet";
+  std::vector<std::string> stamps;
+  for (const auto& e : fs::directory_iterator(wn_dir, ec))
+    if (e.is_regular_file()) stamps.push_back(file_stamp(e.path()));
+  std::sort(stamps.begin(), stamps.end());
+  for (const auto& x : stamps) id += "|" + x;
+  return id;
+}
+
+uint64_t fnv1a(const std::string& bytes, uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string cache_key(const std::string& identity, const std::vector<TrainingPair>& pairs, int iterations) {
+  std::ostringstream o;
+  o << "clips-embedded-lm/1\n" << identity << "\n" << iterations << "\n";
+  o.precision(17);
+  for (const auto& p : pairs) o << p.command << '\t' << p.utterance << '\t' << p.weight << '\n';
+  const std::string text = o.str();
+  // Two differently seeded 64-bit hashes: a collision would load the wrong model.
+  char hex[33];
+  std::snprintf(hex, sizeof(hex), "%016llx%016llx", static_cast<unsigned long long>(fnv1a(text)),
+                static_cast<unsigned long long>(fnv1a(text, 0x84222325cbf29ce4ull ^ text.size())));
+  return hex;
+}
+
+std::shared_ptr<AlignmentModel> load_cached(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return nullptr;
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  try {
+    return AlignmentModel::load(bytes);
+  } catch (const LmError&) {
+    return nullptr;  // damaged or from another format: train again and overwrite
+  }
+}
+
+// Best effort: a cache that cannot be written only costs the next run a training.
+void store_cached(const fs::path& dir, const fs::path& file, const AlignmentModel& model) {
+  static std::atomic<unsigned> counter{0};
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return;
+  // Write then rename, so a concurrent reader sees a whole file or none.
+  const fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    const std::string bytes = model.save();
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) {
+      out.close();
+      fs::remove(tmp, ec);
+      return;
+    }
+  }
+  fs::rename(tmp, file, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    return;
+  }
+  // Keep the directory bounded: the newest 64 snapshots (about 0.5 MB each).
+  std::vector<std::pair<fs::file_time_type, fs::path>> entries;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("embedded-", 0) == 0 && e.path().extension() == ".bin")
+      entries.emplace_back(fs::last_write_time(e.path(), ec), e.path());
+  }
+  if (entries.size() <= 64) return;
+  std::sort(entries.begin(), entries.end());
+  for (size_t i = 0; i + 64 < entries.size(); ++i) fs::remove(entries[i].second, ec);
 }
 
 }  // namespace
@@ -139,6 +260,14 @@ EmbeddedLanguageModel::EmbeddedLanguageModel(EmbeddedModelOptions options)
     auto pairs = read_corpus(data_dir_ + "/" + f);
     corpus_.insert(corpus_.end(), pairs.begin(), pairs.end());
   }
+  cache_dir_ = resolve_cache_dir(options_.cache_dir);
+  if (!cache_dir_.empty()) cache_identity_ = cache_identity();
+  if (cache_identity_.empty()) cache_dir_.clear();
+}
+
+size_t EmbeddedLanguageModel::cache_hits() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return cache_hits_;
 }
 
 EmbeddedLanguageModel::~EmbeddedLanguageModel() = default;
@@ -159,7 +288,19 @@ std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::block_
     pairs.push_back(TrainingPair{cmd, utt, options_.fewshot_weight, "prompt example " + std::to_string(index)});
   }
   auto state = std::make_shared<BlockState>();
-  state->model = AlignmentModel::train(pairs, options_.em_iterations);
+  if (!cache_dir_.empty()) {
+    const fs::path file =
+        fs::path(cache_dir_) / ("embedded-" + cache_key(cache_identity_, pairs, options_.em_iterations) + ".bin");
+    state->model = load_cached(file);
+    if (state->model) {
+      ++cache_hits_;
+    } else {
+      state->model = AlignmentModel::train(pairs, options_.em_iterations);
+      store_cached(cache_dir_, file, *state->model);
+    }
+  } else {
+    state->model = AlignmentModel::train(pairs, options_.em_iterations);
+  }
   blocks_.emplace(block, state);
   return state;
 }
