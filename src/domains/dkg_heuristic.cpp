@@ -227,7 +227,7 @@ const std::vector<uint64_t>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c
   return memo_.emplace(key_, std::move(masks)).first->second;
 }
 
-double DkgMstHeuristic::node_weight(int o) const {
+inline double DkgMstHeuristic::node_weight(int o) const {
   const DkgMapAnalysis& m = *map_;
   // An object with no location (consumed key) is isolated with its pendant:
   // no set holding it can be spanned.
