@@ -134,15 +134,17 @@ std::string reworded_copy(const std::map<std::string, std::string>& utterances, 
 
 }  // namespace
 
-// Freer rewordings (three sets written for this test: word order, ellipsis,
+// Freer rewordings (four sets written for this test: word order, ellipsis,
 // statements instead of requests, "Red key please!", relative clauses,
-// imperatives) keep CLIPS ahead and its assistance precise.
+// imperatives, a casual register: "Mind fetching me that red key over
+// there?", "The blue key's on me. You get a red one.") keep CLIPS ahead and
+// its assistance precise.
 TEST(Paraphrases, FreeRewordingsKeepClipsAheadAndPrecise) {
   if (!paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not present";
   auto lm = language::make_language_model("embedded", {});
   eval::ExperimentOptions o;
   o.methods = {"clips", "lang_only", "action_only"};
-  for (const char* set : {"A", "B", "C"}) {
+  for (const char* set : {"A", "B", "C", "D"}) {
     auto utterances = free_paraphrases(set);
     ASSERT_GE(utterances.size(), 20u) << set;
     std::string dir = reworded_copy(utterances, set);
