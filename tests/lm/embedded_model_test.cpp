@@ -218,6 +218,18 @@ TEST(EmbeddedModel, MiscolouringTheCommandsObjectCostsMoreThanSilence) {
   EXPECT_LT(score(red_key, j), score(any_key, j));
 }
 
+// "more" appears in training mostly next to number words ("two more
+// glasses"), so EM gives it to the number fields; without background mass of
+// its own, "one more plate" favoured any command with a count in it over the
+// single plate that was asked for (by 2.9 nats). The margin is small now
+// (0.4 nats; "Bring one more plate." still leans 0.2 nats the other way):
+// leaving a whole action group unmentioned stays too cheap in this model.
+TEST(EmbeddedModel, WordsOwnedByAFieldDoNotFavourCommandsThatHaveIt) {
+  const std::string u = "Get me one more plate.";
+  EXPECT_GT(score(vh_prompt("(grab you plate1)"), u),
+            score(vh_prompt("(grab you cutleryfork1) (grab you cutleryfork2) (grab you plate1)"), u));
+}
+
 TEST(EmbeddedModel, UnseenItemTypesUseWordNet) {
   // "mug" never occurs in the corpus; WordNet links "cup" and "mugs" to it.
   const std::string mug = vh_prompt("(grab you mug1)");

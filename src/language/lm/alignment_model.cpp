@@ -49,6 +49,7 @@ constexpr double kAlphaPriorOther = 1.0;
 
 constexpr int kMaxLen = 256;
 constexpr int kMaxActionsBucket = 5;
+constexpr double kUnigramShare = 0.1;  // background share kept on raw token frequencies
 constexpr int kCharSymbols = 36;  // a-z, 0-9; index 36 = end of word
 
 int char_index(char c) {
@@ -1182,15 +1183,32 @@ struct Trainer {
       for (const auto& [id, p] : with_floor(d, floor_ids, init_floor)) t.prob[static_cast<size_t>(id)] += p;
     }
 
+    // Relative frequencies of the training tokens.
+    std::vector<double> unigram(V2, 0.0);
+    {
+      double total = 0;
+      for (size_t p = 0; p < pairs.size(); ++p)
+        for (const std::string& w : tokens[p]) {
+          unigram[static_cast<size_t>(M.word_ids_.at(w))] += pairs[p].weight;
+          total += pairs[p].weight;
+        }
+      if (total > 0)
+        for (double& u : unigram) u /= total;
+    }
     // Background initialised to smoothed relative frequencies of all tokens.
+    // A share of it stays on the plain token frequencies: a word that EM hands
+    // entirely to some command field ("short" to one noun, "more" to a number)
+    // keeps a little background mass, so in an utterance about something else
+    // it is not evidence for whichever command happens to own it.
     auto set_background = [&](const std::vector<double>& cnt) {
       double total = 0;
       for (double v : cnt) total += v;
       M.bg_.assign(V2, 0.0);
       for (size_t i = 0; i < V2; ++i) {
-        M.bg_[i] = (cnt[i] + kKappaBackground * char_in_vocab[i]) / (total + kKappaBackground);
+        M.bg_[i] = (1 - kUnigramShare) * (cnt[i] + kKappaBackground * char_in_vocab[i]) / (total + kKappaBackground) +
+                   kUnigramShare * unigram[i];
       }
-      M.bg_unknown_scale_ = kKappaBackground / (total + kKappaBackground);
+      M.bg_unknown_scale_ = (1 - kUnigramShare) * kKappaBackground / (total + kKappaBackground);
     };
     std::vector<double> punct_pseudo(V2, 0.0);
     for (int i = 0; i < 4; ++i) punct_pseudo[static_cast<size_t>(i)] = 0.5;

@@ -33,7 +33,9 @@
 //  4. Words: each token of a clause of type t is drawn independently from the mixture
 //       pi_bg * BG(w) + pi_agent * A_t(w) + pi_content * Content_{m,t}(w)
 //     where BG is a background English unigram whose base is a character bigram
-//     model (so every string of [a-z0-9]+ has mass: unknown words are fine),
+//     model (so every string of [a-z0-9]+ has mass: unknown words are fine) and
+//     a tenth of which stays on the raw training frequencies (a word EM hands to
+//     one field, "more" to the number words, keeps some mass of its own),
 //     A_t emits speech-act markers ("can", "could", "you" / "i", "will", "am"),
 //     and Content_{m,t} is a uniform mixture over the mentioned groups whose
 //     agent matches t (you for R, me for S) plus a small share of GEN, a generic
