@@ -358,6 +358,12 @@ TEST(EmbeddedSnapshot, DamagedSnapshotsAreRejected) {
   const uint64_t big = uint64_t{1} << 40;
   std::memcpy(huge.data() + 8, &big, sizeof(big));
   EXPECT_THROW(AlignmentModel::load(huge), LmError);
+  // One flipped bit anywhere in the parameters.
+  for (size_t at : {bytes.size() / 4, bytes.size() / 2, bytes.size() - 20}) {
+    std::string flipped = bytes;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
+    EXPECT_THROW(AlignmentModel::load(flipped), LmError) << "bit flipped at " << at;
+  }
 }
 
 TEST(EmbeddedCache, SecondInstanceLoadsWhatTheFirstTrainedAndScoresAlike) {

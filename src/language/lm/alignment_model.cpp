@@ -1314,7 +1314,18 @@ std::shared_ptr<AlignmentModel> AlignmentModel::train(const std::vector<Training
 
 namespace {
 
-constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '1'};
+constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '2'};
+
+// FNV-1a over the payload, stored last: a snapshot damaged on disk (a flipped
+// bit in a probability) is rejected instead of scoring silently wrong.
+uint64_t snapshot_checksum(const char* data, size_t size) {
+  uint64_t h = 1469598103934665603ull;
+  for (size_t i = 0; i < size; ++i) {
+    h ^= static_cast<unsigned char>(data[i]);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
 
 struct Writer {
   std::string out;
@@ -1403,13 +1414,20 @@ std::string AlignmentModel::save() const {
   for (const auto& row : length_) w.vec(row);
   w.vec(length_tail_scale_);
   w.vec(length_mean_);
+  w.pod(snapshot_checksum(w.out.data(), w.out.size()));
   return std::move(w.out);
 }
 
 std::shared_ptr<AlignmentModel> AlignmentModel::load(const std::string& bytes) {
-  if (bytes.size() < sizeof(kSnapshotMagic) || std::memcmp(bytes.data(), kSnapshotMagic, sizeof(kSnapshotMagic)) != 0)
+  if (bytes.size() < sizeof(kSnapshotMagic) + sizeof(uint64_t) ||
+      std::memcmp(bytes.data(), kSnapshotMagic, sizeof(kSnapshotMagic)) != 0)
     throw LmError("embedded LM snapshot: not a snapshot of this format");
-  Reader r{bytes, sizeof(kSnapshotMagic)};
+  const size_t payload = bytes.size() - sizeof(uint64_t);
+  uint64_t stored = 0;
+  std::memcpy(&stored, bytes.data() + payload, sizeof(stored));
+  if (stored != snapshot_checksum(bytes.data(), payload)) throw LmError("embedded LM snapshot: checksum mismatch");
+  const std::string body = bytes.substr(0, payload);
+  Reader r{body, sizeof(kSnapshotMagic)};
   std::shared_ptr<AlignmentModel> m(new AlignmentModel());
   const size_t V = r.size();
   for (size_t i = 0; i < V; ++i) m->add_word(r.str());
@@ -1450,7 +1468,7 @@ std::shared_ptr<AlignmentModel> AlignmentModel::load(const std::string& bytes) {
   if (!shapes_ok) throw LmError("embedded LM snapshot: arrays of the wrong shape");
   for (const auto& row : m->length_)
     if (row.size() != static_cast<size_t>(kMaxLen + 1)) throw LmError("embedded LM snapshot: arrays of the wrong shape");
-  if (r.at != bytes.size()) throw LmError("embedded LM snapshot: trailing bytes");
+  if (r.at != body.size()) throw LmError("embedded LM snapshot: trailing bytes");
   return m;
 }
 
