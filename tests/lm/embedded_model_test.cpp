@@ -416,6 +416,24 @@ TEST(EmbeddedCache, DifferentTrainingDataGetsItsOwnEntry) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(EmbeddedCache, DirectoryKeepsTheNewestSnapshots) {
+  const auto dir = fresh_dir("clips_lm_cache_bound_test");
+  std::filesystem::create_directories(dir);
+  for (int i = 0; i < 70; ++i) std::ofstream(dir / ("embedded-old" + std::to_string(i) + ".bin")) << "stale";
+  std::ofstream(dir / "notes.txt") << "not ours";
+  EmbeddedLanguageModel m(with_cache(dir.string()));
+  m.score({{"\n", " Hello.\n"}});
+  size_t snapshots = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    snapshots += e.path().extension() == ".bin";
+  EXPECT_EQ(snapshots, 64u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));  // other files are left alone
+  EmbeddedLanguageModel again(with_cache(dir.string()));
+  again.score({{"\n", " Hello.\n"}});
+  EXPECT_EQ(again.cache_hits(), 1u);  // the new snapshot survived the pruning
+  std::filesystem::remove_all(dir);
+}
+
 TEST(EmbeddedCache, OffByEnvironment) {
   const char* old = std::getenv("CLIPS_LM_CACHE_DIR");
   const std::string saved = old ? old : "";

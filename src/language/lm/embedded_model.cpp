@@ -94,6 +94,16 @@ std::string file_stamp(const fs::path& p) {
   return p.string() + ":" + std::to_string(size) + ":" + std::to_string(mtime.time_since_epoch().count());
 }
 
+// The regular files of a directory; none if it cannot be read (no throwing:
+// the cache is an optimisation and must never fail a run).
+std::vector<fs::path> regular_files(const fs::path& dir) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) out.push_back(it->path());
+  return out;
+}
+
 // What a trained model depends on besides its training pairs: the code that
 // trains it (this executable's file) and the WordNet database. "" if the
 // executable cannot be identified: then nothing is cached.
@@ -106,8 +116,7 @@ std::string cache_identity() {
   std::string wn_dir = env_or_empty("WNSEARCHDIR");
   if (wn_dir.empty()) wn_dir = "/usr/share/wordnet";
   std::vector<std::string> stamps;
-  for (const auto& e : fs::directory_iterator(wn_dir, ec))
-    if (e.is_regular_file()) stamps.push_back(file_stamp(e.path()));
+  for (const fs::path& f : regular_files(wn_dir)) stamps.push_back(file_stamp(f));
   std::sort(stamps.begin(), stamps.end());
   for (const auto& x : stamps) id += "|" + x;
   return id;
@@ -170,10 +179,9 @@ void store_cached(const fs::path& dir, const fs::path& file, const AlignmentMode
   }
   // Keep the directory bounded: the newest 64 snapshots (about 0.5 MB each).
   std::vector<std::pair<fs::file_time_type, fs::path>> entries;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("embedded-", 0) == 0 && e.path().extension() == ".bin")
-      entries.emplace_back(fs::last_write_time(e.path(), ec), e.path());
+  for (const fs::path& f : regular_files(dir)) {
+    const std::string name = f.filename().string();
+    if (name.rfind("embedded-", 0) == 0 && f.extension() == ".bin") entries.emplace_back(fs::last_write_time(f, ec), f);
   }
   if (entries.size() <= 64) return;
   std::sort(entries.begin(), entries.end());
