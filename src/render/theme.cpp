@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "util/hash.hpp"
+
 namespace clips::render {
 namespace {
 
@@ -59,9 +61,7 @@ Rgb tint(Rgb c, double a) {
 Rgb item_colour(std::string_view type) {
   for (const auto& [name, i] : kItemTypes)
     if (name == type) return kPastels[i];
-  std::uint32_t h = 2166136261u;  // FNV-1a: stable, unlike std::hash
-  for (char c : type) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
-  return kPastels[h % kPastels.size()];
+  return kPastels[util::fnv1a32(type) % kPastels.size()];
 }
 
 std::vector<Rgb> theme_colours() {

@@ -9,10 +9,12 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <string_view>
 
 #include "language/lm/language_model.hpp"
 #include "language/lm/utterance_tokens.hpp"
 #include "language/lm/wordnet_lexicon.hpp"
+#include "util/hash.hpp"
 
 namespace clips::lm {
 namespace {
@@ -1318,14 +1320,7 @@ constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '2'};
 
 // FNV-1a over the payload, stored last: a snapshot damaged on disk (a flipped
 // bit in a probability) is rejected instead of scoring silently wrong.
-uint64_t snapshot_checksum(const char* data, size_t size) {
-  uint64_t h = 1469598103934665603ull;
-  for (size_t i = 0; i < size; ++i) {
-    h ^= static_cast<unsigned char>(data[i]);
-    h *= 1099511628211ull;
-  }
-  return h;
-}
+uint64_t snapshot_checksum(std::string_view payload) { return util::fnv1a64(payload); }
 
 struct Writer {
   std::string out;
@@ -1346,7 +1341,7 @@ struct Writer {
 };
 
 struct Reader {
-  const std::string& in;
+  std::string_view in;  // the payload, without the trailing checksum
   size_t at = 0;
   void need(size_t n) const {
     if (n > in.size() - at) throw LmError("embedded LM snapshot: truncated at byte " + std::to_string(at));
@@ -1368,7 +1363,7 @@ struct Reader {
   std::string str() {
     const size_t n = size();
     need(n);
-    std::string x = in.substr(at, n);
+    std::string x(in.substr(at, n));
     at += n;
     return x;
   }
@@ -1414,7 +1409,7 @@ std::string AlignmentModel::save() const {
   for (const auto& row : length_) w.vec(row);
   w.vec(length_tail_scale_);
   w.vec(length_mean_);
-  w.pod(snapshot_checksum(w.out.data(), w.out.size()));
+  w.pod(snapshot_checksum(w.out));
   return std::move(w.out);
 }
 
@@ -1425,8 +1420,8 @@ std::shared_ptr<AlignmentModel> AlignmentModel::load(const std::string& bytes) {
   const size_t payload = bytes.size() - sizeof(uint64_t);
   uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + payload, sizeof(stored));
-  if (stored != snapshot_checksum(bytes.data(), payload)) throw LmError("embedded LM snapshot: checksum mismatch");
-  const std::string body = bytes.substr(0, payload);
+  const std::string_view body(bytes.data(), payload);
+  if (stored != snapshot_checksum(body)) throw LmError("embedded LM snapshot: checksum mismatch");
   Reader r{body, sizeof(kSnapshotMagic)};
   std::shared_ptr<AlignmentModel> m(new AlignmentModel());
   const size_t V = r.size();

@@ -13,6 +13,7 @@
 
 #include "language/lm/alignment_model.hpp"
 #include "language/lm/command_frame.hpp"
+#include "util/hash.hpp"
 
 namespace clips::lm {
 namespace {
@@ -122,14 +123,6 @@ std::string cache_identity() {
   return id;
 }
 
-uint64_t fnv1a(const std::string& bytes, uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
 std::string cache_key(const std::string& identity, const std::vector<TrainingPair>& pairs, int iterations) {
   std::ostringstream o;
   o << "clips-embedded-lm/1\n" << identity << "\n" << iterations << "\n";
@@ -138,8 +131,8 @@ std::string cache_key(const std::string& identity, const std::vector<TrainingPai
   const std::string text = o.str();
   // Two differently seeded 64-bit hashes: a collision would load the wrong model.
   char hex[33];
-  std::snprintf(hex, sizeof(hex), "%016llx%016llx", static_cast<unsigned long long>(fnv1a(text)),
-                static_cast<unsigned long long>(fnv1a(text, 0x84222325cbf29ce4ull ^ text.size())));
+  std::snprintf(hex, sizeof(hex), "%016llx%016llx", static_cast<unsigned long long>(util::fnv1a64(text)),
+                static_cast<unsigned long long>(util::fnv1a64(text, 0x84222325cbf29ce4ull ^ text.size())));
   return hex;
 }
 
