@@ -24,12 +24,12 @@ double Policy::value(const uint64_t* s) const {
 
 double Policy::learned_estimate(int id) {
   Entry& e = entry(id);
-  if (e.has_v) return -e.v;
+  if (e.has_v) return -e.value_or_h;
   if (!e.has_h) {
-    e.h = h_->estimate(graph_->state(id));  // does not touch entries_, so `e` stays valid
+    e.value_or_h = h_->estimate(graph_->state(id));  // does not touch entries_, so `e` stays valid
     e.has_h = true;
   }
-  return e.h;
+  return e.value_or_h;
 }
 
 bool Policy::is_goal_entry(int id) {
@@ -60,7 +60,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   if (++epoch_ == 0) {  // wrapped: forget every old search
-    std::fill(mark_.begin(), mark_.end(), 0);
+    for (Entry& e : entries_) e.epoch = 0;
     epoch_ = 1;
   }
   const uint32_t epoch = epoch_;
@@ -80,8 +80,11 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   };
   auto add_node = [&](int entry, int parent, pddl::ActionId a, double g) {
     const int id = static_cast<int>(nodes.size());
-    const double h = learned_estimate(entry);  // also sizes mark_ for `entry`
-    mark_[static_cast<size_t>(entry)] = (uint64_t{epoch} << 32) | static_cast<uint32_t>(id);
+    const double h = learned_estimate(entry);  // also sizes entries_ for `entry`
+    Entry& e = entries_[static_cast<size_t>(entry)];
+    e.epoch = epoch;
+    e.node = id;
+    graph_->prefetch(entry);  // most generated nodes are expanded soon after
     LookaheadNode n;
     n.entry = entry;
     n.parent = parent;
@@ -127,17 +130,23 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     nodes[static_cast<size_t>(id)].open = false;
     ++expanded;
     const double g0 = nodes[static_cast<size_t>(id)].g;
-    for (const StateGraph::Successor sc : graph_->successors(eid)) {
+    const auto succ = graph_->successors(eid);
+    // The children's entries lie far apart: ask for all of them before the
+    // loop needs the first, so their cache misses overlap.
+    for (const StateGraph::Successor sc : succ)
+      if (static_cast<size_t>(sc.child) < entries_.size() && (!prune || ws.keep[static_cast<size_t>(sc.action)]))
+        __builtin_prefetch(&entries_[static_cast<size_t>(sc.child)]);
+    for (const StateGraph::Successor sc : succ) {
       if (prune && !ws.keep[static_cast<size_t>(sc.action)]) continue;
       const double g = g0 + spec_->cost(sc.action);
-      // A state beyond mark_ is new to this policy, so not in this search.
-      const uint64_t mark = static_cast<size_t>(sc.child) < mark_.size() ? mark_[static_cast<size_t>(sc.child)] : 0;
-      if (static_cast<uint32_t>(mark >> 32) != epoch) {
+      // A state beyond entries_ is new to this policy, so not in this search.
+      const Entry* ce = static_cast<size_t>(sc.child) < entries_.size() ? &entries_[static_cast<size_t>(sc.child)] : nullptr;
+      if (!ce || ce->epoch != epoch) {
         ++counter;
         push(add_node(sc.child, id, sc.action, g), true);
         continue;
       }
-      const int cnode = static_cast<int>(static_cast<uint32_t>(mark));
+      const int cnode = ce->node;
       LookaheadNode& c = nodes[static_cast<size_t>(cnode)];
       if (g >= c.g) continue;
       c.parent = id;
@@ -208,7 +217,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   for (pddl::ActionId a : task.applicable_actions(s)) {
     task.apply(a, s.data(), child.data());
     const int cid = graph_->insert(child.data());
-    if (const Entry& e = entry(cid); e.has_v && e.v == -kInf) continue;
+    if (const Entry& e = entry(cid); e.has_v && e.value_or_h == -kInf) continue;
     if (is_goal_entry(cid)) {
       set_value(cid, 0);
     } else {

@@ -67,8 +67,16 @@ class Policy {
   // on the reusable tree and the cached goal test. The lookahead A* works on
   // ids, so it hashes a state only when the graph first generates it.
   struct Entry {
-    double v = 0;  // V(s) when has_v
-    double h = 0;  // H(s) when has_h
+    // The lookahead is bound by memory latency, so an entry is kept small
+    // and holds everything a generated successor needs in one cache line.
+    // V(s) when has_v, else the cached estimate H(s) when has_h: once a state
+    // has a learned value its estimate is never read again, so one slot holds
+    // either.
+    double value_or_h = 0;
+    // The lookahead search that last generated this state (its epoch) and
+    // its node there: the duplicate test of every generated successor.
+    uint32_t epoch = 0;
+    int node = 0;
     pddl::ActionId tree_action = -1;  // next action on a stored goal path; -1: not a tree node
     bool has_v = false, has_h = false;
     int8_t goal = -1;                 // cached goal test: -1 unknown, 0 no, 1 yes
@@ -91,10 +99,7 @@ class Policy {
   bool is_goal_entry(int id);
   // The entry of state `id`, growing the per-id arrays to the graph's size.
   Entry& entry(int id) {
-    if (static_cast<size_t>(id) >= entries_.size()) {
-      entries_.resize(static_cast<size_t>(graph_->size()));
-      mark_.resize(entries_.size(), 0);
-    }
+    if (static_cast<size_t>(id) >= entries_.size()) entries_.resize(static_cast<size_t>(graph_->size()));
     return entries_[static_cast<size_t>(id)];
   }
   const Entry* find_entry(const uint64_t* s) const {
@@ -108,21 +113,18 @@ class Policy {
   // H estimates are kept across refine() calls unless the heuristic says
   // they depend on the root prepare() was given.
   std::vector<Entry> entries_;
-  // Per state id: (epoch << 32) | node of the lookahead search that last
-  // generated it (the duplicate test of every generated successor).
-  std::vector<uint64_t> mark_;
   size_t num_values_ = 0;  // entries with has_v
   size_t tree_size_ = 0;   // entries with a tree action
   uint32_t epoch_ = 0;
   const double* find_value(const uint64_t* s) const {
     const Entry* e = find_entry(s);
-    return e && e->has_v ? &e->v : nullptr;
+    return e && e->has_v ? &e->value_or_h : nullptr;
   }
   void set_value(int id, double v) {
     Entry& e = entry(id);
     if (!e.has_v) ++num_values_;
     e.has_v = true;
-    e.v = v;
+    e.value_or_h = v;
   }
   const Entry* tree_entry(const uint64_t* s) const {
     const Entry* e = find_entry(s);

@@ -25,7 +25,6 @@ StateGraph::StateGraph(std::shared_ptr<const pddl::Task> task)
   }
   table_.assign(1024, 0);
   parent_.resize(static_cast<size_t>(words_));
-  child_.resize(static_cast<size_t>(words_));
 }
 
 StateGraph::~StateGraph() {
@@ -113,10 +112,15 @@ uint64_t StateGraph::expand(int id) {
   if (succ_chunks_[chunk].load(std::memory_order_relaxed) == nullptr)
     succ_chunks_[chunk].store(new Successor[kSuccChunk], std::memory_order_release);
   Successor* out = succ_chunks_[chunk].load(std::memory_order_relaxed) + first % kSuccChunk;
-  for (size_t k = 0; k < acts_.size(); ++k) {
-    task_->apply(acts_[k], parent_.data(), child_.data());
-    out[k] = Successor{acts_[k], insert_locked(child_.data())};
+  // All children first, then their table slots are fetched together (the
+  // lookups are cache misses into a large table), then inserted.
+  const size_t n = acts_.size(), w = static_cast<size_t>(words_);
+  children_.resize(n * w);
+  for (size_t k = 0; k < n; ++k) {
+    task_->apply(acts_[k], parent_.data(), children_.data() + k * w);
+    __builtin_prefetch(&table_[pddl::hash_words(children_.data() + k * w, w) & (table_.size() - 1)]);
   }
+  for (size_t k = 0; k < n; ++k) out[k] = Successor{acts_[k], insert_locked(children_.data() + k * w)};
   succ_size_ = first + acts_.size();
   const uint64_t v = ((static_cast<uint64_t>(first) + 1) << 16) | static_cast<uint64_t>(acts_.size());
   slot.store(v, std::memory_order_release);

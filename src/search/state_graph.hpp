@@ -49,6 +49,8 @@ class StateGraph {
     return state_chunks_[static_cast<size_t>(id) >> kChunkBits].load(std::memory_order_acquire) +
            (static_cast<size_t>(id) & (kChunk - 1)) * static_cast<size_t>(words_);
   }
+  // A hint that successors(id) will be asked for soon (a cache prefetch).
+  void prefetch(int id) const { __builtin_prefetch(&info(id)); }
   // Every applicable action of state `id` with its successor, generated on
   // the first call for that state.
   std::span<const Successor> successors(int id) {
@@ -90,7 +92,7 @@ class StateGraph {
   std::vector<uint64_t> table_;         // open addressing: 0 = empty, else tag | (id + 1)
   std::vector<uint64_t> hashes_;        // per id
   std::vector<pddl::ActionId> acts_;    // expansion scratch
-  std::vector<uint64_t> parent_, child_;
+  std::vector<uint64_t> parent_, children_;
 };
 
 }  // namespace clips::search
