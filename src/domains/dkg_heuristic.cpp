@@ -188,11 +188,6 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
   }
 
   nodes_.reserve(n);
-  prim_d_.assign(n, 0);
-  prim_in_.assign(n, 0);
-  prim_cell_.assign(n, 0);
-  prim_door_.assign(n, 0);
-  prim_agent_.assign(n, 0);
   key_.reserve(8 + 2 * n + 8);
   m.read(root.data(), view_);
 }
@@ -259,14 +254,23 @@ double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   if (total >= bound) return total;
   const size_t k = nodes_.size();
   if (k <= 1) return total;
-  // Per node: its cell and whether it is a door or an agent, for the edges.
+  // Per node, in locals the compiler can keep in registers: its cell, the
+  // edge_dist rows to use towards other nodes and toward doors (both-door
+  // edges have their own table), whether it is an agent or a door.
+  constexpr size_t kMax = 64;  // objects are 64-bit mask indices
+  int cell[kMax];
+  const uint16_t* row[kMax];
+  const uint16_t* door_row[kMax];
+  bool agent[kMax], door[kMax], in_tree[kMax];
+  double dist[kMax];
   for (size_t i = 0; i < k; ++i) {
     const int o = nodes_[i];
-    prim_cell_[i] = view_.cell[o];
-    prim_door_[i] = m.kind(o) == DkgMapAnalysis::Kind::Door;
-    prim_agent_[i] = o < m.num_agents();
-    prim_in_[i] = 0;
-    prim_d_[i] = kInf;
+    cell[i] = view_.cell[o];
+    door[i] = m.kind(o) == DkgMapAnalysis::Kind::Door;
+    agent[i] = o < m.num_agents();
+    row[i] = m.edge_row(cell[i], false);
+    door_row[i] = m.edge_row(cell[i], true);
+    in_tree[i] = false;
   }
   const double move = costs_.move, wait = costs_.wait;
   // Edge weight: room-label admission precomputed per cell pair (edge_dist).
@@ -274,25 +278,27 @@ double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   // per move. Written as d*move + d*wait, as the reference sums it, so the
   // float values match to the last bit.
   auto weight = [&](size_t a, size_t b) {
-    const uint16_t d = m.edge_dist(prim_cell_[a], prim_cell_[b], prim_door_[a] && prim_door_[b]);
+    const uint16_t d = (door[a] && door[b] ? door_row[a] : row[a])[cell[b]];
     if (d == DkgMapAnalysis::kNoPath) return kInf;
-    return prim_agent_[a] && prim_agent_[b] ? d * move : d * move + d * wait;
+    return agent[a] && agent[b] ? d * move : d * move + d * wait;
   };
   // Prim on the dense object graph (missing edges weigh +inf, and an MST that
-  // needs one is not spanning, which is +inf too).
-  prim_in_[0] = 1;
-  for (size_t i = 1; i < k; ++i) prim_d_[i] = weight(0, i);
+  // needs one is not spanning, which is +inf too). Nodes join in the same
+  // order as a textbook Prim from node 0 with ties to the lowest index, so
+  // the sum is rounded in a fixed order.
+  in_tree[0] = true;
+  for (size_t i = 1; i < k; ++i) dist[i] = weight(0, i);
   for (size_t step = 1; step < k; ++step) {
     size_t best = k;
     double bd = kInf;
     for (size_t i = 1; i < k; ++i)
-      if (!prim_in_[i] && (best == k || prim_d_[i] < bd)) best = i, bd = prim_d_[i];
+      if (!in_tree[i] && (best == k || dist[i] < bd)) best = i, bd = dist[i];
     if (bd == kInf) return kInf;
     total += bd;
     if (total >= bound) return total;
-    prim_in_[best] = 1;
+    in_tree[best] = true;
     for (size_t i = 1; i < k; ++i)
-      if (!prim_in_[i]) prim_d_[i] = std::min(prim_d_[i], weight(best, i));
+      if (!in_tree[i]) dist[i] = std::min(dist[i], weight(best, i));
   }
   return total;
 }

@@ -110,10 +110,6 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   // Per-state scratch, reused to keep estimate() allocation-free.
   DkgStateView view_;
   std::vector<int> nodes_;
-  std::vector<double> prim_d_;
-  std::vector<uint8_t> prim_in_;
-  std::vector<int> prim_cell_;
-  std::vector<uint8_t> prim_door_, prim_agent_;
 
   // RECURSIVE(s, A[1], I ++ A) depends on the state only through the rooms
   // of agents and items and which doors are locked, which change rarely

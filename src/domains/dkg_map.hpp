@@ -85,6 +85,10 @@ class DkgMapAnalysis {
     const size_t k = static_cast<size_t>(c1) * num_cells() + c2;
     return both_doors ? door_edge_[k] : edge_[k];
   }
+  // Row c1 of edge_dist: row[c2] == edge_dist(c1, c2, both_doors).
+  const uint16_t* edge_row(int c1, bool both_doors) const {
+    return (both_doors ? door_edge_.data() : edge_.data()) + static_cast<size_t>(c1) * num_cells();
+  }
 
   // ---- state access (hot path: no allocation once `out` has been sized)
   void read(const uint64_t* s, DkgStateView& out) const;
