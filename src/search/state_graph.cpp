@@ -24,7 +24,6 @@ StateGraph::StateGraph(std::shared_ptr<const pddl::Task> task)
     succ_chunks_[c].store(nullptr, std::memory_order_relaxed);
   }
   table_.assign(1024, 0);
-  parent_.resize(static_cast<size_t>(words_));
 }
 
 StateGraph::~StateGraph() {
@@ -61,7 +60,10 @@ int StateGraph::insert(const uint64_t* s) {
 }
 
 int StateGraph::insert_locked(const uint64_t* s) {
-  const uint64_t h = pddl::hash_words(s, static_cast<size_t>(words_));
+  return insert_locked(s, pddl::hash_words(s, static_cast<size_t>(words_)));
+}
+
+int StateGraph::insert_locked(const uint64_t* s, uint64_t h) {
   if (const int id = find_locked(s, h); id >= 0) return id;
   const int id = size_.load(std::memory_order_relaxed);
   const size_t chunk = static_cast<size_t>(id) >> kChunkBits;
@@ -97,32 +99,39 @@ void StateGraph::grow_table() {
 }
 
 uint64_t StateGraph::expand(int id) {
-  std::lock_guard lock(mutex_);
   std::atomic<uint64_t>& slot = info(id);
+  // The successors are generated before taking the lock (a state's words
+  // never change once inserted), so two threads expanding new states only
+  // wait for each other's table insertions. Both may generate the same
+  // state; the first to lock publishes it.
+  thread_local std::vector<pddl::ActionId> acts;
+  thread_local std::vector<uint64_t> children, hashes;
+  const size_t w = static_cast<size_t>(words_);
+  task_->applicable_actions(state(id), acts);
+  const size_t n = acts.size();
+  if (n > 0xffff) throw std::length_error("state graph: more than 65535 applicable actions in one state");
+  children.resize(n * w);
+  hashes.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    task_->apply(acts[k], state(id), children.data() + k * w);
+    hashes[k] = pddl::hash_words(children.data() + k * w, w);
+  }
+
+  std::lock_guard lock(mutex_);
   if (const uint64_t v = slot.load(std::memory_order_relaxed); v != 0) return v;  // another thread did it
-  const uint64_t* s = state(id);
-  parent_.assign(s, s + words_);
-  task_->applicable_actions(parent_.data(), acts_);
-  if (acts_.size() > 0xffff) throw std::length_error("state graph: more than 65535 applicable actions in one state");
   // A state's successors are contiguous: start a new chunk if they do not fit.
   size_t first = succ_size_;
-  if (first % kSuccChunk + acts_.size() > kSuccChunk) first = (first / kSuccChunk + 1) * kSuccChunk;
+  if (first % kSuccChunk + n > kSuccChunk) first = (first / kSuccChunk + 1) * kSuccChunk;
   const size_t chunk = first / kSuccChunk;
   if (chunk >= kMaxChunks) throw std::length_error("state graph: too many successors");
   if (succ_chunks_[chunk].load(std::memory_order_relaxed) == nullptr)
     succ_chunks_[chunk].store(new Successor[kSuccChunk], std::memory_order_release);
   Successor* out = succ_chunks_[chunk].load(std::memory_order_relaxed) + first % kSuccChunk;
-  // All children first, then their table slots are fetched together (the
-  // lookups are cache misses into a large table), then inserted.
-  const size_t n = acts_.size(), w = static_cast<size_t>(words_);
-  children_.resize(n * w);
-  for (size_t k = 0; k < n; ++k) {
-    task_->apply(acts_[k], parent_.data(), children_.data() + k * w);
-    __builtin_prefetch(&table_[pddl::hash_words(children_.data() + k * w, w) & (table_.size() - 1)]);
-  }
-  for (size_t k = 0; k < n; ++k) out[k] = Successor{acts_[k], insert_locked(children_.data() + k * w)};
-  succ_size_ = first + acts_.size();
-  const uint64_t v = ((static_cast<uint64_t>(first) + 1) << 16) | static_cast<uint64_t>(acts_.size());
+  // The table slots are fetched together (cache misses into a large table).
+  for (size_t k = 0; k < n; ++k) __builtin_prefetch(&table_[hashes[k] & (table_.size() - 1)]);
+  for (size_t k = 0; k < n; ++k) out[k] = Successor{acts[k], insert_locked(children.data() + k * w, hashes[k])};
+  succ_size_ = first + n;
+  const uint64_t v = ((static_cast<uint64_t>(first) + 1) << 16) | static_cast<uint64_t>(n);
   slot.store(v, std::memory_order_release);
   return v;
 }

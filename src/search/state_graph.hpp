@@ -77,6 +77,7 @@ class StateGraph {
   uint64_t expand(int id);
   int find_locked(const uint64_t* s, uint64_t h) const;
   int insert_locked(const uint64_t* s);
+  int insert_locked(const uint64_t* s, uint64_t hash);
   void grow_table();
 
   std::shared_ptr<const pddl::Task> task_;
@@ -91,8 +92,6 @@ class StateGraph {
   mutable std::mutex mutex_;            // guards everything below and all writes
   std::vector<uint64_t> table_;         // open addressing: 0 = empty, else tag | (id + 1)
   std::vector<uint64_t> hashes_;        // per id
-  std::vector<pddl::ActionId> acts_;    // expansion scratch
-  std::vector<uint64_t> parent_, children_;
 };
 
 }  // namespace clips::search
