@@ -255,7 +255,7 @@ double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   const size_t k = nodes_.size();
   if (k <= 1) return total;
   // Per node, in locals the compiler can keep in registers: its cell, the
-  // edge_dist rows to use towards other nodes and toward doors (both-door
+  // edge_row rows to use towards other nodes and toward doors (both-door
   // edges have their own table), whether it is an agent or a door.
   constexpr size_t kMax = 64;  // objects are 64-bit mask indices
   int cell[kMax];
@@ -269,11 +269,11 @@ double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
     door[i] = m.kind(o) == DkgMapAnalysis::Kind::Door;
     agent[i] = o < m.num_agents();
     row[i] = m.edge_row(cell[i], false);
-    door_row[i] = m.edge_row(cell[i], true);
+    door_row[i] = door[i] ? m.edge_row(cell[i], true) : nullptr;  // read only between two doors
     in_tree[i] = false;
   }
   const double move = costs_.move, wait = costs_.wait;
-  // Edge weight: room-label admission precomputed per cell pair (edge_dist).
+  // Edge weight: room-label admission precomputed per cell pair (edge_row).
   // Between two agents no one waits; otherwise the other agent waits once
   // per move. Written as d*move + d*wait, as the reference sums it, so the
   // float values match to the last bit.

@@ -78,14 +78,10 @@ class DkgMapAnalysis {
   // BFS distance over non-wall cells (doors passable), kNoPath if disconnected.
   static constexpr uint16_t kNoPath = 0xffff;
   uint16_t dist(int c1, int c2) const { return dist_[static_cast<size_t>(c1) * num_cells() + c2]; }
-  // dist(c1, c2) if the MST heuristic admits an edge between objects on these
-  // cells (their room labels are equal or adjacent, or, when both objects are
-  // doors, open onto a common room), else kNoPath.
-  uint16_t edge_dist(int c1, int c2, bool both_doors) const {
-    const size_t k = static_cast<size_t>(c1) * num_cells() + c2;
-    return both_doors ? door_edge_[k] : edge_[k];
-  }
-  // Row c1 of edge_dist: row[c2] == edge_dist(c1, c2, both_doors).
+  // Row c1 of the MST heuristic's edge distances: row[c2] is dist(c1, c2)
+  // if the heuristic admits an edge between objects on these cells (their
+  // room labels are equal or adjacent, or, when both objects are doors
+  // (both_doors), open onto a common room), else kNoPath.
   const uint16_t* edge_row(int c1, bool both_doors) const {
     return (both_doors ? door_edge_.data() : edge_.data()) + static_cast<size_t>(c1) * num_cells();
   }
@@ -119,7 +115,7 @@ class DkgMapAnalysis {
   std::vector<std::vector<int>> room_adj_;
   std::vector<uint8_t> adj_, share_;  // num_labels^2
   std::vector<uint16_t> dist_;        // num_cells^2
-  std::vector<uint16_t> edge_, door_edge_;  // num_cells^2, see edge_dist()
+  std::vector<uint16_t> edge_, door_edge_;  // num_cells^2, see edge_row()
 
   // State layout: per object x/y fluents, per (agent, item) `has` atom, per
   // door `locked`, per agent `active`.
