@@ -1,6 +1,8 @@
 #include "pddl/parser.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <limits>
 #include <set>
 
 namespace clips::pddl {
@@ -47,7 +49,9 @@ const std::set<std::string> kSupportedRequirements = {
     ":existential-preconditions", ":universal-preconditions", ":quantified-preconditions",
     ":conditional-effects", ":adl", ":fluents", ":numeric-fluents", ":action-costs"};
 
-[[noreturn]] void fail(const SExpr& e, const std::string& msg) { throw InputError(e.loc, msg); }
+// Messages quote input text (names, expressions): escape control bytes in them.
+[[noreturn]] void fail(const SourceLoc& loc, const std::string& msg) { throw InputError(loc, printable(msg)); }
+[[noreturn]] void fail(const SExpr& e, const std::string& msg) { fail(e.loc, msg); }
 
 bool is_integer(const std::string& s) {
   if (s.empty()) return false;
@@ -56,6 +60,20 @@ bool is_integer(const std::string& s) {
   for (; i < s.size(); ++i)
     if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
   return true;
+}
+
+// The value of an integer literal (is_integer); one beyond int64 is an input
+// error at the literal rather than an exception from std::stoll.
+int64_t integer_value(const SExpr& e) {
+  const char* first = e.atom.data() + (e.atom[0] == '+' ? 1 : 0);
+  const char* last = e.atom.data() + e.atom.size();
+  int64_t v = 0;
+  auto [end, ec] = std::from_chars(first, last, v);
+  if (ec != std::errc() || end != last)
+    fail(e, "integer " + e.atom + " is out of range: integers must be between " +
+                std::to_string(std::numeric_limits<int64_t>::min()) + " and " +
+                std::to_string(std::numeric_limits<int64_t>::max()));
+  return v;
 }
 
 const SExpr& expect_list(const SExpr& e, const std::string& what) {
@@ -112,6 +130,24 @@ class ExprParser {
   ExprParser(const Domain& d, const Problem* p) : d_(d), p_(p) {}
 
   Scope scope;
+
+  // The reader bounds nesting, but expressions may also be built in code: the
+  // grounder recurses over what this produces, so check the bound again.
+  class Nested {
+   public:
+    Nested(ExprParser& p, const SExpr& e) : p_(p) {
+      if (++p_.depth_ > kMaxNesting) {
+        --p_.depth_;
+        fail(e, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
+      }
+    }
+    ~Nested() { --p_.depth_; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+
+   private:
+    ExprParser& p_;
+  };
 
   TermRef term(const SExpr& e, TypeId* type_out) {
     if (e.is_list) fail(e, "expected a variable or object, found a list");
@@ -173,9 +209,9 @@ class ExprParser {
     std::vector<std::string> vnames;
     for (auto& tn : names) {
       if (tn.name.empty() || tn.name[0] != '?')
-        throw InputError(tn.loc, "expected a variable (starting with '?'), found '" + tn.name + "'");
+        fail(tn.loc, "expected a variable (starting with '?'), found '" + tn.name + "'");
       auto t = d_.find_type(tn.type);
-      if (!t) throw InputError(tn.loc, "unknown type '" + tn.type + "'");
+      if (!t) fail(tn.loc, "unknown type '" + tn.type + "'");
       scope.vars.push_back({tn.name.substr(1), *t});
       scope.visible.push_back(scope.num_slots() - 1);
       types.push_back(*t);
@@ -199,12 +235,13 @@ class ExprParser {
   }
 
   NumExpr num(const SExpr& e) {
+    Nested guard(*this, e);
     NumExpr x;
     x.loc = e.loc;
     if (!e.is_list) {
       if (is_integer(e.atom)) {
         x.kind = NumExpr::Kind::Const;
-        x.value = std::stoll(e.atom);
+        x.value = integer_value(e);
       } else if (e.atom == "true" || e.atom == "false") {
         x.kind = NumExpr::Kind::Const;
         x.value = e.atom == "true";
@@ -262,6 +299,7 @@ class ExprParser {
   }
 
   Condition cond(const SExpr& e) {
+    Nested guard(*this, e);
     Condition c;
     c.loc = e.loc;
     if (!e.is_list) {
@@ -320,6 +358,7 @@ class ExprParser {
   }
 
   Effect eff(const SExpr& e) {
+    Nested guard(*this, e);
     Effect x;
     x.loc = e.loc;
     expect_list(e, "an effect");
@@ -378,6 +417,7 @@ class ExprParser {
  private:
   const Domain& d_;
   const Problem* p_;
+  int depth_ = 0;  // current num/cond/eff nesting
 };
 
 TypeId ensure_type(Domain& d, const std::string& name) {
@@ -391,14 +431,14 @@ void parse_types(Domain& d, const SExpr& sec) {
     if (tn.name == "object") continue;
     TypeId parent = ensure_type(d, tn.type);
     TypeId t = ensure_type(d, tn.name);
-    if (d.is_subtype(parent, t)) throw InputError(tn.loc, "cyclic type hierarchy at '" + tn.name + "'");
+    if (d.is_subtype(parent, t)) fail(tn.loc, "cyclic type hierarchy at '" + tn.name + "'");
     d.types[t].parent = parent;
   }
 }
 
 TypeId type_of_name(const Domain& d, const TypedName& tn) {
   auto t = d.find_type(tn.type);
-  if (!t) throw InputError(tn.loc, "unknown type '" + tn.type + "'");
+  if (!t) fail(tn.loc, "unknown type '" + tn.type + "'");
   return *t;
 }
 
@@ -459,7 +499,7 @@ void parse_action(Domain& d, const SExpr& sec) {
     if (key.atom == ":parameters") {
       expect_list(val, "a parameter list");
       for (auto& tn : typed_list(val.items, 0, val)) {
-        if (tn.name.empty() || tn.name[0] != '?') throw InputError(tn.loc, "expected a parameter variable, found '" + tn.name + "'");
+        if (tn.name.empty() || tn.name[0] != '?') fail(tn.loc, "expected a parameter variable, found '" + tn.name + "'");
         a.param_names.push_back(tn.name.substr(1));
         a.param_types.push_back(type_of_name(d, tn));
         ep.scope.vars.push_back({tn.name.substr(1), a.param_types.back()});
@@ -486,7 +526,7 @@ void parse_action(Domain& d, const SExpr& sec) {
 Domain parse_domain(const std::string& text, const std::string& file) {
   auto top = read_sexprs(text, file);
   if (top.size() != 1 || !top[0].is_list || top[0].head() != "define")
-    throw InputError(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (domain NAME) ...)");
+    fail(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (domain NAME) ...)");
   const SExpr& def = top[0];
   Domain d;
   d.file = file;
@@ -515,7 +555,7 @@ Domain parse_domain(const std::string& text, const std::string& file) {
     if (h == ":constants") {
       for (auto& tn : typed_list(sec.items, 1, sec)) {
         for (auto& c : d.constants)
-          if (c.name == tn.name) throw InputError(tn.loc, "constant '" + tn.name + "' declared twice");
+          if (c.name == tn.name) fail(tn.loc, "constant '" + tn.name + "' declared twice");
         d.constants.push_back(ObjectDef{tn.name, type_of_name(d, tn), true});
       }
     } else if (h == ":predicates") {
@@ -541,7 +581,7 @@ Domain load_domain(const std::string& path) { return parse_domain(read_text_file
 Problem parse_problem(const Domain& d, const std::string& text, const std::string& file, bool with_goal) {
   auto top = read_sexprs(text, file);
   if (top.size() != 1 || !top[0].is_list || top[0].head() != "define")
-    throw InputError(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (problem NAME) ...)");
+    fail(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (problem NAME) ...)");
   const SExpr& def = top[0];
   Problem p;
   p.file = file;
@@ -557,7 +597,7 @@ Problem parse_problem(const Domain& d, const std::string& text, const std::strin
                       "' but the domain file defines '" + d.name + "'");
     } else if (sec.head() == ":objects") {
       for (auto& tn : typed_list(sec.items, 1, sec)) {
-        if (p.find_object(tn.name)) throw InputError(tn.loc, "object '" + tn.name + "' declared twice");
+        if (p.find_object(tn.name)) fail(tn.loc, "object '" + tn.name + "' declared twice");
         p.objects.push_back(ObjectDef{tn.name, type_of_name(d, tn), false});
       }
     }

@@ -1,5 +1,6 @@
 #include "pddl/sexpr.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -26,14 +27,17 @@ namespace {
 
 class Reader {
  public:
-  Reader(const std::string& text, const std::string& file) : t_(text), file_(file) {}
+  Reader(const std::string& text, const SourceLoc& origin)
+      : t_(text), file_(origin.file), line_(origin.line), col_(origin.col) {
+    if (t_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;  // byte-order mark
+  }
 
   std::vector<SExpr> all() {
     std::vector<SExpr> out;
     for (;;) {
       skip();
       if (pos_ >= t_.size()) return out;
-      out.push_back(expr());
+      out.push_back(expr(1));
     }
   }
 
@@ -63,23 +67,26 @@ class Reader {
     }
   }
 
-  SExpr expr() {
+  // `depth` is the nesting level of this expression (1 at the top).
+  SExpr expr(int depth) {
     SExpr e;
     e.loc = here();
     char c = t_[pos_];
-    if (c == ')') throw InputError(e.loc, "unbalanced parentheses: unexpected ')'");
+    if (c == ')') throw SyntaxError(e.loc, "unbalanced parentheses: unexpected ')'");
     if (c == '(') {
+      if (depth > kMaxNesting)
+        throw SyntaxError(e.loc, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
       e.is_list = true;
       advance();
       for (;;) {
         skip();
         if (pos_ >= t_.size())
-          throw InputError(e.loc, "unbalanced parentheses: '(' opened here is never closed");
+          throw SyntaxError(e.loc, "unbalanced parentheses: '(' opened here is never closed");
         if (t_[pos_] == ')') {
           advance();
           return e;
         }
-        e.items.push_back(expr());
+        e.items.push_back(expr(depth + 1));
       }
     }
     std::string sym;
@@ -103,15 +110,19 @@ class Reader {
 }  // namespace
 
 std::vector<SExpr> read_sexprs(const std::string& text, const std::string& file) {
-  return Reader(text, file).all();
+  return Reader(text, SourceLoc{file, 1, 1}).all();
 }
 
 SExpr read_one_sexpr(const std::string& text, const std::string& label) {
-  auto all = read_sexprs(text, label);
+  return read_one_sexpr(text, SourceLoc{label, 1, 1});
+}
+
+SExpr read_one_sexpr(const std::string& text, const SourceLoc& origin) {
+  auto all = Reader(text, origin).all();
   if (all.size() != 1)
-    throw InputError(SourceLoc{label, 1, 1},
-                     "expected exactly one expression, found " + std::to_string(all.size()));
-  return all[0];
+    throw SyntaxError(all.size() > 1 ? all[1].loc : origin,
+                      "expected exactly one expression, found " + std::to_string(all.size()));
+  return std::move(all[0]);
 }
 
 std::string read_text_file(const std::string& path) {
@@ -120,6 +131,26 @@ std::string read_text_file(const std::string& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+std::string printable(const std::string& text, size_t max_len) {
+  size_t n = std::min(text.size(), max_len);
+  while (n < text.size() && n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80)
+    --n;  // do not split a UTF-8 character
+  std::string out;
+  for (size_t i = 0; i < n; ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if ((c < 0x20 && c != '\t') || c == 0x7F) {
+      static const char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (n < text.size()) out += "...";
+  return out;
 }
 
 }  // namespace clips::pddl

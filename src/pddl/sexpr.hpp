@@ -2,13 +2,28 @@
 // S-expression reader for PDDL text. Symbols are lower-cased (PDDL is
 // case-insensitive); `;` starts a comment that runs to the end of the line.
 // Every node remembers where it started so later stages can report
-// file:line:col in their errors.
+// file:line:col in their errors. A leading UTF-8 byte-order mark is skipped.
 #include <string>
 #include <vector>
 
 #include "util/error.hpp"
 
 namespace clips::pddl {
+
+// Lists nest at most this deep: real PDDL stays below 10 levels, and every
+// recursive pass over expressions (reading, conversion, grounding) relies on
+// this bound to stay far from a stack overflow.
+constexpr int kMaxNesting = 1000;
+
+// An error of the reader itself; keeps location and message apart so callers
+// can add context without repeating the location.
+class SyntaxError : public InputError {
+ public:
+  SyntaxError(const SourceLoc& loc, const std::string& message)
+      : InputError(loc, message), loc(loc), message(message) {}
+  SourceLoc loc;
+  std::string message;
+};
 
 struct SExpr {
   bool is_list = false;
@@ -27,6 +42,13 @@ struct SExpr {
 std::vector<SExpr> read_sexprs(const std::string& text, const std::string& file);
 // Parses exactly one expression (e.g. a goal given on the command line).
 SExpr read_one_sexpr(const std::string& text, const std::string& label);
+// The same for text cut out of a file at `origin`, so positions point into it.
+SExpr read_one_sexpr(const std::string& text, const SourceLoc& origin);
 std::string read_text_file(const std::string& path);
+
+// Input text made safe to quote in an error message: control bytes (other than
+// tab) are written as \xHH so they cannot act on the terminal, and text longer
+// than `max_len` bytes is cut short with "...".
+std::string printable(const std::string& text, size_t max_len = std::string::npos);
 
 }  // namespace clips::pddl

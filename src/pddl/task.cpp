@@ -16,6 +16,18 @@ struct InitValue {
   BitMatrix m;
 };
 
+// a op b (op one of + - * /, b != 0 for /) on constants from the input:
+// overflow is an input error at `loc` instead of undefined behaviour.
+int64_t checked(char op, int64_t a, int64_t b, const SourceLoc& loc) {
+  int64_t v = 0;
+  bool overflow = op == '+'   ? __builtin_add_overflow(a, b, &v)
+                  : op == '-' ? __builtin_sub_overflow(a, b, &v)
+                  : op == '*' ? __builtin_mul_overflow(a, b, &v)
+                              : (a == std::numeric_limits<int64_t>::min() && b == -1);
+  if (overflow) throw InputError(loc, "integer overflow: the result is beyond the 64-bit integer range");
+  return op == '/' ? a / b : v;
+}
+
 std::vector<int> key_of(int head, const std::vector<ObjectId>& args) {
   std::vector<int> k;
   k.reserve(args.size() + 1);
@@ -74,20 +86,20 @@ class Grounder {
         for (auto& a : x.args) args.push_back(a.index);
         auto it = init_.find(key_of(x.func, args));
         if (it == init_.end())
-          throw InputError(x.loc, "fluent '" + d_.functions[x.func].name + "' is read before it is assigned");
+          throw InputError(x.loc, "fluent '" + printable(d_.functions[x.func].name) + "' is read before it is assigned");
         return it->second;
       }
       case K::Object: throw InputError(x.loc, "an object is not a numeric value");
-      case K::Add: out.i = kid_int(0) + kid_int(1); return out;
-      case K::Sub: out.i = kid_int(0) - kid_int(1); return out;
-      case K::Mul: out.i = kid_int(0) * kid_int(1); return out;
+      case K::Add: out.i = checked('+', kid_int(0), kid_int(1), x.loc); return out;
+      case K::Sub: out.i = checked('-', kid_int(0), kid_int(1), x.loc); return out;
+      case K::Mul: out.i = checked('*', kid_int(0), kid_int(1), x.loc); return out;
       case K::Div: {
         int64_t b = kid_int(1);
         if (b == 0) throw InputError(x.loc, "division by zero");
-        out.i = kid_int(0) / b;
+        out.i = checked('/', kid_int(0), b, x.loc);
         return out;
       }
-      case K::Neg: out.i = -kid_int(0); return out;
+      case K::Neg: out.i = checked('-', 0, kid_int(0), x.loc); return out;
       case K::NewMatrix: {
         bool fill = kid_int(0) != 0;
         int64_t r = kid_int(1), c = kid_int(2);
@@ -133,9 +145,10 @@ class Grounder {
       InitValue v = eval_init_num(f.value);
       bool want_matrix = d_.functions[f.func].type == ValueType::Matrix;
       if (v.is_matrix != want_matrix)
-        throw InputError(f.loc, "fluent '" + d_.functions[f.func].name + "' expects " +
+        throw InputError(f.loc, "fluent '" + printable(d_.functions[f.func].name) + "' expects " +
                                     (want_matrix ? "a bit-matrix" : "a number"));
       init_[key_of(f.func, f.args)] = std::move(v);
+      init_locs_[key_of(f.func, f.args)] = f.value.loc;
     }
     for (auto& [k, v] : init_) {
       if (v.is_matrix) {
@@ -338,8 +351,8 @@ class Grounder {
       }
       if (is_const_n(l) && is_const_n(r)) {
         int64_t a = t_.nnodes_[l].v, c = t_.nnodes_[r].v;
-        int64_t v = op == NNode::Add ? a + c : op == NNode::Sub ? a - c : op == NNode::Mul ? a * c : (c ? a / c : 0);
         if (op == NNode::Div && c == 0) throw InputError(x.loc, "division by zero");
+        int64_t v = checked(op == NNode::Add ? '+' : op == NNode::Sub ? '-' : op == NNode::Mul ? '*' : '/', a, c, x.loc);
         return {add_n({NNode::Const, v, 0, 0}), -1};
       }
       return {add_n({op, 0, l, r}), -1};
@@ -350,13 +363,13 @@ class Grounder {
         std::vector<ObjectId> args;
         for (auto& a : x.args) args.push_back(resolve(a, b));
         if (!args_fit(d_.functions[x.func].arg_types, args))
-          throw InputError(x.loc, "fluent '" + d_.functions[x.func].name + "' applied to an object of the wrong type");
+          throw InputError(x.loc, "fluent '" + printable(d_.functions[x.func].name) + "' applied to an object of the wrong type");
         if (fluent_is_dynamic(x.func, args)) return {add_n({NNode::Fluent, intern_fluent(x.func, args), 0, 0}), -1};
         auto k = key_of(x.func, args);
         if (auto m = t_.static_matrix_.find(k); m != t_.static_matrix_.end()) return {-1, m->second};
         auto it = t_.static_int_.find(k);
         if (it == t_.static_int_.end())
-          throw InputError(x.loc, "fluent '" + d_.functions[x.func].name + "' has no value in the initial state");
+          throw InputError(x.loc, "fluent '" + printable(d_.functions[x.func].name) + "' has no value in the initial state");
         return {add_n({NNode::Const, it->second, 0, 0}), -1};
       }
       case K::Object: throw InputError(x.loc, "an object is not a numeric value");
@@ -366,7 +379,7 @@ class Grounder {
       case K::Div: return bin(NNode::Div);
       case K::Neg: {
         int a = num_int(x.kids[0], b);
-        if (is_const_n(a)) return {add_n({NNode::Const, -t_.nnodes_[a].v, 0, 0}), -1};
+        if (is_const_n(a)) return {add_n({NNode::Const, checked('-', 0, t_.nnodes_[a].v, x.loc), 0, 0}), -1};
         return {add_n({NNode::Neg, 0, a, 0}), -1};
       }
       case K::GetIndex: {
@@ -586,6 +599,15 @@ class Grounder {
     for (auto& ce : a.cond_eff) list(ce.eff);
   }
 
+  // States hold fluents that actions change as int16: their initial values must fit.
+  void check_state_value(int slot, int64_t v, const SourceLoc& loc) const {
+    using Lim = std::numeric_limits<int16_t>;
+    if (v >= Lim::min() && v <= Lim::max()) return;
+    throw InputError(loc, printable("fluent " + t_.fluent_str(slot) + " value " + std::to_string(v) +
+                                    " is out of range: fluents that actions change must be between " +
+                                    std::to_string(Lim::min()) + " and " + std::to_string(Lim::max())));
+  }
+
   void finish_layout() {
     t_.atom_words_ = (t_.num_atoms() + 63) / 64;
     t_.num_words_ = t_.atom_words_ + (t_.num_fluents() + 3) / 4;
@@ -596,7 +618,9 @@ class Grounder {
     for (int slot = 0; slot < t_.num_fluents(); ++slot) {
       auto k = key_of(t_.fluents_[slot].first, t_.fluents_[slot].second);
       auto it = t_.static_int_.find(k);
-      if (it != t_.static_int_.end()) t_.init_fluent_values_[slot] = it->second;
+      if (it == t_.static_int_.end()) continue;
+      check_state_value(slot, it->second, init_locs_[k]);
+      t_.init_fluent_values_[slot] = it->second;
     }
     std::map<int, size_t> group_of;
     for (ActionId a = 0; a < t_.num_actions(); ++a) {
@@ -621,6 +645,7 @@ class Grounder {
   const Problem& p_;
   int pass_ = 1;
   std::map<std::vector<int>, InitValue> init_;
+  std::map<std::vector<int>, SourceLoc> init_locs_;  // where each initial value was given
   std::set<std::vector<int>> modified_atoms_, modified_fluents_;
 
   friend class Task;
@@ -874,11 +899,11 @@ Task::AtomRef Task::atom(PredId pred, const std::vector<ObjectId>& args) const {
 
 Task::AtomRef Task::atom(const std::string& pred, const std::vector<std::string>& args) const {
   auto p = domain_->find_predicate(pred);
-  if (!p) throw InputError("unknown predicate '" + pred + "'");
+  if (!p) throw InputError("unknown predicate '" + printable(pred) + "'");
   std::vector<ObjectId> ids;
   for (auto& a : args) {
     auto o = find_object(a);
-    if (!o) throw InputError("unknown object '" + a + "'");
+    if (!o) throw InputError("unknown object '" + printable(a) + "'");
     ids.push_back(*o);
   }
   return atom(*p, ids);
@@ -894,11 +919,11 @@ Task::FluentRef Task::fluent(FuncId func, const std::vector<ObjectId>& args) con
 
 Task::FluentRef Task::fluent(const std::string& func, const std::vector<std::string>& args) const {
   auto f = domain_->find_function(func);
-  if (!f) throw InputError("unknown function '" + func + "'");
+  if (!f) throw InputError("unknown function '" + printable(func) + "'");
   std::vector<ObjectId> ids;
   for (auto& a : args) {
     auto o = find_object(a);
-    if (!o) throw InputError("unknown object '" + a + "'");
+    if (!o) throw InputError("unknown object '" + printable(a) + "'");
     ids.push_back(*o);
   }
   return fluent(*f, ids);
@@ -1131,7 +1156,11 @@ CondId Task::compile_text(const std::string& text, const std::string& label) con
   auto it = text_cache_.find(text);
   if (it != text_cache_.end()) return it->second;
   int nv = 0;
-  Condition c = parse_condition_text(*domain_, *problem_, text, label, &nv);
+  // The problem's own goal, passed back as text (e.g. when the loader skipped
+  // it): parse the expression as read so errors point into the problem file.
+  const auto& own = problem_->goal_sexpr;
+  Condition c = own && text == own->str() ? parse_condition(*domain_, *problem_, *own, &nv)
+                                          : parse_condition_text(*domain_, *problem_, text, label, &nv);
   CondId id = compile(c, std::vector<ObjectId>(nv, -1));
   text_cache_[text] = id;
   return id;
