@@ -1,8 +1,11 @@
 #include "data/dataset.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -38,27 +41,236 @@ pddl::GroundingOptions grounding_options(DomainKind k) {
 
 namespace {
 
-std::string first_line(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
-  std::string line;
-  std::getline(in, line);
-  while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
-  size_t a = line.find_first_not_of(" \t");
-  return a == std::string::npos ? "" : line.substr(a);
+// Index of the first byte of `s` that is not part of well-formed UTF-8
+// (overlong forms, surrogates and code points above U+10FFFF are rejected),
+// or npos. Utterances are checked when loading so that bad bytes are reported
+// with their file and line, not by the JSON writer after all the inference.
+size_t invalid_utf8_at(const std::string& s) {
+  size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    int n = 0;
+    unsigned lo = 0x80, hi = 0xbf;  // allowed range of the first continuation byte
+    if (c < 0x80) n = 0;
+    else if (c >= 0xc2 && c <= 0xdf) n = 1;
+    else if (c == 0xe0) n = 2, lo = 0xa0;
+    else if (c >= 0xe1 && c <= 0xec) n = 2;
+    else if (c == 0xed) n = 2, hi = 0x9f;
+    else if (c >= 0xee && c <= 0xef) n = 2;
+    else if (c == 0xf0) n = 3, lo = 0x90;
+    else if (c >= 0xf1 && c <= 0xf3) n = 3;
+    else if (c == 0xf4) n = 3, hi = 0x8f;
+    else return i;
+    for (int k = 1; k <= n; ++k) {
+      if (i + k >= s.size()) return i;
+      const auto b = static_cast<unsigned char>(s[i + k]);
+      if (b < (k == 1 ? lo : 0x80) || b > (k == 1 ? hi : 0xbf)) return i;
+    }
+    i += n + 1;
+  }
+  return std::string::npos;
 }
 
-std::vector<std::string> lines_of(const std::string& path) {
+void check_utterance_text(const std::string& text, const SourceLoc& loc) {
+  if (text.empty()) throw InputError(loc, "empty utterance (a ';' line needs the words spoken after it)");
+  size_t bad = invalid_utf8_at(text);
+  if (bad != std::string::npos) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(text[bad]));
+    throw InputError(loc, "utterance is not valid UTF-8 (byte " + std::string(hex) + " at offset " +
+                              std::to_string(bad) + " of the text)");
+  }
+}
+
+// utterances/{pragmatic,literal}/<plan>.txt hold exactly one utterance: one
+// non-blank line (surrounding whitespace stripped). Only Doors-Keys-Gems has
+// these files (VirtualHome's several utterances per plan live in the observed
+// plan as `;` lines), so a second non-blank line is an error, not a
+// continuation to drop silently.
+std::string utterance_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
-  std::vector<std::string> out;
-  std::string line;
+  std::string line, out;
+  int line_no = 0, first = 0;
   while (std::getline(in, line)) {
+    ++line_no;
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
     size_t a = line.find_first_not_of(" \t");
-    if (a != std::string::npos) out.push_back(line.substr(a));
+    if (a == std::string::npos) continue;
+    if (first)
+      throw InputError(SourceLoc{path, line_no, 1}, "an utterance file holds exactly one utterance on one line, "
+                                                    "but line " + std::to_string(first) + " already held it");
+    first = line_no;
+    out = line.substr(a);
+    check_utterance_text(out, SourceLoc{path, line_no, 1});
+  }
+  if (!first) throw InputError(path + " is empty (an utterance file holds one utterance on one line)");
+  return out;
+}
+
+// Utterances of an observed plan: each must be non-empty, valid UTF-8 text.
+// A Doors-Keys-Gems plan has at most one, spoken after its actions; there may
+// be no actions (15.1.doors). The paper's plans all have exactly one (the rule
+// `validate` applies to a dataset), but inference from actions alone is a
+// legitimate use, so the loader accepts a plan without one. VirtualHome plans
+// may have several utterances. An observed plan with neither actions nor
+// utterances gives nothing to infer from and is rejected.
+void check_observed_plan(DomainKind kind, const pddl::PlanFile& obs) {
+  for (auto& u : obs.utterances) check_utterance_text(u.text, u.loc);
+  if (kind == DomainKind::DoorsKeysGems && obs.utterances.size() > 1)
+    throw InputError(obs.utterances[1].loc,
+                     "a second utterance; a Doors-Keys-Gems observed plan has at most one ';' line (the first is "
+                     "at line " + std::to_string(obs.utterances[0].loc.line) + ")");
+  if (obs.actions.empty() && obs.utterances.empty())
+    throw InputError(SourceLoc{obs.path, 0, 0}, "observed plan is empty (no actions and no '; <utterance>' line)");
+}
+
+// The non-blank lines of a file, stripped, with their 1-based line numbers.
+std::vector<std::pair<int, std::string>> lines_of(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
+  std::vector<std::pair<int, std::string>> out;
+  std::string line;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    size_t a = line.find_first_not_of(" \t");
+    if (a != std::string::npos) out.push_back({line_no, line.substr(a)});
   }
   return out;
+}
+
+// A JSON value as an error message shows it: numbers and strings as written
+// (strings shortened), other values by their type.
+std::string describe_json(const nlohmann::json& v) {
+  if (v.is_number()) return v.dump();
+  if (v.is_string()) {
+    std::string t = v.dump();
+    return "the string " + (t.size() > 40 ? t.substr(0, 37) + "...\"" : t);
+  }
+  if (v.is_array()) return "an array";
+  if (v.is_object()) return "an object";
+  if (v.is_boolean()) return v.dump();
+  return "null";
+}
+
+// Reads stimuli.json. Every field is checked, with errors naming the file,
+// the entry (1-based, in file order), its plan and the field: integers must be
+// integral numbers in range (1.0 is accepted; 1.5 and 1e30 are not), "goal" is
+// [g] with g a 0-based gem index, "best_option" is [[o, ...]] with 1-based
+// option numbers up to "option_count". Each entry must name a plan of the
+// dataset, at most once, and for Doors-Keys-Gems agree with that plan's
+// condition ("type" = the tag in its file name) and observed utterance.
+std::map<std::string, StimulusInfo> load_stimuli(const std::string& path, DomainKind kind,
+                                                 const std::vector<PlanRecord>& plans) {
+  nlohmann::json j;
+  try {
+    std::ifstream in(path);
+    j = nlohmann::json::parse(in);
+  } catch (const std::exception& ex) {
+    throw InputError(SourceLoc{path, 0, 0}, std::string("malformed JSON: ") + ex.what());
+  }
+  if (!j.is_array()) throw InputError(SourceLoc{path, 0, 0}, "expected a JSON array of stimuli, got " + describe_json(j));
+  constexpr long long kIntMax = std::numeric_limits<int>::max();
+  std::map<std::string, StimulusInfo> out;
+  std::map<std::string, size_t> entry_of;  // plan id -> 1-based entry
+  for (size_t i = 0; i < j.size(); ++i) {
+    const auto& o = j[i];
+    std::string where = "entry " + std::to_string(i + 1);
+    auto error = [&](const std::string& what) { return InputError(SourceLoc{path, 0, 0}, where + ": " + what); };
+    auto field_error = [&](const char* f, const std::string& what) {
+      return error(std::string("field \"") + f + "\": " + what);
+    };
+    if (!o.is_object()) throw error("expected an object, got " + describe_json(o));
+    auto field = [&](const char* f) -> const nlohmann::json& {
+      auto it = o.find(f);
+      if (it == o.end()) throw error(std::string("field \"") + f + "\" is missing");
+      return *it;
+    };
+    auto text = [&](const char* f) {
+      const auto& v = field(f);
+      if (!v.is_string()) throw field_error(f, "expected a string, got " + describe_json(v));
+      return v.get<std::string>();
+    };
+    auto integer = [&](const char* f, const nlohmann::json& v, long long lo, long long hi) {
+      long double x = 0;
+      if (v.is_number_unsigned()) x = static_cast<long double>(v.get<unsigned long long>());
+      else if (v.is_number_integer()) x = static_cast<long double>(v.get<long long>());
+      else if (v.is_number_float()) x = v.get<double>();
+      if (!v.is_number() || !std::isfinite(x) || x != std::floor(x))
+        throw field_error(f, "expected an integer, got " + describe_json(v));
+      if (x < lo || x > hi)
+        throw field_error(f, "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " +
+                                 describe_json(v));
+      return static_cast<int>(x);
+    };
+    auto one_element = [&](const char* f) -> const nlohmann::json& {
+      const auto& v = field(f);
+      if (!v.is_array() || v.size() != 1)
+        throw field_error(f, "expected an array of one element, got " +
+                                 (v.is_array() ? "an array of " + std::to_string(v.size()) : describe_json(v)));
+      return v[0];
+    };
+
+    StimulusInfo s;
+    s.name = text("name");
+    where += " (plan " + s.name + ")";
+    auto plan = std::find_if(plans.begin(), plans.end(), [&](const PlanRecord& p) { return p.id == s.name; });
+    if (plan == plans.end()) throw error("no such plan in plans/observed/");
+    if (auto [it, fresh] = entry_of.emplace(s.name, i + 1); !fresh)
+      throw error("a second entry for this plan (the first is entry " + std::to_string(it->second) + ")");
+    s.type = text("type");
+    s.utterance = text("utterance");
+    s.timesteps = integer("timesteps", field("timesteps"), 0, kIntMax);
+    s.option_count = integer("option_count", field("option_count"), 1, kIntMax);
+    s.goal = integer("goal", one_element("goal"), 0, kIntMax);
+    const auto& best = one_element("best_option");
+    if (!best.is_array()) throw field_error("best_option", "expected [[o, ...]], got [" + describe_json(best) + "]");
+    for (const auto& v : best) s.best_options.push_back(integer("best_option", v, 1, s.option_count));
+    if (kind == DomainKind::DoorsKeysGems) {
+      if (s.type != plan->tag)
+        throw field_error("type", "\"" + s.type + "\" differs from the plan's condition \"" + plan->tag + "\"");
+      // The loader has checked that the observed plan holds at most one utterance.
+      if (plan->observed.utterances.empty())
+        throw field_error("utterance", "\"" + s.utterance + "\" is given, but the observed plan has no '; <utterance>' line");
+      const auto& u = plan->observed.utterances.front();
+      if (s.utterance != u.text)
+        throw field_error("utterance", "\"" + s.utterance + "\" differs from the observed plan's utterance \"" +
+                                           u.text + "\" (" + u.loc.str() + ")");
+    }
+    out[s.name] = std::move(s);
+  }
+  return out;
+}
+
+// Where a Doors-Keys-Gems problem starts: every agent and door on the grid,
+// every key and gem on it or held by an agent. The search and inference
+// treat an object elsewhere as unreachable (a gem with no position would get
+// probability 0 without a word), so the problem is rejected instead.
+void check_dkg_positions(const pddl::Task& t, const std::string& path) {
+  const SourceLoc loc{path, 0, 0};
+  auto walls = t.fluent("walls", {});
+  if (!walls.matrix) throw InputError(loc, "a Doors-Keys-Gems problem needs a (walls) bit-matrix");
+  const long long W = walls.matrix->cols, H = walls.matrix->rows;
+  const std::string grid = std::to_string(W) + "x" + std::to_string(H) + " grid";
+  const pddl::State s0 = t.initial_state();
+  const auto agents = t.objects_of_type("agent");
+  for (const char* type : {"agent", "door", "item"})
+    for (pddl::ObjectId o : t.objects_of_type(type)) {
+      const std::string& name = t.object_name(o);
+      const bool item = std::string(type) == "item";
+      if (item && std::any_of(agents.begin(), agents.end(), [&](pddl::ObjectId a) {
+            return t.test(s0, t.atom("has", {t.object_name(a), name}));
+          }))
+        continue;
+      const long long x = t.value(s0, t.fluent("xloc", {name})), y = t.value(s0, t.fluent("yloc", {name}));
+      const std::string held = item ? " (and no agent holds it)" : "";
+      if (x < 1 || y < 1) throw InputError(loc, name + " has no position on the " + grid + held);
+      if (x > W || y > H)
+        throw InputError(loc, name + " is outside the " + grid + " at (" + std::to_string(x) + ", " +
+                                  std::to_string(y) + ")" + held);
+    }
 }
 
 // Sort key: numeric map id, its letter suffix, then plan index.
@@ -78,7 +290,8 @@ Dataset Dataset::load(const std::string& dir_in) {
   Dataset ds;
   ds.dir_ = dir_in;
   fs::path dir(dir_in);
-  if (!fs::is_directory(dir)) throw InputError("dataset directory '" + dir_in + "' does not exist");
+  if (!fs::is_directory(dir))
+    throw InputError("dataset directory '" + dir_in + (fs::exists(dir) ? "' is not a directory" : "' does not exist"));
   fs::path dom = dir / "domain.pddl";
   if (!fs::exists(dom)) throw InputError("dataset directory '" + dir_in + "' has no domain.pddl");
   ds.domain_ = std::make_shared<pddl::Domain>(pddl::load_domain(dom.string()));
@@ -115,13 +328,14 @@ Dataset Dataset::load(const std::string& dir_in) {
       throw InputError(SourceLoc{e.path().string(), 0, 0}, "plan file name must look like <problem>.<index>.<tag>.pddl");
     }
     r.observed = pddl::load_plan(e.path().string());
+    check_observed_plan(ds.kind_, r.observed);
     fs::path cp = comp_dir / e.path().filename();
     if (!fs::exists(cp)) throw InputError(SourceLoc{cp.string(), 0, 0}, "missing completed plan for " + stem);
     r.completed = pddl::load_plan(cp.string());
     fs::path prag = dir / "utterances" / "pragmatic" / (stem + ".txt");
     fs::path lit = dir / "utterances" / "literal" / (stem + ".txt");
-    if (fs::exists(prag)) r.pragmatic_utterance = first_line(prag.string());
-    if (fs::exists(lit)) r.literal_utterance = first_line(lit.string());
+    if (fs::exists(prag)) r.pragmatic_utterance = utterance_file(prag.string());
+    if (fs::exists(lit)) r.literal_utterance = utterance_file(lit.string());
     if (!fs::exists(dir / "problems" / (r.problem_id + ".pddl")))
       throw InputError(SourceLoc{e.path().string(), 0, 0}, "no problem file problems/" + r.problem_id + ".pddl for plan " + stem);
     recs.push_back({key, std::move(r)});
@@ -138,45 +352,27 @@ Dataset Dataset::load(const std::string& dir_in) {
       if (e.path().extension() == ".pddl") ds.goal_defs_[e.path().stem().string()] = pddl::read_text_file(e.path().string());
     for (auto& e : fs::directory_iterator(sets))
       if (e.path().extension() == ".txt") {
-        auto labels = lines_of(e.path().string());
-        for (size_t i = 0; i < labels.size(); ++i)
-          if (!ds.goal_defs_.count(labels[i]))
-            throw InputError(SourceLoc{e.path().string(), static_cast<int>(i + 1), 1},
-                             "goal '" + labels[i] + "' has no file goals/definitions/" + labels[i] + ".pddl");
+        auto lines = lines_of(e.path().string());
+        std::vector<std::string> labels;
+        std::map<std::string, int> seen;  // label -> line
+        for (auto& [line_no, label] : lines) {
+          const SourceLoc loc{e.path().string(), line_no, 1};
+          if (!ds.goal_defs_.count(label))
+            throw InputError(loc, "goal '" + label + "' has no file goals/definitions/" + label + ".pddl");
+          // A repeated label would be a second, identical hypothesis sharing its probability.
+          if (auto [it, fresh] = seen.emplace(label, line_no); !fresh)
+            throw InputError(loc, "goal '" + label + "' is listed twice (also at line " + std::to_string(it->second) + ")");
+          labels.push_back(label);
+        }
         ds.goal_sets_[e.path().stem().string()] = labels;
       }
   }
+  // stimuli.json (Doors-Keys-Gems) is optional: only `validate` reads it, to
+  // cross-check the plans against it; the tutorial plans demo* have no entry,
+  // and copies of the dataset with reworded utterances drop the file. When it
+  // is present, it is checked in full (load_stimuli).
   fs::path stim = dir / "stimuli.json";
-  if (fs::exists(stim)) {
-    nlohmann::json j;
-    try {
-      std::ifstream in(stim);
-      j = nlohmann::json::parse(in);
-    } catch (const std::exception& ex) {
-      throw InputError(SourceLoc{stim.string(), 0, 0}, std::string("malformed JSON: ") + ex.what());
-    }
-    if (!j.is_array()) throw InputError(SourceLoc{stim.string(), 0, 0}, "expected a JSON array of stimuli");
-    for (size_t i = 0; i < j.size(); ++i) {
-      const auto& o = j[i];
-      auto field = [&](const char* f) -> const nlohmann::json& {
-        if (!o.contains(f)) throw InputError(SourceLoc{stim.string(), 0, 0}, "stimuli[" + std::to_string(i) + "]." + f + " missing");
-        return o[f];
-      };
-      try {
-        StimulusInfo s;
-        s.name = field("name").get<std::string>();
-        s.type = field("type").get<std::string>();
-        s.utterance = field("utterance").get<std::string>();
-        s.timesteps = field("timesteps").get<int>();
-        s.option_count = field("option_count").get<int>();
-        s.goal = field("goal").at(0).get<int>();
-        for (auto& v : field("best_option").at(0)) s.best_options.push_back(v.get<int>());
-        ds.stimuli_[s.name] = s;
-      } catch (const nlohmann::json::exception& ex) {
-        throw InputError(SourceLoc{stim.string(), 0, 0}, "stimuli[" + std::to_string(i) + "]: " + ex.what());
-      }
-    }
-  }
+  if (fs::exists(stim)) ds.stimuli_ = load_stimuli(stim.string(), ds.kind_, ds.plans_);
   return ds;
 }
 
@@ -208,6 +404,7 @@ std::shared_ptr<const pddl::Task> Dataset::task(const std::string& problem_id) c
   auto prob = std::make_shared<pddl::Problem>(pddl::load_problem(*domain_, problem_path(problem_id),
                                                                    /*with_goal=*/kind_ == DomainKind::Generic));
   auto t = std::make_shared<pddl::Task>(domain_, prob, grounding_options(kind_));
+  if (kind_ == DomainKind::DoorsKeysGems) check_dkg_positions(*t, problem_path(problem_id));
   tasks_[problem_id] = t;
   return t;
 }

@@ -4,6 +4,12 @@
 // plus, for Doors-Keys-Gems, utterances/{pragmatic,literal}/<plan>.txt and
 // stimuli.json, and for VirtualHome, goals/definitions/<label>.pddl and
 // goals/sets/<P>.txt. The domain kind is read from the domain file's name.
+//
+// Loading rejects, with an InputError naming the file (and line, or entry and
+// field for stimuli.json): utterance files with other than one non-blank
+// line; mDKG observed plans without exactly one `;` utterance; empty or
+// non-UTF-8 utterances; repeated labels in a VH goal set; malformed or
+// inconsistent stimuli.json entries (the file itself is optional).
 #include <map>
 #include <memory>
 #include <optional>
@@ -52,7 +58,9 @@ class Dataset {
   const std::vector<PlanRecord>& plans() const { return plans_; }
   const PlanRecord& plan(const std::string& id) const;  // throws InputError listing ids
 
-  // Grounded task of a problem (grounded once, then shared).
+  // Grounded task of a problem (grounded once, then shared). For mDKG, throws
+  // an InputError naming the problem file if an agent or door is not on the
+  // grid, or a key or gem is neither on it nor held by an agent.
   std::shared_ptr<const pddl::Task> task(const std::string& problem_id) const;
   std::string problem_path(const std::string& problem_id) const;
 

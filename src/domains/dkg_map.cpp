@@ -118,7 +118,9 @@ std::shared_ptr<const DkgMapAnalysis> DkgMapAnalysis::build(std::shared_ptr<cons
   std::vector<int> door_cell;
   for (int d = m->first_door(); d < n; ++d) {
     int x = static_cast<int>(t.value(state, m->x_[d])), y = static_cast<int>(t.value(state, m->y_[d]));
-    if (x < 1 || y < 1 || x > W || y > H) throw InputError("Doors-Keys-Gems heuristic: door " + m->name(d) + " is off the grid");
+    if (x < 1 || y < 1 || x > W || y > H)
+      throw InputError(SourceLoc{t.problem().file, 0, 0},
+                       "Doors-Keys-Gems heuristic: door " + m->name(d) + " is off the grid");
     door_cell.push_back(m->cell(x, y));
     blocked[m->cell(x, y)] = 1;
   }

@@ -114,24 +114,25 @@ StripsExport export_strips(const pddl::Task& task, const pddl::State& start, con
   for (int y = 1; y <= world.height(); ++y)
     for (int x = 1; x <= world.width(); ++x)
       if (!world.wall(x, y)) cells.insert({y, x});
+  const SourceLoc problem{task.problem().file, 0, 0};  // errors below name the problem file
   auto place = [&](ObjectId o) -> std::optional<Cell> {
     Cell c = world.pos(start, o);
     if (!c.on_grid()) return std::nullopt;
     if (c.x > world.width() || c.y > world.height())
-      throw InputError(fmt::format("{} is outside the {}x{} grid at ({}, {})", world.name(o), world.width(),
-                                   world.height(), c.x, c.y));
+      throw InputError(problem, fmt::format("{} is outside the {}x{} grid at ({}, {})", world.name(o),
+                                            world.width(), world.height(), c.x, c.y));
     cells.insert({c.y, c.x});
     return c;
   };
   std::map<ObjectId, Cell> door_cell, agent_cell, item_cell;
   for (ObjectId d : world.doors()) {
     auto c = place(d);
-    if (!c) throw InputError("door " + world.name(d) + " has no position on the grid");
+    if (!c) throw InputError(problem, "door " + world.name(d) + " has no position on the grid");
     door_cell[d] = *c;
   }
   for (ObjectId a : agents) {
     auto c = place(a);
-    if (!c) throw InputError("agent " + world.name(a) + " has no position on the grid");
+    if (!c) throw InputError(problem, "agent " + world.name(a) + " has no position on the grid");
     agent_cell[a] = *c;
   }
   for (ObjectId i : items)

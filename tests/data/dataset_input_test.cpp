@@ -1,0 +1,377 @@
+// Bad inputs the dataset loader must reject with an error naming the file
+// (and line, entry or object), instead of loading them and giving a wrong
+// answer later. Each test corrupts a copy of the repo's example
+// Doors-Keys-Gems dataset, or of a slice of the shared VirtualHome dataset
+// (skipped when ../shared/dataset is absent).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "data/dataset.hpp"
+#include "data/validate.hpp"
+#include "test_paths.hpp"
+
+namespace clips::data {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+// Replaces the one occurrence of `from` in file `p`.
+void replace(const fs::path& p, const std::string& from, const std::string& to) {
+  std::string s = read(p);
+  size_t at = s.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << p;
+  ASSERT_EQ(s.find(from, at + 1), std::string::npos) << from << " twice in " << p;
+  write(p, s.replace(at, from.size(), to));
+}
+
+// A fresh directory per test, removed after it.
+fs::path scratch_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return fs::temp_directory_path() /
+         ("clips-data-test-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
+}
+
+fs::path scratch() {
+  fs::path dir = scratch_dir();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+class DatasetInput : public ::testing::Test {
+ protected:
+  void TearDown() override { fs::remove_all(scratch_dir()); }
+};
+
+// The example mDKG dataset: problems e1, e2; plans e1.1.keys, e1.2.keys,
+// e2.1.doors, e2.2.keys, each with one utterance and utterance files.
+fs::path dkg_copy() {
+  fs::path dir = scratch() / "dkg";
+  fs::copy(paths::examples_dir() + "/doors-keys-gems", dir, fs::copy_options::recursive);
+  return dir;
+}
+
+// Problem 1 of the shared VirtualHome dataset with two of its plans
+// (1.2.salad_veggie has two utterances).
+fs::path vh_slice() {
+  fs::path src = paths::vh_dataset(), dir = scratch() / "vh";
+  fs::create_directories(dir / "problems");
+  fs::copy(src / "domain.pddl", dir / "domain.pddl");
+  fs::copy(src / "goals", dir / "goals", fs::copy_options::recursive);
+  fs::copy(src / "problems" / "1.pddl", dir / "problems" / "1.pddl");
+  for (const char* kind : {"observed", "completed"}) {
+    fs::create_directories(dir / "plans" / kind);
+    for (const char* id : {"1.1.stew_chicken", "1.2.salad_veggie"})
+      fs::copy(src / "plans" / kind / (std::string(id) + ".pddl"), dir / "plans" / kind / (std::string(id) + ".pddl"));
+  }
+  return dir;
+}
+
+std::string load_error(const fs::path& dir) {
+  try {
+    Dataset::load(dir.string());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<loaded without error>";
+}
+
+std::string task_error(const fs::path& dir, const std::string& problem) {
+  try {
+    Dataset::load(dir.string()).task(problem);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<grounded without error>";
+}
+
+TEST_F(DatasetInput, ExampleDatasetLoadsAndValidates) {
+  auto ds = Dataset::load(dkg_copy().string());
+  ASSERT_EQ(ds.plans().size(), 4u);
+  auto rep = validate_dataset(ds);
+  for (auto& r : rep.results) EXPECT_TRUE(r.ok) << r.plan_id << ": " << r.error;
+  EXPECT_EQ(ds.plans()[0].literal_utterance, "Can you get me the yellow key?");
+}
+
+// ---- 1: objects must start on the grid (or, for items, in an agent's hands)
+
+TEST_F(DatasetInput, GemWithoutPositionIsRejectedNamingTheProblemFile) {
+  fs::path dir = dkg_copy();
+  replace(dir / "problems/e1.pddl", "(= (xloc gem1) 1) (= (yloc gem1) 1)", "");
+  std::string err = task_error(dir, "e1");
+  EXPECT_THAT(err, HasSubstr("problems/e1.pddl: gem1 has no position on the 9x5 grid"));
+  // validate reports it for the plans on that map, and the other map is fine.
+  auto ds = Dataset::load(dir.string());
+  auto rep = validate_dataset(ds);
+  EXPECT_EQ(rep.failed, 2);
+  for (auto& r : rep.results) {
+    if (r.plan_id.rfind("e1.", 0) == 0) {
+      EXPECT_THAT(r.error, HasSubstr("gem1 has no position")) << r.plan_id;
+    }
+  }
+  EXPECT_NO_THROW(ds.task("e2"));
+}
+
+TEST_F(DatasetInput, GemOffTheGridIsRejected) {
+  fs::path dir = dkg_copy();
+  replace(dir / "problems/e1.pddl", "(= (xloc gem1) 1) (= (yloc gem1) 1)", "(= (xloc gem1) 50) (= (yloc gem1) 60)");
+  EXPECT_THAT(task_error(dir, "e1"), HasSubstr("problems/e1.pddl: gem1 is outside the 9x5 grid at (50, 60)"));
+}
+
+TEST_F(DatasetInput, KeyOffTheGridIsRejected) {
+  fs::path dir = dkg_copy();
+  replace(dir / "problems/e1.pddl", "(= (xloc key2) 9)", "(= (xloc key2) 10)");
+  EXPECT_THAT(task_error(dir, "e1"), HasSubstr("problems/e1.pddl: key2 is outside the 9x5 grid at (10, 3)"));
+}
+
+TEST_F(DatasetInput, DoorAndAgentOffTheGridNameTheProblemFile) {
+  fs::path dir = dkg_copy();
+  replace(dir / "problems/e1.pddl", "(= (xloc door1) 3)", "(= (xloc door1) 30)");
+  EXPECT_THAT(task_error(dir, "e1"), HasSubstr("problems/e1.pddl: door1 is outside the 9x5 grid"));
+  dir = dkg_copy();
+  replace(dir / "problems/e1.pddl", "(= (xloc human) 5) (= (yloc human) 3)", "");
+  EXPECT_THAT(task_error(dir, "e1"), HasSubstr("problems/e1.pddl: human has no position on the 9x5 grid"));
+}
+
+TEST_F(DatasetInput, HeldItemNeedsNoPosition) {
+  fs::path dir = dkg_copy();
+  replace(dir / "problems/e2.pddl", "(= (xloc key1) 5) (= (yloc key1) 1)", "(has robot key1)");
+  EXPECT_EQ(task_error(dir, "e2"), "<grounded without error>");
+}
+
+// ---- 2: a VirtualHome goal set lists each goal once
+
+TEST_F(DatasetInput, DuplicateGoalInVhGoalSetIsRejectedWithFileAndLine) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
+  fs::path dir = vh_slice();
+  auto ds = Dataset::load(dir.string());
+  ASSERT_EQ(ds.plans().size(), 2u);
+  EXPECT_EQ(ds.plans()[1].observed.utterances.size(), 2u);  // VH plans may have several
+  auto set = read(dir / "goals/sets/1.txt");
+  write(dir / "goals/sets/1.txt", "\n" + set + "\nstew_chicken\n");
+  // The blank first line counts: stew_chicken is at line 5, its copy at line 8.
+  EXPECT_THAT(load_error(dir), HasSubstr("goals/sets/1.txt:8:1: goal 'stew_chicken' is listed twice (also at line 5)"));
+}
+
+TEST_F(DatasetInput, UnknownVhGoalReportsItsRealLine) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
+  fs::path dir = vh_slice();
+  write(dir / "goals/sets/1.txt", "salad_veggie\n\nno_such_goal\n");
+  EXPECT_THAT(load_error(dir), HasSubstr("goals/sets/1.txt:3:1: goal 'no_such_goal' has no file"));
+}
+
+// ---- 3: an utterance file holds exactly one utterance
+
+TEST_F(DatasetInput, MultiLineUtteranceFileIsRejected) {
+  fs::path dir = dkg_copy();
+  write(dir / "utterances/literal/e1.1.keys.txt", "Can you get me\nthe yellow key?\n");
+  EXPECT_THAT(load_error(dir), HasSubstr("utterances/literal/e1.1.keys.txt:2:1: an utterance file holds exactly one"));
+  dir = dkg_copy();
+  write(dir / "utterances/pragmatic/e1.1.keys.txt", "Can you get me the yellow key?\n\nAnd the gem.\n");
+  EXPECT_THAT(load_error(dir), HasSubstr("utterances/pragmatic/e1.1.keys.txt:3:1"));
+}
+
+TEST_F(DatasetInput, EmptyUtteranceFileIsRejectedButBlankLinesAroundOneAreFine) {
+  fs::path dir = dkg_copy();
+  write(dir / "utterances/literal/e1.1.keys.txt", "\n  \n");
+  EXPECT_THAT(load_error(dir), HasSubstr("utterances/literal/e1.1.keys.txt is empty"));
+  dir = dkg_copy();
+  write(dir / "utterances/literal/e1.1.keys.txt", "\n  Can you get me the key?  \r\n\n");
+  auto ds = Dataset::load(dir.string());
+  EXPECT_EQ(ds.plan("e1.1.keys").literal_utterance, "Can you get me the key?");
+}
+
+// ---- 4: observed plans: one utterance in mDKG, no empty utterances, no empty plans
+
+TEST_F(DatasetInput, SecondCommentInDkgObservedPlanIsRejectedAtItsLine) {
+  fs::path dir = dkg_copy();
+  write(dir / "plans/observed/e1.1.keys.pddl",
+        "; hello\n(left human)\n\n  ; c\n(wait robot)\n(left human)\n(wait robot)\n; Can you get me the yellow key?\n");
+  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/e1.1.keys.pddl:4:3: a second utterance"));
+  EXPECT_THAT(load_error(dir), HasSubstr("(the first is at line 1)"));
+}
+
+TEST_F(DatasetInput, EmptyDkgObservedPlanIsRejected) {
+  fs::path dir = dkg_copy();
+  write(dir / "plans/observed/e1.1.keys.pddl", "\n\n");
+  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/e1.1.keys.pddl: observed plan is empty"));
+  dir = dkg_copy();
+}
+
+TEST_F(DatasetInput, DkgObservedPlanWithoutAnUtteranceLoadsForActionOnlyInference) {
+  fs::path dir = dkg_copy();
+  write(dir / "plans/observed/e1.1.keys.pddl", "(left human)\n(wait robot)\n");
+  auto ds = Dataset::load(dir.string());
+  EXPECT_EQ(ds.plan("e1.1.keys").observed.actions.size(), 2u);
+  EXPECT_TRUE(ds.plan("e1.1.keys").observed.utterances.empty());
+}
+
+TEST_F(DatasetInput, DkgObservedPlanWithOnlyAnUtteranceIsLegal) {
+  // As the paper's 15.1.doors: the utterance comes before any action.
+  fs::path dir = dkg_copy();
+  write(dir / "plans/observed/e1.1.keys.pddl", "; Can you get me the yellow key?\n");
+  write(dir / "plans/completed/e1.1.keys.pddl",
+        "(left human)\n(wait robot)\n(left human)\n(wait robot)\n" + read(dir / "plans/completed/e1.1.keys.pddl"));
+  auto ds = Dataset::load(dir.string());
+  EXPECT_TRUE(ds.plan("e1.1.keys").observed.actions.empty());
+  EXPECT_EQ(ds.plan("e1.1.keys").observed.utterances.size(), 1u);
+}
+
+TEST_F(DatasetInput, EmptyUtteranceIsRejectedWithFileAndLine) {
+  fs::path dir = dkg_copy();
+  replace(dir / "plans/observed/e1.1.keys.pddl", "; Can you get me the yellow key?", ";  ");
+  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/e1.1.keys.pddl:5:1: empty utterance"));
+}
+
+TEST_F(DatasetInput, EmptyVhUtteranceIsRejectedWithFileAndLine) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
+  fs::path dir = vh_slice();
+  replace(dir / "plans/observed/1.1.stew_chicken.pddl", "; Can you get the wine?", ";");
+  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/1.1.stew_chicken.pddl:8:1: empty utterance"));
+}
+
+TEST_F(DatasetInput, EmptyVhObservedPlanIsRejected) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
+  fs::path dir = vh_slice();
+  write(dir / "plans/observed/1.1.stew_chicken.pddl", "");
+  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/1.1.stew_chicken.pddl: observed plan is empty"));
+}
+
+// ---- 5: stimuli.json
+
+std::string stimulus(const std::string& goal = "[1]", const std::string& timesteps = "4",
+                     const std::string& utterance = "\"Can you get me the yellow key?\"",
+                     const std::string& best = "[[3]]", const std::string& name = "\"e1.1.keys\"",
+                     const std::string& type = "\"keys\"") {
+  return "{\"name\": " + name + ", \"type\": " + type + ", \"utterance\": " + utterance +
+         ", \"timesteps\": " + timesteps + ", \"option_count\": 3, \"goal\": " + goal +
+         ", \"best_option\": " + best + "}";
+}
+
+TEST_F(DatasetInput, WellFormedStimuliLoad) {
+  fs::path dir = dkg_copy();
+  EXPECT_FALSE(Dataset::load(dir.string()).stimulus("e1.1.keys"));  // stimuli.json is optional
+  write(dir / "stimuli.json", "[" + stimulus("[1.0]") + ",\n" +
+                                  stimulus("[2]", "6", "\"Can you unlock the yellow door for me?\"", "[[1, 2]]",
+                                           "\"e2.1.doors\"", "\"doors\"") + "]");
+  auto ds = Dataset::load(dir.string());
+  auto st = ds.stimulus("e1.1.keys");
+  ASSERT_TRUE(st);
+  EXPECT_EQ(st->goal, 1);
+  EXPECT_EQ(st->timesteps, 4);
+  EXPECT_EQ(st->best_options, std::vector<int>{3});
+  EXPECT_EQ(ds.stimulus("e2.1.doors")->best_options, (std::vector<int>{1, 2}));
+}
+
+TEST_F(DatasetInput, BadStimuliFieldsAreRejectedNamingEntryPlanAndField) {
+  const std::string where = "stimuli.json: entry 2 (plan e1.1.keys): ";
+  const std::string ok = stimulus("[2]", "6", "\"Can you unlock the yellow door for me?\"", "[[1]]", "\"e2.1.doors\"",
+                                  "\"doors\"");
+  struct Case {
+    std::string entry, expected;
+  };
+  const std::vector<Case> cases = {
+      {stimulus("[1.5]"), where + "field \"goal\": expected an integer, got 1.5"},
+      {stimulus("[1e30]"), where + "field \"goal\": expected an integer from 0 to 2147483647, got 1e+30"},
+      {stimulus("[-1]"), where + "field \"goal\": expected an integer from 0 to 2147483647, got -1"},
+      {stimulus("\"gem2\""), where + "field \"goal\": expected an array of one element, got the string \"gem2\""},
+      {stimulus("[]"), where + "field \"goal\": expected an array of one element, got an array of 0"},
+      {stimulus("[1, 2]"), where + "field \"goal\": expected an array of one element, got an array of 2"},
+      {stimulus("[null]"), where + "field \"goal\": expected an integer, got null"},
+      {stimulus("[1]", "1e20"), where + "field \"timesteps\": expected an integer from 0 to 2147483647, got 1e+20"},
+      {stimulus("[1]", "\"4\""), where + "field \"timesteps\": expected an integer, got the string \"4\""},
+      {stimulus("[1]", "4", "3"), where + "field \"utterance\": expected a string, got 3"},
+      {stimulus("[1]", "4", "\"Get the red key\""),
+       where + "field \"utterance\": \"Get the red key\" differs from the observed plan's utterance"},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "\"x\""),
+       where + "field \"best_option\": expected an array of one element, got the string \"x\""},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "[3]"),
+       where + "field \"best_option\": expected [[o, ...]], got [3]"},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "[[0]]"),
+       where + "field \"best_option\": expected an integer from 1 to 3, got 0"},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "[[4]]"),
+       where + "field \"best_option\": expected an integer from 1 to 3, got 4"},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "[[3]]", "\"e1.1.keys\"", "\"doors\""),
+       where + "field \"type\": \"doors\" differs from the plan's condition \"keys\""},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "[[3]]", "\"e9.1.keys\""),
+       "stimuli.json: entry 2 (plan e9.1.keys): no such plan in plans/observed/"},
+      {stimulus("[1]", "4", "\"Can you get me the yellow key?\"", "[[3]]", "7"),
+       "stimuli.json: entry 2: field \"name\": expected a string, got 7"},
+      {"{\"type\": \"keys\"}", "stimuli.json: entry 2: field \"name\" is missing"},
+      {"[1]", "stimuli.json: entry 2: expected an object, got an array"},
+      {ok, "stimuli.json: entry 2 (plan e2.1.doors): a second entry for this plan (the first is entry 1)"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.entry);
+    fs::path dir = dkg_copy();
+    write(dir / "stimuli.json", "[" + ok + ",\n" + c.entry + "]");
+    std::string err = load_error(dir);
+    EXPECT_THAT(err, HasSubstr(c.expected));
+    EXPECT_THAT(err, Not(HasSubstr("json.exception")));
+  }
+  fs::path dir = dkg_copy();
+  write(dir / "stimuli.json", "{}");
+  EXPECT_THAT(load_error(dir), HasSubstr("stimuli.json: expected a JSON array of stimuli, got an object"));
+}
+
+// ---- 6: utterances must be UTF-8, checked when loading
+
+TEST_F(DatasetInput, NonUtf8UtteranceIsRejectedWithFileAndLine) {
+  fs::path dir = dkg_copy();
+  replace(dir / "plans/observed/e1.1.keys.pddl", "yellow", "yell\xff\x64w");
+  EXPECT_THAT(load_error(dir),
+              HasSubstr("plans/observed/e1.1.keys.pddl:5:1: utterance is not valid UTF-8 (byte 0xff at offset 23 of the text)"));
+  dir = dkg_copy();
+  write(dir / "utterances/literal/e1.2.keys.txt", "Caf\xc3 red key\n");  // truncated sequence
+  EXPECT_THAT(load_error(dir), HasSubstr("utterances/literal/e1.2.keys.txt:1:1: utterance is not valid UTF-8"));
+  for (const char* bad : {"\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\x80"}) {  // overlong, surrogate, > U+10FFFF
+    dir = dkg_copy();
+    write(dir / "utterances/literal/e1.2.keys.txt", std::string("key ") + bad + "\n");
+    EXPECT_THAT(load_error(dir), HasSubstr("not valid UTF-8")) << bad;
+  }
+}
+
+TEST_F(DatasetInput, Utf8UtterancesLoad) {
+  fs::path dir = dkg_copy();
+  const std::string u = "Caf\xc3\xa9 \xe2\x98\x95, the r\xc3\xa9""d key \xf0\x9f\x94\x91 please";
+  replace(dir / "plans/observed/e1.1.keys.pddl", "Can you get me the yellow key?", u);
+  write(dir / "utterances/pragmatic/e1.1.keys.txt", u + "\n");
+  auto ds = Dataset::load(dir.string());
+  EXPECT_EQ(ds.plan("e1.1.keys").observed.utterances.at(0).text, u);
+}
+
+// ---- the paper's datasets keep loading and validating
+
+TEST_F(DatasetInput, SharedDatasetsStillValidate) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
+  for (auto [dir, n] : {std::pair{paths::dkg_dataset(), 27u}, std::pair{paths::vh_dataset(), 20u}}) {
+    auto ds = Dataset::load(dir);
+    auto rep = validate_dataset(ds);
+    EXPECT_EQ(rep.results.size(), n) << dir;
+    for (auto& r : rep.results) EXPECT_TRUE(r.ok) << r.plan_id << ": " << r.error;
+  }
+  auto ds = Dataset::load(paths::dkg_dataset());
+  EXPECT_TRUE(ds.stimulus("2.1.keys"));
+  EXPECT_FALSE(ds.stimulus("demo0.1.keys"));
+}
+
+}  // namespace
+}  // namespace clips::data
