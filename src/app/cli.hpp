@@ -15,11 +15,18 @@ extern int g_exit_code;
 // The dataset directory default: $CLIPS_DATASET, else ../shared/dataset/<domain>.
 std::string default_dataset_hint();
 
+// Checks for numeric options, failing at parse time with a plain message
+// (CLI::PositiveNumber lets "nan" through and names its bound as 1.79769e+308).
+extern const CLI::Validator PositiveInteger;     // 1, 2, ...
+extern const CLI::Validator NonNegativeInteger;  // 0, 1, ...
+extern const CLI::Validator PositiveSeconds;     // a finite number > 0
+
 // The language-model flags every subcommand that scores utterances shares:
 // --lm embedded|openai, --lm-base-url, --lm-model (key from $OPENAI_API_KEY).
 struct LmFlags {
   std::string kind = "embedded";
   std::string base_url, model;
+  double lm_timeout = 120;  // seconds per HTTP attempt (openai)
   std::string speaker_rule = "paper";  // CLIPS speaker commands: paper or code (spec 13 item 2)
   std::string utterance_timing = "after";  // state explaining an utterance: after (s_k) or before (s_{k-1})
   std::string qa_floor = "dead-ends";      // Q_MDP floor: dead-ends or horizon (assist::QaFloor)

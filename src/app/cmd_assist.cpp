@@ -1,6 +1,8 @@
 // `clips assist`: one assistive run on one plan, with its metrics.
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
@@ -37,6 +39,9 @@ void register_assist(CLI::App& app) {
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->callback([o, mm] {
     auto ds = data::Dataset::load(o->dataset);
+    if (const auto known = eval::known_methods(ds.kind());
+        std::find(known.begin(), known.end(), o->method) == known.end())
+      throw InputError("--method " + o->method + " does not apply to a " + data::to_string(ds.kind()) + " dataset");
     const auto& p = ds.plan(o->plan);
     auto lm = make_lm(o->lm);
     eval::ExperimentOptions eo;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <system_error>
 
 #include "app/cli.hpp"
 #include "eval/bench.hpp"
@@ -21,7 +22,7 @@ void register_bench(CLI::App& app) {
   auto methods = std::make_shared<std::vector<std::string>>();
   cmd->add_option("--dataset", o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)")->required();
   cmd->add_option("--out", *out, "Write results.csv and summary.json into this directory");
-  cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)");
+  cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)")->check(PositiveInteger);
   cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines (default 1)");
   auto lm = std::make_shared<LmFlags>();
   add_lm_options(cmd, *lm);
@@ -51,6 +52,15 @@ void register_bench(CLI::App& app) {
     bool wants_mm = std::find(methods->begin(), methods->end(), "multimodal") != methods->end();
     if (wants_mm && !o->experiment.multimodal.configured())
       throw InputError("--methods multimodal needs a chat endpoint: --chat-base-url URL or $CLIPS_CHAT_BASE_URL");
+    // Output directories are checked before the (long) run, not after it.
+    for (auto [flag, dir] : {std::pair{"--out", out.get()}, std::pair{"--report", report.get()}}) {
+      if (dir->empty()) continue;
+      std::error_code ec;
+      if (std::filesystem::exists(*dir, ec) && !std::filesystem::is_directory(*dir, ec))
+        throw InputError(fmt::format("{} {} exists and is not a directory", flag, *dir));
+      std::filesystem::create_directories(*dir, ec);
+      if (ec) throw InputError(fmt::format("{}: cannot create directory {}: {}", flag, *dir, ec.message()));
+    }
     auto rep = eval::run_bench(*o);
     fmt::print("{}", eval::results_table(rep, std::string(CLIPS_SOURCE_DIR) + "/data/paper/results.json"));
     if (!out->empty()) {
@@ -62,7 +72,8 @@ void register_bench(CLI::App& app) {
       };
       write("summary.json", eval::summary_json(rep));
       write("results.csv", eval::results_csv(rep));
-      fmt::print("wrote {}/summary.json and {}/results.csv\n", *out, *out);
+      fmt::print("wrote {}/summary.json and {}/results.csv{}\n", *out, *out,
+                 rep.failed_plans ? " (failed plans: see the error column)" : "");
     }
     if (!report->empty()) {
       eval::ReportOptions ro;

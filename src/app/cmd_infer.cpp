@@ -103,12 +103,13 @@ void register_infer(CLI::App& app) {
       ->check(CLI::IsMember({"both", "utterance", "action"}));
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
-  cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)");
+  cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)")
+      ->check(PositiveInteger);
   cmd->add_flag("--explain", o->explain,
                 "Also show, per utterance and hypothesis (goal x cost profile), its likelihood and most probable "
                 "commands, and each hypothesis' rolled-out joint plan at the end");
   cmd->add_option("--top", o->top, "With --explain: commands shown per hypothesis (default 3)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(PositiveInteger);
   cmd->add_flag("--json", o->json, "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object");
   cmd->callback([o] {
     auto ds = data::Dataset::load(o->dataset);

@@ -18,8 +18,13 @@ namespace {
 // (assistant-directed) rewrite per plan; VH plans (and mDKG plans without the
 // file) carry their utterances in the observed plan, and the listener takes
 // the last one.
-std::string default_utterance(const data::PlanRecord& p) {
-  if (p.literal_utterance) return *p.literal_utterance;
+std::string default_utterance(const std::string& dataset, const data::PlanRecord& p) {
+  if (p.literal_utterance) {
+    if (p.literal_utterance->find_first_not_of(" \t\r\n\f\v") == std::string::npos)
+      throw InputError("the literal utterance file " + dataset + "/utterances/literal/" + p.id +
+                       ".txt is empty; give --utterance");
+    return *p.literal_utterance;
+  }
   if (!p.observed.utterances.empty()) return p.observed.utterances.back().text;
   throw InputError("plan " + p.id + " has no utterance (no literal utterance file and none in the observed plan); "
                    "give --utterance");
@@ -46,7 +51,7 @@ void register_listen(CLI::App& app) {
                   "observed plan)");
   add_lm_options(cmd, o->lm);
   cmd->add_option("--top", o->top, "Show only the N most probable commands (default: 10 in the table, all with --json)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(PositiveInteger);
   cmd->add_flag("--json", o->json,
                 "Print one JSON object {\"utterance\": ..., \"commands\": [{\"command\": ..., \"prob\": ...}, ...]}");
   cmd->callback([o] {
@@ -59,7 +64,7 @@ void register_listen(CLI::App& app) {
     const auto& p = ds.plan(o->plan);
     auto task = ds.task(p.problem_id);
     const pddl::State s_T = pddl::simulate(*task, task->initial_state(), p.observed).states.back();
-    const std::string utterance = o->utterance ? *o->utterance : default_utterance(p);
+    const std::string utterance = o->utterance ? *o->utterance : default_utterance(o->dataset, p);
 
     const auto setup = language::literal_listener_setup(language::language_domain_of(*task));
     auto lm = make_lm(o->lm);

@@ -1,15 +1,35 @@
 // `clips plan`: optimal A* (or RTAA*) for one goal and cost profile.
 #include <fmt/core.h>
 
+#include <chrono>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/cli.hpp"
 #include "data/dataset.hpp"
 #include "domains/registry.hpp"
 #include "pddl/parser.hpp"
+#include "pddl/sexpr.hpp"
 #include "search/rtaa.hpp"
 
 namespace clips::app {
+
+namespace {
+
+// A goal with nothing to achieve: "()" or "(and)".
+bool is_empty_goal(const pddl::SExpr& e) {
+  if (!e.is_list) return false;
+  if (e.items.empty()) return true;
+  if (e.head() != "and") return false;
+  for (size_t i = 1; i < e.items.size(); ++i)
+    if (!is_empty_goal(e.items[i])) return false;
+  return true;
+}
+
+constexpr double kRtaaTimeLimit = 60;  // default --time-limit for rtaa runs
+
+}  // namespace
 
 void register_plan(CLI::App& app) {
   auto* cmd = app.add_subcommand("plan", "Plan for a goal with A* (optimal with an admissible heuristic) or RTAA*");
@@ -19,23 +39,43 @@ void register_plan(CLI::App& app) {
     size_t max_nodes = size_t{1} << 24;
     double max_seconds = 300;
     int max_steps = 200;
+    std::optional<double> time_limit;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--dataset", o->dataset, "Dataset directory (with domain.pddl and problems/)");
   cmd->add_option("--problem", o->problem, "Problem id in the dataset (e.g. 2), or with --domain a problem file");
   cmd->add_option("--domain", o->domain_file, "A PDDL domain file (instead of --dataset)");
-  cmd->add_option("--goal", o->goal, "Goal condition in PDDL, e.g. \"(has human gem1)\" (default: the problem's goal)");
+  auto* goal_opt = cmd->add_option("--goal", o->goal,
+                                   "Goal condition in PDDL, e.g. \"(has human gem1)\" (default: the problem's goal)");
   cmd->add_option("--costs", o->costs,
                   "Cost profile: 1..4 for doors-keys-gems (C1..C4, default 1), 'unit', or 'task' (the domain's "
                   "action costs; default for other domains when they declare total-cost)");
   cmd->add_option("--planner", o->planner, "astar (default) or rtaa")->check(CLI::IsMember({"astar", "rtaa"}));
   cmd->add_option("--heuristic", o->heuristic, "Heuristic name (default: the domain's admissible one)");
   cmd->add_option("--from-plan", o->from_plan, "Start from the end of this observed plan (dataset plan id)");
-  cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search (default 2^24)");
-  cmd->add_option("--max-seconds", o->max_seconds, "Time budget per A* search (default 300)");
-  cmd->add_option("--max-steps", o->max_steps, "RTAA*: maximum number of executed actions (default 200)");
+  cmd->add_option("--max-nodes", o->max_nodes,
+                  "Expansion budget of each A* search (default 2^24); RTAA* runs one search per successor and "
+                  "executed action, each with this budget")
+      ->check(PositiveInteger);
+  cmd->add_option("--max-seconds", o->max_seconds,
+                  "Time budget of each A* search (default 300); not a limit on the whole RTAA* run: see --time-limit")
+      ->check(PositiveSeconds);
+  cmd->add_option("--max-steps", o->max_steps, "RTAA*: maximum number of executed actions (default 200)")
+      ->check(PositiveInteger);
+  cmd->add_option("--time-limit", o->time_limit,
+                  fmt::format("Wall-clock limit for the whole run, all searches included (default {:g} s for rtaa; "
+                              "astar: only --max-seconds)",
+                              kRtaaTimeLimit))
+      ->check(PositiveSeconds);
   cmd->add_flag("--json", o->json, "Print one JSON object: plan, cost, expanded, seconds, status");
-  cmd->callback([o] {
+  cmd->callback([o, goal_opt] {
+    using clock = std::chrono::steady_clock;
+    const auto t_run = clock::now();
+    const double time_limit = o->time_limit ? *o->time_limit
+                              : o->planner == "rtaa" ? kRtaaTimeLimit
+                                                     : std::numeric_limits<double>::infinity();
+    if (goal_opt->count() > 0 && o->goal.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
+      throw InputError("--goal is empty (omit it to plan for the problem's goal)");
     std::shared_ptr<const pddl::Task> task;
     data::DomainKind kind = data::DomainKind::Generic;
     pddl::State start;
@@ -45,6 +85,8 @@ void register_plan(CLI::App& app) {
       kind = ds.kind();
       if (!o->from_plan.empty()) {
         const auto& p = ds.plan(o->from_plan);
+        if (!o->problem.empty() && o->problem != p.problem_id)
+          throw InputError("plan " + p.id + " is on problem " + p.problem_id + ", not " + o->problem);
         task = ds.task(p.problem_id);
         start = pddl::simulate(*task, task->initial_state(), p.observed).states.back();
       } else {
@@ -64,6 +106,8 @@ void register_plan(CLI::App& app) {
       if (!task->problem().goal_sexpr) throw InputError("--goal is required (the problem has no :goal)");
       goal = task->problem().goal_sexpr->str();
     }
+    if (is_empty_goal(pddl::read_one_sexpr(goal, "--goal")))
+      throw InputError("goal " + goal + " is empty: give at least one condition, e.g. \"(has human gem1)\"");
     std::string costs = o->costs;
     if (costs.empty())
       costs = kind == data::DomainKind::DoorsKeysGems ? "1" : (task->domain().total_cost ? "task" : "unit");
@@ -73,6 +117,9 @@ void register_plan(CLI::App& app) {
     search::SearchOptions so;
     so.max_nodes = o->max_nodes;
     so.max_seconds = o->max_seconds;
+    if (time_limit < 1e9)  // beyond that: no run limit (and no time_point overflow)
+      so.deadline = t_run + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(time_limit));
+    auto out_of_time = [&] { return clock::now() >= so.deadline; };
     std::vector<pddl::ActionId> plan;
     double cost = 0, seconds = 0;
     size_t expanded = 0;
@@ -84,15 +131,28 @@ void register_plan(CLI::App& app) {
       expanded = r.expanded;
       seconds = r.seconds;
       status = search::to_string(r.status);
+      if (r.status == search::SearchStatus::MaxTime && out_of_time()) {
+        status = "time_limit";
+        fmt::print(stderr, "plan: stopped: time limit of {:g} s reached after {} expanded nodes\n", time_limit,
+                   expanded);
+      }
     } else {
-      auto t0 = std::chrono::steady_clock::now();
+      auto t0 = clock::now();
       search::Policy pol(spec, h);
       pddl::State s = start;
       status = "max_steps";
       for (int i = 0; i < o->max_steps; ++i) {
         if (spec->is_goal(s)) break;
+        if (out_of_time()) {
+          status = "time_limit";
+          break;
+        }
         auto st = pol.refine(s, so);
         expanded += st.expanded;
+        if (out_of_time()) {  // the last refine was cut short: do not act on it
+          status = "time_limit";
+          break;
+        }
         auto a = pol.best_action(s);
         if (!a) {
           status = "failure";
@@ -103,7 +163,9 @@ void register_plan(CLI::App& app) {
         s = task->apply(s, *a);
       }
       if (spec->is_goal(s)) status = "success";
-      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      seconds = std::chrono::duration<double>(clock::now() - t0).count();
+      if (status == "time_limit")
+        fmt::print(stderr, "plan: stopped: time limit of {:g} s reached after {} actions\n", time_limit, plan.size());
     }
     if (o->json) {
       nlohmann::json j;

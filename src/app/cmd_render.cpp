@@ -26,7 +26,8 @@ void register_render(CLI::App& app) {
   cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys")->required();
   cmd->add_option("--step", o->step,
                   "State to draw for --out: after N actions (0..T observed, T+1.. the CLIPS-assisted continuation); "
-                  "default T, the end of the observed prefix");
+                  "default T, the end of the observed prefix")
+      ->check(NonNegativeInteger);
   cmd->add_option("--out", o->out, "Write one frame as PNG");
   cmd->add_option("--gif", o->gif, "Write the observed prefix + CLIPS offline Q_MDP assistance as an animated GIF");
   cmd->add_option("--cell", o->cell, "Pixels per grid cell (default 32)")->check(CLI::Range(8, 128));

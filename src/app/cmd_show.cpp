@@ -1,6 +1,8 @@
 // `clips show`: the state of a plan at a step, as text.
 #include <fmt/core.h>
 
+#include <optional>
+
 #include "app/cli.hpp"
 #include "data/dataset.hpp"
 #include "domains/dkg_world.hpp"
@@ -12,14 +14,15 @@ void register_show(CLI::App& app) {
   auto* cmd = app.add_subcommand("show", "Print the state of a plan at a step (ASCII grid for Doors-Keys-Gems)");
   struct Opts {
     std::string dataset, plan;
-    int step = -1;
+    std::optional<int> step;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--dataset", o->dataset, "Dataset directory")->required();
   cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys")->required();
   cmd->add_option("--step", o->step,
                   "Number of actions applied, counting the observed plan then its completion "
-                  "(default: the end of the observed plan)");
+                  "(default: the end of the observed plan)")
+      ->check(NonNegativeInteger);
   cmd->callback([o] {
     auto ds = data::Dataset::load(o->dataset);
     const auto& p = ds.plan(o->plan);
@@ -28,7 +31,7 @@ void register_show(CLI::App& app) {
     auto comp = pddl::simulate(*task, obs.states.back(), p.completed);
     int T = static_cast<int>(obs.actions.size());
     int total = T + static_cast<int>(comp.actions.size());
-    int step = o->step < 0 ? T : o->step;
+    int step = o->step.value_or(T);
     if (step > total) throw InputError("--step " + std::to_string(step) + " is past the end of the plan (" + std::to_string(total) + " actions)");
     const pddl::State& s = step <= T ? obs.states[step] : comp.states[step - T];
     fmt::print("plan {} (problem {}), step {}/{} ({} observed)\n", p.id, p.problem_id, step, total, T);

@@ -32,12 +32,40 @@ void progress_line(int done, int total, double secs, bool tty) {
   }
 }
 
+// "a, b, c", at most `max` names then "... (N in all)".
+std::string name_list(const std::vector<std::string>& names, size_t max = 20) {
+  std::string out;
+  for (size_t i = 0; i < names.size() && i < max; ++i) out += (i ? ", " : "") + names[i];
+  if (names.size() > max) out += fmt::format(", ... ({} in all)", names.size());
+  return out;
+}
+
+// Unknown plan ids and method names are errors before any plan runs.
+void check_selection(const data::Dataset& ds, const BenchOptions& opts) {
+  std::vector<std::string> ids, unknown;
+  for (auto& p : ds.plans()) ids.push_back(p.id);
+  for (auto& id : opts.plans)
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) unknown.push_back(id);
+  if (!unknown.empty())
+    throw InputError(fmt::format("--plans: unknown plan id{} {} in {}; valid ids: {}", unknown.size() > 1 ? "s" : "",
+                                 name_list(unknown), opts.dataset, name_list(ids)));
+  const auto known = known_methods(ds.kind());
+  unknown.clear();
+  for (auto& m : opts.experiment.methods)
+    if (std::find(known.begin(), known.end(), m) == known.end()) unknown.push_back(m);
+  if (!unknown.empty())
+    throw InputError(fmt::format("--methods: unknown method{} {} for a {} dataset; valid methods: {}",
+                                 unknown.size() > 1 ? "s" : "", name_list(unknown), data::to_string(ds.kind()),
+                                 name_list(known, known.size())));
+}
+
 }  // namespace
 
 BenchReport run_bench(const BenchOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
   BenchReport rep;
   auto ds0 = data::Dataset::load(opts.dataset);
+  check_selection(ds0, opts);
   rep.domain = data::to_string(ds0.kind());
   rep.dataset = opts.dataset;
   std::vector<const data::PlanRecord*> todo;
@@ -103,8 +131,10 @@ BenchReport run_bench(const BenchOptions& opts) {
       if (m->p_true_goal) xs["p_true_goal"].push_back(*m->p_true_goal);
       xs["assist_precision"].push_back(m->precision);
       xs["assist_recall"].push_back(m->recall);
-      xs["rel_plan_length"].push_back(m->rel_plan_length);
-      xs["rel_human_cost"].push_back(m->rel_human_cost);
+      if (m->has_relative) {  // ratios to CLIPS: only when it ran on the plan
+        xs["rel_plan_length"].push_back(m->rel_plan_length);
+        xs["rel_human_cost"].push_back(m->rel_human_cost);
+      }
       xs["goal_success"].push_back(m->goal_success);
     }
     for (auto& [k, v] : xs) s.metrics[k] = mean_se(v);
@@ -153,7 +183,8 @@ std::string results_csv(const BenchReport& r) {
   };
   for (auto& p : r.plans) {
     if (!p.error.empty()) {
-      out += p.plan_id + ",,,,,,,,,,,," + fmt::format("{:.3f}", p.seconds) + ",,," + quote(p.error) + "\n";
+      // plan, 10 empty metric fields, seconds, options, goal_posterior, error: the header's 15 fields.
+      out += p.plan_id + std::string(11, ',') + fmt::format("{:.3f}", p.seconds) + ",,," + quote(p.error) + "\n";
       continue;
     }
     for (auto& m : p.methods) {
@@ -161,10 +192,12 @@ std::string results_csv(const BenchReport& r) {
       for (auto& [o, v] : m.options) opts += (opts.empty() ? "" : ";") + o + "=" + fmt::format("{:.4g}", v);
       for (size_t g = 0; g < m.goal_posterior.size(); ++g)
         post += (g ? ";" : "") + p.goals[g] + "=" + fmt::format("{:.4g}", m.goal_posterior[g]);
-      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.3f},{},{},{}\n", p.plan_id,
+      auto relative = [&](double v) { return m.has_relative ? fmt::format("{:.6g}", v) : std::string(); };
+      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{:.3f},{},{},{}\n", p.plan_id,
                          m.method, m.p_true_goal ? fmt::format("{:.6g}", *m.p_true_goal) : "", m.precision, m.recall,
-                         m.plan_length, m.human_cost, m.plan_cost, m.rel_plan_length, m.rel_human_cost, m.goal_success,
-                         m.seconds, quote(opts), quote(post), m.error.empty() ? "" : quote(m.error));
+                         m.plan_length, m.human_cost, m.plan_cost, relative(m.rel_plan_length),
+                         relative(m.rel_human_cost), m.goal_success, m.seconds, quote(opts), quote(post),
+                         m.error.empty() ? "" : quote(m.error));
     }
   }
   return out;
@@ -191,11 +224,16 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
   out += "\n" + fmt::format("{:<26}", "");
   for (size_t i = 0; i < cols.size(); ++i) out += fmt::format(" | {:^11} {:^11}", "ours", "paper");
   out += "\n" + std::string(26 + cols.size() * 26, '-') + "\n";
+  bool no_reference = false;  // relative metrics without a CLIPS run to compare with
   for (auto& s : r.summary) {
     out += fmt::format("{:<26}", s.method);
     for (auto& [k, label] : cols) {
       auto it = s.metrics.find(k);
-      std::string ours = it == s.metrics.end() ? "–" : fmt::format("{:.2f} ({:.2f})", it->second.mean, it->second.se);
+      const bool relative = k.rfind("rel_", 0) == 0;
+      std::string ours = it != s.metrics.end() ? fmt::format("{:.2f} ({:.2f})", it->second.mean, it->second.se)
+                         : relative         ? "n/a"
+                                            : "–";
+      no_reference |= relative && it == s.metrics.end();
       std::string theirs = "–";
       if (ours_paper && ours_paper->contains(s.method) && (*ours_paper)[s.method].contains(k)) {
         auto v = (*ours_paper)[s.method][k];
@@ -210,7 +248,14 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
     for (auto& s : r.summary) ran |= s.method == "multimodal";
     if (!ran) out += "multimodal (GPT-4V-style)  | skipped: no chat endpoint configured (see --help)\n";
   }
-  if (r.failed_plans) out += fmt::format("{} plan(s) failed; see results.csv\n", r.failed_plans);
+  if (no_reference)
+    out += "n/a: relative length and cost are ratios to CLIPS (offline Q_MDP) on the same plan; add clips to "
+           "--methods\n";
+  if (r.failed_plans) {
+    out += fmt::format("{} plan(s) failed:\n", r.failed_plans);
+    for (auto& p : r.plans)
+      if (!p.error.empty()) out += fmt::format("  {}: {}\n", p.plan_id, p.error);
+  }
   return out;
 }
 

@@ -34,6 +34,12 @@ std::vector<std::string> default_methods(data::DomainKind kind, bool all_assista
   return m;
 }
 
+std::vector<std::string> known_methods(data::DomainKind kind) {
+  std::vector<std::string> m = default_methods(kind, true);
+  m.push_back("multimodal");
+  return m;
+}
+
 namespace {
 
 struct DomainFacts {
@@ -259,6 +265,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
       for (auto& r : out.methods) {
         r.rel_plan_length = ref->plan_length > 0 ? r.plan_length / ref->plan_length : 0;
         r.rel_human_cost = ref->human_cost > 0 ? r.human_cost / ref->human_cost : 0;
+        r.has_relative = true;
       }
     }
   } catch (const std::exception& e) {

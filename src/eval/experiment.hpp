@@ -27,6 +27,7 @@ struct MethodResult {
   double precision = 0, recall = 0;
   double plan_length = 0, human_cost = 0, plan_cost = 0;
   double rel_plan_length = 0, rel_human_cost = 0;  // / CLIPS offline Q_MDP on the same plan
+  bool has_relative = false;  // rel_* are set: the "clips" method ran on this plan
   double goal_success = 0;
   std::map<std::string, double> options;
   std::vector<std::string> plan;  // executed actions (the most likely run)
@@ -69,6 +70,8 @@ struct ExperimentOptions {
 };
 
 std::vector<std::string> default_methods(data::DomainKind kind, bool all_assistance);
+// Every method name evaluate_plan accepts on this kind of domain.
+std::vector<std::string> known_methods(data::DomainKind kind);
 
 // Runs every requested method on one plan. Thread-safe for distinct Datasets.
 PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,

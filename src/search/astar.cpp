@@ -90,9 +90,12 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
     const uint64_t* s = reg.get(top.node);
     if (spec.is_goal(s) || (opts.extra_goal && opts.extra_goal(s))) return finish(SearchStatus::Success, top.node);
     if (r.expanded >= opts.max_nodes) return finish(SearchStatus::MaxNodes, top.node);
-    if ((r.expanded & 255) == 0 && opts.max_seconds < std::numeric_limits<double>::infinity() &&
-        std::chrono::duration<double>(clock::now() - t0).count() >= opts.max_seconds)
-      return finish(SearchStatus::MaxTime, top.node);
+    if ((r.expanded & 255) == 0 &&
+        (opts.max_seconds < std::numeric_limits<double>::infinity() || opts.deadline != clock::time_point::max())) {
+      const auto now = clock::now();
+      if (now >= opts.deadline || std::chrono::duration<double>(now - t0).count() >= opts.max_seconds)
+        return finish(SearchStatus::MaxTime, top.node);
+    }
     if (opts.fail_fast && top.f == model::kInf) return finish(SearchStatus::Failure, top.node);
     pop();
     const int id = top.node;

@@ -6,6 +6,7 @@
 // test runs when a node is selected. Budgets (expansions, seconds) end the
 // search with a status, never an exception. With a consistent heuristic the
 // returned plan is optimal.
+#include <chrono>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -24,6 +25,9 @@ std::string to_string(SearchStatus s);
 struct SearchOptions {
   size_t max_nodes = std::numeric_limits<size_t>::max();  // expansions
   double max_seconds = std::numeric_limits<double>::infinity();
+  // Wall-clock deadline shared by several searches (e.g. a whole RTAA* run of
+  // `clips plan`): reaching it ends a search with MaxTime, like max_seconds.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   bool fail_fast = true;     // stop when the best frontier node has f = +inf
   bool prune = true;         // ask the heuristic which actions to expand
   double h_weight = 1.0;     // f = g + w*h (w > 1: weighted A*)

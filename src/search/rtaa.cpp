@@ -116,8 +116,9 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
       terminal = id;
       break;
     }
-    if ((expanded & 255) == 0 && opts.max_seconds < std::numeric_limits<double>::infinity() &&
-        std::chrono::duration<double>(clock::now() - t0).count() >= opts.max_seconds) {
+    if ((expanded & 255) == 0 &&
+        (opts.max_seconds < std::numeric_limits<double>::infinity() || opts.deadline != clock::time_point::max()) &&
+        (clock::now() >= opts.deadline || std::chrono::duration<double>(clock::now() - t0).count() >= opts.max_seconds)) {
       status = SearchStatus::MaxTime;
       terminal = id;
       break;
