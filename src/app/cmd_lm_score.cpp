@@ -2,10 +2,9 @@
 // debugging prompts and backends by hand.
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
-#include <sstream>
 
 #include "app/cli.hpp"
 #include "language/commands/fewshot.hpp"
@@ -16,18 +15,30 @@ namespace clips::app {
 
 namespace {
 
-std::string read_prompt(const std::string& path) {
+// Prompts are a few kilobytes; a cap keeps a wrong path (a device, a huge
+// file) from filling the memory.
+constexpr size_t kMaxPromptBytes = size_t{16} << 20;
+
+std::string read_all(std::istream& in, const std::string& name) {
   std::string text;
-  if (path == "-") {
-    text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-  } else {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open the prompt file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    text.append(buf, static_cast<size_t>(in.gcount()));
+    if (text.size() > kMaxPromptBytes)
+      throw InputError(SourceLoc{name, 0, 0}, "the prompt is larger than 16 MiB; is this the right file?");
   }
+  if (in.bad()) throw InputError(SourceLoc{name, 0, 0}, "reading the prompt failed");
   return text;
+}
+
+std::string read_prompt(const std::string& path) {
+  if (path == "-") return read_all(std::cin, "<stdin>");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(SourceLoc{path, 0, 0}, "is a directory, not a prompt file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open the prompt file");
+  return read_all(in, path);
 }
 
 }  // namespace
@@ -42,7 +53,8 @@ void register_lm_score(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   cmd->add_option("--prompt-file", o->prompt_file,
                   "File holding the prompt ('-' = stdin). One trailing newline is dropped (editors add it; prompts "
-                  "end with \"Output:\"), unless --raw or the file is just \"\\n\" (the empty-command prompt)")
+                  "end with \"Output:\") and Windows line endings are read as \"\\n\", unless --raw or the file is just \"\\n\" "
+                  "(the empty-command prompt)")
       ->required();
   cmd->add_option("--continuation", o->continuation,
                   "The utterance; scored as \" <utterance>\\n\" like the listener does, unless --raw")
@@ -53,6 +65,8 @@ void register_lm_score(CLI::App& app) {
     std::string prompt = read_prompt(o->prompt_file);
     std::string continuation = o->continuation;
     if (!o->raw) {
+      // Windows line endings: prompts are line-based, so read them as "\n".
+      for (size_t at; (at = prompt.find("\r\n")) != std::string::npos;) prompt.erase(at, 1);
       if (prompt.size() > 1 && prompt.back() == '\n') prompt.pop_back();
       if (continuation.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
         throw InputError("--continuation is empty");

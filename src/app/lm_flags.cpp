@@ -11,6 +11,10 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
                   "openai: completions API base URL (default $CLIPS_LM_BASE_URL, else https://api.openai.com/v1; "
                   "the key is read from $OPENAI_API_KEY)");
   cmd->add_option("--lm-model", f.model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
+  cmd->add_option("--lm-timeout", f.lm_timeout,
+                  "openai: seconds one request may take before it counts as timed out (default 120); a "
+                  "timed-out request is tried once more, connection failures and HTTP 429/5xx up to 4 more times")
+      ->check(PositiveSeconds);
 }
 
 void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
@@ -35,6 +39,7 @@ std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) {
   language::LanguageModelOptions o;
   o.base_url = f.base_url;
   o.model = f.model;
+  o.timeout_seconds = f.lm_timeout;
   return language::make_language_model(f.kind, o);
 }
 

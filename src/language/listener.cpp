@@ -1,6 +1,7 @@
 #include "language/listener.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -105,6 +106,9 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
     o.base_url = options.base_url;
     o.model = options.model;
     o.api_key = options.api_key;
+    if (options.timeout_seconds > 0) {
+      o.http.total_timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_seconds * 1000));
+    }
     inner = std::make_shared<lm::OpenAiCompletionsModel>(o);
   } else {
     throw InputError("unknown language model '" + kind + "' (known: embedded, openai)");

@@ -31,6 +31,8 @@ struct LanguageModelOptions {
   std::string base_url;
   std::string model;
   std::optional<std::string> api_key;
+  // openai: seconds one HTTP attempt may take (0 = the backend's default).
+  double timeout_seconds = 0;
   // embedded: directory of the corpus files ("" = the backend's default).
   std::string data_dir;
 };

@@ -97,6 +97,27 @@ TEST(EmbeddedNormalisation, UnknownWordsHaveNonZeroProbability) {
   EXPECT_LT(s, score(p, "Can you get a plate?"));
 }
 
+TEST(EmbeddedNormalisation, VeryLongUnknownWordsStayFiniteAndKeepTheComparison) {
+  // The character model gives a word of a few hundred letters a probability
+  // below the double range; the score must stay a finite log-probability,
+  // fall with the length, and leave the comparison between commands as it is
+  // for a short unknown word (the word's factor is the same under both).
+  const std::string red = literal_prompt("(handover you me key1) where (iscolor key1 red)");
+  const std::string blue = literal_prompt("(unlock you key1 door1) where (iscolor door1 blue)");
+  auto utterance = [](size_t letters) { return "Can you pass me the " + std::string(letters, 'x') + " key?"; };
+  double last = 0;
+  for (size_t letters : {20, 150, 300, 3000}) {
+    const double r = score(red, utterance(letters)), b = score(blue, utterance(letters));
+    ASSERT_TRUE(std::isfinite(r) && std::isfinite(b)) << letters;
+    if (letters > 20) {
+      EXPECT_LT(r, last) << letters;
+    }
+    EXPECT_NEAR(r - b, score(red, utterance(20)) - score(blue, utterance(20)), 1e-6) << letters;
+    last = r;
+  }
+  EXPECT_TRUE(std::isfinite(score("\n", utterance(3000))));
+}
+
 TEST(EmbeddedModel, IsDeterministicAcrossInstancesAndCalls) {
   const std::string p = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 blue)");
   const double a = score(p, "Can you open the blue door?");

@@ -249,6 +249,22 @@ TEST_F(OpenAiCompletionsTest, TimesOutWithAClearMessage) {
   EXPECT_NE(msg.find(url()), std::string::npos) << msg;
 }
 
+TEST_F(OpenAiCompletionsTest, AHungServerIsTriedTwiceNotFiveTimes) {
+  // Timeouts have their own, smaller retry budget: a server that does not
+  // answer costs two timeouts, while connection errors and 5xx keep theirs.
+  FakeFaults f;
+  f.delay_ms = 600;
+  server.set_faults(f);
+  auto o = options();
+  o.http.total_timeout = 100ms;
+  o.http.backoff_initial = 1ms;
+  o.http.max_retries = 4;
+  OpenAiCompletionsModel m(o);
+  const std::string msg = error_of(m, {{kPrompt, kUtterance}});
+  EXPECT_NE(msg.find("timed out after 2 attempts"), std::string::npos) << msg;
+  EXPECT_EQ(server.completion_requests(), 2);
+}
+
 struct MalformedCase {
   FakeReply reply;
   std::size_t damaged;
@@ -421,7 +437,7 @@ TEST(OpenAiSliceTest, DiscountsALeadingSpecialToken) {
 TEST(OpenAiSliceTest, OffsetsCountCharactersNotBytes) {
   json lp = {{"tokens", {"Caf\xc3\xa9", ":", " d\xc3\xa9j\xc3\xa0", "\n"}},
              {"token_logprobs", {nullptr, -1.0, -2.0, -4.0}},
-             {"text_offset", {0, 4, 5, 9}}};
+             {"text_offset", {0, 4, 5, 10}}};
   EXPECT_DOUBLE_EQ(slice(lp, "Caf\xc3\xa9:", " d\xc3\xa9j\xc3\xa0\n"), -6.0);
 }
 
@@ -437,6 +453,25 @@ TEST(OpenAiSliceTest, RejectsNullsAndBrokenOffsets) {
   EXPECT_NE(slice_error(mismatch, "Output:", " Hi\n").find("text_offset has 2 entries"), std::string::npos);
   json not_number = {{"token_logprobs", {nullptr, -1.0, "x"}}, {"text_offset", {0, 6, 7}}};
   EXPECT_NE(slice_error(not_number, "Output:", " Hi\n").find("token_logprobs[2] is not a number"),
+            std::string::npos);
+}
+
+TEST(OpenAiSliceTest, RejectsPositiveLogProbabilitiesAndEchoesCutShort) {
+  json positive = {{"tokens", {"Output", ":", " Hi", "\n"}},
+                   {"token_logprobs", {nullptr, -1.0, 40.0, -4.0}},
+                   {"text_offset", {0, 6, 7, 10}}};
+  EXPECT_NE(slice_error(positive, "Output:", " Hi\n").find("token_logprobs[2] is 40.0, but a log-probability"),
+            std::string::npos);
+  // float rounding of a certain token is not an error
+  json rounded = {{"tokens", {"Output", ":", " Hi", "\n"}},
+                  {"token_logprobs", {nullptr, -1.0, 1e-7, -4.0}},
+                  {"text_offset", {0, 6, 7, 10}}};
+  EXPECT_NEAR(slice(rounded, "Output:", " Hi\n"), -4.0, 1e-6);
+  // the echo stops after " Hi": the "\n" of the continuation is missing
+  json short_echo = {{"tokens", {"Output", ":", " Hi"}},
+                     {"token_logprobs", {nullptr, -1.0, -0.5}},
+                     {"text_offset", {0, 6, 7}}};
+  EXPECT_NE(slice_error(short_echo, "Output:", " Hi\n").find("echoed tokens end at character 10, before the end"),
             std::string::npos);
 }
 

@@ -30,6 +30,7 @@ constexpr double kMention = 0.85;       // prior mean of the rho (Beta pseudo-co
 constexpr double kRequestClause = 0.8;
 constexpr size_t kMaxAnchors = 4;  // action groups whose mention requires an anchor token
 constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
+constexpr double kLogTinyToken = -600;  // log-probability below which a token's sources are rescaled
 
 // Field weights inside a group, renormalised over the fields present.
 constexpr double kWeightVerb = 0.3;
@@ -272,6 +273,23 @@ double AlignmentModel::char_prob(const std::string& w) const {
   return p * char_next_[static_cast<size_t>(prev * (kCharSymbols + 1) + kCharSymbols)];
 }
 
+// The same model in log space: a long word's product of per-letter factors
+// leaves the double range (about 1e-308) after some two hundred letters.
+double AlignmentModel::char_log_prob(const std::string& w) const {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  if (w.empty()) return kNone;
+  int prev = char_index(w[0]);
+  if (prev < 0) return kNone;
+  double lp = std::log(char_first_[static_cast<size_t>(prev)]);
+  for (size_t i = 1; i < w.size(); ++i) {
+    const int c = char_index(w[i]);
+    if (c < 0) return kNone;
+    lp += std::log(char_next_[static_cast<size_t>(prev * (kCharSymbols + 1) + c)]);
+    prev = c;
+  }
+  return lp + std::log(char_next_[static_cast<size_t>(prev * (kCharSymbols + 1) + kCharSymbols)]);
+}
+
 double AlignmentModel::log_prob_unprimed(const EncodedUtterance& u, bool complete) const {
   double lp = length_log_prob(0, static_cast<int>(u.words.size()), complete);
   for (size_t i = 0; i < u.words.size(); ++i) {
@@ -283,8 +301,13 @@ double AlignmentModel::log_prob_unprimed(const EncodedUtterance& u, bool complet
         char_index(u.words[i][0]) < 0 && closed_mass_ > 0)
       closed = bg_[static_cast<size_t>(id)] / closed_mass_;  // punctuation
     const double p = 0.5 * closed + 0.5 * char_prob(u.words[i]);
-    if (p <= 0) return -std::numeric_limits<double>::infinity();
-    lp += std::log(p);
+    if (p > 0) {
+      lp += std::log(p);
+    } else if (closed == 0) {
+      lp += std::log(0.5) + char_log_prob(u.words[i]);  // spelled out, below the double range
+    } else {
+      return -std::numeric_limits<double>::infinity();
+    }
   }
   return lp;
 }
@@ -625,6 +648,34 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     }
   }
 
+  // A very long unknown word's background probability is below the double
+  // range (one character-model factor per letter), and so would be every
+  // mixture at its token. All sources of such a token are divided by a common
+  // factor instead, which every forward pass below carries through as a
+  // constant (each is linear in one token's sources) and which is added back
+  // at the end: exact, and ordinary tokens are left untouched.
+  double token_log_scale = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (u.ids[i] >= 0) continue;
+    const double log_bg = std::log(bg_unknown_scale_) + char_log_prob(u.words[i]);
+    if (log_bg > kLogTinyToken) continue;
+    double hi = log_bg;
+    auto for_sources = [&](auto&& f) {
+      f(p_you[i]);
+      f(p_me[i]);
+      f(p_gen[i]);
+      f(p_mod[i]);
+      for (size_t g = 0; g < G; ++g) f(p_group[g * n + i]);
+    };
+    for_sources([&](double v) {
+      if (v > 0) hi = std::max(hi, std::log(v));
+    });
+    if (hi == -std::numeric_limits<double>::infinity()) continue;  // no source can emit it
+    for_sources([&](double& v) { v = v > 0 ? std::exp(std::log(v) - hi) : 0.0; });
+    p_bg[i] = std::exp(log_bg - hi);
+    token_log_scale += hi;
+  }
+
   const bool enumerate = G <= static_cast<size_t>(kMaxEnumeratedGroups);
   const uint32_t all = G >= 32 ? ~0u : (1u << G) - 1u;
   const uint32_t first_mask = enumerate ? 0u : all;
@@ -845,10 +896,11 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   }
   double hi = -std::numeric_limits<double>::infinity();
   for (double v : log_m) hi = std::max(hi, v);
+  if (hi == -std::numeric_limits<double>::infinity()) return hi;  // no mention pattern can produce u
   double z = 0;
   for (double v : log_m) z += std::exp(v - hi);
   const double log_words = hi + std::log(z);
-  const double total = log_words + length_log_prob(c.num_actions, static_cast<int>(n), complete);
+  const double total = log_words + token_log_scale + length_log_prob(c.num_actions, static_cast<int>(n), complete);
 
   if (counts == nullptr) return total;
 

@@ -194,6 +194,7 @@ class AlignmentModel {
   int table_index(const std::string& key);  // training-time: create if missing
   const Table* find_or_make_table(const std::string& key) const;
   double char_prob(const std::string& w) const;
+  double char_log_prob(const std::string& w) const;
   double bg_prob(int id, const std::string& w) const;
   double evaluate(const Bound& c, const EncodedUtterance& u, bool complete, Counts* counts,
                   double weight) const;

@@ -179,6 +179,7 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
   const int max_attempts = options_.max_retries + 1;
   auto backoff = options_.backoff_initial;
 
+  int timeouts = 0;
   for (int attempt = 1;; ++attempt) {
     Transfer t;
     char errbuf[CURL_ERROR_SIZE] = {0};
@@ -207,7 +208,9 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
 
     std::optional<std::chrono::milliseconds> server_wait;
     if (code != CURLE_OK) {
-      bool retry = is_transient(code) || (is_timeout(code) && options_.retry_on_timeout);
+      if (is_timeout(code)) ++timeouts;
+      const bool retry = is_transient(code) || (is_timeout(code) && options_.retry_on_timeout &&
+                                                timeouts <= options_.max_timeout_retries);
       if (!retry || attempt >= max_attempts) {
         std::string detail = errbuf[0] != '\0' ? std::string(errbuf) : curl_easy_strerror(code);
         if (is_timeout(code)) {

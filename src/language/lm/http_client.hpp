@@ -25,6 +25,10 @@ struct HttpOptions {
   // A server's Retry-After is honoured but never waited on longer than this.
   std::chrono::milliseconds retry_after_max{60'000};
   bool retry_on_timeout = true;
+  // A server that let one attempt time out is likely hung or overloaded:
+  // timeouts get at most this many extra attempts (inside max_retries), so a
+  // dead server costs a couple of total_timeouts, not five.
+  int max_timeout_retries = 1;
 };
 
 struct HttpResponse {

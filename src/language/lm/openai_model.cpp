@@ -35,6 +35,10 @@ long long offset_at(const json& offsets, std::size_t i, const std::string& where
 
 }  // namespace
 
+// Servers compute log-probabilities in float precision; anything above this
+// is not a rounding of 0 but a broken reply.
+constexpr double kMaxRoundedLogprob = 1e-4;
+
 double sum_continuation_logprobs(const json& logprobs, const std::string& prompt,
                                  const std::string& continuation, const std::string& where) {
   if (!logprobs.is_object()) throw LmError(where + " missing (server ignored logprobs?)");
@@ -95,8 +99,25 @@ double sum_continuation_logprobs(const json& logprobs, const std::string& prompt
     if (!lp.is_number()) {
       throw LmError(where + ".token_logprobs[" + std::to_string(i) + "] is not a number");
     }
+    // A log-probability is at most 0; allow float rounding, not a positive score.
+    if (const double v = lp.get<double>(); v > kMaxRoundedLogprob) {
+      throw LmError(where + ".token_logprobs[" + std::to_string(i) + "] is " + json(v).dump() +
+                    ", but a log-probability cannot be positive");
+    }
     sum += lp.get<double>();
     ++counted;
+  }
+  // With the token strings we can also check that the echo reaches the end of
+  // the continuation: a reply cut short would silently score a prefix.
+  if (auto tokens = logprobs.find("tokens"); tokens != logprobs.end() && tokens->is_array() &&
+                                             tokens->size() == n && (*tokens)[n - 1].is_string()) {
+    const long long end = offset_at(offsets, n - 1, where) - shift +
+                          static_cast<long long>(utf8_length((*tokens)[n - 1].get<std::string>()));
+    if (end < f) {
+      throw LmError(where + ": the echoed tokens end at character " + std::to_string(end) +
+                    ", before the end of the continuation (character " + std::to_string(f) +
+                    "); the reply does not cover the whole text");
+    }
   }
   if (!saw_prompt_token) {
     throw LmError(where + ".text_offset: no token lies inside the prompt (first offset " +
