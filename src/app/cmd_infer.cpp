@@ -84,6 +84,16 @@ void print_explanation(const inference::InferenceRun& run, int top) {
   }
 }
 
+// Searches cut off by the budget leave partial values behind, so the numbers
+// above would change with --max-nodes: say so rather than stay silent.
+void print_budget_note(const inference::InferenceRun& run, size_t max_nodes) {
+  if (run.searches_stopped_by_budget == 0) return;
+  fmt::print(stderr,
+             "note: {} lookahead search{} stopped at the budget of {} expansions; the posterior depends on "
+             "--max-nodes\n",
+             run.searches_stopped_by_budget, run.searches_stopped_by_budget == 1 ? "" : "es", max_nodes);
+}
+
 }  // namespace
 
 void register_infer(CLI::App& app) {
@@ -137,7 +147,9 @@ void register_infer(CLI::App& app) {
       }
       if (o->explain) j["rollouts"] = rollouts_json(run);
       j["seconds"] = run.seconds;
+      j["searches_stopped_by_budget"] = run.searches_stopped_by_budget;
       fmt::print("{}\n", j.dump());
+      print_budget_note(run, o->max_nodes);
       return;
     }
     fmt::print("plan {}: goal posterior ({}), true goal {}\n", run.plan_id, inference::to_string(modality), true_goal);
@@ -157,6 +169,7 @@ void register_infer(CLI::App& app) {
     for (size_t c = 0; c < run.profiles.size(); ++c) fmt::print(" {} {:.4f}", run.profiles[c], fin.profiles[c]);
     fmt::print("; log marginal likelihood {:.4f}; {:.3f} s ({})\n", fin.log_marginal, run.seconds, lm->name());
     if (o->explain) print_explanation(run, o->top);
+    print_budget_note(run, o->max_nodes);
   });
 }
 

@@ -118,13 +118,14 @@ void Belief::refine_all(const pddl::State& s) {
   if (!search_) return;  // VH: V = -h_g, nothing to refine
   // Each hypothesis owns its policy and heuristic, so the refinements are
   // independent and may run on several threads.
+  budget_stops_.resize(policies_.size(), 0);
   auto refine_one = [&](size_t h) {
     search::Policy& pi = policies_[h];
-    pi.refine(s, options_.refine);
+    budget_stops_[h] += pi.refine(s, options_.refine).stopped_by_budget;
     if (!pi.best_action(s)) {
       // Spec 5.4: a policy with no usable action here is recomputed from scratch.
       pi = search::Policy(hyps_[h].spec, heuristics_[h], graph_);
-      pi.refine(s, options_.refine);
+      budget_stops_[h] += pi.refine(s, options_.refine).stopped_by_budget;
     }
   };
   if (pool_) {
@@ -218,6 +219,12 @@ StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::Language
   return r;
 }
 
+size_t Belief::searches_stopped_by_budget() const {
+  size_t n = 0;
+  for (size_t x : budget_stops_) n += x;
+  return n;
+}
+
 Posterior Belief::posterior(Modality m) const {
   Posterior p;
   const size_t n = hyps_.size();
@@ -299,6 +306,7 @@ InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord&
     if (T >= 1 && !utterances[T].empty()) run.steps.back() = b.hear(utterances[T], lm, std::move(run.steps.back()));
   }
   run.seconds = seconds_since(t0);
+  run.searches_stopped_by_budget = run.belief->searches_stopped_by_budget();
   return run;
 }
 

@@ -151,6 +151,9 @@ class Belief {
   // π_h after the last step; search::Policy is a copyable value for assistance
   // (copies share the heuristic object, which each refine re-prepares).
   const std::vector<search::Policy>& policies() const { return policies_; }
+  // Lookahead searches so far that ended at their node or time budget (see
+  // search::RefineStats): non-zero means the posterior depends on the budget.
+  size_t searches_stopped_by_budget() const;
   std::vector<search::Policy>& policies() { return policies_; }
   const TemperatureBelief& temperature(int h) const { return temps_[h]; }
   double action_log_likelihood(int h) const { return action_ll_[h]; }
@@ -187,6 +190,7 @@ class Belief {
   pddl::ObjectId speaker_ = -1;
   std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
   std::vector<double> refine_seconds_;      // per hypothesis, its last refinement (scheduling only)
+  std::vector<size_t> budget_stops_;        // per hypothesis (one writer each, also when threaded)
 };
 
 // Inference over one dataset plan: INIT at s_0, then one step per observed
@@ -201,6 +205,7 @@ struct InferenceRun {
   std::vector<StepRecord> steps;      // steps[0]: after INIT; steps[t]: after a_t
   std::shared_ptr<Belief> belief;     // the belief after the last step (policies for assistance)
   double seconds = 0;
+  size_t searches_stopped_by_budget = 0;  // over the whole run (Belief::searches_stopped_by_budget)
 
   const std::vector<search::Policy>& policies() const { return belief->policies(); }
   const Posterior& final_posterior(Modality m) const { return steps.back()[m]; }

@@ -56,7 +56,8 @@ struct ThreadBuffers {
 
 }  // namespace
 
-size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws) {
+size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws,
+                                 SearchStatus& status) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   if (++epoch_ == 0) {  // wrapped: forget every old search
@@ -96,7 +97,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   };
 
   push(add_node(root, -1, -1, 0.0), true);
-  SearchStatus status = SearchStatus::Failure;
+  status = SearchStatus::Failure;
   int terminal = -1;
   while (!open.empty()) {
     const OpenEntry top = open.front();
@@ -223,7 +224,9 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
       set_value(cid, 0);
     } else {
       ++st.searches;
-      st.expanded += search_and_update(cid, opts, prune, *ws);
+      SearchStatus status;
+      st.expanded += search_and_update(cid, opts, prune, *ws, status);
+      if (status == SearchStatus::MaxNodes || status == SearchStatus::MaxTime) ++st.stopped_by_budget;
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }

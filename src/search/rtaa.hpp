@@ -25,6 +25,9 @@ struct QValue {
 
 struct RefineStats {
   size_t searches = 0, expanded = 0;
+  // Searches ended by max_nodes or max_time: they learned values from a
+  // partial search, so results depend on the budget.
+  size_t stopped_by_budget = 0;
 };
 
 class Policy {
@@ -94,7 +97,8 @@ class Policy {
 
   // A* from state `root` with the learned estimates, stopping at a goal or
   // tree state (spec REFINE); then the RTAA* update of the values and tree.
-  size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws);
+  // Returns the expansions; `status` tells how the search ended.
+  size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws, SearchStatus& status);
   double learned_estimate(int id);
   bool is_goal_entry(int id);
   // The entry of state `id`, growing the per-id arrays to the graph's size.

@@ -50,6 +50,23 @@ TEST(InferCli, ExplainTextNamesEveryHypothesis) {
   EXPECT_NE(r.out.find("rolled-out joint plans"), std::string::npos);
 }
 
+TEST(InferCli, SearchesCutOffByTheBudgetAreReported) {
+  // The default budget suffices on the example plan: nothing to report.
+  auto ok = testing::run("{ " + clips_binary() + " infer --dataset " + examples_dkg() +
+                         " --plan e1.1.keys --json 2>/dev/null; }");
+  ASSERT_EQ(ok.status, 0) << ok.out;
+  EXPECT_EQ(nlohmann::json::parse(ok.out)["searches_stopped_by_budget"], 0);
+  auto quiet = testing::run(clips_binary() + " infer --dataset " + examples_dkg() + " --plan e1.1.keys");
+  EXPECT_EQ(quiet.out.find("note:"), std::string::npos) << quiet.out;
+  // A tiny budget cuts searches off: the JSON counts them and stderr says so.
+  auto cut = testing::run("{ " + clips_binary() + " infer --dataset " + examples_dkg() +
+                          " --plan e1.1.keys --max-nodes 20 --json 2>/dev/null; }");
+  ASSERT_EQ(cut.status, 0) << cut.out;
+  EXPECT_GT(nlohmann::json::parse(cut.out)["searches_stopped_by_budget"].get<int>(), 0);
+  auto note = testing::run(clips_binary() + " infer --dataset " + examples_dkg() + " --plan e1.1.keys --max-nodes 20");
+  EXPECT_NE(note.out.find("stopped at the budget of 20 expansions"), std::string::npos) << note.out;
+}
+
 TEST(InferCli, BadTopIsRejected) {
   auto r = testing::run(clips_binary() + " infer --dataset " + examples_dkg() + " --plan e1.1.keys --explain --top -1");
   EXPECT_NE(r.status, 0);
