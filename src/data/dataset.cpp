@@ -349,7 +349,10 @@ Dataset Dataset::load(const std::string& dir_in) {
     if (!fs::is_directory(defs) || !fs::is_directory(sets))
       throw InputError("VirtualHome dataset '" + dir_in + "' needs goals/definitions/ and goals/sets/");
     for (auto& e : fs::directory_iterator(defs))
-      if (e.path().extension() == ".pddl") ds.goal_defs_[e.path().stem().string()] = pddl::read_text_file(e.path().string());
+      if (e.path().extension() == ".pddl") {
+        ds.goal_defs_[e.path().stem().string()] = pddl::read_text_file(e.path().string());
+        ds.goal_def_paths_[e.path().stem().string()] = e.path().string();
+      }
     for (auto& e : fs::directory_iterator(sets))
       if (e.path().extension() == ".txt") {
         auto lines = lines_of(e.path().string());
@@ -414,16 +417,16 @@ std::vector<GoalSpec> Dataset::candidate_goals(const PlanRecord& p) const {
   if (kind_ == DomainKind::VirtualHome) {
     auto it = goal_sets_.find(p.problem_id);
     if (it == goal_sets_.end()) throw InputError("no goal set goals/sets/" + p.problem_id + ".txt for plan " + p.id);
-    for (auto& l : it->second) out.push_back({l, goal_defs_.at(l)});
+    for (auto& l : it->second) out.push_back({l, goal_defs_.at(l), goal_def_paths_.at(l)});
     return out;
   }
   if (kind_ == DomainKind::DoorsKeysGems) {
     auto t = task(p.problem_id);
-    for (auto g : t->objects_of_type("gem")) out.push_back({t->object_name(g), "(has human " + t->object_name(g) + ")"});
+    for (auto g : t->objects_of_type("gem")) out.push_back({t->object_name(g), "(has human " + t->object_name(g) + ")", ""});
     return out;
   }
   auto t = task(p.problem_id);
-  if (t->problem().goal) out.push_back({"goal", "<problem goal>"});
+  if (t->problem().goal) out.push_back({"goal", "<problem goal>", ""});
   return out;
 }
 

@@ -40,6 +40,7 @@ struct PlanRecord {
 struct GoalSpec {
   std::string label;      // e.g. "gem2" or "set_table1"
   std::string condition;  // e.g. "(has human gem2)"
+  std::string source;     // the file `condition` was read from ("" when built in code), for error locations
 };
 
 struct StimulusInfo {  // one entry of stimuli.json (mDKG)
@@ -77,6 +78,7 @@ class Dataset {
   std::shared_ptr<const pddl::Domain> domain_;
   std::vector<PlanRecord> plans_;
   std::map<std::string, std::string> goal_defs_;                 // VH label -> condition text
+  std::map<std::string, std::string> goal_def_paths_;            // VH label -> its goals/definitions file
   std::map<std::string, std::vector<std::string>> goal_sets_;   // VH problem -> labels
   std::map<std::string, StimulusInfo> stimuli_;
   mutable std::map<std::string, std::shared_ptr<const pddl::Task>> tasks_;

@@ -48,7 +48,8 @@ PlanCheck validate_plan(const Dataset& ds, const PlanRecord& p) {
     int truth = ds.true_goal_index(p);
     std::vector<int> reached;
     for (size_t i = 0; i < goals.size(); ++i) {
-      pddl::CondId g = task->compile_text(goals[i].condition, "goal " + goals[i].label);
+      pddl::CondId g = task->compile_text(goals[i].condition,
+                                              goals[i].source.empty() ? "goal " + goals[i].label : goals[i].source);
       if (task->holds(comp.states.back(), g)) reached.push_back(static_cast<int>(i));
     }
     if (ds.kind() == DomainKind::VirtualHome) {

@@ -85,7 +85,8 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, st
   if (search_) graph_ = std::make_shared<search::StateGraph>(task_);
   for (int g = 0; g < static_cast<int>(goals_.size()); ++g)
     for (int c = 0; c < static_cast<int>(profiles_.size()); ++c) {
-      auto spec = std::make_shared<model::Specification>(task_, goals_[g].condition, profiles_[c]);
+      auto spec = std::make_shared<model::Specification>(task_, goals_[g].condition, profiles_[c],
+                                                         goals_[g].source.empty() ? "<goal>" : goals_[g].source);
       // One heuristic per hypothesis: prepare() binds it to its specification.
       std::shared_ptr<heuristics::Heuristic> h = make_inference_heuristic(hname, *task_, kind_);
       // Without search, V = -h is read directly, so bind h to the goal now.

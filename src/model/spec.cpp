@@ -38,9 +38,10 @@ CostProfile task_costs_profile() {
   return p;
 }
 
-Specification::Specification(std::shared_ptr<const pddl::Task> task, std::string goal_text, CostProfile costs)
+Specification::Specification(std::shared_ptr<const pddl::Task> task, std::string goal_text, CostProfile costs,
+                             const std::string& source)
     : task_(std::move(task)), goal_text_(std::move(goal_text)), profile_(std::move(costs)) {
-  goal_ = task_->compile_text(goal_text_, "<goal>");
+  goal_ = task_->compile_text(goal_text_, source);
   action_cost_.resize(task_->num_actions());
   for (pddl::ActionId a = 0; a < task_->num_actions(); ++a) {
     const auto& ga = task_->action(a);

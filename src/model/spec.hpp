@@ -37,7 +37,9 @@ CostProfile task_costs_profile();
 
 class Specification {
  public:
-  Specification(std::shared_ptr<const pddl::Task> task, std::string goal_text, CostProfile costs);
+  // `source` names the goal text in error locations (e.g. the file it came from).
+  Specification(std::shared_ptr<const pddl::Task> task, std::string goal_text, CostProfile costs,
+                const std::string& source = "<goal>");
 
   const pddl::Task& task() const { return *task_; }
   std::shared_ptr<const pddl::Task> task_ptr() const { return task_; }

@@ -178,6 +178,20 @@ TEST_F(DatasetInput, UnknownVhGoalReportsItsRealLine) {
   EXPECT_THAT(load_error(dir), HasSubstr("goals/sets/1.txt:3:1: goal 'no_such_goal' has no file"));
 }
 
+TEST_F(DatasetInput, VhGoalDefinitionErrorsNameTheirFile) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
+  fs::path dir = vh_slice();
+  replace(dir / "goals/definitions/stew_chicken.pddl", "(placed onion1 table1)", "(placed onion9 table1)");
+  auto ds = Dataset::load(dir.string());
+  bool named = false;
+  for (auto& p : ds.plans()) {
+    const PlanCheck c = validate_plan(ds, p);
+    named = named || c.error.find("goals/definitions/stew_chicken.pddl:2:11: unknown object 'onion9'") !=
+                         std::string::npos;
+  }
+  EXPECT_TRUE(named);
+}
+
 // ---- 3: an utterance file holds exactly one utterance
 
 TEST_F(DatasetInput, MultiLineUtteranceFileIsRejected) {

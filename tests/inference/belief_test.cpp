@@ -35,7 +35,7 @@ std::shared_ptr<const pddl::Task> corridor_task() {
 }
 
 Belief corridor_belief(const std::shared_ptr<const pddl::Task>& task) {
-  std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)"}, {"gem2", "(has human gem2)"}};
+  std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)", ""}, {"gem2", "(has human gem2)", ""}};
   InferenceOptions opts;
   opts.heuristic = "hmax";  // admissible, so the refined values are exact here
   return Belief(task, data::DomainKind::DoorsKeysGems, goals, {model::dkg_profile(3), model::dkg_profile(4)}, opts);
