@@ -118,11 +118,13 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
       break;
     }
     if ((expanded & 255) == 0 &&
-        (opts.max_seconds < std::numeric_limits<double>::infinity() || opts.deadline != clock::time_point::max()) &&
-        (clock::now() >= opts.deadline || std::chrono::duration<double>(clock::now() - t0).count() >= opts.max_seconds)) {
-      status = SearchStatus::MaxTime;
-      terminal = id;
-      break;
+        (opts.max_seconds < std::numeric_limits<double>::infinity() || opts.deadline != clock::time_point::max())) {
+      const auto now = clock::now();
+      if (now >= opts.deadline || std::chrono::duration<double>(now - t0).count() >= opts.max_seconds) {
+        status = SearchStatus::MaxTime;
+        terminal = id;
+        break;
+      }
     }
     if (opts.fail_fast && top.f == kInf) {
       terminal = id;

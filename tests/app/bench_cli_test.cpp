@@ -17,7 +17,7 @@ using testing::clips_binary;
 using testing::examples_dkg;
 using testing::run;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using testing::contains;
 
 // RFC 4180 records: quoted fields may hold commas, doubled quotes and newlines.
 std::vector<std::vector<std::string>> parse_csv(const std::string& text) {

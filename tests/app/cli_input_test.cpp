@@ -18,7 +18,7 @@ using testing::clips_binary;
 using testing::examples_dkg;
 using testing::run;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using testing::contains;
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 

@@ -15,6 +15,8 @@
 
 namespace clips::eval::testing {
 
+inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
 inline std::string clips_binary() { return std::string(CLIPS_BINARY_DIR) + "/clips"; }
 inline std::string examples_dkg() { return clips::paths::examples_dir() + "/doors-keys-gems"; }
 

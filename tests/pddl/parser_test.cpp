@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "pddl/parser.hpp"
+#include "pddl/support.hpp"
 #include "test_paths.hpp"
 
 using namespace clips;
@@ -10,14 +11,7 @@ using namespace clips::pddl;
 
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using clips::pddl::testing::error_of;
 
 const char* kMiniDomain = R"(
 (define (domain mini)

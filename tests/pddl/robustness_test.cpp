@@ -6,6 +6,7 @@
 #include "pddl/parser.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
+#include "pddl/support.hpp"
 #include "test_paths.hpp"
 
 using namespace clips;
@@ -13,14 +14,7 @@ using namespace clips::pddl;
 
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using clips::pddl::testing::error_of;
 
 size_t count_of(const std::string& s, const std::string& what) {
   size_t n = 0;
