@@ -137,14 +137,16 @@ std::string reworded_copy(const std::map<std::string, std::string>& utterances, 
 // Freer rewordings (four sets written for this test: word order, ellipsis,
 // statements instead of requests, "Red key please!", relative clauses,
 // imperatives, a casual register: "Mind fetching me that red key over
-// there?", "The blue key's on me. You get a red one.") keep CLIPS ahead and
-// its assistance precise.
+// there?", "The blue key's on me. You get a red one."; and two written blind,
+// without reading the training corpus: everyday rewordings, E, and terse or
+// padded ones, F: "red key pls", "Any chance you could come over and get this
+// red door?") keep CLIPS ahead and its assistance precise.
 TEST(Paraphrases, FreeRewordingsKeepClipsAheadAndPrecise) {
   if (!paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not present";
   auto lm = language::make_language_model("embedded", {});
   eval::ExperimentOptions o;
   o.methods = {"clips", "lang_only", "action_only"};
-  for (const char* set : {"A", "B", "C", "D"}) {
+  for (const char* set : {"A", "B", "C", "D", "E", "F"}) {
     auto utterances = free_paraphrases(set);
     ASSERT_GE(utterances.size(), 20u) << set;
     std::string dir = reworded_copy(utterances, set);
@@ -174,11 +176,12 @@ TEST(Paraphrases, FreeRewordingsKeepClipsAheadAndPrecise) {
   }
 }
 
-// VirtualHome rewordings (tests/eval/data/vh-*-paraphrases.tsv, two sets;
+// VirtualHome rewordings (tests/eval/data/vh-*-paraphrases.tsv, four sets;
 // each comment line of an observed plan replaced in order): CLIPS keeps the
 // paper's ordering and its CLIPS row (0.63 / 0.87 / 1.00 on the original
 // instructions). The casual set reaches 0.87 precision only to within 0.01
-// (0.865), so its bar is 0.85.
+// (0.865), and the two sets written blind (everyday; terse or padded) reach
+// 0.875 and 0.877, so their bars are 0.85.
 struct RewordingSet {
   const char* file;
   double min_precision;
@@ -255,4 +258,6 @@ TEST_P(VirtualHomeRewordings, KeepClipsAhead) {
 
 INSTANTIATE_TEST_SUITE_P(Paraphrases, VirtualHomeRewordings,
                          ::testing::Values(RewordingSet{"vh-free-paraphrases.tsv", 0.87},
-                                           RewordingSet{"vh-casual-paraphrases.tsv", 0.85}));
+                                           RewordingSet{"vh-casual-paraphrases.tsv", 0.85},
+                                           RewordingSet{"vh-natural-paraphrases.tsv", 0.85},
+                                           RewordingSet{"vh-terse-paraphrases.tsv", 0.85}));

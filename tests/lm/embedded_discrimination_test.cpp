@@ -209,6 +209,62 @@ const std::vector<Case> kVhCases = {
     {"Fetch two dinner plates.", {1}},
 };
 
+// Padding. The empty-command prompt "\n" scores the utterances of goals that
+// need no help. Filler words a speaker adds to a request ("would it be
+// possible", "as well") must not hand it to that prompt: the training corpus
+// never had most of them, and they say nothing about any command.
+struct PaddedCase {
+  std::string command;
+  std::string utterance;
+  std::string (*prompt)(const std::string&);
+};
+
+double empty_prompt_score(const std::string& utterance) {
+  return model().score({{"\n", " " + utterance + "\n"}}).at(0);
+}
+
+TEST(EmbeddedDiscrimination, PaddedRequestsBeatTheEmptyPrompt) {
+  const std::vector<PaddedCase> cases = {
+      {"(grab you bowl1) (grab you bowl2)", "Would it be possible for you to get some bowls?", vh_prompt},
+      {"(grab you bowl1) (grab you bowl2)", "Some bowls would be lovely as well.", vh_prompt},
+      {"(grab you plate1)", "Honestly it would be really great if you could fetch a plate.", vh_prompt},
+      {"(grab you cheese1)", "Whenever you have a spare moment, the cheese would be nice.", vh_prompt},
+      {"(unlock you key1 door1) where (iscolor door1 red)",
+       "Any chance you could wander over here and open up the red door?", pragmatic_prompt},
+      {"(handover you me key1) where (iscolor key1 blue)",
+       "If it is not too much trouble, could you maybe hand me the blue key?", pragmatic_prompt},
+      {"(handover you me key1) where (iscolor key1 yellow)",
+       "It would honestly be wonderful if somebody passed the yellow key over to me.", pragmatic_prompt},
+  };
+  int right = 0;
+  for (const PaddedCase& c : cases) {
+    const double command = model().score({{c.prompt(c.command), " " + c.utterance + "\n"}}).at(0);
+    const double none = empty_prompt_score(c.utterance);
+    std::printf("[padded] %+.2f nats for the command: \"%s\"\n", command - none, c.utterance.c_str());
+    right += command > none ? 1 : 0;
+  }
+  EXPECT_EQ(right, static_cast<int>(cases.size()));
+}
+
+// The same, measured per word: words appended to a request cost the command
+// about what they cost the empty prompt (a few nats at most), whether or not
+// the training corpus had them.
+TEST(EmbeddedDiscrimination, FillerWordsCostCommandsLittleMoreThanTheEmptyPrompt) {
+  const std::string command = "(grab you bowl1) (grab you bowl2)";
+  const std::string base = "Can you get some bowls?";
+  for (const std::string tail : {" Thanks a bunch, that would be splendid.", " Whenever suits, no rush whatsoever."}) {
+    const std::string padded = base + tail;
+    const double cost_command = model().score({{vh_prompt(command), " " + base + "\n"}}).at(0) -
+                                model().score({{vh_prompt(command), " " + padded + "\n"}}).at(0);
+    const double cost_none = empty_prompt_score(base) - empty_prompt_score(padded);
+    int words = 0;
+    for (char ch : tail) words += ch == ' ' ? 1 : 0;
+    const double excess = (cost_command - cost_none) / words;
+    std::printf("[filler] \"%s\": %.2f nats per word more under the command\n", tail.c_str(), excess);
+    EXPECT_LT(excess, 3.0) << tail;
+  }
+}
+
 TEST(EmbeddedDiscrimination, VirtualHomePromptRanksIntendedCommandFirst) {
   const double acc = accuracy(kVhCommands, kVhCases, vh_prompt, "VH");
   EXPECT_GE(acc, 0.85);

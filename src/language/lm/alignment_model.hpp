@@ -35,7 +35,10 @@
 //     where BG is a background English unigram whose base is a character bigram
 //     model (so every string of [a-z0-9]+ has mass: unknown words are fine) and
 //     a tenth of which stays on the raw training frequencies (a word EM hands to
-//     one field, "more" to the number words, keeps some mass of its own),
+//     one field, "more" to the number words, keeps some mass of its own) and
+//     another tenth is the character model itself (words a templated corpus
+//     never had, such as filler, cost a command not much more than they cost
+//     the empty-command prompt),
 //     A_t emits speech-act markers ("can", "could", "you" / "i", "will", "am"),
 //     and Content_{m,t} is a uniform mixture over the mentioned groups whose
 //     agent matches t (you for R, me for S) plus a small share of GEN, a generic
