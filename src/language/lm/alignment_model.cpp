@@ -213,6 +213,7 @@ struct AlignmentModel::Bound {
     double weight;
     bool residual;    // the non-copy part of an attribute field
     bool verb = false;  // a verb field (kept inside modifier spans)
+    bool number = false;  // a number field (bound to its head noun like a colour)
   };
   struct Copy {
     int id;
@@ -378,9 +379,11 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
   // Head nouns of adjectives and colours: the first following token that is
   // neither a closed-class word nor a modifier, if it is a noun and comes
   // within kMaxHeadDistance tokens without crossing a clause end.
+  // Determiners and number words ("two", "both", "some") get their head noun
+  // the same way, for the number binding of evaluate().
   u.noun_heads.assign(n, {-1, -1});
   for (size_t i = 0; i < n; ++i) {
-    if ((f[i] & kWordModifier) == 0) continue;
+    if ((f[i] & (kWordModifier | kWordDeterminer)) == 0) continue;
     for (size_t j = i + 1; j < n && j <= i + kMaxHeadDistance; ++j) {
       if (is_clause_end(u.words[j]) || (f[j] & kWordFunction) != 0) break;
       if ((f[j] & kWordModifier) != 0) continue;
@@ -492,7 +495,10 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
     bg.fields.push_back(field_of(verb_key(g), kWeightVerb / z));
     bg.fields.back().verb = true;
     if (!g.type.empty()) bg.fields.push_back(field_of(noun_key(g), kWeightNoun / z));
-    if (g.count >= 2) bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
+    if (g.count >= 2) {
+      bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
+      bg.fields.back().number = true;
+    }
     bg.nonverb_weight = 1.0 - kWeightVerb / z;
     if (!g.type.empty()) {
       bg.type_nouns[0] = find_or_make_table("N:" + g.type + "/sg");
@@ -650,7 +656,8 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
         p_group[g * n + i] = v + c.groups[g].nonverb_weight * p_mod[i];
         continue;
       }
-      for (const Bound::Field& f : c.groups[g].fields) v += f.weight * f.table->at(id, w);
+      for (const Bound::Field& f : c.groups[g].fields)
+        v += f.weight * f.table->at(id, w) * (f.number ? bind_factor(c.groups[g], i) : 1.0);
       for (const Bound::Copy& cp : c.groups[g].copies) {
         if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight * bind_factor(c.groups[g], i);
       }

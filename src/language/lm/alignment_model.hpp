@@ -81,6 +81,10 @@
 //     the colour at full weight only if its own type's noun tables give the head
 //     at least kBindRatio of the best type's mass, else at kMisboundCopy of it.
 //     Untyped heads ("one", "thing") and colours with no head are unconstrained.
+//     Number words bind the same way: a group's number field Q emits a
+//     determiner ("two", "both", "some") at full weight only if the noun it
+//     counts can name the group's type, so in "two forks" the number cannot
+//     make a pair of wine glasses in the command count as mentioned.
 //  7. Contradicted colours. A speaker who means the command's blue door does
 //     not call it red, whatever source the word would come from. A colour token
 //     whose typed head nouns (item 6) can each name some object of the
