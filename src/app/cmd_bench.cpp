@@ -30,8 +30,9 @@ void register_bench(CLI::App& app) {
   add_assistance_options(cmd, *lm);
   cmd->add_option("--assist", *assist, "default (offline Q_MDP) or all (adds online Q_MDP and pi-bar_MDP)")
       ->check(CLI::IsMember({"default", "all"}));
-  cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive");
-  cmd->add_option("--plans", o->plans, "Only these plan ids");
+  cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive (or clips,lang_only)")
+      ->delimiter(',');
+  cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   // issue 8: HTML report and the multimodal baseline's chat endpoint.
   auto report = std::make_shared<std::string>();
   cmd->add_option("--report", *report,

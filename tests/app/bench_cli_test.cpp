@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -135,6 +136,21 @@ TEST(BenchCli, RelativeMetricsAreKeptWithClips) {
     EXPECT_NE(rows[i][column(rows[0], "rel_human_cost")], "") << rows[i][1];
   }
   EXPECT_EQ(rows[1][column(rows[0], "rel_plan_length")], "1");
+}
+
+// Lists may also be written with commas, as in most tools.
+TEST(BenchCli, MethodAndPlanListsAcceptCommas) {
+  testing::TempDir out("bench-commas");
+  auto r = run(clips_binary() + " bench --dataset " + examples_dkg() +
+               " --plans e1.1.keys,e2.1.doors --methods clips,literal_naive --no-progress --out " + out.str());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto rows = parse_csv(testing::read_text(out.path / "results.csv"));
+  ASSERT_EQ(rows.size(), 5u);  // header + 2 plans x 2 methods
+  std::set<std::string> seen;
+  for (size_t i = 1; i < rows.size(); ++i)
+    seen.insert(rows[i][column(rows[0], "plan")] + "/" + rows[i][column(rows[0], "method")]);
+  EXPECT_EQ(seen, (std::set<std::string>{"e1.1.keys/clips", "e1.1.keys/literal_naive", "e2.1.doors/clips",
+                                         "e2.1.doors/literal_naive"}));
 }
 
 // Item 4: names and paths are checked before the run.
