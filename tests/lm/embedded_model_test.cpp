@@ -231,6 +231,9 @@ TEST(EmbeddedModel, ColoursBindToNounsOfTheirObjectsType) {
   // ... and through a relative clause: "the key that opens the yellow door".
   const char* w3 = "Get me the key that opens the yellow door.";
   EXPECT_GT(score(yellow_key, w3), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), w3) + 0.5);
+  // ... and when the purpose comes first: "For this yellow door, I need a key."
+  const char* w4 = "For this yellow door, I need a key.";
+  EXPECT_GT(score(yellow_key, w4), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), w4) + 1.5);
   // A colour whose head says nothing about the type ("the yellow one") is unconstrained.
   const char* x = "Could you pick up the yellow one?";
   EXPECT_GT(score(yellow_key, x), score(pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)"), x));

@@ -439,6 +439,20 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
       open = true;
       k = 0;
       anchor = static_cast<int>(i) - 1;
+    } else if ((f[i] & kWordPreposition) != 0 && (i == 0 || is_clause_end(u.words[i - 1]))) {
+      // Fronted: "For this yellow door, I need a key." The span opens as
+      // usual (it depends on earlier tokens only); the noun it attaches to is
+      // the first noun phrase of the next clause, read ahead like the heads.
+      open = true;
+      k = 0;
+      anchor = -1;
+      size_t j = i + 1;
+      while (j < n && !is_clause_end(u.words[j])) ++j;
+      for (++j; j < n && !is_clause_end(u.words[j]); ++j)
+        if (heads_noun_phrase(j)) {
+          anchor = static_cast<int>(j);
+          break;
+        }
     } else if (is_relative_pronoun(u.words[i]) && i > 0 && i + 1 < n && heads_noun_phrase(i - 1) &&
                (f[i + 1] & kWordVerb) != 0 && (f[i + 1] & kWordModifier) == 0) {
       // A relative clause ("the key that opens this yellow door") reads like

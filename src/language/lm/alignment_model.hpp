@@ -67,7 +67,9 @@
 //     "the red key to", "the yellow one for", "something for") and runs over
 //     determiners, pronouns and adjectives/colours up to its head noun (or
 //     pronoun: "the door for me"); an infinitive ("the key to open ...") ends it
-//     at the verb, so its object is read as usual.
+//     at the verb, so its object is read as usual. A clause may also start
+//     with the span ("For this yellow door, I need a key."); it then attaches
+//     to the first noun phrase of the next clause.
 //
 //  6. Colour binding. A colour copied from an object's attribute must describe
 //     a noun that can name that object's type: in "can you open the red door"
