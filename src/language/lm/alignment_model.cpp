@@ -224,6 +224,7 @@ struct AlignmentModel::Bound {
   // hand-over group, which the speaker may or may not put into words.
   struct Group {
     bool speaker;
+    bool to_speaker = false;  // action group handing its objects to the speaker
     int kind;         // 0 = action group, 1 = recipient, 2 = attribute value
     int parent = -1;  // for an optional unit: index of its action group
     double unit_weight = 0;  // its weight relative to the group's own fields (which sum to 1)
@@ -498,6 +499,7 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
   for (const FrameGroup& g : frame.groups) {
     Bound::Group bg;
     bg.speaker = g.agent == "me";
+    bg.to_speaker = g.to_speaker;
     bg.kind = 0;
     bg.log_on = std::log(mention_[0]);
     bg.log_off = std::log(1 - mention_[0]);
@@ -579,6 +581,13 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const bool have_spans = u.in_modifier.size() == n;
   const bool have_heads = u.noun_heads.size() == n;
 
+  // The action groups a clause of each type talks about (header, item 4): a
+  // request those of the listener; a statement the speaker's own, and what
+  // is handed to the speaker ("I'm in need of the blue key").
+  auto in_role = [](const Bound::Group& grp, bool statement) {
+    return statement ? grp.speaker || grp.to_speaker : !grp.speaker;
+  };
+
   // Colour binding (header, item 6): the share of its copy weight that
   // attribute unit g keeps at token i.
   auto bind_factor = [&](const Bound::Group& grp, size_t i) {
@@ -624,7 +633,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           bool named = false, consistent = false;
           for (size_t g = 0; g < G; ++g) {
             const Bound::Group& grp = c.groups[g];
-            if (grp.kind != 0 || grp.speaker != (t == 1) || grp.type_nouns[0] == nullptr) continue;
+            if (grp.kind != 0 || !in_role(grp, t == 1) || grp.type_nouns[0] == nullptr) continue;
             const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
             if (own < kBindRatio * best) continue;
             named = true;
@@ -736,7 +745,10 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     }
     for (size_t g = 0; g < G; ++g) {
       den[g] = 1.0;
-      if (c.groups[g].parent < 0 && on[g]) (c.groups[g].speaker ? n_me : n_you)++;
+      if (c.groups[g].parent < 0 && on[g]) {
+        if (in_role(c.groups[g], false)) ++n_you;
+        if (in_role(c.groups[g], true)) ++n_me;
+      }
     }
     for (size_t g = 0; g < G; ++g) {
       if (c.groups[g].parent >= 0 && on[g]) den[static_cast<size_t>(c.groups[g].parent)] += c.groups[g].unit_weight;
@@ -749,7 +761,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       const Bound::Group& grp = c.groups[g];
       if (!on[g]) continue;
       const size_t owner = grp.parent >= 0 ? static_cast<size_t>(grp.parent) : g;
-      if (c.groups[owner].speaker != speaker) continue;
+      if (!in_role(c.groups[owner], speaker)) continue;
       const double w = grp.parent >= 0 ? grp.unit_weight : 1.0;
       s += w * p_group[g * n + i] / den[owner];
     }
@@ -983,7 +995,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
             const Bound::Group& grp = c.groups[g];
             if (!on[g]) continue;
             const size_t owner = grp.parent >= 0 ? static_cast<size_t>(grp.parent) : g;
-            if (c.groups[owner].speaker != speaker) continue;
+            if (!in_role(c.groups[owner], speaker)) continue;
             const double unit = share * (grp.parent >= 0 ? grp.unit_weight : 1.0) / den[owner];
             const bool in_mod = have_spans && u.in_modifier[i] != 0 && grp.kind == 0;
             if (in_mod) counts->table[static_cast<size_t>(id_mod)][uid] += unit * grp.nonverb_weight * p_mod[i];

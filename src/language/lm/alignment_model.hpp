@@ -40,8 +40,10 @@
 //     never had, such as filler, cost a command not much more than they cost
 //     the empty-command prompt),
 //     A_t emits speech-act markers ("can", "could", "you" / "i", "will", "am"),
-//     and Content_{m,t} is a uniform mixture over the mentioned groups whose
-//     agent matches t (you for R, me for S) plus a small share of GEN, a generic
+//     and Content_{m,t} is a uniform mixture over the mentioned groups of
+//     t's role (R: the listener's; S: the speaker's own and those handing
+//     their objects to the speaker, so "I'm in need of the blue key" names
+//     what a hand-over brings) plus a small share of GEN, a generic
 //     source of domain content words (used entirely when no group qualifies; this
 //     is where "I'll get the red key" goes when the command omits the speaker).
 //     A group emits through its fields, with fixed weights:
@@ -93,7 +95,7 @@
 //     command, all of whose colours are known and differ from the token, is
 //     multiplied by kContradictedColour in every source. Roles count: in a
 //     request clause only the listener's ("you") objects are checked, in a
-//     statement only the speaker's, so "I'm going for the red key" says nothing
+//     statement only those of its role (item 4), so "I'm going for the red key" says nothing
 //     against a command asking the listener for the yellow key. A command that
 //     leaves an object's colour open is never contradicted.
 //
