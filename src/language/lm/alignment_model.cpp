@@ -391,6 +391,12 @@ void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
       if ((f[j] & kWordNoun) != 0) u.noun_heads[i][0] = static_cast<int>(j);
       break;
     }
+    // A colour placed after its noun ("pass me the key blue") describes the
+    // noun just before it when no noun follows.
+    const bool ends_phrase = i + 1 == n || is_clause_end(u.words[i + 1]) || (f[i + 1] & kWordFunction) != 0;
+    if (u.noun_heads[i][0] < 0 && (f[i] & kWordModifier) != 0 && ends_phrase && i > 0 &&
+        (f[i - 1] & kWordNoun) != 0 && (f[i - 1] & (kWordFunction | kWordModifier)) == 0)
+      u.noun_heads[i][0] = static_cast<int>(i) - 1;
   }
   bool open = false;
   int k = 0;

@@ -84,7 +84,9 @@
 //     when some trained noun table gives it real mass; an attribute unit may copy
 //     the colour at full weight only if its own type's noun tables give the head
 //     at least kBindRatio of the best type's mass, else at kMisboundCopy of it.
-//     Untyped heads ("one", "thing") and colours with no head are unconstrained.
+//     A colour after its noun with no noun following ("pass me the key blue")
+//     describes that noun. Untyped heads ("one", "thing") and colours with no
+//     head are unconstrained.
 //     Number words bind the same way: a group's number field Q emits a
 //     determiner ("two", "both", "some") at full weight only if the noun it
 //     counts can name the group's type, so in "two forks" the number cannot
