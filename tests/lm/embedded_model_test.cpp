@@ -39,6 +39,18 @@ TEST(EmbeddedTokens, LowerCasesExpandsContractionsAndKeepsPunctuation) {
             (std::vector<std::string>{"i", "am", "here", ",", "will", "not", "go", "."}));
 }
 
+TEST(EmbeddedTokens, ChatSpellingsAreReadAsTheirWords) {
+  EXPECT_EQ(tokenize_utterance("can u gimme dis key pls"),
+            (std::vector<std::string>{"can", "you", "give", "me", "this", "key", "please"}));
+  EXPECT_EQ(tokenize_utterance("im gonna get em, dont worry"),
+            (std::vector<std::string>{"i", "am", "going", "to", "get", "them", ",", "do", "not", "worry"}));
+  // Words that merely contain a chat spelling are left alone.
+  EXPECT_EQ(tokenize_utterance("use the umbrella"), (std::vector<std::string>{"use", "the", "umbrella"}));
+  // So the chat form scores like the spelled-out one.
+  const std::string p = pragmatic_prompt("(handover you me key1) where (iscolor key1 yellow)");
+  EXPECT_DOUBLE_EQ(score(p, "can u pass me dis yellow key pls"), score(p, "can you pass me this yellow key please"));
+}
+
 TEST(EmbeddedPrompt, SplitsFewShotBlockAndQuery) {
   const std::string p = literal_prompt("(pickup you key1) where (iscolor key1 red)");
   auto [block, command] = split_prompt(p);

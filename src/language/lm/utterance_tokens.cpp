@@ -40,6 +40,30 @@ void push_contracted(std::vector<std::string>& out, std::string stem, const std:
   }
 }
 
+// Chat spellings of common words ("can u get it pls"), read as the words.
+// Only forms that are not English words themselves.
+void push_word(std::vector<std::string>& out, std::string word) {
+  struct Spelling {
+    std::string_view chat, first, second;
+  };
+  static constexpr Spelling kSpellings[] = {
+      {"u", "you", ""},      {"ya", "you", ""},       {"ur", "your", ""},       {"pls", "please", ""},
+      {"plz", "please", ""}, {"plox", "please", ""},  {"thx", "thanks", ""},    {"dis", "this", ""},
+      {"dat", "that", ""},   {"da", "the", ""},       {"gimme", "give", "me"},  {"gonna", "going", "to"},
+      {"wanna", "want", "to"}, {"gotta", "got", "to"}, {"lemme", "let", "me"}, {"cuz", "because", ""},
+      {"coz", "because", ""}, {"thru", "through", ""}, {"tho", "though", ""},
+      {"im", "i", "am"},     {"ive", "i", "have"},     {"em", "them", ""},     {"dont", "do", "not"},
+      {"doesnt", "does", "not"}, {"didnt", "did", "not"}, {"isnt", "is", "not"}, {"youre", "you", "are"},
+  };
+  for (const Spelling& sp : kSpellings) {
+    if (word != sp.chat) continue;
+    out.emplace_back(sp.first);
+    if (!sp.second.empty()) out.emplace_back(sp.second);
+    return;
+  }
+  out.push_back(std::move(word));
+}
+
 }  // namespace
 
 bool is_punctuation_token(std::string_view token) {
@@ -84,7 +108,7 @@ std::vector<std::string> tokenize_utterance(std::string_view text) {
         push_contracted(out, std::move(word), suffix);
         i = j;
       } else {
-        out.push_back(std::move(word));
+        push_word(out, std::move(word));
       }
       continue;
     }

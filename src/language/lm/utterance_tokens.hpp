@@ -5,7 +5,9 @@
 // sequences*, not over raw character strings. A token is either
 //   * a word: a maximal run of ASCII letters/digits, lower-cased, with English
 //     contractions expanded ("I'll" -> "i will", "can't" -> "can not",
-//     "I'm" -> "i am", "'s" -> "s"), or
+//     "I'm" -> "i am", "'s" -> "s") and common chat spellings read as the
+//     words they stand for ("u" -> "you", "pls" -> "please", "gimme" ->
+//     "give me"), or
 //   * one of the four punctuation tokens "," "." "?" "!" (";" and ":" are read
 //     as ","; every other character, including the leading space, hyphens and
 //     quotes, is a separator and carries no probability).
