@@ -56,6 +56,25 @@ size_t column(const std::vector<std::string>& header, const std::string& name) {
   return 0;
 }
 
+// A successful `clips bench` on the repo's examples with `selection` (plans and
+// methods): its console output, the rows of results.csv and summary.json.
+struct BenchRun {
+  std::string console, summary;
+  std::vector<std::vector<std::string>> rows;
+};
+BenchRun run_bench(const std::string& tag, const std::string& selection) {
+  testing::TempDir out(tag);
+  const auto r = run(clips_binary() + " bench --dataset " + examples_dkg() + " " + selection +
+                     " --no-progress --out " + out.str());
+  EXPECT_EQ(r.status, 0) << r.out;
+  BenchRun b{r.out, "", {}};
+  if (r.status == 0) {
+    b.rows = parse_csv(testing::read_text(out.path / "results.csv"));
+    b.summary = testing::read_text(out.path / "summary.json");
+  }
+  return b;
+}
+
 BenchReport report_with_failures() {
   BenchReport r;
   r.domain = "doors-keys-gems";
@@ -108,28 +127,20 @@ TEST(BenchTable, FailedPlansDoNotPointToAMissingCsv) {
 
 // Item 3: without clips there is no reference for the relative metrics.
 TEST(BenchCli, RelativeMetricsAreNotApplicableWithoutClips) {
-  testing::TempDir out("bench-naive");
-  auto r = run(clips_binary() + " bench --dataset " + examples_dkg() +
-               " --plans e1.1.keys --methods literal_naive --no-progress --out " + out.str());
-  ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_TRUE(contains(r.out, "n/a")) << r.out;
-  const auto rows = parse_csv(testing::read_text(out.path / "results.csv"));
+  const BenchRun b = run_bench("bench-naive", "--plans e1.1.keys --methods literal_naive");
+  EXPECT_TRUE(contains(b.console, "n/a")) << b.console;
+  const auto& rows = b.rows;
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& row : rows) ASSERT_EQ(row.size(), rows[0].size());
   EXPECT_EQ(rows[1][column(rows[0], "method")], "literal_naive");
   EXPECT_EQ(rows[1][column(rows[0], "rel_plan_length")], "");
   EXPECT_EQ(rows[1][column(rows[0], "rel_human_cost")], "");
   EXPECT_NE(rows[1][column(rows[0], "plan_length")], "");
-  const std::string summary = testing::read_text(out.path / "summary.json");
-  EXPECT_FALSE(contains(summary, "rel_plan_length")) << summary;
+  EXPECT_FALSE(contains(b.summary, "rel_plan_length")) << b.summary;
 }
 
 TEST(BenchCli, RelativeMetricsAreKeptWithClips) {
-  testing::TempDir out("bench-clips");
-  auto r = run(clips_binary() + " bench --dataset " + examples_dkg() +
-               " --plans e1.1.keys --methods clips literal_naive --no-progress --out " + out.str());
-  ASSERT_EQ(r.status, 0) << r.out;
-  const auto rows = parse_csv(testing::read_text(out.path / "results.csv"));
+  const auto rows = run_bench("bench-clips", "--plans e1.1.keys --methods clips literal_naive").rows;
   ASSERT_EQ(rows.size(), 3u);
   for (size_t i = 1; i < rows.size(); ++i) {
     EXPECT_NE(rows[i][column(rows[0], "rel_plan_length")], "") << rows[i][1];
@@ -140,11 +151,7 @@ TEST(BenchCli, RelativeMetricsAreKeptWithClips) {
 
 // Lists may also be written with commas, as in most tools.
 TEST(BenchCli, MethodAndPlanListsAcceptCommas) {
-  testing::TempDir out("bench-commas");
-  auto r = run(clips_binary() + " bench --dataset " + examples_dkg() +
-               " --plans e1.1.keys,e2.1.doors --methods clips,literal_naive --no-progress --out " + out.str());
-  ASSERT_EQ(r.status, 0) << r.out;
-  const auto rows = parse_csv(testing::read_text(out.path / "results.csv"));
+  const auto rows = run_bench("bench-commas", "--plans e1.1.keys,e2.1.doors --methods clips,literal_naive").rows;
   ASSERT_EQ(rows.size(), 5u);  // header + 2 plans x 2 methods
   std::set<std::string> seen;
   for (size_t i = 1; i < rows.size(); ++i)
