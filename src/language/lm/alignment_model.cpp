@@ -45,6 +45,9 @@ constexpr double kKappaAgent = 6.0;
 constexpr double kKappaGeneric = 20.0;
 constexpr double kKappaBackground = 30.0;
 constexpr double kKappaLength = 8.0;
+constexpr double kLengthBaseShare = 0.1;  // least weight of the length base in any bucket
+constexpr double kLengthSpread = 0.2;     // half-width of the length smoothing, relative
+constexpr int kLengthSpreadFrom = 10;     // shorter lengths are frequent in training: kept as counted
 constexpr double kBaseFloor = 0.03;     // uniform share inside each table's prior base
 constexpr double kInitialFloor = 0.5;   // uniform share for the first E-step
 constexpr double kAlphaPriorCopy = 8.0;  // Beta prior on the copy probability
@@ -1375,6 +1378,31 @@ struct Trainer {
     return m;
   }
 
+  // A length histogram with every long observation spread over nearby lengths
+  // (triangular, half-width a fifth of the length; kept inside 0..kMaxLen), so
+  // that one long training utterance does not make its exact length several
+  // nats likelier than its neighbours. Short lengths are dense in training and
+  // stay as counted. Total mass is kept.
+  static std::vector<double> spread_lengths(const std::vector<double>& cnt) {
+    std::vector<double> out(cnt.size(), 0.0);
+    const int last = static_cast<int>(cnt.size()) - 1;
+    for (int k = 0; k <= last; ++k) {
+      const double c = cnt[static_cast<size_t>(k)];
+      if (c <= 0) continue;
+      if (k < kLengthSpreadFrom) {
+        out[static_cast<size_t>(k)] += c;
+        continue;
+      }
+      const int w = std::max(1, static_cast<int>(std::lround(kLengthSpread * k)));
+      double z = 0;
+      for (int d = -w; d <= w; ++d)
+        if (k + d >= 0 && k + d <= last) z += w + 1 - std::abs(d);
+      for (int d = -w; d <= w; ++d)
+        if (k + d >= 0 && k + d <= last) out[static_cast<size_t>(k + d)] += c * (w + 1 - std::abs(d)) / z;
+    }
+    return out;
+  }
+
   static void fit_length(AlignmentModel& M, const std::vector<std::vector<double>>& cnt) {
     // Mean length per action bucket, borrowing from neighbours when a bucket is empty.
     double all_n = 0, all_sum = 0;
@@ -1394,10 +1422,18 @@ struct Trainer {
       const double prior_mean = overall + 2.0 * (static_cast<double>(a) - 1.5);
       const double mean = std::max(2.0, (s + 3.0 * prior_mean) / (n + 3.0));
       M.length_mean_[a] = mean;
-      M.length_tail_scale_[a] = kKappaLength / (n + kKappaLength);
+      // The base keeps at least kLengthBaseShare in every bucket, so beyond the
+      // lengths seen in training all buckets have about the same tail: a long,
+      // padded utterance says little about how many actions a command has, and
+      // with a count-dependent share (kappa / (n + kappa)) the tail would be
+      // thinnest for the commands the corpus happens to hold most of.
+      const double base_share = std::max(kLengthBaseShare, kKappaLength / (n + kKappaLength));
+      const std::vector<double> smooth = spread_lengths(cnt[a]);
+      M.length_tail_scale_[a] = base_share;
       for (int k = 0; k <= kMaxLen; ++k) {
+        const double seen = n > 0 ? smooth[static_cast<size_t>(k)] / n : 0.0;
         M.length_[a][static_cast<size_t>(k)] =
-            (cnt[a][static_cast<size_t>(k)] + kKappaLength * length_base(k, mean)) / (n + kKappaLength);
+            (n > 0 ? (1 - base_share) * seen : 0.0) + (n > 0 ? base_share : 1.0) * length_base(k, mean);
       }
     }
   }

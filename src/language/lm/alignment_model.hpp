@@ -5,8 +5,10 @@
 // command frame c (see command_frame.hpp) is defined by this process:
 //
 //  1. Length: n ~ P_len(n | number of actions of c). This is the explicit end
-//     event (a smoothed histogram, with a Poisson+geometric base so every
-//     length has mass).
+//     event: the training histogram, long lengths spread over their
+//     neighbours, mixed with a Poisson+geometric base that keeps at least a
+//     tenth of every bucket, so every length has mass and padded utterances
+//     longer than the corpus's are about as likely under any command size.
 //  2. Mentions: each group g of c is "mentioned" (m_g = 1) with probability
 //     rho_group; given a mentioned group, each of its optional units is mentioned
 //     independently: its recipient "me" (hand-over groups) with rho_recipient and
