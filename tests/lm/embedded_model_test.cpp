@@ -51,6 +51,24 @@ TEST(EmbeddedTokens, ChatSpellingsAreReadAsTheirWords) {
   EXPECT_DOUBLE_EQ(score(p, "can u pass me dis yellow key pls"), score(p, "can you pass me this yellow key please"));
 }
 
+// Tokens neither the model nor WordNet knows are read as the content word one
+// edit away; elongations as their word; real words are never "corrected".
+TEST(EmbeddedTokens, MisspellingsAreReadAsTheWordsTheyMisspell) {
+  auto m = model().model_for_prompt(pragmatic_prompt("(pickup you key1)"));
+  auto words = [&](const char* text) { return m->encode(text).words; };
+  EXPECT_EQ(words("i neeed the yelow kye pleeease"),
+            (std::vector<std::string>{"i", "need", "the", "yellow", "key", "please"}));
+  EXPECT_EQ(words("can you unlok the rd dooor"),
+            (std::vector<std::string>{"can", "you", "unlock", "the", "red", "door"}));
+  // Real words, function words and tokens with digits stay as written.
+  EXPECT_EQ(words("soon the kid has 2 keyz9"), (std::vector<std::string>{"soon", "the", "kid", "has", "2", "keyz9"}));
+  // So a slip scores like the word, and its colour still tells the keys apart.
+  const std::string yellow = pragmatic_prompt("(handover you me key1) where (iscolor key1 yellow)");
+  const std::string red = pragmatic_prompt("(handover you me key1) where (iscolor key1 red)");
+  EXPECT_DOUBLE_EQ(score(yellow, "can you pass me the yelow kye?"), score(yellow, "can you pass me the yellow key?"));
+  EXPECT_GT(score(yellow, "can you pass me the yelow kye?"), score(red, "can you pass me the yelow kye?") + 2.0);
+}
+
 TEST(EmbeddedPrompt, SplitsFewShotBlockAndQuery) {
   const std::string p = literal_prompt("(pickup you key1) where (iscolor key1 red)");
   auto [block, command] = split_prompt(p);

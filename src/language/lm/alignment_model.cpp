@@ -332,11 +332,86 @@ double AlignmentModel::bg_prob(int id, const std::string& w) const {
   return bg_unknown_scale_ * char_prob(w);
 }
 
+namespace {
+
+// One edit apart: a substitution, an insertion or deletion, or a swap of two
+// neighbouring letters ("yelow", "kye", "bleu" from "yellow", "key", "blue").
+bool one_edit_apart(const std::string& a, const std::string& b) {
+  if (a == b) return false;
+  if (a.size() == b.size()) {
+    size_t i = 0;
+    while (a[i] == b[i]) ++i;
+    if (a.compare(i + 1, std::string::npos, b, i + 1, std::string::npos) == 0) return true;  // substitution
+    return i + 1 < a.size() && a[i] == b[i + 1] && a[i + 1] == b[i] &&
+           a.compare(i + 2, std::string::npos, b, i + 2, std::string::npos) == 0;  // swap
+  }
+  const std::string& l = a.size() > b.size() ? a : b;
+  const std::string& s = a.size() > b.size() ? b : a;
+  if (l.size() != s.size() + 1) return false;
+  size_t i = 0;
+  while (i < s.size() && l[i] == s[i]) ++i;
+  return l.compare(i + 1, std::string::npos, s, i, std::string::npos) == 0;
+}
+
+// Runs of three or more equal letters cut to `keep` letters ("pleeease").
+std::string shorten_runs(const std::string& w, size_t keep) {
+  std::string out;
+  for (size_t i = 0; i < w.size();) {
+    size_t j = i;
+    while (j < w.size() && w[j] == w[i]) ++j;
+    out.append(j - i >= 3 ? keep : j - i, w[i]);
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
+// Spelling repair for a token the model has never seen. Elongated words
+// ("neeed", "pleeease") are read with their letter runs shortened when that
+// gives a known word. A word that WordNet does not know either is read as the
+// content word of the vocabulary one edit away, the most frequent if several
+// are: "yelow" -> "yellow", "kye" -> "key", "rd" -> "red" (a two-letter token
+// only by a dropped letter). Real words stay as written ("soon" is never read
+// as "spoon"), and so do function words and tokens with digits.
+std::string AlignmentModel::respell(const std::string& w) const {
+  if (w.size() < 2 || is_function_word(w)) return w;
+  for (char ch : w)
+    if (ch < 'a' || ch > 'z') return w;
+  WordNetLexicon& wn = WordNetLexicon::instance();
+  auto known = [&](const std::string& x) { return word_ids_.count(x) != 0 || is_function_word(x) || wn.knows(x); };
+  const bool one_letter = w.find_first_not_of(w[0]) == std::string::npos;  // "zzzz" is no elongated word
+  if (const std::string two = shorten_runs(w, 2); two != w && !one_letter) {
+    if (known(two)) return two;
+    if (const std::string one = shorten_runs(w, 1); known(one)) return one;
+  }
+  if (wn.knows(w)) return w;
+  int best = -1;
+  bool best_full = false;
+  for (size_t id = 0; id < words_.size() && id < bg_.size() && id < word_flags_.size(); ++id) {
+    const std::string& v = words_[id];
+    if (v.size() < 3 || v.size() + 1 < w.size() || v.size() > w.size() + 1) continue;
+    if (w.size() == 2 && v.size() != 3) continue;  // "rd", "gt": only a dropped letter
+    const uint8_t f = word_flags_[id];
+    if ((f & kWordFunction) != 0 || (f & (kWordNoun | kWordVerb | kWordModifier)) == 0) continue;
+    if (!one_edit_apart(w, v)) continue;
+    // A dropped letter is the commoner slip than an extra one ("glases" is
+    // "glasses" rather than "glass"); among equals, the more frequent word.
+    const bool full = v.size() >= w.size();
+    if (best < 0 || full > best_full || (full == best_full && bg_[id] > bg_[static_cast<size_t>(best)])) {
+      best = static_cast<int>(id);
+      best_full = full;
+    }
+  }
+  return best >= 0 ? words_[static_cast<size_t>(best)] : w;
+}
+
 EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   EncodedUtterance u;
   u.words = tokenize_utterance(text);
   u.ids.reserve(u.words.size());
   for (size_t i = 0; i < u.words.size(); ++i) {
+    if (word_ids_.count(u.words[i]) == 0) u.words[i] = respell(u.words[i]);
     auto it = word_ids_.find(u.words[i]);
     u.ids.push_back(it == word_ids_.end() ? -1 : it->second);
     if (is_clause_end(u.words[i])) u.clause_end.push_back(static_cast<int>(i) + 1);

@@ -166,6 +166,10 @@ class AlignmentModel {
   struct Bound;  // a command frame bound to this model's tables
   std::shared_ptr<const Bound> bind(const std::string& command) const;
 
+  // Tokenises (utterance_tokens.hpp) and binds to the vocabulary. A token the
+  // vocabulary lacks is first repaired if it is a slip: an elongation
+  // ("neeed") read as its word, or a word WordNet does not know either read as
+  // the vocabulary's content word one edit away ("yelow" -> "yellow").
   EncodedUtterance encode(const std::string& text) const;
   // log P(u | c). If `complete` is false the text is a prefix and the result is
   // the probability of all utterances starting with these tokens.
@@ -218,6 +222,8 @@ class AlignmentModel {
   // Lexical class bits of a vocabulary word (kWord* in the .cpp), for the
   // noun-phrase reading of encode().
   uint8_t word_flags(int id, const std::string& w) const;
+  // A token unknown to the vocabulary, read as the word it misspells, if any.
+  std::string respell(const std::string& w) const;
   void mark_modifiers(EncodedUtterance& u) const;
 
   std::unordered_map<std::string, int> word_ids_;

@@ -221,6 +221,16 @@ std::string WordNetLexicon::noun_lemma(const std::string& word) {
   return forms.empty() ? word : forms.front();
 }
 
+bool WordNetLexicon::knows(const std::string& word) {
+  static std::unordered_map<std::string, bool> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(word); it != memo.end()) return it->second;
+  bool known = false;
+  for (int pos : {NOUN, VERB, ADJ, ADV}) known = known || wn_has(word, pos) || !wn_base_forms(word, pos).empty();
+  memo.emplace(word, known);
+  return known;
+}
+
 WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
   // Memoised: training asks for every vocabulary word, twice, and each lookup
   // costs WordNet several seeks and reads of its index files.

@@ -34,6 +34,10 @@ class WordNetLexicon {
   // Base (uninflected) noun form of a word if WordNet knows one, else the word.
   std::string noun_lemma(const std::string& word);
 
+  // Whether WordNet lists the word, or a base form of it, under any part of
+  // speech (used to tell a misspelling from a word the corpus never had).
+  bool knows(const std::string& word);
+
   // Dominant word class: whether a word may be learned by a noun field and by a
   // verb field. Decided by WordNet's sense counts of the word's base forms (e.g.
   // "grab" has more verb than noun senses, "key" more noun senses); a word that
