@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -273,6 +274,29 @@ TEST(EmbeddedModel, StatementsOfNeedNameWhatIsHandedToTheSpeaker) {
   for (const char* u : {"I'm in need of the blue key.", "I am after the blue key."}) {
     std::printf("[statement of need] %.2f nats: %s\n", score(blue, u) - score(red, u), u);
     EXPECT_GT(score(blue, u), score(red, u) + 2.5) << u;
+  }
+}
+
+// A situation described first and the request pointing back with "it": the
+// colour names the object of the request, whatever the first clause's type.
+// Read as the speaker's own statement it said little against a blue door
+// (3.0 and 0.7 nats before).
+TEST(EmbeddedModel, ColoursOfWhatARequestPointsBackToCount) {
+  const std::string red = pragmatic_prompt("(unlock you ?key1 ?door1) where (iscolor ?door1 red)");
+  const std::string blue = pragmatic_prompt("(unlock you ?key1 ?door1) where (iscolor ?door1 blue)");
+  for (const char* u : {"This red door has me stuck; it'd be great if you came and took care of it.",
+                        "I'm right up against this red door, could you come over here and take care of it for me?"}) {
+    std::printf("[points back] %.2f nats: %s\n", score(red, u) - score(blue, u), u);
+    EXPECT_GT(score(red, u), score(blue, u) + 4.0) << u;
+  }
+  auto m = model().model_for_prompt(red);
+  const EncodedUtterance a = m->encode("This red door is locked. Could you open it?");
+  EXPECT_EQ(a.asked_for, (std::vector<char>{0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+  // The empty "it" of "it would be great" and a request without a pronoun point nowhere.
+  for (const char* u : {"This blue key is mine. It would be great if you found a yellow one.",
+                        "I'll get the blue key, could you open the red door?"}) {
+    const EncodedUtterance e = m->encode(u);
+    EXPECT_EQ(std::count(e.asked_for.begin(), e.asked_for.end(), 1), 0) << u;
   }
 }
 

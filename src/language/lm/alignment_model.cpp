@@ -10,6 +10,7 @@
 #include <mutex>
 #include <set>
 #include <string_view>
+#include <unordered_set>
 
 #include "language/lm/language_model.hpp"
 #include "language/lm/utterance_tokens.hpp"
@@ -420,6 +421,7 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
     u.clause_end.push_back(static_cast<int>(u.words.size()));
   }
   mark_modifiers(u);
+  mark_pronoun_antecedents(u);
   return u;
 }
 
@@ -437,6 +439,44 @@ uint8_t AlignmentModel::word_flags(int id, const std::string& w) const {
 // including the head noun or pronoun. A verb right after the preposition is an
 // infinitive ("a key to open the door"): it ends the span, so its object is not
 // inside it. The flag of token i depends only on tokens before i.
+// For each object "it"/"them" in a clause that reads as a request (it has
+// "you", or no "i"/"we" subject: "come get it open"), the closest colour-bearing noun
+// phrase of an earlier clause is what the request is about. A simple recency
+// rule: the reading only decides which role's objects a colour may contradict.
+void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
+  const size_t n = u.words.size();
+  u.asked_for.assign(n, 0);
+  if (u.noun_heads.size() != n) return;
+  size_t clause_start = 0;
+  for (size_t e : u.clause_end) {
+    const size_t end = std::min(e, n);
+    bool you = false, first_person = false, pronoun = false;
+    for (size_t i = clause_start; i < end; ++i) {
+      const std::string& w = u.words[i];
+      you = you || w == "you";
+      first_person = first_person || w == "i" || w == "we";
+      // "it" before a verb of being or an auxiliary is the empty subject of
+      // "it would be great if ...", which points back at nothing.
+      static const std::unordered_set<std::string> dummy_next = {
+          "is", "s", "was", "would", "will", "d", "might", "could", "should", "may", "must",
+          "seems", "looks", "be", "has", "can", "does", "did", "sounds"};
+      const bool dummy = w == "it" && i + 1 < n && dummy_next.count(u.words[i + 1]) != 0;
+      pronoun = pronoun || (w == "it" && !dummy) || w == "them";
+    }
+    if (pronoun && (you || !first_person)) {
+      // The latest colour token before this clause that has a head noun.
+      for (size_t i = clause_start; i-- > 0;) {
+        if (u.noun_heads[i][0] >= 0 && i < u.ids.size() && u.ids[i] >= 0 &&
+            static_cast<size_t>(u.ids[i]) < attribute_word_.size() && attribute_word_[static_cast<size_t>(u.ids[i])]) {
+          u.asked_for[i] = 1;
+          break;
+        }
+      }
+    }
+    clause_start = end;
+  }
+}
+
 void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
   const size_t n = u.words.size();
   u.in_modifier.assign(n, 0);
@@ -681,11 +721,11 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       if (j < 0) continue;
       const int hid = u.ids[static_cast<size_t>(j)];
       const std::string& hw = u.words[static_cast<size_t>(j)];
-      double best = 0;
+      const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
+      double best = own;
       for (int t : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(t)]->at(hid, hw));
       if (best < kTypedNoun) return 1.0;  // "one", "thing": says nothing about the type
       typed = true;
-      const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
       if (own >= kBindRatio * best) return 1.0;
     }
     return typed ? kMisboundCopy : 1.0;
@@ -717,7 +757,10 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           bool named = false, consistent = false;
           for (size_t g = 0; g < G; ++g) {
             const Bound::Group& grp = c.groups[g];
-            if (grp.kind != 0 || !in_role(grp, t == 1) || grp.type_nouns[0] == nullptr) continue;
+            // A colour a later request points back to ("... this red door,
+            // could you open it?") names an object of the request's role.
+            const bool statement = t == 1 && !(i < u.asked_for.size() && u.asked_for[i]);
+            if (grp.kind != 0 || !in_role(grp, statement) || grp.type_nouns[0] == nullptr) continue;
             const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
             if (own < kBindRatio * best) continue;
             named = true;

@@ -100,7 +100,10 @@
 //     multiplied by kContradictedColour in every source. Roles count: in a
 //     request clause only the listener's ("you") objects are checked, in a
 //     statement only those of its role (item 4), so "I'm going for the red key" says nothing
-//     against a command asking the listener for the yellow key. A command that
+//     against a command asking the listener for the yellow key. A colour that
+//     a later request points back to with "it"/"them" ("This red door has me
+//     stuck; could you open it?") is checked against the request's objects
+//     whatever its own clause's type. A command that
 //     leaves an object's colour open is never contradicted.
 //
 // Apart from the colour binding and contradiction, which look ahead to the head noun, every
@@ -153,6 +156,11 @@ struct EncodedUtterance {
   // yellow door" or "a key to open this yellow door" -> "key"). Used to
   // bind a copied colour to an object of a matching type (see evaluate()).
   std::vector<std::array<int, 2>> noun_heads;
+  // asked_for[i] != 0: colour token i describes the last coloured noun before
+  // an "it"/"them" in a later request-like clause ("I'm stuck at this red
+  // door, could you open it?"): whatever its own clause, it names the object
+  // of that request (used by the colour contradiction of evaluate()).
+  std::vector<char> asked_for;
 };
 
 // Trained parameters. Immutable after train(), except for a thread-safe cache of
@@ -225,6 +233,7 @@ class AlignmentModel {
   // A token unknown to the vocabulary, read as the word it misspells, if any.
   std::string respell(const std::string& w) const;
   void mark_modifiers(EncodedUtterance& u) const;
+  void mark_pronoun_antecedents(EncodedUtterance& u) const;
 
   std::unordered_map<std::string, int> word_ids_;
   std::vector<std::string> words_;
