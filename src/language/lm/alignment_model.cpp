@@ -432,18 +432,17 @@ uint8_t AlignmentModel::word_flags(int id, const std::string& w) const {
   return (f & kWordFunction) != 0 ? f : static_cast<uint8_t>(f | kWordNoun);
 }
 
-// Post-nominal prepositional modifiers, read left to right: a span opens after
-// "for"/"to" whose preceding word heads a noun phrase (a noun after a
-// determiner, possibly with adjectives between, or "something"), and covers the
-// following determiners, pronouns, adjectives and participles up to and
-// including the head noun or pronoun. A verb right after the preposition is an
-// infinitive ("a key to open the door"): it ends the span, so its object is not
-// inside it. The flag of token i depends only on tokens before i.
 // For each object "it"/"them" in a clause that reads as a request (it has
-// "you", or no "i"/"we" subject: "come get it open"), the closest colour-bearing noun
-// phrase of an earlier clause is what the request is about. A simple recency
-// rule: the reading only decides which role's objects a colour may contradict.
+// "you", or no "i"/"we" subject: "come get it open"), the closest
+// colour-bearing noun phrase of an earlier clause is what the request is
+// about. A simple recency rule: the reading only decides which role's
+// objects a colour may contradict.
 void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
+  // "it" before a verb of being or an auxiliary is the empty subject of "it
+  // would be great if ...", which points back at nothing.
+  static const std::unordered_set<std::string> dummy_next = {
+      "is", "s", "was", "would", "will", "d", "might", "could", "should", "may", "must",
+      "seems", "looks", "be", "has", "can", "does", "did", "sounds"};
   const size_t n = u.words.size();
   u.asked_for.assign(n, 0);
   if (u.noun_heads.size() != n) return;
@@ -455,11 +454,6 @@ void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
       const std::string& w = u.words[i];
       you = you || w == "you";
       first_person = first_person || w == "i" || w == "we";
-      // "it" before a verb of being or an auxiliary is the empty subject of
-      // "it would be great if ...", which points back at nothing.
-      static const std::unordered_set<std::string> dummy_next = {
-          "is", "s", "was", "would", "will", "d", "might", "could", "should", "may", "must",
-          "seems", "looks", "be", "has", "can", "does", "did", "sounds"};
       const bool dummy = w == "it" && i + 1 < n && dummy_next.count(u.words[i + 1]) != 0;
       pronoun = pronoun || (w == "it" && !dummy) || w == "them";
     }
@@ -477,6 +471,13 @@ void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
   }
 }
 
+// Post-nominal prepositional modifiers, read left to right: a span opens after
+// "for"/"to" whose preceding word heads a noun phrase (a noun after a
+// determiner, possibly with adjectives between, or "something"), and covers the
+// following determiners, pronouns, adjectives and participles up to and
+// including the head noun or pronoun. A verb right after the preposition is an
+// infinitive ("a key to open the door"): it ends the span, so its object is not
+// inside it. The flag of token i depends only on tokens before i.
 void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
   const size_t n = u.words.size();
   u.in_modifier.assign(n, 0);
@@ -721,11 +722,11 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       if (j < 0) continue;
       const int hid = u.ids[static_cast<size_t>(j)];
       const std::string& hw = u.words[static_cast<size_t>(j)];
-      const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
-      double best = own;
+      double best = 0;
       for (int t : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(t)]->at(hid, hw));
       if (best < kTypedNoun) return 1.0;  // "one", "thing": says nothing about the type
       typed = true;
+      const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
       if (own >= kBindRatio * best) return 1.0;
     }
     return typed ? kMisboundCopy : 1.0;
