@@ -1343,7 +1343,10 @@ struct Trainer {
     // that co-occurrence decides the first responsibilities.
     // Verb fields may only learn verb-like words and noun fields noun-like ones:
     // otherwise a noun field shared by several actions (N:key) soaks up their
-    // verbs ("grab") and the verb fields stop telling actions apart.
+    // verbs ("grab") and the verb fields stop telling actions apart. Nor do
+    // noun fields learn places ("kitchen", "cupboard") beyond their lexical
+    // base: from "kitchen knife" the chef's knife table would otherwise take
+    // "kitchen", and "the wine is in the kitchen" would ask for a knife.
     std::vector<int> content_ids, function_ids, noun_ids, verb_ids;
     for (size_t i = 0; i < V2; ++i) {
       const std::string& w = M.words_[i];
@@ -1354,7 +1357,7 @@ struct Trainer {
       content_ids.push_back(static_cast<int>(i));
       if (is_punctuation_token(w)) continue;
       const WordNetLexicon::WordClass wc = WordNetLexicon::instance().word_class(w);
-      if (wc.noun_like) noun_ids.push_back(static_cast<int>(i));
+      if (wc.noun_like && !WordNetLexicon::instance().names_place(w)) noun_ids.push_back(static_cast<int>(i));
       if (wc.verb_like) verb_ids.push_back(static_cast<int>(i));
     }
     // Word classes for reading noun phrases (AlignmentModel::mark_modifiers).

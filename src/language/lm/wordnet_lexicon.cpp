@@ -231,6 +231,39 @@ bool WordNetLexicon::knows(const std::string& word) {
   return known;
 }
 
+bool WordNetLexicon::names_place(const std::string& word) {
+  static std::unordered_map<std::string, bool> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(word); it != memo.end()) return it->second;
+  bool place = false;
+  std::vector<std::string> forms = wn_base_forms(word, NOUN);
+  forms.push_back(word);
+  for (const std::string& f : forms) {
+    std::string buf = f;
+    SynsetPtr head = findtheinfo_ds(buf.data(), NOUN, HYPERPTR, 1);  // the dominant sense only
+    // The whole hypernym tree of that sense (depth != 0: recursive).
+    SynsetPtr tree = head != nullptr ? traceptrs_ds(head, HYPERPTR, NOUN, 1) : nullptr;
+    std::vector<SynsetPtr> frontier;
+    for (SynsetPtr h = tree; h != nullptr; h = h->nextss) frontier.push_back(h);
+    for (int level = 0; level < 12 && !frontier.empty() && !place; ++level) {
+      std::vector<SynsetPtr> next;
+      for (SynsetPtr h : frontier) {
+        for (int k = 0; k < h->wcount; ++k) {
+          const std::string lemma = lower_word(h->words[k]);
+          place = place || lemma == "area" || lemma == "location" || lemma == "region";
+        }
+        for (SynsetPtr g = h->ptrlist; g != nullptr; g = g->nextss) next.push_back(g);
+      }
+      frontier = std::move(next);
+    }
+    if (tree != nullptr) free_syns(tree);
+    if (head != nullptr) free_syns(head);
+    if (place || head != nullptr) break;
+  }
+  memo.emplace(word, place);
+  return place;
+}
+
 WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
   // Memoised: training asks for every vocabulary word, twice, and each lookup
   // costs WordNet several seeks and reads of its index files.

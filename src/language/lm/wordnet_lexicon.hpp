@@ -38,6 +38,10 @@ class WordNetLexicon {
   // speech (used to tell a misspelling from a word the corpus never had).
   bool knows(const std::string& word);
 
+  // Whether the word's dominant noun sense is a place: an area, region or
+  // location ("kitchen", "corner", "cupboard"), not an object one could fetch.
+  bool names_place(const std::string& word);
+
   // Dominant word class: whether a word may be learned by a noun field and by a
   // verb field. Decided by WordNet's sense counts of the word's base forms (e.g.
   // "grab" has more verb than noun senses, "key" more noun senses); a word that
