@@ -407,12 +407,24 @@ std::string AlignmentModel::respell(const std::string& w) const {
   return best >= 0 ? words_[static_cast<size_t>(best)] : w;
 }
 
+std::string AlignmentModel::respelled(const std::string& w) const {
+  {
+    std::shared_lock lock(respell_mutex_);
+    if (auto it = respelled_.find(w); it != respelled_.end()) return it->second;
+  }
+  std::string r = respell(w);
+  std::unique_lock lock(respell_mutex_);
+  if (respelled_.size() > (1u << 14)) respelled_.clear();  // bound memory in a long-running server
+  respelled_.emplace(w, r);
+  return r;
+}
+
 EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   EncodedUtterance u;
   u.words = tokenize_utterance(text);
   u.ids.reserve(u.words.size());
   for (size_t i = 0; i < u.words.size(); ++i) {
-    if (word_ids_.count(u.words[i]) == 0) u.words[i] = respell(u.words[i]);
+    if (word_ids_.count(u.words[i]) == 0) u.words[i] = respelled(u.words[i]);
     auto it = word_ids_.find(u.words[i]);
     u.ids.push_back(it == word_ids_.end() ? -1 : it->second);
     if (is_clause_end(u.words[i])) u.clause_end.push_back(static_cast<int>(i) + 1);

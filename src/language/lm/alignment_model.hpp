@@ -232,6 +232,7 @@ class AlignmentModel {
   uint8_t word_flags(int id, const std::string& w) const;
   // A token unknown to the vocabulary, read as the word it misspells, if any.
   std::string respell(const std::string& w) const;
+  std::string respelled(const std::string& w) const;  // respell(), memoised
   void mark_modifiers(EncodedUtterance& u) const;
   void mark_pronoun_antecedents(EncodedUtterance& u) const;
 
@@ -256,6 +257,10 @@ class AlignmentModel {
 
   mutable std::shared_mutex lazy_mutex_;
   mutable std::unordered_map<std::string, std::unique_ptr<Table>> lazy_tables_;
+  // respell() results: an utterance is encoded once per command it is scored
+  // against, and each repair scans the vocabulary.
+  mutable std::shared_mutex respell_mutex_;
+  mutable std::unordered_map<std::string, std::string> respelled_;
 };
 
 }  // namespace clips::lm
