@@ -3,6 +3,8 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 DATASET ?= $(if $(CLIPS_DATASET),$(CLIPS_DATASET),../shared/dataset)
+# ccache (when installed) shares objects between checkouts beside this one.
+export CCACHE_BASEDIR ?= $(abspath $(CURDIR)/..)
 
 .PHONY: all deps configure build test run bench clean
 

@@ -9,6 +9,7 @@
 #include "app/cli.hpp"
 #include "eval/bench.hpp"
 #include "eval/report.hpp"
+#include "util/data_dir.hpp"
 
 namespace clips::app {
 
@@ -63,7 +64,7 @@ void register_bench(CLI::App& app) {
       if (ec) throw InputError(fmt::format("{}: cannot create directory {}: {}", flag, *dir, ec.message()));
     }
     auto rep = eval::run_bench(*o);
-    fmt::print("{}", eval::results_table(rep, std::string(CLIPS_SOURCE_DIR) + "/data/paper/results.json"));
+    fmt::print("{}", eval::results_table(rep, util::data_dir() + "/paper/results.json"));
     if (!out->empty()) {
       std::filesystem::create_directories(*out);
       auto write = [&](const std::string& name, const std::string& text) {
@@ -79,7 +80,7 @@ void register_bench(CLI::App& app) {
     if (!report->empty()) {
       eval::ReportOptions ro;
       ro.dir = *report;
-      ro.paper_json = std::string(CLIPS_SOURCE_DIR) + "/data/paper/results.json";
+      ro.paper_json = util::data_dir() + "/paper/results.json";
       ro.jobs = o->jobs;
       fmt::print("wrote {}\n", eval::write_report(rep, ro));
     }

@@ -1,5 +1,7 @@
 #include "inference/utterance_model.hpp"
 
+#include "util/data_dir.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -51,7 +53,7 @@ UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, data::Dom
     config_.speaker_actions = config_.paper_speaker_actions;
     config_.exclude_chains = config_.paper_exclude_chains;
   }
-  const std::string dir = options_.language_dir.empty() ? std::string(CLIPS_SOURCE_DIR) + "/data/language"
+  const std::string dir = options_.language_dir.empty() ? util::data_dir() + "/language"
                                                         : options_.language_dir;
   auto all = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");
   auto orders = commands::load_prompt_orders(dir + "/prompt-orders.json");

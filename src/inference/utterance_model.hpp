@@ -53,8 +53,8 @@ struct UtteranceModelOptions {
   int rollout_steps = 100;                 // greedy rollout bound (mDKG)
   size_t astar_max_nodes = size_t{1} << 16;  // VH rollout budget
   double astar_weight = 2.0;               // VH rollout: f = g + 2h
-  // Directory with fewshot-examples.tsv and prompt-orders.json; empty:
-  // CLIPS_SOURCE_DIR "/data/language".
+  // Directory with fewshot-examples.tsv and prompt-orders.json; empty: the
+  // language/ folder of util::data_dir().
   std::string language_dir;
 };
 

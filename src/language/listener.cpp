@@ -15,6 +15,7 @@
 #include "language/lm/cached_model.hpp"
 #include "language/lm/embedded_model.hpp"
 #include "language/lm/openai_model.hpp"
+#include "util/data_dir.hpp"
 #include "util/error.hpp"
 
 namespace clips::language {
@@ -118,10 +119,7 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
 
 // ---- listener setup ---------------------------------------------------------
 
-std::string language_data_dir() {
-  if (const char* env = std::getenv("CLIPS_DATA_DIR"); env != nullptr && *env != '\0') return env;
-  return std::string(CLIPS_SOURCE_DIR) + "/data/language";
-}
+std::string language_data_dir() { return util::data_dir() + "/language"; }
 
 LiteralListenerSetup literal_listener_setup(const std::string& domain, const std::string& data_dir) {
   LiteralListenerSetup setup;

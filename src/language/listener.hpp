@@ -58,9 +58,8 @@ struct LiteralListenerSetup {
   double temperature = 1.0;
 };
 
-// The directory of fewshot-examples.tsv and prompt-orders.json: $CLIPS_DATA_DIR
-// if set (the embedded LM reads its corpus from there too), else
-// CLIPS_SOURCE_DIR "/data/language".
+// The directory of fewshot-examples.tsv and prompt-orders.json: the language/
+// folder of util::data_dir() (the embedded LM reads its corpus from there too).
 std::string language_data_dir();
 
 // Setup for `domain` ("doors-keys-gems" or "virtual-home"): the built-in

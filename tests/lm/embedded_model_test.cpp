@@ -402,10 +402,12 @@ TEST(EmbeddedModel, UnseenItemTypesUseWordNet) {
 }
 
 TEST(EmbeddedModel, DataDirectoryFromOptionsAndEnvironment) {
-  const std::string dir = std::string(CLIPS_SOURCE_DIR) + "/data/language";
+  // $CLIPS_DATA_DIR names the data root; the corpora are in its language/.
+  const std::string root = std::string(CLIPS_SOURCE_DIR) + "/data";
+  const std::string dir = root + "/language";
   EmbeddedLanguageModel explicit_dir(dir);
   EXPECT_EQ(explicit_dir.data_dir(), dir);
-  ::setenv("CLIPS_DATA_DIR", dir.c_str(), 1);
+  ::setenv("CLIPS_DATA_DIR", root.c_str(), 1);
   EmbeddedLanguageModel from_env;
   ::unsetenv("CLIPS_DATA_DIR");
   EXPECT_EQ(from_env.data_dir(), dir);

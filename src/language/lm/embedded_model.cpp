@@ -13,19 +13,13 @@
 
 #include "language/lm/alignment_model.hpp"
 #include "language/lm/command_frame.hpp"
+#include "util/data_dir.hpp"
 #include "util/hash.hpp"
 
 namespace clips::lm {
 namespace {
 
-std::string default_data_dir() {
-  if (const char* env = std::getenv("CLIPS_DATA_DIR"); env != nullptr && *env != '\0') return env;
-#ifdef CLIPS_SOURCE_DIR
-  return std::string(CLIPS_SOURCE_DIR) + "/data/language";
-#else
-  return "data/language";
-#endif
-}
+std::string default_data_dir() { return util::data_dir() + "/language"; }
 
 std::string trim(const std::string& s) {
   const size_t b = s.find_first_not_of(" \t\r\n");

@@ -32,8 +32,8 @@ class AlignmentModel;
 struct TrainingPair;
 
 struct EmbeddedModelOptions {
-  // Directory holding the corpus files. Empty: $CLIPS_DATA_DIR if set, else
-  // CLIPS_SOURCE_DIR "/data/language".
+  // Directory holding the corpus files. Empty: the language/ folder of
+  // util::data_dir() ($CLIPS_DATA_DIR, the install prefix or the source tree).
   std::string data_dir;
   // Files read from data_dir (each line "command<TAB>utterance"; '#' comments).
   std::vector<std::string> corpus_files = {"corpus-dkg.tsv", "corpus-vh.tsv"};
