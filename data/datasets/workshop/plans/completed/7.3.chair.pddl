@@ -1,0 +1,8 @@
+(pickup robot leg3 rack)
+(pickup human panel1 bins)
+(move robot rack bench)
+(move human bins bench)
+(putdown robot leg3 bench)
+(putdown human panel1 bench)
+(wait robot)
+(assemble human chair panel1 leg3 drill1 bench)

@@ -1,0 +1,6 @@
+(pickup robot leg2 rack)
+(move human bins bench)
+(move robot rack bench)
+(putdown human dowel1 bench)
+(putdown robot leg2 bench)
+(assemble human stand dowel1 leg2 hammer1 bench)

@@ -1,0 +1,2 @@
+(pickup human dowel2 rack)
+; Can you get me the saw?

@@ -1,0 +1,2 @@
+(pickup human drill1 toolwall)
+; Can you bring the metal one from the rack?

@@ -1,0 +1,2 @@
+(pickup human rod1 rack)
+; Can you grab the big one?

@@ -1,0 +1,2 @@
+(pickup human plank2 rack)
+; I need something to cut this with.

@@ -1,0 +1,2 @@
+(pickup human bracket2 bins)
+; Can you fetch the big screwdriver?
