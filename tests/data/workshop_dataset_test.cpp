@@ -1,0 +1,155 @@
+// The hand-written workshop dataset (data/datasets/workshop): its goal sets
+// are well formed, every observed plan and its completion are applicable with
+// turns alternating human/robot, and every completion reaches its plan's true
+// goal (the label in the plan's file name) and no other candidate goal of the
+// problem that is not a part of the true one. The loader does not read goal
+// sets for this domain yet, so the test reads them itself.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "data/dataset.hpp"
+#include "pddl/plan.hpp"
+#include "pddl/sexpr.hpp"
+#include "test_paths.hpp"
+
+namespace clips::data {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::path(paths::source_dir()) / "data" / "datasets" / "workshop";
+
+std::vector<std::string> nonblank_lines(const fs::path& p) {
+  std::ifstream in(p);
+  std::vector<std::string> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    line.erase(0, line.find_first_not_of(" \t\r"));
+    line.erase(line.find_last_not_of(" \t\r") + 1);
+    if (!line.empty()) out.push_back(line);
+  }
+  return out;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The top-level conjuncts of a goal condition, printed.
+std::set<std::string> conjuncts(const std::string& condition) {
+  auto e = pddl::read_one_sexpr(condition, "goal");
+  std::set<std::string> out;
+  if (e.head() == "and")
+    for (size_t i = 1; i < e.items.size(); ++i) out.insert(e.items[i].str());
+  else
+    out.insert(e.str());
+  return out;
+}
+
+class WorkshopDataset : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dataset_ = Dataset::load(kDir.string());
+    for (auto& e : fs::directory_iterator(kDir / "goals" / "definitions"))
+      definitions_[e.path().stem().string()] = read_text(e.path());
+    for (auto& e : fs::directory_iterator(kDir / "goals" / "sets"))
+      goal_sets_[e.path().stem().string()] = nonblank_lines(e.path());
+  }
+  static const Dataset& ds() { return *dataset_; }
+
+  static std::optional<Dataset> dataset_;
+  static std::map<std::string, std::string> definitions_;             // label -> condition
+  static std::map<std::string, std::vector<std::string>> goal_sets_;  // problem -> labels
+};
+
+std::optional<Dataset> WorkshopDataset::dataset_;
+std::map<std::string, std::string> WorkshopDataset::definitions_;
+std::map<std::string, std::vector<std::string>> WorkshopDataset::goal_sets_;
+
+// The agent of a ground action: its first argument.
+std::string agent_of(const pddl::Task& task, pddl::ActionId a) { return task.object_name(task.action(a).args.at(0)); }
+
+TEST_F(WorkshopDataset, EveryProblemHasAGoalSetOfThreeToSixDefinedGoalsThatCompile) {
+  std::set<std::string> problems;
+  for (auto& e : fs::directory_iterator(kDir / "problems")) problems.insert(e.path().stem().string());
+  EXPECT_GE(problems.size(), 8u);
+  std::set<std::string> with_sets;
+  for (auto& [p, labels] : goal_sets_) with_sets.insert(p);
+  EXPECT_EQ(with_sets, problems);
+  for (auto& [problem, labels] : goal_sets_) {
+    SCOPED_TRACE("goals/sets/" + problem + ".txt");
+    EXPECT_GE(labels.size(), 3u);
+    EXPECT_LE(labels.size(), 6u);
+    EXPECT_EQ(std::set<std::string>(labels.begin(), labels.end()).size(), labels.size()) << "a label is repeated";
+    auto task = ds().task(problem);
+    for (auto& l : labels) {
+      ASSERT_TRUE(definitions_.count(l)) << "no goals/definitions/" << l << ".pddl";
+      EXPECT_NO_THROW(task->compile_text(definitions_[l], l)) << l;
+      // Nothing to do from the start would make the goal useless as a candidate.
+      EXPECT_FALSE(task->holds(task->initial_state(), task->compile_text(definitions_[l], l))) << l;
+    }
+  }
+}
+
+TEST_F(WorkshopDataset, ObservedPlansAlternateTurnsWithTheRobotWaitingAndEndInOneUtterance) {
+  EXPECT_GE(ds().plans().size(), 20u);
+  for (auto& p : ds().plans()) {
+    SCOPED_TRACE(p.id);
+    auto task = ds().task(p.problem_id);
+    pddl::Simulation obs;
+    ASSERT_NO_THROW(obs = pddl::simulate(*task, task->initial_state(), p.observed));
+    ASSERT_FALSE(obs.actions.empty());
+    for (size_t i = 0; i < obs.actions.size(); ++i) {
+      std::string agent = agent_of(*task, obs.actions[i]);
+      EXPECT_EQ(agent, i % 2 == 0 ? "human" : "robot") << "step " << i + 1;
+      if (agent == "robot") EXPECT_EQ(task->domain().actions[task->action(obs.actions[i]).schema].name, "wait");
+    }
+    EXPECT_EQ(agent_of(*task, obs.actions.back()), "human") << "the human speaks after their own action";
+    ASSERT_EQ(p.observed.utterances.size(), 1u);
+    EXPECT_EQ(p.observed.utterances[0].index, static_cast<int>(obs.actions.size()));
+  }
+}
+
+TEST_F(WorkshopDataset, CompletionsReachTheTrueGoalAndNoOtherCandidate) {
+  for (auto& p : ds().plans()) {
+    SCOPED_TRACE(p.id);
+    auto task = ds().task(p.problem_id);
+    ASSERT_TRUE(goal_sets_.count(p.problem_id));
+    const auto& labels = goal_sets_[p.problem_id];
+    ASSERT_NE(std::find(labels.begin(), labels.end(), p.tag), labels.end()) << "true goal not in the goal set";
+    auto obs = pddl::simulate(*task, task->initial_state(), p.observed);
+    pddl::Simulation comp;
+    ASSERT_NO_THROW(comp = pddl::simulate(*task, obs.states.back(), p.completed));
+    ASSERT_FALSE(comp.actions.empty());
+    // The joint plan keeps alternating where the observed prefix stopped.
+    for (size_t i = 0; i < comp.actions.size(); ++i)
+      EXPECT_EQ(agent_of(*task, comp.actions[i]), (obs.actions.size() + i) % 2 == 0 ? "human" : "robot")
+          << "completion step " << i + 1;
+    // The true goal is reached by the last action, not before.
+    pddl::CondId truth = task->compile_text(definitions_[p.tag], p.tag);
+    EXPECT_TRUE(task->holds(comp.states.back(), truth));
+    for (size_t i = 0; i + 1 < comp.states.size(); ++i)
+      EXPECT_FALSE(task->holds(comp.states[i], truth)) << "reached after " << i << " completion steps";
+    auto truth_parts = conjuncts(definitions_[p.tag]);
+    for (auto& l : labels) {
+      if (l == p.tag) continue;
+      auto parts = conjuncts(definitions_[l]);
+      bool sub_goal = std::includes(truth_parts.begin(), truth_parts.end(), parts.begin(), parts.end());
+      if (!sub_goal)
+        EXPECT_FALSE(task->holds(comp.states.back(), task->compile_text(definitions_[l], l)))
+            << "the completion also reaches " << l;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace clips::data
