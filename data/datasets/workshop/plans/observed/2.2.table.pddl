@@ -1,4 +1,2 @@
-(move human rack toolwall)
-(wait robot)
-(pickup human hammer1 toolwall)
-; Could you bring the big wooden one to the bench?
+(pickup human panel1 rack)
+; Could you bring the wooden one to the bench?

@@ -1,4 +1,2 @@
-(move human rack bins)
-(wait robot)
-(pickup human bracket2 bins)
-; Can you bring the big one from the rack?
+(pickup human dowel2 rack)
+; Can you bring the small one from the bins?
