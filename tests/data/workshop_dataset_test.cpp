@@ -111,7 +111,9 @@ TEST_F(WorkshopDataset, ObservedPlansAlternateTurnsWithTheRobotWaitingAndEndInOn
     for (size_t i = 0; i < obs.actions.size(); ++i) {
       std::string agent = agent_of(*task, obs.actions[i]);
       EXPECT_EQ(agent, i % 2 == 0 ? "human" : "robot") << "step " << i + 1;
-      if (agent == "robot") EXPECT_EQ(task->domain().actions[task->action(obs.actions[i]).schema].name, "wait");
+      if (agent == "robot") {
+        EXPECT_EQ(task->domain().actions[task->action(obs.actions[i]).schema].name, "wait");
+      }
     }
     EXPECT_EQ(agent_of(*task, obs.actions.back()), "human") << "the human speaks after their own action";
     ASSERT_EQ(p.observed.utterances.size(), 1u);
@@ -144,9 +146,10 @@ TEST_F(WorkshopDataset, CompletionsReachTheTrueGoalAndNoOtherCandidate) {
       if (l == p.tag) continue;
       auto parts = conjuncts(definitions_[l]);
       bool sub_goal = std::includes(truth_parts.begin(), truth_parts.end(), parts.begin(), parts.end());
-      if (!sub_goal)
+      if (!sub_goal) {
         EXPECT_FALSE(task->holds(comp.states.back(), task->compile_text(definitions_[l], l)))
             << "the completion also reaches " << l;
+      }
     }
   }
 }
