@@ -3,6 +3,8 @@
 ; every action hands the turn to the next agent. Only the human assembles.
 ; A product is made at the workbench from two parts lying on it and one
 ; tool in the human's hand, as listed by the problem's (recipe ...) facts.
+; Items are put down only on the workbench and never taken back from it:
+; nothing else would help, and it keeps the search small.
 (define (domain workshop)
   (:requirements :typing :negative-preconditions :equality :conditional-effects)
   (:types
