@@ -10,6 +10,7 @@ PKGS=(
   wordnet-dev wordnet-base
   libcairo2-dev libpng-dev libgif-dev
   chromium
+  clang-14 libclang-rt-14-dev libfuzzer-14-dev
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 
 #include "pddl/parser.hpp"
 
@@ -125,10 +126,9 @@ void check_observed_plan(DomainKind kind, const pddl::PlanFile& obs) {
     throw InputError(SourceLoc{obs.path, 0, 0}, "observed plan is empty (no actions and no '; <utterance>' line)");
 }
 
-// The non-blank lines of a file, stripped, with their 1-based line numbers.
-std::vector<std::pair<int, std::string>> lines_of(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
+// The non-blank lines of a text, stripped, with their 1-based line numbers.
+std::vector<std::pair<int, std::string>> lines_of(const std::string& text) {
+  std::istringstream in(text);
   std::vector<std::pair<int, std::string>> out;
   std::string line;
   int line_no = 0;
@@ -162,13 +162,14 @@ std::string describe_json(const nlohmann::json& v) {
 // option numbers up to "option_count". Each entry must name a plan of the
 // dataset, at most once, and for Doors-Keys-Gems agree with that plan's
 // condition ("type" = the tag in its file name) and observed utterance.
-std::map<std::string, StimulusInfo> load_stimuli(const std::string& path, DomainKind kind,
-                                                 const std::vector<PlanRecord>& plans) {
+}  // namespace
+
+std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const std::string& path,
+                                                  DomainKind kind, const std::vector<PlanRecord>& plans) {
   nlohmann::json j;
   try {
-    std::ifstream in(path);
-    j = nlohmann::json::parse(in);
-  } catch (const std::exception& ex) {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& ex) {
     throw InputError(SourceLoc{path, 0, 0}, std::string("malformed JSON: ") + ex.what());
   }
   if (!j.is_array()) throw InputError(SourceLoc{path, 0, 0}, "expected a JSON array of stimuli, got " + describe_json(j));
@@ -243,6 +244,24 @@ std::map<std::string, StimulusInfo> load_stimuli(const std::string& path, Domain
   }
   return out;
 }
+
+std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
+                                        const std::map<std::string, std::string>& goal_defs) {
+  std::vector<std::string> labels;
+  std::map<std::string, int> seen;  // label -> line
+  for (auto& [line_no, label] : lines_of(text)) {
+    const SourceLoc loc{path, line_no, 1};
+    if (!goal_defs.count(label))
+      throw InputError(loc, "goal '" + label + "' has no file goals/definitions/" + label + ".pddl");
+    // A repeated label would be a second, identical hypothesis sharing its probability.
+    if (auto [it, fresh] = seen.emplace(label, line_no); !fresh)
+      throw InputError(loc, "goal '" + label + "' is listed twice (also at line " + std::to_string(it->second) + ")");
+    labels.push_back(label);
+  }
+  return labels;
+}
+
+namespace {
 
 // Where a Doors-Keys-Gems problem starts: every agent and door on the grid,
 // every key and gem on it or held by an agent. The search and inference
@@ -355,19 +374,8 @@ Dataset Dataset::load(const std::string& dir_in) {
       }
     for (auto& e : fs::directory_iterator(sets))
       if (e.path().extension() == ".txt") {
-        auto lines = lines_of(e.path().string());
-        std::vector<std::string> labels;
-        std::map<std::string, int> seen;  // label -> line
-        for (auto& [line_no, label] : lines) {
-          const SourceLoc loc{e.path().string(), line_no, 1};
-          if (!ds.goal_defs_.count(label))
-            throw InputError(loc, "goal '" + label + "' has no file goals/definitions/" + label + ".pddl");
-          // A repeated label would be a second, identical hypothesis sharing its probability.
-          if (auto [it, fresh] = seen.emplace(label, line_no); !fresh)
-            throw InputError(loc, "goal '" + label + "' is listed twice (also at line " + std::to_string(it->second) + ")");
-          labels.push_back(label);
-        }
-        ds.goal_sets_[e.path().stem().string()] = labels;
+        const std::string path = e.path().string();
+        ds.goal_sets_[e.path().stem().string()] = parse_goal_set(pddl::read_text_file(path), path, ds.goal_defs_);
       }
   }
   // stimuli.json (Doors-Keys-Gems) is optional: only `validate` reads it, to
@@ -375,7 +383,7 @@ Dataset Dataset::load(const std::string& dir_in) {
   // and copies of the dataset with reworded utterances drop the file. When it
   // is present, it is checked in full (load_stimuli).
   fs::path stim = dir / "stimuli.json";
-  if (fs::exists(stim)) ds.stimuli_ = load_stimuli(stim.string(), ds.kind_, ds.plans_);
+  if (fs::exists(stim)) ds.stimuli_ = parse_stimuli(pddl::read_text_file(stim.string()), stim.string(), ds.kind_, ds.plans_);
   return ds;
 }
 

@@ -84,6 +84,15 @@ class Dataset {
   mutable std::map<std::string, std::shared_ptr<const pddl::Task>> tasks_;
 };
 
+// The two list files the loader reads, parsed from their text (`path` names
+// the file in errors). stimuli.json: every entry checked against `plans`
+// (see dataset.cpp). goals/sets/<P>.txt: one goal label per non-blank line,
+// each defined in `goal_defs` and listed once.
+std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const std::string& path,
+                                                  DomainKind kind, const std::vector<PlanRecord>& plans);
+std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
+                                        const std::map<std::string, std::string>& goal_defs);
+
 // Grounding options each domain needs (e.g. keep `frozen` in the state).
 pddl::GroundingOptions grounding_options(DomainKind k);
 

@@ -28,6 +28,47 @@ std::string png_data_url(const std::vector<std::uint8_t>& png) {
   return "data:image/png;base64," + base64_encode(std::span<const std::uint8_t>(png));
 }
 
+std::string parse_chat_reply(const std::string& body, const ChatRequest& request,
+                             const std::string& context) {
+  json j = json::parse(body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) {
+    throw LmError(context + "body is not valid JSON (" + std::to_string(body.size()) +
+                  " bytes: " + server_error_text(body) + ")");
+  }
+  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
+  auto choices = j.find("choices");
+  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
+  if (!choices->is_array()) throw LmError(context + "choices is not an array");
+  if (choices->empty()) throw LmError(context + "choices is empty");
+  const json& choice = (*choices)[0];
+  if (!choice.is_object()) throw LmError(context + "choices[0] is not an object");
+  auto message = choice.find("message");
+  if (message == choice.end() || !message->is_object()) {
+    throw LmError(context + "choices[0].message missing");
+  }
+  auto content = message->find("content");
+  if (content == message->end() || content->is_null()) {
+    std::string why;
+    if (auto r = message->find("refusal"); r != message->end() && r->is_string()) {
+      why = " (refusal: " + r->get<std::string>() + ")";
+    }
+    throw LmError(context + "choices[0].message.content missing" + why);
+  }
+  if (!content->is_string()) throw LmError(context + "choices[0].message.content is not a string");
+  std::string text = content->get<std::string>();
+
+  if (request.json_object && request.validate_json &&
+      json::parse(text, nullptr, /*allow_exceptions=*/false).is_discarded()) {
+    std::string finish;
+    if (auto f = choice.find("finish_reason"); f != choice.end() && f->is_string()) {
+      finish = ", finish_reason " + f->get<std::string>();
+    }
+    throw LmError(context + "choices[0].message.content is not valid JSON although a JSON object was "
+                  "requested (" + std::to_string(text.size()) + " chars" + finish + ")");
+  }
+  return text;
+}
+
 OpenAiChatClient::OpenAiChatClient(OpenAiChatOptions options) : http_(options.http) {
   std::string base = options.base_url.empty()
                          ? env_or("CLIPS_CHAT_BASE_URL", "https://api.openai.com/v1")
@@ -68,44 +109,7 @@ std::string OpenAiChatClient::complete(const ChatRequest& request) {
                   server_error_text(reply.body));
   }
 
-  const std::string context = "reply from " + endpoint_ + ": ";
-  json j = json::parse(reply.body, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) {
-    throw LmError(context + "body is not valid JSON (" + std::to_string(reply.body.size()) +
-                  " bytes: " + server_error_text(reply.body) + ")");
-  }
-  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
-  auto choices = j.find("choices");
-  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
-  if (!choices->is_array()) throw LmError(context + "choices is not an array");
-  if (choices->empty()) throw LmError(context + "choices is empty");
-  const json& choice = (*choices)[0];
-  if (!choice.is_object()) throw LmError(context + "choices[0] is not an object");
-  auto message = choice.find("message");
-  if (message == choice.end() || !message->is_object()) {
-    throw LmError(context + "choices[0].message missing");
-  }
-  auto content = message->find("content");
-  if (content == message->end() || content->is_null()) {
-    std::string why;
-    if (auto r = message->find("refusal"); r != message->end() && r->is_string()) {
-      why = " (refusal: " + r->get<std::string>() + ")";
-    }
-    throw LmError(context + "choices[0].message.content missing" + why);
-  }
-  if (!content->is_string()) throw LmError(context + "choices[0].message.content is not a string");
-  std::string text = content->get<std::string>();
-
-  if (request.json_object && request.validate_json &&
-      json::parse(text, nullptr, /*allow_exceptions=*/false).is_discarded()) {
-    std::string finish;
-    if (auto f = choice.find("finish_reason"); f != choice.end() && f->is_string()) {
-      finish = ", finish_reason " + f->get<std::string>();
-    }
-    throw LmError(context + "choices[0].message.content is not valid JSON although a JSON object was "
-                  "requested (" + std::to_string(text.size()) + " chars" + finish + ")");
-  }
-  return text;
+  return parse_chat_reply(reply.body, request, "reply from " + endpoint_ + ": ");
 }
 
 }  // namespace clips::lm

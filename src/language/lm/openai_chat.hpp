@@ -64,6 +64,12 @@ class OpenAiChatClient {
   HttpClient http_;
 };
 
+// The assistant message text of the first choice in a /v1/chat/completions
+// reply `body`; with request.json_object and validate_json it must parse as
+// JSON. Throws LmError, prefixed by `context`, on anything else.
+std::string parse_chat_reply(const std::string& body, const ChatRequest& request,
+                             const std::string& context);
+
 // "data:image/png;base64,<...>"
 std::string png_data_url(const std::vector<std::uint8_t>& png);
 

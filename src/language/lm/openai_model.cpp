@@ -132,6 +132,58 @@ double sum_continuation_logprobs(const json& logprobs, const std::string& prompt
   return sum;
 }
 
+std::vector<double> parse_completions_reply(const std::string& body,
+                                            const std::vector<const ScoreRequest*>& chunk,
+                                            double temperature, const std::string& context) {
+  json j = json::parse(body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) {
+    throw LmError(context + "body is not valid JSON (" + std::to_string(body.size()) +
+                  " bytes: " + server_error_text(body) + ")");
+  }
+  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
+  auto choices = j.find("choices");
+  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
+  if (!choices->is_array()) throw LmError(context + "choices is not an array");
+  if (choices->size() != chunk.size()) {
+    throw LmError(context + "choices has " + std::to_string(choices->size()) + " entries, expected " +
+                  std::to_string(chunk.size()) + " (one per prompt)");
+  }
+
+  std::vector<double> scores(chunk.size());
+  std::vector<bool> filled(chunk.size(), false);
+  for (std::size_t pos = 0; pos < choices->size(); ++pos) {
+    const json& choice = (*choices)[pos];
+    const std::string where = "choices[" + std::to_string(pos) + "]";
+    if (!choice.is_object()) throw LmError(context + where + " is not an object");
+    // Servers may answer a batch out of order; `index` says which prompt it is.
+    std::size_t index = pos;
+    if (auto idx = choice.find("index"); idx != choice.end() && !idx->is_null()) {
+      if (!idx->is_number_integer() && !idx->is_number_unsigned()) {
+        throw LmError(context + where + ".index is not an integer");
+      }
+      const auto v = idx->get<long long>();
+      if (v < 0 || static_cast<std::size_t>(v) >= chunk.size()) {
+        throw LmError(context + where + ".index " + std::to_string(v) + " out of range");
+      }
+      index = static_cast<std::size_t>(v);
+    }
+    if (filled[index]) {
+      throw LmError(context + where + ".index " + std::to_string(index) + " repeats an earlier choice");
+    }
+    filled[index] = true;
+    auto lp = choice.find("logprobs");
+    if (lp == choice.end() || lp->is_null()) throw LmError(context + where + ".logprobs missing");
+    try {
+      const double total = sum_continuation_logprobs(*lp, chunk[index]->prompt,
+                                                     chunk[index]->continuation, where + ".logprobs");
+      scores[index] = total / temperature;
+    } catch (const LmError& e) {
+      throw LmError(context + e.what());
+    }
+  }
+  return scores;
+}
+
 }  // namespace detail
 
 namespace {
@@ -216,55 +268,8 @@ std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const 
     throw LmError("POST " + endpoint_ + ": HTTP " + std::to_string(reply.status) + ": " + why);
   }
 
-  const std::string context = "reply from " + endpoint_ + ": ";
-  json j = json::parse(reply.body, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) {
-    throw LmError(context + "body is not valid JSON (" + std::to_string(reply.body.size()) +
-                  " bytes: " + server_error_text(reply.body) + ")");
-  }
-  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
-  auto choices = j.find("choices");
-  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
-  if (!choices->is_array()) throw LmError(context + "choices is not an array");
-  if (choices->size() != chunk.size()) {
-    throw LmError(context + "choices has " + std::to_string(choices->size()) + " entries, expected " +
-                  std::to_string(chunk.size()) + " (one per prompt)");
-  }
-
-  std::vector<double> scores(chunk.size());
-  std::vector<bool> filled(chunk.size(), false);
-  for (std::size_t pos = 0; pos < choices->size(); ++pos) {
-    const json& choice = (*choices)[pos];
-    const std::string where = "choices[" + std::to_string(pos) + "]";
-    if (!choice.is_object()) throw LmError(context + where + " is not an object");
-    // Servers may answer a batch out of order; `index` says which prompt it is.
-    std::size_t index = pos;
-    if (auto idx = choice.find("index"); idx != choice.end() && !idx->is_null()) {
-      if (!idx->is_number_integer() && !idx->is_number_unsigned()) {
-        throw LmError(context + where + ".index is not an integer");
-      }
-      const auto v = idx->get<long long>();
-      if (v < 0 || static_cast<std::size_t>(v) >= chunk.size()) {
-        throw LmError(context + where + ".index " + std::to_string(v) + " out of range");
-      }
-      index = static_cast<std::size_t>(v);
-    }
-    if (filled[index]) {
-      throw LmError(context + where + ".index " + std::to_string(index) + " repeats an earlier choice");
-    }
-    filled[index] = true;
-    auto lp = choice.find("logprobs");
-    if (lp == choice.end() || lp->is_null()) throw LmError(context + where + ".logprobs missing");
-    try {
-      const double total = detail::sum_continuation_logprobs(*lp, chunk[index]->prompt,
-                                                             chunk[index]->continuation,
-                                                             where + ".logprobs");
-      scores[index] = total / options_.temperature;
-    } catch (const LmError& e) {
-      throw LmError(context + e.what());
-    }
-  }
-  return scores;
+  return detail::parse_completions_reply(reply.body, chunk, options_.temperature,
+                                         "reply from " + endpoint_ + ": ");
 }
 
 }  // namespace clips::lm

@@ -73,5 +73,13 @@ std::size_t utf8_length(const std::string& text);
 double sum_continuation_logprobs(const nlohmann::json& logprobs, const std::string& prompt,
                                  const std::string& continuation, const std::string& where);
 
+// The scores in a /v1/completions reply `body` to the batch `chunk`: one per
+// request, in request order (choices may come out of order, by `index`), each
+// divided by `temperature`. Throws LmError, prefixed by `context`, on a reply
+// that is not JSON, misses a field, or does not cover every request once.
+std::vector<double> parse_completions_reply(const std::string& body,
+                                            const std::vector<const ScoreRequest*>& chunk,
+                                            double temperature, const std::string& context);
+
 }  // namespace detail
 }  // namespace clips::lm

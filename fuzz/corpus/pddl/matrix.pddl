@@ -1,0 +1,11 @@
+(define (domain grid)
+  (:requirements :fluents :typing)
+  (:types agent)
+  (:functions (walls) - bit-matrix (x ?a - agent) (y ?a - agent) - integer)
+  (:action right :parameters (?a - agent)
+    :precondition (and (< (x ?a) (width (walls))) (= (get-index walls (y ?a) (+ (x ?a) 1)) false))
+    :effect (increase (x ?a) 1)))
+(define (problem g) (:domain grid) (:objects me - agent)
+  (:init (= (walls) (new-bit-matrix false 2 3)) (= (walls) (set-index walls true 1 3))
+         (= (x me) 1) (= (y me) 1))
+  (:goal (= (x me) 2)))

@@ -1,0 +1,9 @@
+(define (domain counter)
+  (:requirements :strips :numeric-fluents :action-costs)
+  (:functions (count) - number (total-cost) - number)
+  (:action inc :parameters () :precondition (< (count) 3)
+    :effect (and (increase (count) 1) (increase (total-cost) 2)))
+  (:action dec :parameters () :precondition (> (count) 0)
+    :effect (and (decrease (count) 1) (increase (total-cost) 1))))
+(define (problem c) (:domain counter) (:init (= (count) 0) (= (total-cost) 0))
+  (:goal (= (count) 2)) (:metric minimize (total-cost)))

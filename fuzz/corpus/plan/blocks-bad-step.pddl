@@ -1,0 +1,2 @@
+(pick a table)
+(place a b)

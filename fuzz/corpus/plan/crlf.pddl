@@ -1,0 +1,3 @@
+(pick c table)
+(place c b)
+; done

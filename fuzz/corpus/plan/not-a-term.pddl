@@ -1,0 +1,3 @@
+pick b a
+((pick b a))
+(pick

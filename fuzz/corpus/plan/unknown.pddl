@@ -1,0 +1,3 @@
+(fly a)
+(pick a b c)
+(pick zz table)

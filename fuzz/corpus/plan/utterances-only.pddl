@@ -1,0 +1,3 @@
+; first thing said
+   ;   second, indented   
+;

@@ -1,0 +1,6 @@
+(define (problem blocks-p1) (:domain blocks-typed)
+  (:objects a b c - block)
+  (:init (on a table) (on b a) (on c table) (clear b) (clear c) (clear table)
+         (handempty) (heavy c) (= (moves) 0) (= (total-cost) 0))
+  (:goal (and (on a b) (on b c)))
+  (:metric minimize (total-cost)))
