@@ -14,7 +14,7 @@ FUZZ_JOBS ?= 2
 # clang-14 is installed; FUZZ_SMOKE=0 leaves them out.
 FUZZ_SMOKE ?= 1
 
-.PHONY: all deps configure build test run bench clean fuzz-build fuzz
+.PHONY: all deps configure build test run bench clean fuzz-build fuzz test-asan test-tsan
 
 all: build
 
@@ -44,6 +44,26 @@ fuzz-build: deps
 
 fuzz: fuzz-build
 	@bash fuzz/run.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
+# Sanitizer builds, each in its own folder (the Release build is untouched):
+# ASan + UBSan (any UB aborts the test), and TSan. Both at -O1 -g, built at
+# low priority. Left out: tests labelled `slow` and the whole-dataset cases
+# below, which take minutes in Release and would take an hour sanitized; the
+# normal `make test` runs them. SAN_CTEST_ARGS= (empty) runs everything.
+SAN_SLOW_TESTS ?= StripsExport\.SameOptimalCostOnTheDataset|DkgDataset\.AllPlansThreeModalities|Paraphrases\.|VirtualHomeRewordings\.|ListenerQuality\.
+SAN_CTEST_ARGS ?= -LE slow -E '$(SAN_SLOW_TESTS)'
+export ASAN_OPTIONS ?= detect_leaks=1:check_initialization_order=1:strict_init_order=1
+export UBSAN_OPTIONS ?= print_stacktrace=1:halt_on_error=1
+export TSAN_OPTIONS ?= second_deadlock_stack=1:suppressions=$(CURDIR)/scripts/tsan.supp
+
+test-asan: deps
+	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCLIPS_SANITIZER=address >/dev/null
+	@nice -n 10 cmake --build build-asan -j $(JOBS)
+	@cd build-asan && ctest --output-on-failure -j $(JOBS) $(SAN_CTEST_ARGS)
+
+test-tsan: deps
+	@cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=Release -DCLIPS_SANITIZER=thread >/dev/null
+	@nice -n 10 cmake --build build-tsan -j $(JOBS)
+	@cd build-tsan && ctest --output-on-failure -j $(JOBS) $(SAN_CTEST_ARGS)
 
 clean:
-	rm -rf $(BUILD_DIR)
+	rm -rf $(BUILD_DIR) build-asan build-tsan
