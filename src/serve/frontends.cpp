@@ -113,7 +113,7 @@ int run_stdio(Service& service, std::istream& in, std::ostream& out) {
     } catch (const std::exception& e) {
       reply = {{"status", 400}, {"body", {{"error", std::string("malformed request line: ") + e.what()}, {"status", 400}}}};
     }
-    out << reply.dump() << "\n" << std::flush;
+    out << reply.dump(-1, ' ', false, json::error_handler_t::replace) << "\n" << std::flush;
   }
   return 0;
 }

@@ -21,7 +21,11 @@ struct HttpError : std::runtime_error {
   HttpError(int s, const std::string& what) : std::runtime_error(what), status(s) {}
 };
 
-Reply json_reply(int status, const json& j) { return {status, j.dump(), "application/json"}; }
+// Invalid UTF-8 can only come from a request echoed in an error message: it
+// is replaced, never allowed to make the reply itself fail.
+Reply json_reply(int status, const json& j) {
+  return {status, j.dump(-1, ' ', false, json::error_handler_t::replace), "application/json"};
+}
 Reply error_reply(int status, const std::string& message) {
   return json_reply(status, json{{"error", message}, {"status", status}});
 }

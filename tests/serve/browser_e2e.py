@@ -157,6 +157,11 @@ def main():
             png = browser.call("Page.captureScreenshot", format="png")
             with open(shot, "wb") as f:
                 f.write(base64.b64decode(png["data"]))
+            # A smaller copy of the page area for the README (docs/img/serve.png).
+            small = browser.call("Page.captureScreenshot", format="png",
+                                 clip={"x": 0, "y": 0, "width": 1090, "height": 800, "scale": 0.6})
+            with open(shot[:-4] + "-small.png", "wb") as f:
+                f.write(base64.b64decode(small["data"]))
             print("screenshot: " + shot)
 
         while rest and steps < 40 and not browser.js("window.clips.state.reached_goal"):

@@ -9,7 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "language/listener.hpp"
+#include "serve/frontends.hpp"
 #include "serve/service.hpp"
+
+#include <sstream>
 
 namespace clips::serve {
 namespace {
@@ -256,7 +259,11 @@ TEST_F(Fixture, PlayHearAssistUndoResetAndSwitchMethod) {
 
   r = s->handle("POST", url + "/undo", "");
   ASSERT_EQ(r.status, 200);
+  EXPECT_EQ(body(r)["t"], 4);  // the (wait human) is taken back, the instruction before it stays
+  EXPECT_FALSE(body(r)["reading"].is_null());
+  r = s->handle("POST", url + "/undo", "");
   EXPECT_EQ(body(r)["t"], 2);  // back before the second (left human), its reply and the instruction
+  EXPECT_TRUE(body(r)["reading"].is_null());
   r = s->handle("POST", url + "/reset", "{}");
   ASSERT_EQ(r.status, 200);
   EXPECT_EQ(body(r)["t"], 0);
@@ -289,6 +296,28 @@ TEST_F(Fixture, SessionsRunInParallelAndIndependently) {
   t1.join();
   t2.join();
   EXPECT_EQ(body(s->handle("GET", "/api/sessions/" + a, ""))["t"], 0);
+}
+
+TEST_F(Fixture, JsonLinesModeUsesTheSameHandlers) {
+  auto s = make();
+  std::istringstream in(
+      "{\"method\":\"POST\",\"path\":\"/api/sessions\",\"body\":{\"dataset\":\"doors-keys-gems\",\"problem\":\"e1\"}}\n"
+      "\n"
+      "not json\n"
+      "{\"method\":\"GET\",\"path\":\"/api/health\",\"verbose\":true}\n"
+      "{\"method\":\"GET\",\"path\":\"/api/sessions/none\"}\n");
+  std::ostringstream out;
+  EXPECT_EQ(run_stdio(*s, in, out), 0);
+  std::istringstream lines(out.str());
+  std::vector<json> replies;
+  for (std::string line; std::getline(lines, line);) replies.push_back(json::parse(line));
+  ASSERT_EQ(replies.size(), 4u);
+  EXPECT_EQ(replies[0]["status"], 201);
+  EXPECT_EQ(replies[0]["body"]["turn"], "human");
+  EXPECT_EQ(replies[1]["status"], 400);
+  EXPECT_EQ(replies[2]["status"], 400);
+  EXPECT_NE(replies[2]["body"]["error"].get<std::string>().find("unknown field 'verbose'"), std::string::npos);
+  EXPECT_EQ(replies[3]["status"], 404);
 }
 
 }  // namespace
