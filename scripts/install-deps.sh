@@ -9,7 +9,7 @@ PKGS=(
   libcurl4-openssl-dev libcpp-httplib-dev
   wordnet-dev wordnet-base
   libcairo2-dev libpng-dev libgif-dev
-  chromium
+  chromium python3-websocket
   clang-14 libclang-rt-14-dev libfuzzer-14-dev
 )
 missing=()

@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
   clips::app::register_lm_score(app);
   clips::app::register_export_strips(app);
   clips::app::register_render(app);
+  clips::app::register_serve(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -44,6 +44,67 @@ double human_cost(const model::Specification& spec, const std::vector<ActionId>&
   return c;
 }
 
+// The Q_MDP choice at timestep t (spec 9.3): the common best action when
+// every hypothesis above the threshold agrees, else the argmax of the
+// weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
+// floored at the cost of waiting to the horizon.
+QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const State& s, int t) {
+  const pddl::Task& task = *setup.task;
+  const auto wait = task.find_action("(wait " + setup.assistant + ")");
+  if (!wait) throw InputError("assistance needs a (wait " + setup.assistant + ") action");
+  const ActionId assistant_wait = *wait;
+  QmdpDecision out;
+  std::vector<const Hypothesis*> live;
+  for (auto& h : belief)
+    if (h.weight >= setup.weight_threshold) live.push_back(&h);
+  std::optional<ActionId> common;
+  bool all_same = true;
+  std::vector<std::vector<search::QValue>> qvals;  // per live hypothesis, computed once
+  for (const Hypothesis* h : live) {
+    if (setup.refine) h->policy->refine(s, setup.refine_options);
+    qvals.push_back(h->policy->q_values(s));
+    auto b = h->policy->best_action(s, qvals.back());
+    if (!b || (common && *common != *b)) all_same = false;
+    if (b && !common) common = b;
+  }
+  auto acts = task.applicable_actions(s);
+  out.candidates = acts;
+  std::vector<double> qa(acts.size(), 0.0);
+  for (size_t k = 0; k < live.size(); ++k) {
+    const Hypothesis* h = live[k];
+    const auto& qs = qvals[k];
+    const auto& spec = h->policy->spec();
+    double wait_cost = spec.cost(assistant_wait);
+    for (size_t i = 0; i < acts.size(); ++i) {
+      const double floor = -((setup.horizon - t) * wait_cost + spec.cost(acts[i]));
+      const double q = setup.qa_floor == QaFloor::Horizon ? std::max(qs[i].q, floor)
+                                                           : (qs[i].q == -kInf ? floor : qs[i].q);
+      qa[i] += h->weight * q;
+    }
+  }
+  out.expected_value = qa;
+  if (all_same && common) {
+    out.action = *common;
+    out.unanimous = true;
+    return out;
+  }
+  size_t best = 0;
+  for (size_t i = 1; i < acts.size(); ++i)
+    if (qa[i] > qa[best]) best = i;
+  if (debug_qmdp()) {
+    // CLIPS_DEBUG_QMDP=1: each contested decision, per live hypothesis.
+    std::fprintf(stderr, "qmdp t=%d choose %s\n", t, task.action_name(acts[best]).c_str());
+    for (size_t k = 0; k < live.size(); ++k) {
+      std::fprintf(stderr, "  w=%.3f %s:", live[k]->weight, live[k]->policy->spec().goal_text().c_str());
+      for (const auto& q : qvals[k]) std::fprintf(stderr, " %s=%.2f", task.action_name(q.action).c_str(), q.q);
+      std::fprintf(stderr, "\n");
+    }
+    for (size_t i = 0; i < acts.size(); ++i) std::fprintf(stderr, "  QA %s=%.3f\n", task.action_name(acts[i]).c_str(), qa[i]);
+  }
+  out.action = acts.empty() ? assistant_wait : acts[best];
+  return out;
+}
+
 namespace {
 
 const double kLog10 = std::log(10.0);
@@ -95,53 +156,8 @@ struct Episode {
     return a ? *a : wait_of_active(s_h);
   }
 
-  // The Q_MDP choice at timestep t (spec 9.3): the common best action when
-  // every hypothesis above the threshold agrees, else the argmax of the
-  // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
-  // floored at the cost of waiting to the horizon.
   ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t) const {
-    std::vector<const Hypothesis*> live;
-    for (auto& h : belief)
-      if (h.weight >= setup.weight_threshold) live.push_back(&h);
-    std::optional<ActionId> common;
-    bool all_same = true;
-    std::vector<std::vector<search::QValue>> qvals;  // per live hypothesis, computed once
-    for (const Hypothesis* h : live) {
-      if (setup.refine) h->policy->refine(s, setup.refine_options);
-      qvals.push_back(h->policy->q_values(s));
-      auto b = h->policy->best_action(s, qvals.back());
-      if (!b || (common && *common != *b)) all_same = false;
-      if (b && !common) common = b;
-    }
-    if (all_same && common) return *common;
-    auto acts = task.applicable_actions(s);
-    std::vector<double> qa(acts.size(), 0.0);
-    for (size_t k = 0; k < live.size(); ++k) {
-      const Hypothesis* h = live[k];
-      const auto& qs = qvals[k];
-      const auto& spec = h->policy->spec();
-      double wait_cost = spec.cost(assistant_wait);
-      for (size_t i = 0; i < acts.size(); ++i) {
-        const double floor = -((setup.horizon - t) * wait_cost + spec.cost(acts[i]));
-        const double q = setup.qa_floor == QaFloor::Horizon ? std::max(qs[i].q, floor)
-                                                             : (qs[i].q == -kInf ? floor : qs[i].q);
-        qa[i] += h->weight * q;
-      }
-    }
-    size_t best = 0;
-    for (size_t i = 1; i < acts.size(); ++i)
-      if (qa[i] > qa[best]) best = i;
-    if (debug_qmdp()) {
-      // CLIPS_DEBUG_QMDP=1: each contested decision, per live hypothesis.
-      std::fprintf(stderr, "qmdp t=%d choose %s\n", t, task.action_name(acts[best]).c_str());
-      for (size_t k = 0; k < live.size(); ++k) {
-        std::fprintf(stderr, "  w=%.3f %s:", live[k]->weight, live[k]->policy->spec().goal_text().c_str());
-        for (const auto& q : qvals[k]) std::fprintf(stderr, " %s=%.2f", task.action_name(q.action).c_str(), q.q);
-        std::fprintf(stderr, "\n");
-      }
-      for (size_t i = 0; i < acts.size(); ++i) std::fprintf(stderr, "  QA %s=%.3f\n", task.action_name(acts[i]).c_str(), qa[i]);
-    }
-    return acts[best];
+    return qmdp_decision(setup, belief, s, t).action;
   }
 
   // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true

@@ -92,6 +92,19 @@ class OnlineBelief {
   virtual std::vector<Hypothesis>& hypotheses() = 0;
 };
 
+// One Q_MDP decision of the assistant in state `s` at timestep t (spec 9.3),
+// with the weighted value of every applicable action, so callers can show why
+// the action was chosen. Hypotheses' policies are refined at `s` (when
+// setup.refine) within setup.refine_options.
+struct QmdpDecision {
+  pddl::ActionId action = -1;
+  bool unanimous = false;  // every hypothesis above the threshold agreed
+  std::vector<pddl::ActionId> candidates;  // applicable actions in `s`
+  std::vector<double> expected_value;      // Σ_h w_h Q_h(s, a), floored as setup.qa_floor says
+};
+QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s,
+                           int t);
+
 // The simulated principal's plan-following rule needs the true hypothesis.
 AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
 AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,

@@ -1,0 +1,84 @@
+// `clips serve`: the assistant behind HTTP/JSON (or JSON lines on stdio) and a
+// web page to play the human (docs/api.md).
+#include <pthread.h>
+#include <signal.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "app/cli.hpp"
+#include "serve/frontends.hpp"
+#include "serve/service.hpp"
+#include "util/error.hpp"
+
+namespace clips::app {
+
+void register_serve(CLI::App& app) {
+  auto* cmd = app.add_subcommand("serve", "Serve sessions over HTTP/JSON and a web page to play with the assistant");
+  struct Opts {
+    std::string host = "127.0.0.1";
+    int port = 8080;
+    std::vector<std::string> datasets;
+    bool stdio = false;
+    int threads = 8;
+    LmFlags lm;
+    serve::ServiceLimits limits;
+  };
+  auto o = std::make_shared<Opts>();
+  cmd->add_option("--host", o->host, "Address to listen on (default 127.0.0.1, loopback only)");
+  cmd->add_option("--port", o->port, "TCP port (default 8080; 0 picks a free one)")->check(CLI::Range(0, 65535));
+  cmd->add_option("--dataset", o->datasets,
+                  "Dataset folder to serve (repeatable); requests name a dataset by its folder's base name and "
+                  "never give paths (default: $CLIPS_DATASET/doors-keys-gems and /virtual-home, else "
+                  "../shared/dataset/...)");
+  cmd->add_flag("--stdio", o->stdio, "Read one JSON request per line on stdin, answer one per line on stdout");
+  cmd->add_option("--threads", o->threads, "Requests handled at once (default 8)")->check(PositiveInteger);
+  cmd->add_option("--max-sessions", o->limits.max_sessions, "Live sessions at most (default 64; more: HTTP 503)")
+      ->check(PositiveInteger);
+  cmd->add_option("--max-body", o->limits.max_body_bytes, "Request body size limit in bytes (default 65536)")
+      ->check(PositiveInteger);
+  cmd->add_option("--idle-timeout", o->limits.idle_seconds, "Seconds after which an unused session is deleted (default 1800)")
+      ->check(PositiveSeconds);
+  cmd->add_option("--max-nodes", o->limits.play.inference_nodes,
+                  "Expansion budget per A* search when updating a belief (default 2^18)")
+      ->check(PositiveInteger);
+  cmd->add_option("--assist-nodes", o->limits.play.assist_nodes,
+                  "Expansion budget per A* search of an assistance decision (default 2^16)")
+      ->check(PositiveInteger);
+  cmd->add_option("--max-seconds", o->limits.play.search_seconds, "Time budget per A* search (default 5)")
+      ->check(PositiveSeconds);
+  cmd->add_option("--max-steps", o->limits.play.max_steps, "Actions per session at most (default 300)")
+      ->check(PositiveInteger);
+  add_lm_options(cmd, o->lm);
+  cmd->callback([o] {
+    // Block the stop signals before any thread exists, so that only the
+    // server's signal thread ever sees them.
+    sigset_t stop;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    if (!o->stdio) pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+    std::vector<std::string> dirs = o->datasets;
+    if (dirs.empty()) {
+      const char* env = std::getenv("CLIPS_DATASET");
+      const std::string root = env && *env ? env : "../shared/dataset";
+      for (const char* d : {"doors-keys-gems", "virtual-home"})
+        if (std::filesystem::exists(root + "/" + d + "/domain.pddl")) dirs.push_back(root + "/" + d);
+      if (dirs.empty()) throw InputError("no dataset found under " + root + "; give --dataset DIR");
+    }
+    auto lm = make_lm(o->lm);
+    serve::Service service(dirs, o->limits, lm);
+    if (o->stdio) {
+      g_exit_code = serve::run_stdio(service, std::cin, std::cout);
+      return;
+    }
+    serve::HttpOptions ho;
+    ho.host = o->host;
+    ho.port = o->port;
+    ho.threads = o->threads;
+    g_exit_code = serve::run_http(service, ho, std::cerr);
+  });
+}
+
+}  // namespace clips::app

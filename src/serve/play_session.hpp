@@ -1,0 +1,127 @@
+#pragma once
+// One interactive game on a dataset problem: a person plays the human, the
+// assistant infers their goal from what they do and say and acts by the
+// chosen method. A thin adapter over the internals the CLI uses
+// (inference::Belief, assist::qmdp_decision, the literal listener); every
+// reply is plain JSON for the server.
+//
+// Not thread-safe: the server serialises each session's requests.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "data/dataset.hpp"
+#include "domains/dkg_world.hpp"
+#include "domains/vh_world.hpp"
+#include "inference/belief.hpp"
+#include "language/listener.hpp"
+#include "language/lm/language_model.hpp"
+
+namespace clips::serve {
+
+// An action that does not apply in the current state (HTTP 409); the session
+// is left as it was.
+class ConflictError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Compute bounds of one session (each request's search work is bounded by these).
+struct PlayLimits {
+  size_t inference_nodes = size_t{1} << 18;  // per A* search while refining a belief
+  size_t assist_nodes = size_t{1} << 16;     // per A* search of an assistance decision
+  double search_seconds = 5;                 // per A* search
+  int max_steps = 300;                       // actions per session (undo frees them)
+  size_t max_utterance_bytes = 500;
+};
+
+// The methods a player may switch between (names as in `clips assist`).
+const std::vector<std::string>& play_methods();
+
+class PlaySession {
+ public:
+  // `plan_id` picks the reference plan (cost profiles, true goal, the observed
+  // moves offered as hints); empty: the problem's first plan. Throws
+  // InputError naming the field for an unknown problem, plan or method.
+  PlaySession(std::shared_ptr<const data::Dataset> dataset, std::string dataset_name, const std::string& problem,
+              const std::string& plan_id, const std::string& method, std::shared_ptr<lm::LanguageModel> lm,
+              PlayLimits limits);
+
+  // Any agent's action as PDDL text, e.g. "(left human)". The assistant's own
+  // actions are interventions (no evidence). InputError: not an action of the
+  // problem; ConflictError: not applicable now.
+  void act(const std::string& action);
+  // An instruction heard in the current state.
+  void hear(const std::string& utterance);
+  // The assistant's next action by the session's method, with the expected
+  // value of every candidate; `apply` also takes it. ConflictError when it is
+  // not the assistant's turn.
+  nlohmann::json assist(bool apply);
+  // Takes back the last human action with everything after it (the
+  // assistant's reply, instructions); ConflictError when there is none.
+  void undo();
+  void reset();
+  void set_method(const std::string& method);
+
+  nlohmann::json state() const;
+  nlohmann::json posterior() const;
+  nlohmann::json trace() const;
+  const std::string& method() const { return method_; }
+  int steps() const { return belief_->t(); }
+
+ private:
+  struct Event {
+    bool utterance = false;
+    std::string text;  // action name or utterance
+  };
+  struct HistoryPoint {
+    std::string label;  // what moved the belief ("start", an action, a quoted utterance)
+    std::array<std::vector<double>, 3> goals;  // per modality
+  };
+
+  void rebuild(const std::vector<Event>& events);
+  void apply_action(pddl::ActionId a);
+  void apply_utterance(const std::string& text);
+  void push_history(const std::string& label);
+  inference::Modality modality() const;
+  std::string active_agent() const;
+  std::optional<std::string> reached_goal() const;
+  nlohmann::json scene() const;
+  nlohmann::json reading() const;
+  nlohmann::json posterior_json(inference::Modality m) const;
+  const language::ListenerResult& literal_reading() const;
+
+  std::shared_ptr<const data::Dataset> ds_;
+  std::string dataset_name_, problem_;
+  const data::PlanRecord* plan_ = nullptr;
+  std::shared_ptr<const pddl::Task> task_;
+  data::DomainKind kind_;
+  std::vector<data::GoalSpec> goals_;
+  std::vector<model::CostProfile> profiles_;
+  int true_goal_ = -1;
+  std::string principal_, assistant_;
+  int horizon_ = 100;
+  std::string method_;
+  std::shared_ptr<lm::LanguageModel> lm_;
+  PlayLimits limits_;
+  inference::InferenceOptions options_;
+  std::optional<domains::DkgWorld> dkg_;
+  std::optional<domains::VhWorld> vh_;
+
+  std::unique_ptr<inference::Belief> belief_;
+  inference::StepRecord last_;
+  std::vector<Event> events_;
+  std::vector<HistoryPoint> history_;
+  std::optional<nlohmann::json> last_decision_;
+  // The latest instruction and the state it was heard in (the literal listener reads it there).
+  std::optional<std::string> utterance_;
+  std::optional<pddl::State> utterance_state_;
+  std::optional<inference::UtteranceRecord> utterance_record_;
+  mutable std::optional<language::ListenerResult> literal_;  // computed on demand
+};
+
+}  // namespace clips::serve

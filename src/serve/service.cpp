@@ -1,0 +1,299 @@
+#include "serve/service.hpp"
+
+#include <malloc.h>
+
+#include <filesystem>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "util/error.hpp"
+
+namespace clips::serve {
+
+using nlohmann::json;
+
+namespace {
+
+// A request error with its HTTP status.
+struct HttpError : std::runtime_error {
+  int status;
+  HttpError(int s, const std::string& what) : std::runtime_error(what), status(s) {}
+};
+
+// Invalid UTF-8 can only come from a request echoed in an error message: it
+// is replaced, never allowed to make the reply itself fail.
+Reply json_reply(int status, const json& j) {
+  return {status, j.dump(-1, ' ', false, json::error_handler_t::replace), "application/json"};
+}
+Reply error_reply(int status, const std::string& message) {
+  return json_reply(status, json{{"error", message}, {"status", status}});
+}
+
+// The body as a JSON object whose keys are all in `allowed`; an empty body is {}.
+json parse_body(const std::string& body, std::initializer_list<const char*> allowed) {
+  json j;
+  if (body.find_first_not_of(" \t\r\n") == std::string::npos) {
+    j = json::object();
+  } else {
+    try {
+      j = json::parse(body);
+    } catch (const json::parse_error& e) {
+      throw HttpError(400, std::string("malformed JSON body: ") + e.what());
+    }
+  }
+  if (!j.is_object()) throw HttpError(400, "body: expected a JSON object");
+  std::set<std::string> ok(allowed.begin(), allowed.end());
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (!ok.count(it.key())) {
+      std::string names;
+      for (const auto& n : ok) names += (names.empty() ? "" : ", ") + n;
+      throw HttpError(400, "unknown field '" + it.key() + "' (allowed: " + (names.empty() ? "none" : names) + ")");
+    }
+  return j;
+}
+
+std::string string_field(const json& j, const char* name, bool required, const std::string& fallback = "") {
+  if (!j.contains(name)) {
+    if (required) throw HttpError(400, std::string("field '") + name + "' is required");
+    return fallback;
+  }
+  if (!j[name].is_string()) throw HttpError(400, std::string("field '") + name + "': expected a string");
+  return j[name].get<std::string>();
+}
+
+bool bool_field(const json& j, const char* name, bool fallback) {
+  if (!j.contains(name)) return fallback;
+  if (!j[name].is_boolean()) throw HttpError(400, std::string("field '") + name + "': expected true or false");
+  return j[name].get<bool>();
+}
+
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> parts;
+  const std::string p = path.substr(0, path.find('?'));
+  size_t i = 0;
+  while (i < p.size()) {
+    size_t j = p.find('/', i);
+    if (j == std::string::npos) j = p.size();
+    if (j > i) parts.push_back(p.substr(i, j - i));
+    i = j + 1;
+  }
+  return parts;
+}
+
+}  // namespace
+
+Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits limits,
+                 std::shared_ptr<lm::LanguageModel> lm, std::function<Clock::time_point()> now)
+    : limits_(limits), lm_(std::move(lm)), now_(std::move(now)), rng_(std::random_device{}()) {
+  for (const auto& dir : dataset_dirs) {
+    std::string name = std::filesystem::path(dir).lexically_normal().filename().string();
+    if (name.empty()) name = std::filesystem::path(dir).lexically_normal().parent_path().filename().string();
+    if (datasets_.count(name)) throw InputError("--dataset " + dir + ": a dataset named '" + name + "' is already served");
+    datasets_[name] = std::make_shared<const data::Dataset>(data::Dataset::load(dir));
+  }
+}
+
+std::string Service::new_id() {
+  static const char* hex = "0123456789abcdef";
+  std::string id;
+  for (int w = 0; w < 2; ++w) {
+    uint64_t r = rng_();
+    for (int i = 0; i < 16; ++i, r >>= 4) id += hex[r & 15];
+  }
+  return id;
+}
+
+size_t Service::live_sessions() const {
+  std::lock_guard lock(mutex_);
+  return sessions_.size();
+}
+
+size_t Service::expire_locked(int64_t now) {
+  const auto idle = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits_.idle_seconds));
+  size_t n = 0;
+  for (auto it = sessions_.begin(); it != sessions_.end();) {
+    Entry& e = *it->second;
+    std::unique_lock busy(e.mutex, std::try_to_lock);  // a session in use is not idle
+    if (busy.owns_lock() && now - e.last_used.load() > idle.count()) {
+      busy.unlock();
+      it = sessions_.erase(it);
+      ++n;
+    } else {
+      ++it;
+    }
+  }
+  return n;
+}
+
+size_t Service::expire_idle() {
+  size_t n = 0;
+  {
+    std::lock_guard lock(mutex_);
+    n = expire_locked(now_().time_since_epoch().count());
+  }
+  if (n > 0) malloc_trim(0);
+  return n;
+}
+
+std::shared_ptr<Service::Entry> Service::find(const std::string& id) {
+  std::lock_guard lock(mutex_);
+  expire_locked(now_().time_since_epoch().count());
+  auto it = sessions_.find(id);
+  if (it == sessions_.end()) throw HttpError(404, "no session '" + id + "' (it may have expired or been deleted)");
+  return it->second;
+}
+
+Reply Service::datasets() const {
+  json out = json::array();
+  for (const auto& [name, ds] : datasets_) {
+    json problems = json::array();
+    std::map<std::string, std::vector<std::string>> plans;
+    std::vector<std::string> order;
+    for (const auto& p : ds->plans()) {
+      if (!plans.count(p.problem_id)) order.push_back(p.problem_id);
+      plans[p.problem_id].push_back(p.id);
+    }
+    for (const auto& pid : order) problems.push_back({{"id", pid}, {"plans", plans[pid]}});
+    out.push_back({{"name", name}, {"domain", data::to_string(ds->kind())}, {"problems", std::move(problems)}});
+  }
+  return json_reply(200, json{{"datasets", std::move(out)}, {"methods", play_methods()}});
+}
+
+Reply Service::create(const std::string& body) {
+  const json j = parse_body(body, {"dataset", "problem", "plan", "method"});
+  const std::string dataset = string_field(j, "dataset", true);
+  const std::string problem = string_field(j, "problem", true);
+  const std::string plan = string_field(j, "plan", false);
+  const std::string method = string_field(j, "method", false, "clips");
+  auto ds = datasets_.find(dataset);
+  if (ds == datasets_.end()) throw HttpError(400, "field 'dataset': no served dataset '" + dataset + "'");
+  {
+    std::lock_guard lock(mutex_);
+    expire_locked(now_().time_since_epoch().count());
+    if (sessions_.size() + pending_ >= limits_.max_sessions)
+      throw HttpError(503, "the server is full: " + std::to_string(limits_.max_sessions) +
+                               " live sessions; delete one or try later");
+    ++pending_;
+  }
+  auto entry = std::make_shared<Entry>();
+  try {
+    entry->session = std::make_unique<PlaySession>(ds->second, dataset, problem, plan, method, lm_, limits_.play);
+  } catch (...) {
+    std::lock_guard lock(mutex_);
+    --pending_;
+    throw;
+  }
+  entry->last_used = now_().time_since_epoch().count();
+  json state = entry->session->state();
+  std::string id;
+  {
+    std::lock_guard lock(mutex_);
+    --pending_;
+    do id = new_id();
+    while (sessions_.count(id));
+    sessions_[id] = entry;
+  }
+  state["id"] = id;
+  return json_reply(201, state);
+}
+
+Reply Service::on_session(const std::string& method, const std::string& id, const std::string& op,
+                          const std::string& body) {
+  if (method == "DELETE" && op.empty()) {
+    std::shared_ptr<Entry> gone;
+    {
+      std::lock_guard lock(mutex_);
+      auto it = sessions_.find(id);
+      if (it == sessions_.end()) throw HttpError(404, "no session '" + id + "'");
+      gone = std::move(it->second);
+      sessions_.erase(it);
+    }
+    {
+      std::lock_guard wait_for_requests(gone->mutex);  // a request in flight finishes first
+      gone->session.reset();
+    }
+    malloc_trim(0);  // hand the session's pages back, so RSS follows the live sessions
+    return json_reply(200, json{{"deleted", id}});
+  }
+  auto entry = find(id);
+  std::lock_guard busy(entry->mutex);
+  if (!entry->session) throw HttpError(404, "no session '" + id + "' (deleted)");
+  entry->last_used = now_().time_since_epoch().count();
+  PlaySession& s = *entry->session;
+  auto with_id = [&](json j) {
+    j["id"] = id;
+    return json_reply(200, j);
+  };
+  if (method == "GET") {
+    if (op.empty()) return with_id(s.state());
+    if (op == "posterior") return json_reply(200, s.posterior());
+    if (op == "trace") return json_reply(200, s.trace());
+  } else if (method == "POST") {
+    if (op == "act") {
+      const json j = parse_body(body, {"action"});
+      s.act(string_field(j, "action", true));
+      return with_id(s.state());
+    }
+    if (op == "hear") {
+      const json j = parse_body(body, {"utterance"});
+      s.hear(string_field(j, "utterance", true));
+      return with_id(s.state());
+    }
+    if (op == "assist") {
+      const json j = parse_body(body, {"apply"});
+      json d = s.assist(bool_field(j, "apply", false));
+      return json_reply(200, json{{"decision", std::move(d)}, {"state", [&] {
+                                                                  json st = s.state();
+                                                                  st["id"] = id;
+                                                                  return st;
+                                                                }()}});
+    }
+    if (op == "undo" || op == "reset") {
+      parse_body(body, {});
+      op == "undo" ? s.undo() : s.reset();
+      return with_id(s.state());
+    }
+    if (op == "method") {
+      const json j = parse_body(body, {"method"});
+      s.set_method(string_field(j, "method", true));
+      return with_id(s.state());
+    }
+  }
+  throw HttpError(404, "no route " + method + " /api/sessions/" + id + (op.empty() ? "" : "/" + op));
+}
+
+Reply Service::handle(const std::string& method, const std::string& path, const std::string& body) {
+  try {
+    if (body.size() > limits_.max_body_bytes)
+      throw HttpError(413, "request body of " + std::to_string(body.size()) + " bytes exceeds the limit of " +
+                               std::to_string(limits_.max_body_bytes));
+    const auto parts = split_path(path);
+    if (parts.empty() || parts[0] != "api") {
+      if (method != "GET") throw HttpError(405, method + " " + path + ": only GET serves the page");
+      const auto& assets = web_assets();
+      auto it = assets.find(parts.empty() ? "/index.html" : "/" + parts.back());
+      if (parts.size() > 1 || it == assets.end()) throw HttpError(404, "no page " + path);
+      return {200, std::string(it->second.body), it->second.content_type};
+    }
+    if (parts.size() == 2 && parts[1] == "health" && method == "GET") {
+      std::lock_guard lock(mutex_);
+      return json_reply(200, json{{"sessions", sessions_.size()}, {"max_sessions", limits_.max_sessions}});
+    }
+    if (parts.size() == 2 && parts[1] == "datasets" && method == "GET") return datasets();
+    if (parts.size() == 2 && parts[1] == "sessions" && method == "POST") return create(body);
+    if (parts.size() >= 3 && parts.size() <= 4 && parts[1] == "sessions")
+      return on_session(method, parts[2], parts.size() == 4 ? parts[3] : "", body);
+    throw HttpError(404, "no route " + method + " " + path);
+  } catch (const HttpError& e) {
+    return error_reply(e.status, e.what());
+  } catch (const ConflictError& e) {
+    return error_reply(409, e.what());
+  } catch (const InputError& e) {
+    return error_reply(400, e.what());
+  } catch (const std::exception& e) {
+    return error_reply(500, std::string("internal error: ") + e.what());
+  }
+}
+
+}  // namespace clips::serve

@@ -1,0 +1,85 @@
+#pragma once
+// The request handlers of `clips serve`, independent of any socket: a
+// function from (method, path, body) to (status, body). The HTTP and the
+// JSON-lines front ends only move bytes; tests and fuzzers call handle()
+// directly. docs/api.md documents every request and reply.
+//
+// Thread-safe: distinct sessions run in parallel, one session's requests are
+// serialised by its own mutex.
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "data/dataset.hpp"
+#include "language/lm/language_model.hpp"
+#include "serve/play_session.hpp"
+
+namespace clips::serve {
+
+struct ServiceLimits {
+  size_t max_body_bytes = 64 * 1024;
+  size_t max_sessions = 64;
+  double idle_seconds = 30 * 60;  // a session untouched this long is deleted
+  PlayLimits play;
+};
+
+struct Reply {
+  int status = 200;
+  std::string body;
+  std::string content_type = "application/json";
+};
+
+// A static file of the web page (embedded in the binary at build time).
+struct Asset {
+  const char* content_type;
+  std::string_view body;
+};
+const std::map<std::string, Asset>& web_assets();  // "/index.html", "/app.js", ...
+
+class Service {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  // Datasets are loaded now, from these folders only; requests name them by
+  // their folder's base name. Throws InputError for a bad or repeated folder.
+  Service(const std::vector<std::string>& dataset_dirs, ServiceLimits limits, std::shared_ptr<lm::LanguageModel> lm,
+          std::function<Clock::time_point()> now = Clock::now);
+
+  Reply handle(const std::string& method, const std::string& path, const std::string& body);
+
+  // Deletes sessions idle for longer than limits.idle_seconds (not those in
+  // use right now); returns how many went.
+  size_t expire_idle();
+  size_t live_sessions() const;
+  const ServiceLimits& limits() const { return limits_; }
+
+ private:
+  struct Entry {
+    std::mutex mutex;  // serialises this session's requests
+    std::unique_ptr<PlaySession> session;
+    std::atomic<int64_t> last_used{0};  // Clock ticks
+  };
+  std::shared_ptr<Entry> find(const std::string& id);
+  Reply create(const std::string& body);
+  Reply datasets() const;
+  Reply on_session(const std::string& method, const std::string& id, const std::string& op, const std::string& body);
+  std::string new_id();
+  size_t expire_locked(int64_t now);
+
+  ServiceLimits limits_;
+  std::shared_ptr<lm::LanguageModel> lm_;
+  std::function<Clock::time_point()> now_;
+  std::map<std::string, std::shared_ptr<const data::Dataset>> datasets_;
+  mutable std::mutex mutex_;  // guards sessions_, pending_, rng_
+  std::map<std::string, std::shared_ptr<Entry>> sessions_;
+  size_t pending_ = 0;  // sessions being created (they hold a slot)
+  std::mt19937_64 rng_;
+};
+
+}  // namespace clips::serve

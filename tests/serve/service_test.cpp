@@ -1,0 +1,324 @@
+// The request handlers of `clips serve`, called in process (no socket): every
+// documented error, the limits, and a short game.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "language/listener.hpp"
+#include "serve/frontends.hpp"
+#include "serve/service.hpp"
+
+#include <sstream>
+
+namespace clips::serve {
+namespace {
+
+using nlohmann::json;
+
+const std::string kExamples = std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems";
+
+std::shared_ptr<lm::LanguageModel> shared_lm() {
+  static auto lm = language::make_language_model("embedded");
+  return lm;
+}
+
+// A clock the tests move by hand (idle expiry).
+struct FakeClock {
+  std::atomic<int64_t> seconds{1000};
+  Service::Clock::time_point now() const {
+    return Service::Clock::time_point(std::chrono::duration_cast<Service::Clock::duration>(std::chrono::seconds(seconds.load())));
+  }
+};
+
+struct Fixture : ::testing::Test {
+  FakeClock clock;
+  std::unique_ptr<Service> make(ServiceLimits limits = {}) {
+    return std::make_unique<Service>(std::vector<std::string>{kExamples}, limits, shared_lm(),
+                                     [this] { return clock.now(); });
+  }
+  static json body(const Reply& r) { return json::parse(r.body); }
+  static std::string create(Service& s, const std::string& problem = "e1", const std::string& plan = "e1.1.keys") {
+    Reply r = s.handle("POST", "/api/sessions", json{{"dataset", "doors-keys-gems"}, {"problem", problem}, {"plan", plan}}.dump());
+    EXPECT_EQ(r.status, 201) << r.body;
+    return body(r).value("id", "");
+  }
+};
+
+TEST_F(Fixture, ListsServedDatasetsAndServesThePage) {
+  auto s = make();
+  Reply r = s->handle("GET", "/api/datasets", "");
+  ASSERT_EQ(r.status, 200);
+  json j = body(r);
+  ASSERT_EQ(j["datasets"].size(), 1u);
+  EXPECT_EQ(j["datasets"][0]["name"], "doors-keys-gems");
+  EXPECT_EQ(j["datasets"][0]["problems"][0]["id"], "e1");
+  Reply page = s->handle("GET", "/", "");
+  EXPECT_EQ(page.status, 200);
+  EXPECT_NE(page.content_type.find("text/html"), std::string::npos);
+  EXPECT_NE(page.body.find("app.js"), std::string::npos);
+  EXPECT_EQ(s->handle("GET", "/app.js", "").status, 200);
+  EXPECT_EQ(s->handle("GET", "/nothing.js", "").status, 404);
+  EXPECT_EQ(s->handle("GET", "/api/nothing", "").status, 404);
+}
+
+TEST_F(Fixture, CreatesASessionWithSceneAndPosterior) {
+  auto s = make();
+  Reply r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"e1"})j");
+  ASSERT_EQ(r.status, 201) << r.body;
+  json j = body(r);
+  EXPECT_EQ(j["id"].get<std::string>().size(), 32u);
+  EXPECT_EQ(j["turn"], "human");
+  EXPECT_EQ(j["t"], 0);
+  EXPECT_EQ(j["scene"]["kind"], "grid");
+  EXPECT_EQ(j["scene"]["walls"].size(), j["scene"]["height"].get<size_t>());
+  double sum = 0;
+  for (auto& g : j["posterior"]["goals"]) sum += g["p"].get<double>();
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  EXPECT_FALSE(j["actions"].empty());
+  for (auto& a : j["actions"]) EXPECT_NE(a.get<std::string>().find("human"), std::string::npos);
+}
+
+TEST_F(Fixture, MalformedJsonAndUnknownFieldsAre400NamingTheField) {
+  auto s = make();
+  Reply r = s->handle("POST", "/api/sessions", R"j({"dataset": "doors-keys-gems", )j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("malformed JSON"), std::string::npos);
+  r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"e1","colour":"red"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("unknown field 'colour'"), std::string::npos);
+  r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":2})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'problem'"), std::string::npos);
+  r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'problem' is required"), std::string::npos);
+  r = s->handle("POST", "/api/sessions", R"j([1,2])j");
+  EXPECT_EQ(r.status, 400);
+  r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"e9"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'problem'"), std::string::npos);
+  r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"e1","method":"psychic"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'method'"), std::string::npos);
+  // Invalid UTF-8 inside a string is malformed JSON.
+  r = s->handle("POST", "/api/sessions", std::string("{\"dataset\":\"doors\xff\"}"));
+  EXPECT_EQ(r.status, 400);
+
+  const std::string id = create(*s);
+  r = s->handle("POST", "/api/sessions/" + id + "/act", R"j({"action":"(left human)","agent":"human"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("unknown field 'agent'"), std::string::npos);
+  r = s->handle("POST", "/api/sessions/" + id + "/act", R"j({"action":"(fly human)"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'action'"), std::string::npos);
+  r = s->handle("POST", "/api/sessions/" + id + "/hear", R"j({"utterance":"   "})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'utterance'"), std::string::npos);
+  r = s->handle("POST", "/api/sessions/" + id + "/assist", R"j({"apply":"yes"})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'apply'"), std::string::npos);
+}
+
+TEST_F(Fixture, DatasetsOnlyFromTheCommandLine) {
+  auto s = make();
+  for (const char* d : {"../../etc", "/work/shared/dataset/doors-keys-gems", kExamples.c_str(), "virtual-home"}) {
+    Reply r = s->handle("POST", "/api/sessions", json{{"dataset", d}, {"problem", "e1"}}.dump());
+    EXPECT_EQ(r.status, 400) << d;
+    EXPECT_NE(body(r)["error"].get<std::string>().find("no served dataset"), std::string::npos);
+  }
+  // A problem id is looked up among the loaded plans, never used as a path.
+  Reply r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"../problems/e1"})j");
+  EXPECT_EQ(r.status, 400);
+}
+
+TEST_F(Fixture, UnknownSessionIs404) {
+  auto s = make();
+  EXPECT_EQ(s->handle("GET", "/api/sessions/0123456789abcdef", "").status, 404);
+  EXPECT_EQ(s->handle("POST", "/api/sessions/nope/act", R"j({"action":"(left human)"})j").status, 404);
+  const std::string id = create(*s);
+  EXPECT_EQ(s->handle("DELETE", "/api/sessions/" + id, "").status, 200);
+  EXPECT_EQ(s->handle("GET", "/api/sessions/" + id, "").status, 404);
+  EXPECT_EQ(s->handle("DELETE", "/api/sessions/" + id, "").status, 404);
+}
+
+TEST_F(Fixture, InapplicableActionIs409AndLeavesTheSessionUnchanged) {
+  auto s = make();
+  const std::string id = create(*s);
+  ASSERT_EQ(s->handle("POST", "/api/sessions/" + id + "/act", R"j({"action":"(left human)"})j").status, 200);
+  const std::string before = s->handle("GET", "/api/sessions/" + id, "").body;
+  // The robot's turn now: the human cannot move, and walking into a wall is never possible.
+  Reply r = s->handle("POST", "/api/sessions/" + id + "/act", R"j({"action":"(left human)"})j");
+  EXPECT_EQ(r.status, 409);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("not applicable"), std::string::npos);
+  EXPECT_EQ(s->handle("GET", "/api/sessions/" + id, "").body, before);
+  // Asking the assistant on the human's turn is a conflict too.
+  ASSERT_EQ(s->handle("POST", "/api/sessions/" + id + "/assist", R"j({"apply":true})j").status, 200);
+  const std::string mid = s->handle("GET", "/api/sessions/" + id, "").body;
+  EXPECT_EQ(s->handle("POST", "/api/sessions/" + id + "/assist", "{}").status, 409);
+  EXPECT_EQ(s->handle("GET", "/api/sessions/" + id, "").body, mid);
+}
+
+TEST_F(Fixture, FullServerIs503UntilASessionGoes) {
+  ServiceLimits lim;
+  lim.max_sessions = 2;
+  auto s = make(lim);
+  const std::string a = create(*s);
+  create(*s);
+  Reply r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"e1"})j");
+  EXPECT_EQ(r.status, 503);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("full"), std::string::npos);
+  ASSERT_EQ(s->handle("DELETE", "/api/sessions/" + a, "").status, 200);
+  create(*s);
+  EXPECT_EQ(s->live_sessions(), 2u);
+}
+
+TEST_F(Fixture, IdleSessionsExpire) {
+  ServiceLimits lim;
+  lim.idle_seconds = 60;
+  lim.max_sessions = 2;
+  auto s = make(lim);
+  const std::string idle = create(*s);
+  const std::string busy = create(*s);
+  clock.seconds += 40;
+  ASSERT_EQ(s->handle("GET", "/api/sessions/" + busy, "").status, 200);  // touched at +40
+  clock.seconds += 30;                                                    // idle 70 s, busy 30 s
+  EXPECT_EQ(s->expire_idle(), 1u);
+  EXPECT_EQ(s->handle("GET", "/api/sessions/" + idle, "").status, 404);
+  EXPECT_EQ(s->handle("GET", "/api/sessions/" + busy, "").status, 200);
+  // Expiry also frees slots for new sessions without an explicit sweep.
+  create(*s);
+  clock.seconds += 61;
+  create(*s);
+  create(*s);
+  EXPECT_EQ(s->live_sessions(), 2u);
+}
+
+TEST_F(Fixture, BodySizeIsLimited) {
+  ServiceLimits lim;
+  lim.max_body_bytes = 256;
+  auto s = make(lim);
+  const std::string big = json{{"dataset", "doors-keys-gems"}, {"problem", std::string(300, 'x')}}.dump();
+  Reply r = s->handle("POST", "/api/sessions", big);
+  EXPECT_EQ(r.status, 413);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("limit of 256"), std::string::npos);
+}
+
+TEST_F(Fixture, SearchBudgetsBoundEachRequest) {
+  ServiceLimits lim;
+  lim.play.inference_nodes = 4;  // far too small for any lookahead to finish
+  lim.play.assist_nodes = 4;
+  auto s = make(lim);
+  const std::string id = create(*s);
+  Reply r = s->handle("POST", "/api/sessions/" + id + "/act", R"j({"action":"(left human)"})j");
+  ASSERT_EQ(r.status, 200);
+  EXPECT_GT(body(r)["searches_stopped_by_budget"].get<int>(), 0);
+  r = s->handle("POST", "/api/sessions/" + id + "/assist", R"j({"apply":true})j");
+  EXPECT_EQ(r.status, 200) << r.body;
+  // With the default budgets nothing is cut off on this small map.
+  auto full = make();
+  const std::string id2 = create(*full);
+  r = full->handle("POST", "/api/sessions/" + id2 + "/act", R"j({"action":"(left human)"})j");
+  EXPECT_EQ(body(r)["searches_stopped_by_budget"].get<int>(), 0);
+}
+
+TEST_F(Fixture, PlayHearAssistUndoResetAndSwitchMethod) {
+  auto s = make();
+  const std::string id = create(*s);
+  const std::string url = "/api/sessions/" + id;
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_EQ(s->handle("POST", url + "/act", R"j({"action":"(left human)"})j").status, 200);
+    Reply r = s->handle("POST", url + "/assist", R"j({"apply":true})j");
+    ASSERT_EQ(r.status, 200) << r.body;
+    json d = body(r)["decision"];
+    EXPECT_FALSE(d["candidates"].empty());
+    EXPECT_EQ(body(r)["state"]["turn"], "human");
+  }
+  Reply r = s->handle("POST", url + "/hear", R"j({"utterance":"Can you get me the yellow key?"})j");
+  ASSERT_EQ(r.status, 200) << r.body;
+  json st = body(r);
+  ASSERT_FALSE(st["reading"].is_null());
+  ASSERT_FALSE(st["reading"]["commands"].empty());
+  EXPECT_NE(st["reading"]["commands"][0]["command"].get<std::string>().find("yellow"), std::string::npos);
+  EXPECT_EQ(st["history"].size(), 6u);  // start, 4 actions, the utterance
+  EXPECT_EQ(st["t"], 4);
+  // The instruction moves the belief: the trace has one more point.
+  EXPECT_EQ(body(s->handle("GET", url + "/trace", ""))["steps"].size(), 6u);
+
+  r = s->handle("POST", url + "/method", R"j({"method":"literal"})j");
+  ASSERT_EQ(r.status, 200);
+  EXPECT_EQ(body(r)["reading"]["source"].get<std::string>().rfind("literal", 0), 0u);
+  ASSERT_EQ(s->handle("POST", url + "/act", R"j({"action":"(wait human)"})j").status, 200);
+  r = s->handle("POST", url + "/assist", R"j({"apply":false})j");
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_TRUE(body(r)["decision"].contains("command"));
+  EXPECT_EQ(body(r)["state"]["turn"], "robot");  // not applied
+
+  r = s->handle("POST", url + "/undo", "");
+  ASSERT_EQ(r.status, 200);
+  EXPECT_EQ(body(r)["t"], 4);  // the (wait human) is taken back, the instruction before it stays
+  EXPECT_FALSE(body(r)["reading"].is_null());
+  r = s->handle("POST", url + "/undo", "");
+  EXPECT_EQ(body(r)["t"], 2);  // back before the second (left human), its reply and the instruction
+  EXPECT_TRUE(body(r)["reading"].is_null());
+  r = s->handle("POST", url + "/reset", "{}");
+  ASSERT_EQ(r.status, 200);
+  EXPECT_EQ(body(r)["t"], 0);
+  EXPECT_EQ(s->handle("POST", url + "/undo", "").status, 409);
+  EXPECT_EQ(s->handle("POST", url + "/method", R"j({"method":"oracle"})j").status, 400);
+}
+
+TEST_F(Fixture, SessionsRunInParallelAndIndependently) {
+  auto s = make();
+  auto play = [&](const std::string& id, std::string& out) {
+    const std::string url = "/api/sessions/" + id;
+    for (int k = 0; k < 2; ++k) {
+      s->handle("POST", url + "/act", R"j({"action":"(left human)"})j");
+      s->handle("POST", url + "/assist", R"j({"apply":true})j");
+    }
+    s->handle("POST", url + "/hear", R"j({"utterance":"Can you get me the yellow key?"})j");
+    out = body(s->handle("GET", url + "/posterior", "")).dump();
+  };
+  const std::string a = create(*s), b = create(*s), c = create(*s);
+  std::string ra, rb, rc;
+  std::thread ta(play, a, std::ref(ra)), tb(play, b, std::ref(rb));
+  ta.join();
+  tb.join();
+  play(c, rc);
+  EXPECT_EQ(ra, rc);
+  EXPECT_EQ(rb, rc);
+  // One session hammered from two threads: requests are serialised, none lost.
+  std::thread t1([&] { for (int i = 0; i < 20; ++i) s->handle("GET", "/api/sessions/" + a, ""); });
+  std::thread t2([&] { s->handle("POST", "/api/sessions/" + a + "/reset", ""); });
+  t1.join();
+  t2.join();
+  EXPECT_EQ(body(s->handle("GET", "/api/sessions/" + a, ""))["t"], 0);
+}
+
+TEST_F(Fixture, JsonLinesModeUsesTheSameHandlers) {
+  auto s = make();
+  std::istringstream in(
+      "{\"method\":\"POST\",\"path\":\"/api/sessions\",\"body\":{\"dataset\":\"doors-keys-gems\",\"problem\":\"e1\"}}\n"
+      "\n"
+      "not json\n"
+      "{\"method\":\"GET\",\"path\":\"/api/health\",\"verbose\":true}\n"
+      "{\"method\":\"GET\",\"path\":\"/api/sessions/none\"}\n");
+  std::ostringstream out;
+  EXPECT_EQ(run_stdio(*s, in, out), 0);
+  std::istringstream lines(out.str());
+  std::vector<json> replies;
+  for (std::string line; std::getline(lines, line);) replies.push_back(json::parse(line));
+  ASSERT_EQ(replies.size(), 4u);
+  EXPECT_EQ(replies[0]["status"], 201);
+  EXPECT_EQ(replies[0]["body"]["turn"], "human");
+  EXPECT_EQ(replies[1]["status"], 400);
+  EXPECT_EQ(replies[2]["status"], 400);
+  EXPECT_NE(replies[2]["body"]["error"].get<std::string>().find("unknown field 'verbose'"), std::string::npos);
+  EXPECT_EQ(replies[3]["status"], 404);
+}
+
+}  // namespace
+}  // namespace clips::serve
