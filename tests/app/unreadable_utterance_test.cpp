@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -54,8 +55,9 @@ Inferred infer(const std::string& ds, const std::string& modality) {
   Inferred r;
   testing::TempDir err{"stderr"};
   const std::string err_file = (err.path / "err.txt").string();
-  auto out = run(clips_binary() + " infer --dataset " + ds + " --plan e1.1.keys --json --modalities " + modality +
-                 " 2>" + err_file);
+  // run() adds 2>&1; the group keeps stderr in its own file, so stdout is the JSON alone.
+  auto out = run("{ " + clips_binary() + " infer --dataset " + ds + " --plan e1.1.keys --json --modalities " +
+                 modality + " 2>" + err_file + "; }");
   r.status = out.status;
   r.stderr_text = testing::read_text(err_file);
   r.json = nlohmann::json::parse(out.out, nullptr, false);
@@ -106,7 +108,8 @@ TEST(UnreadableUtterance, AnotherLanguageCarriesLittleEvidence) {
   Inferred both;
   const double effect = utterance_effect(p, both);
   EXPECT_LT(effect, 0.05);
-  EXPECT_LT(*std::max_element(final_posterior(both.json).begin(), final_posterior(both.json).end()), 0.99);
+  const std::vector<double> post = final_posterior(both.json);
+  EXPECT_LT(*std::max_element(post.begin(), post.end()), 0.99);
   ASSERT_EQ(both.json["utterance_warnings"].size(), 1u) << both.json.dump();
   EXPECT_TRUE(contains(both.json["utterance_warnings"][0], "Kannst du mir")) << both.json["utterance_warnings"];
   EXPECT_TRUE(contains(both.stderr_text, "warning: utterance \"Kannst du mir")) << both.stderr_text;
