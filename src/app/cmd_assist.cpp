@@ -59,6 +59,7 @@ void register_assist(CLI::App& app) {
     if (name != "clips") eo.methods.push_back(name);
     auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
     if (!outcome.error.empty()) throw InputError(outcome.error);
+    for (const auto& w : outcome.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
     const eval::MethodResult* r = outcome.find(name);
     if (!r->error.empty()) throw InputError(name + ": " + r->error);
     for (auto& n : r->notes) fmt::print(stderr, "{}: {}\n", name, n);
@@ -81,6 +82,7 @@ void register_assist(CLI::App& app) {
       if (r->p_true_goal) j["p_true_goal"] = *r->p_true_goal;
       j["goals"] = outcome.goals;
       j["goal_posterior"] = r->goal_posterior;
+      j["utterance_warnings"] = outcome.utterance_warnings;
       fmt::print("{}\n", j.dump());
     } else {
       fmt::print("plan {} method {}\n", p.id, name);

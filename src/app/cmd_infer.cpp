@@ -132,6 +132,8 @@ void register_infer(CLI::App& app) {
     opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     opts.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
     const inference::InferenceRun run = inference::run_inference(ds, plan, *lm, opts);
+    // Utterances the model could not read (weighted down or ignored): the user must know.
+    for (const auto& w : run.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";
     if (o->json) {
       nlohmann::json j;
@@ -148,6 +150,7 @@ void register_infer(CLI::App& app) {
       if (o->explain) j["rollouts"] = rollouts_json(run);
       j["seconds"] = run.seconds;
       j["searches_stopped_by_budget"] = run.searches_stopped_by_budget;
+      j["utterance_warnings"] = run.utterance_warnings;
       fmt::print("{}\n", j.dump());
       print_budget_note(run, o->max_nodes);
       return;

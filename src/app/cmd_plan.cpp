@@ -131,9 +131,24 @@ void register_plan(CLI::App& app) {
       expanded = r.expanded;
       seconds = r.seconds;
       status = search::to_string(r.status);
+      // A budget stop is not an answer: say which limit ended the search, so
+      // it is never read as "no plan exists" (status failure).
       if (r.status == search::SearchStatus::MaxTime && out_of_time()) {
         status = "time_limit";
         fmt::print(stderr, "plan: stopped: time limit of {:g} s reached after {} expanded nodes\n", time_limit,
+                   expanded);
+      } else if (r.status == search::SearchStatus::MaxTime) {
+        fmt::print(stderr,
+                   "plan: stopped: --max-seconds limit of {:g} s reached after {} expanded nodes; no plan found "
+                   "within the limit (that is not a proof that none exists)\n",
+                   o->max_seconds, expanded);
+      } else if (r.status == search::SearchStatus::MaxNodes) {
+        fmt::print(stderr,
+                   "plan: stopped: --max-nodes limit of {} expansions reached; no plan found within the limit "
+                   "(that is not a proof that none exists)\n",
+                   o->max_nodes);
+      } else if (r.status == search::SearchStatus::Failure) {
+        fmt::print(stderr, "plan: no plan exists: the goal cannot be reached from the start state ({} expanded nodes)\n",
                    expanded);
       }
     } else {

@@ -15,6 +15,10 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
                   "openai: seconds one request may take before it counts as timed out (default 120); a "
                   "timed-out request is tried once more, connection failures and HTTP 429/5xx up to 4 more times")
       ->check(PositiveSeconds);
+  cmd->add_option("--lm-max-reply-mb", f.lm_max_reply_mb,
+                  "openai: largest reply accepted, in MiB (default 16); a longer reply is an error, so a server "
+                  "that streams without end cannot fill memory")
+      ->check(CLI::Range(0.001, 4096.0));
 }
 
 void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
@@ -40,6 +44,7 @@ std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) {
   o.base_url = f.base_url;
   o.model = f.model;
   o.timeout_seconds = f.lm_timeout;
+  o.max_reply_mb = f.lm_max_reply_mb;
   return language::make_language_model(f.kind, o);
 }
 

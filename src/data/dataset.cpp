@@ -165,7 +165,8 @@ std::string describe_json(const nlohmann::json& v) {
 }  // namespace
 
 std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const std::string& path,
-                                                  DomainKind kind, const std::vector<PlanRecord>& plans) {
+                                                  DomainKind kind, const std::vector<PlanRecord>& plans,
+                                                  const std::vector<BrokenPlan>& broken) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
@@ -218,7 +219,11 @@ std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const
     s.name = text("name");
     where += " (plan " + s.name + ")";
     auto plan = std::find_if(plans.begin(), plans.end(), [&](const PlanRecord& p) { return p.id == s.name; });
-    if (plan == plans.end()) throw error("no such plan in plans/observed/");
+    if (plan == plans.end()) {
+      // A plan that failed to load has its own error; its entry cannot be checked.
+      if (std::any_of(broken.begin(), broken.end(), [&](const BrokenPlan& b) { return b.id == s.name; })) continue;
+      throw error("no such plan in plans/observed/");
+    }
     if (auto [it, fresh] = entry_of.emplace(s.name, i + 1); !fresh)
       throw error("a second entry for this plan (the first is entry " + std::to_string(it->second) + ")");
     s.type = text("type");
@@ -323,8 +328,13 @@ Dataset Dataset::load(const std::string& dir_in) {
   std::regex eval_re(R"(^(\d+)(\w?)\.(\d+)\.(.+)$)");
   std::regex any_re(R"(^([A-Za-z0-9_]+)\.(\d+)\.(.+)$)");
   std::vector<std::pair<PlanKey, PlanRecord>> recs;
-  for (auto& e : fs::directory_iterator(obs_dir)) {
-    if (e.path().extension() != ".pddl") continue;
+  // Plan files in name order, so broken_plans() and the load are deterministic.
+  std::vector<fs::path> plan_files;
+  for (auto& e : fs::directory_iterator(obs_dir))
+    if (e.path().extension() == ".pddl") plan_files.push_back(e.path());
+  std::sort(plan_files.begin(), plan_files.end());
+  for (const fs::path& path : plan_files) try {
+    const fs::directory_entry e(path);
     std::string stem = e.path().stem().string();
     std::smatch m;
     PlanRecord r;
@@ -358,6 +368,9 @@ Dataset Dataset::load(const std::string& dir_in) {
     if (!fs::exists(dir / "problems" / (r.problem_id + ".pddl")))
       throw InputError(SourceLoc{e.path().string(), 0, 0}, "no problem file problems/" + r.problem_id + ".pddl for plan " + stem);
     recs.push_back({key, std::move(r)});
+  } catch (const InputError& err) {
+    // This plan's files only: set it aside, the others stay usable.
+    ds.broken_.push_back({path.stem().string(), err.what()});
   }
   std::sort(recs.begin(), recs.end(), [](auto& a, auto& b) { return a.first < b.first; });
   for (auto& [k, r] : recs) ds.plans_.push_back(std::move(r));
@@ -383,13 +396,20 @@ Dataset Dataset::load(const std::string& dir_in) {
   // and copies of the dataset with reworded utterances drop the file. When it
   // is present, it is checked in full (load_stimuli).
   fs::path stim = dir / "stimuli.json";
-  if (fs::exists(stim)) ds.stimuli_ = parse_stimuli(pddl::read_text_file(stim.string()), stim.string(), ds.kind_, ds.plans_);
+  // A bad stimuli.json concerns `validate` only: its error is kept for it.
+  if (fs::exists(stim)) try {
+      ds.stimuli_ = parse_stimuli(pddl::read_text_file(stim.string()), stim.string(), ds.kind_, ds.plans_, ds.broken_);
+    } catch (const InputError& err) {
+      ds.stimuli_error_ = err.what();
+    }
   return ds;
 }
 
 const PlanRecord& Dataset::plan(const std::string& id) const {
   for (auto& p : plans_)
     if (p.id == id) return p;
+  for (auto& b : broken_)
+    if (b.id == id) throw InputError("plan " + id + " could not be loaded: " + b.error);
   // Accept a unique prefix such as "1.1" for VirtualHome's "1.1.stew_chicken".
   const PlanRecord* found = nullptr;
   for (auto& p : plans_)
@@ -398,6 +418,8 @@ const PlanRecord& Dataset::plan(const std::string& id) const {
       found = &p;
     }
   if (found) return *found;
+  for (auto& b : broken_)
+    if (b.id.rfind(id + ".", 0) == 0) throw InputError("plan " + b.id + " could not be loaded: " + b.error);
   std::string known;
   for (auto& p : plans_) known += (known.empty() ? "" : ", ") + p.id;
   throw InputError("no plan '" + id + "' in " + dir_ + " (known: " + known + ")");
@@ -459,6 +481,7 @@ int Dataset::true_goal_index(const PlanRecord& p) const {
 }
 
 const std::optional<StimulusInfo> Dataset::stimulus(const std::string& plan_id) const {
+  if (!stimuli_error_.empty()) throw InputError(stimuli_error_);
   auto it = stimuli_.find(plan_id);
   if (it == stimuli_.end()) return std::nullopt;
   return it->second;

@@ -10,6 +10,10 @@
 // line; mDKG observed plans without exactly one `;` utterance; empty or
 // non-UTF-8 utterances; repeated labels in a VH goal set; malformed or
 // inconsistent stimuli.json entries (the file itself is optional).
+// A bad file that belongs to one plan (its observed or completed plan, its
+// utterance files, a missing problem file) does not stop the load: the plan is
+// set aside with its error (broken_plans()), which is raised only when that
+// plan is asked for, so every other plan stays usable.
 #include <map>
 #include <memory>
 #include <optional>
@@ -43,6 +47,12 @@ struct GoalSpec {
   std::string source;     // the file `condition` was read from ("" when built in code), for error locations
 };
 
+// A plan that could not be loaded, and why (the message names the file).
+struct BrokenPlan {
+  std::string id;     // file stem of its observed plan
+  std::string error;  // the InputError's message
+};
+
 struct StimulusInfo {  // one entry of stimuli.json (mDKG)
   std::string name, type, utterance;
   int timesteps = 0, option_count = 0, goal = -1;
@@ -56,8 +66,10 @@ class Dataset {
   const std::string& dir() const { return dir_; }
   DomainKind kind() const { return kind_; }
   std::shared_ptr<const pddl::Domain> domain() const { return domain_; }
-  const std::vector<PlanRecord>& plans() const { return plans_; }
-  const PlanRecord& plan(const std::string& id) const;  // throws InputError listing ids
+  const std::vector<PlanRecord>& plans() const { return plans_; }  // the plans that loaded
+  const std::vector<BrokenPlan>& broken_plans() const { return broken_; }  // in file-name order
+  // Throws InputError listing ids, or with the plan's own load error.
+  const PlanRecord& plan(const std::string& id) const;
 
   // Grounded task of a problem (grounded once, then shared). For mDKG, throws
   // an InputError naming the problem file if an agent or door is not on the
@@ -70,26 +82,32 @@ class Dataset {
   std::vector<GoalSpec> candidate_goals(const PlanRecord& p) const;
   int true_goal_index(const PlanRecord& p) const;
   const std::map<std::string, std::string>& goal_definitions() const { return goal_defs_; }
+  // Throws the InputError of a malformed stimuli.json (kept from the load).
   const std::optional<StimulusInfo> stimulus(const std::string& plan_id) const;
+  const std::string& stimuli_error() const { return stimuli_error_; }
 
  private:
   std::string dir_;
   DomainKind kind_ = DomainKind::Generic;
   std::shared_ptr<const pddl::Domain> domain_;
   std::vector<PlanRecord> plans_;
+  std::vector<BrokenPlan> broken_;
   std::map<std::string, std::string> goal_defs_;                 // VH label -> condition text
   std::map<std::string, std::string> goal_def_paths_;            // VH label -> its goals/definitions file
   std::map<std::string, std::vector<std::string>> goal_sets_;   // VH problem -> labels
   std::map<std::string, StimulusInfo> stimuli_;
+  std::string stimuli_error_;  // a malformed stimuli.json: raised by stimulus()
   mutable std::map<std::string, std::shared_ptr<const pddl::Task>> tasks_;
 };
 
 // The two list files the loader reads, parsed from their text (`path` names
 // the file in errors). stimuli.json: every entry checked against `plans`
-// (see dataset.cpp). goals/sets/<P>.txt: one goal label per non-blank line,
+// (see dataset.cpp), except entries naming a plan in `broken` (set aside at
+// load), which are skipped. goals/sets/<P>.txt: one goal label per non-blank line,
 // each defined in `goal_defs` and listed once.
 std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const std::string& path,
-                                                  DomainKind kind, const std::vector<PlanRecord>& plans);
+                                                  DomainKind kind, const std::vector<PlanRecord>& plans,
+                                                  const std::vector<BrokenPlan>& broken = {});
 std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
                                         const std::map<std::string, std::string>& goal_defs);
 

@@ -124,6 +124,14 @@ ValidationReport validate_dataset(const Dataset& ds) {
     rep.results.push_back(validate_plan(ds, p));
     if (!rep.results.back().ok) ++rep.failed;
   }
+  // Plans whose files did not load are failures too, each with its file's error.
+  for (auto& b : ds.broken_plans()) {
+    PlanCheck c;
+    c.plan_id = b.id;
+    c.error = b.error;
+    rep.results.push_back(std::move(c));
+    ++rep.failed;
+  }
   return rep;
 }
 

@@ -24,6 +24,7 @@ struct ValidationReport {
 };
 
 PlanCheck validate_plan(const Dataset& ds, const PlanRecord& p);
+// Every plan, then every plan that failed to load (Dataset::broken_plans()).
 ValidationReport validate_dataset(const Dataset& ds);
 
 // The assistance options the robot took in a joint plan: distinct keys picked

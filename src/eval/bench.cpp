@@ -45,6 +45,9 @@ void check_selection(const data::Dataset& ds, const BenchOptions& opts) {
   std::vector<std::string> ids, unknown;
   for (auto& p : ds.plans()) ids.push_back(p.id);
   for (auto& id : opts.plans)
+    for (auto& b : ds.broken_plans())
+      if (b.id == id) throw InputError("--plans: plan " + id + " could not be loaded: " + b.error);
+  for (auto& id : opts.plans)
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) unknown.push_back(id);
   if (!unknown.empty())
     throw InputError(fmt::format("--plans: unknown plan id{} {} in {}; valid ids: {}", unknown.size() > 1 ? "s" : "",
@@ -114,6 +117,17 @@ BenchReport run_bench(const BenchOptions& opts) {
   std::vector<std::thread> pool;
   for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
+
+  // Plans whose files did not load are reported as failed plans (with the
+  // file's error), after the others; tutorial plans (demo*) are not evaluated.
+  if (opts.plans.empty())
+    for (auto& b : ds0.broken_plans())
+      if (b.id.rfind("demo", 0) != 0) {
+        PlanOutcome bad;
+        bad.plan_id = b.id;
+        bad.error = "could not be loaded: " + b.error;
+        rep.plans.push_back(std::move(bad));
+      }
 
   std::vector<std::string> order;
   for (auto& p : rep.plans) {

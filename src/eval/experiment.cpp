@@ -121,6 +121,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     io.utterance_timing = opts.utterance_timing;
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
     out.goals = inf.goals;
+    out.utterance_warnings = inf.utterance_warnings;
     out.true_goal = inf.true_goal;
     for (const auto& st : inf.steps) out.goal_posterior_steps.push_back(st[Modality::Both].goals);  // issue 8
     const inference::Belief& belief = *inf.belief;

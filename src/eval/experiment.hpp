@@ -47,6 +47,7 @@ struct PlanOutcome {
   std::vector<MethodResult> methods;
   double seconds = 0;
   std::string error;  // non-empty when the plan could not be evaluated
+  std::vector<std::string> utterance_warnings;  // inference::InferenceRun::utterance_warnings
   // (issue 8) CLIPS goal posterior after each observed step ([0]: at s_0), for pictures.
   std::vector<std::vector<double>> goal_posterior_steps;
   const MethodResult* find(const std::string& m) const;

@@ -77,6 +77,7 @@ void HMaxHeuristic::prepare(const model::Specification& spec, const pddl::State&
 
 double HMaxHeuristic::estimate(const uint64_t* s) {
   if (!spec_) return 0;
+  if (timed_out()) return 0;  // past the search's deadline: stay cheap until it stops
   if (spec_->is_goal(s)) return 0;
   const pddl::Task& t = spec_->task();
   int na = t.num_actions(), nb = t.num_atoms();
@@ -98,7 +99,12 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
           q.push({cost_[a], b});
         }
   }
+  // One estimate is O(actions + atoms); on a large grounding that is long, so
+  // the clock is read every few thousand queue entries when a deadline is set.
+  const bool watch = deadline() != Clock::time_point::max();
+  unsigned pops = 0;
   while (!q.empty()) {
+    if (watch && (++pops & 4095) == 0 && out_of_time()) return 0;
     auto [c, b] = q.top();
     q.pop();
     if (c > atom_cost_[b]) continue;

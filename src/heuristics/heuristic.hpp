@@ -6,6 +6,7 @@
 //
 // A heuristic may also prune goal-irrelevant actions during search
 // (clips-spec.md 5.6): A* asks keep() for each applicable action it expands.
+#include <chrono>
 #include <string>
 
 #include "model/spec.hpp"
@@ -31,6 +32,45 @@ class Heuristic {
   // Action pruning inside search (default: keep everything).
   virtual bool prunes() const { return false; }
   virtual bool keep(pddl::ActionId) const { return true; }
+
+  // Deadlines. A search with a time limit hands its deadline to the heuristic
+  // so that an estimate which is itself long (h_max over a large grounding)
+  // can stop early: it then returns 0 (admissible, so never a wrong cut) and
+  // reports timed_out() until the next set_deadline(). Cheap estimates may
+  // ignore the deadline: the search also checks the clock between them.
+  using Clock = std::chrono::steady_clock;
+  void set_deadline(Clock::time_point t) {
+    deadline_ = t;
+    timed_out_ = false;
+  }
+  Clock::time_point deadline() const { return deadline_; }
+  bool timed_out() const { return timed_out_; }
+
+ protected:
+  // For estimate(): true once the deadline has passed (then always true).
+  bool out_of_time() {
+    if (!timed_out_ && deadline_ != Clock::time_point::max() && Clock::now() >= deadline_) timed_out_ = true;
+    return timed_out_;
+  }
+
+ private:
+  Clock::time_point deadline_ = Clock::time_point::max();
+  bool timed_out_ = false;
+};
+
+// Sets a heuristic's deadline for one scope and restores the previous one.
+class ScopedDeadline {
+ public:
+  ScopedDeadline(Heuristic& h, Heuristic::Clock::time_point t) : h_(h), previous_(h.deadline()) {
+    h_.set_deadline(t);
+  }
+  ~ScopedDeadline() { h_.set_deadline(previous_); }
+  ScopedDeadline(const ScopedDeadline&) = delete;
+  ScopedDeadline& operator=(const ScopedDeadline&) = delete;
+
+ private:
+  Heuristic& h_;
+  Heuristic::Clock::time_point previous_;
 };
 
 }  // namespace clips::heuristics

@@ -1,5 +1,7 @@
 #include "inference/belief.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -7,6 +9,7 @@
 
 #include "domains/registry.hpp"
 #include "inference/vh_value.hpp"
+#include "language/lm/readability.hpp"
 #include "pddl/plan.hpp"
 #include "util/error.hpp"
 
@@ -163,10 +166,64 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
   for (const auto& p : policies_) pols.push_back(&p);
   auto scores = utterance_model_->score(pols, s, utterances, *lm);
   for (size_t u = 0; u < utterances.size(); ++u) {
-    for (size_t h = 0; h < hyps_.size(); ++h) utterance_ll_[h] += scores[u][h].log_likelihood;
-    out.push_back({utterances[u], std::move(scores[u])});
+    UtteranceRecord rec;
+    rec.text = utterances[u];
+    rec.hypotheses = std::move(scores[u]);
+    weigh_utterance(rec);
+    if (rec.evidence_weight > 0)
+      for (size_t h = 0; h < hyps_.size(); ++h) {
+        const double ll = rec.hypotheses[h].log_likelihood;
+        // w * ll with w in (0, 1]; a NaN score counts as impossible.
+        utterance_ll_[h] += std::isnan(ll) ? kNegInf : (rec.evidence_weight == 1 ? ll : rec.evidence_weight * ll);
+      }
+    out.push_back(std::move(rec));
   }
   return out;
+}
+
+double evidence_weight(double share, const InferenceOptions& o) {
+  if (!o.temper_unreadable || share >= o.readable_share_full) return 1;
+  if (share <= o.readable_share_none) return 0;
+  return (share - o.readable_share_none) / (o.readable_share_full - o.readable_share_none);
+}
+
+namespace {
+
+// The utterance as quoted in a warning: at most 60 characters (never cut
+// inside a UTF-8 sequence).
+std::string quote_utterance(const std::string& text) {
+  constexpr size_t kMax = 60;
+  if (text.size() <= kMax) return "\"" + text + "\"";
+  size_t cut = kMax;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return "\"" + text.substr(0, cut) + "...\" (" + std::to_string(text.size()) + " bytes)";
+}
+
+}  // namespace
+
+void Belief::weigh_utterance(UtteranceRecord& rec) const {
+  if (!options_.temper_unreadable) return;
+  const lm::UtteranceReading reading = lm::read_utterance(rec.text);
+  rec.readable_share = reading.share();
+  rec.evidence_weight = evidence_weight(rec.readable_share, options_);
+  const bool any_possible = std::any_of(rec.hypotheses.begin(), rec.hypotheses.end(), [](const HypothesisUtterance& h) {
+    return h.log_likelihood > kNegInf;  // false for -inf and NaN
+  });
+  if (!any_possible) {
+    // Nothing to compare: adding -inf to every hypothesis would wipe out what
+    // the actions showed (the posterior fell back to the prior).
+    rec.evidence_weight = 0;
+    rec.warning = "utterance " + quote_utterance(rec.text) +
+                  " has probability 0 under every hypothesis (the language model cannot score it); it is ignored";
+  } else if (rec.evidence_weight < 1) {
+    const std::string what = reading.words == 0
+                                 ? "has no words"
+                                 : fmt::format("has {} of {} words the model can read (an English word it knows)",
+                                               reading.known, reading.examined);
+    rec.warning = "utterance " + quote_utterance(rec.text) + " " + what +
+                  (rec.evidence_weight == 0 ? "; it is ignored"
+                                            : fmt::format("; its evidence is weighted by {:.2f}", rec.evidence_weight));
+  }
 }
 
 StepRecord Belief::start(const pddl::State& s0, const std::vector<std::string>& utterances, lm::LanguageModel* lm) {
@@ -308,6 +365,9 @@ InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord&
   }
   run.seconds = seconds_since(t0);
   run.searches_stopped_by_budget = run.belief->searches_stopped_by_budget();
+  for (const auto& st : run.steps)
+    for (const auto& u : st.utterances)
+      if (!u.warning.empty()) run.utterance_warnings.push_back(u.warning);
   return run;
 }
 

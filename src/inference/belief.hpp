@@ -82,6 +82,15 @@ struct InferenceOptions {
   // with the policies refined at s_k (the paper's model; default); Before =
   // s_{k-1}, the reference code's alignment. docs/decisions.md has the numbers.
   UtteranceTiming utterance_timing = UtteranceTiming::After;
+  // Utterances the model cannot read carry little evidence (docs/decisions.md,
+  // "Unreadable utterances"): the utterance log-likelihoods are multiplied by
+  // a weight from the share of readable words (1 at or above
+  // readable_share_full, 0 at or below readable_share_none, linear between).
+  // An utterance impossible under every hypothesis is ignored. Both are
+  // reported in UtteranceRecord::warning. false: the model's scores as they are.
+  bool temper_unreadable = true;
+  double readable_share_none = 0.25;
+  double readable_share_full = 0.5;
   // Threads refining the hypotheses' policies in parallel (they are
   // independent, so results do not depend on it). 1: sequential (callers that
   // already run several inferences at once, like `clips bench`); 0: all cores.
@@ -105,7 +114,16 @@ struct Posterior {
 struct UtteranceRecord {
   std::string text;
   std::vector<HypothesisUtterance> hypotheses;  // likelihood and per-command posterior per hypothesis
+  // How much of the text the model can read (lm/readability.hpp), and the
+  // weight its log-likelihoods entered the belief with: 1 for readable text,
+  // less for text the model mostly cannot read, 0 when ignored.
+  double readable_share = 1;
+  double evidence_weight = 1;
+  std::string warning;  // non-empty when the weight is below 1: why, for the user
 };
+
+// The weight an utterance's log-likelihoods get from its readable share.
+double evidence_weight(double readable_share, const InferenceOptions& options);
 
 // What one step observed and the belief after it (a Gen-style trace entry).
 struct StepRecord {
@@ -170,6 +188,8 @@ class Belief {
   std::vector<UtteranceRecord> score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
                                                 lm::LanguageModel* lm, bool speak_factor = true);
   StepRecord record(std::string action, bool evidence, std::vector<UtteranceRecord> utts, double seconds) const;
+  // Sets the record's readable share, evidence weight and warning.
+  void weigh_utterance(UtteranceRecord& rec) const;
   bool is_speaker_action(pddl::ActionId a) const;
 
   std::shared_ptr<const pddl::Task> task_;
@@ -206,6 +226,8 @@ struct InferenceRun {
   std::shared_ptr<Belief> belief;     // the belief after the last step (policies for assistance)
   double seconds = 0;
   size_t searches_stopped_by_budget = 0;  // over the whole run (Belief::searches_stopped_by_budget)
+  // The warnings of utterances that carried reduced or no evidence, in order.
+  std::vector<std::string> utterance_warnings;
 
   const std::vector<search::Policy>& policies() const { return belief->policies(); }
   const Posterior& final_posterior(Modality m) const { return steps.back()[m]; }

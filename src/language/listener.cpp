@@ -110,6 +110,7 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
     if (options.timeout_seconds > 0) {
       o.http.total_timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_seconds * 1000));
     }
+    if (options.max_reply_mb > 0) o.http.max_reply_bytes = static_cast<std::size_t>(options.max_reply_mb * 1048576.0);
     inner = std::make_shared<lm::OpenAiCompletionsModel>(o);
   } else {
     throw InputError("unknown language model '" + kind + "' (known: embedded, openai)");

@@ -33,6 +33,8 @@ struct LanguageModelOptions {
   std::optional<std::string> api_key;
   // openai: seconds one HTTP attempt may take (0 = the backend's default).
   double timeout_seconds = 0;
+  // openai: largest reply accepted, in MiB (0 = the backend's default, 16).
+  double max_reply_mb = 0;
   // embedded: directory of the corpus files ("" = the backend's default).
   std::string data_dir;
 };

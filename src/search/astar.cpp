@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 namespace clips::search {
 
@@ -15,6 +16,20 @@ std::string to_string(SearchStatus s) {
   return "?";
 }
 
+
+std::chrono::steady_clock::time_point effective_deadline(const SearchOptions& opts,
+                                                        std::chrono::steady_clock::time_point start) {
+  using clock = std::chrono::steady_clock;
+  clock::time_point d = opts.deadline;
+  // Beyond about 30 years the sum could overflow the clock's range: no limit then.
+  if (opts.max_seconds <= 0) {
+    d = std::min(d, start);  // no time at all
+  } else if (opts.max_seconds < 1e9) {
+    const auto budget = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(opts.max_seconds));
+    d = std::min(d, start + budget);
+  }
+  return d;
+}
 
 SearchResult astar(const model::Specification& spec, heuristics::Heuristic& heur, const pddl::State& start,
                    const SearchOptions& opts) {
@@ -57,6 +72,15 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
   };
   auto pop = [&] { open_pop(open); };
 
+  // Time limits: one deadline (the earlier of max_seconds and opts.deadline),
+  // read every 256 expansions and every 64 generated nodes, since one
+  // expansion of a large grounding generates thousands of children; the
+  // heuristic gets it too, for estimates that are long by themselves.
+  const clock::time_point deadline = effective_deadline(opts, t0);
+  const bool timed = deadline != clock::time_point::max();
+  std::optional<heuristics::ScopedDeadline> heur_deadline;
+  if (timed) heur_deadline.emplace(heur, deadline);
+
   int root = reg.insert(start.data());
   nodes_ref.emplace_back();
   nodes_ref[root].h = heur.estimate(start.data());
@@ -90,12 +114,8 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
     const uint64_t* s = reg.get(top.node);
     if (spec.is_goal(s) || (opts.extra_goal && opts.extra_goal(s))) return finish(SearchStatus::Success, top.node);
     if (r.expanded >= opts.max_nodes) return finish(SearchStatus::MaxNodes, top.node);
-    if ((r.expanded & 255) == 0 &&
-        (opts.max_seconds < std::numeric_limits<double>::infinity() || opts.deadline != clock::time_point::max())) {
-      const auto now = clock::now();
-      if (now >= opts.deadline || std::chrono::duration<double>(now - t0).count() >= opts.max_seconds)
-        return finish(SearchStatus::MaxTime, top.node);
-    }
+    if (timed && ((r.expanded & 255) == 0 || heur.timed_out()) && clock::now() >= deadline)
+      return finish(SearchStatus::MaxTime, top.node);
     if (opts.fail_fast && top.f == model::kInf) return finish(SearchStatus::Failure, top.node);
     pop();
     const int id = top.node;
@@ -119,6 +139,8 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
         ++counter;
         ++r.generated;
         push(cid, true);
+        if (timed && ((r.generated & 63) == 0 || heur.timed_out()) && clock::now() >= deadline)
+          return finish(SearchStatus::MaxTime, id);
         continue;
       }
       SearchNode& c = nodes_ref[cid];

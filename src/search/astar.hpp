@@ -58,6 +58,11 @@ struct SearchResult {
   int terminal = -1;  // the node at the top of the frontier when search stopped
 };
 
+// The earlier of opts.deadline and `start` + opts.max_seconds (time_point::max()
+// when neither is set).
+std::chrono::steady_clock::time_point effective_deadline(const SearchOptions& opts,
+                                                        std::chrono::steady_clock::time_point start);
+
 // Runs A* from `start`. The heuristic must already be prepared for `spec`.
 SearchResult astar(const model::Specification& spec, heuristics::Heuristic& h, const pddl::State& start,
                    const SearchOptions& opts = {});

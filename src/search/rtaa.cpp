@@ -26,7 +26,10 @@ double Policy::learned_estimate(int id) {
   Entry& e = entry(id);
   if (e.has_v) return -e.value_or_h;
   if (!e.has_h) {
-    e.value_or_h = h_->estimate(graph_->state(id));  // does not touch entries_, so `e` stays valid
+    const double h = h_->estimate(graph_->state(id));  // does not touch entries_, so `e` stays valid
+    // An estimate cut short by the deadline (0) is used once, never cached.
+    if (h_->timed_out()) return h;
+    e.value_or_h = h;
     e.has_h = true;
   }
   return e.value_or_h;
@@ -59,7 +62,13 @@ struct ThreadBuffers {
 size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws,
                                  SearchStatus& status) {
   using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
+  // As in astar(): the clock is read every 256 expansions and every 64
+  // generated nodes, and the heuristic gets the deadline too.
+  const clock::time_point deadline = effective_deadline(opts, clock::now());
+  const bool timed = deadline != clock::time_point::max();
+  std::optional<heuristics::ScopedDeadline> heur_deadline;
+  if (timed) heur_deadline.emplace(*h_, deadline);
+  size_t generated = 0;
   if (++epoch_ == 0) {  // wrapped: forget every old search
     for (Entry& e : entries_) e.epoch = 0;
     epoch_ = 1;
@@ -117,14 +126,10 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
       terminal = id;
       break;
     }
-    if ((expanded & 255) == 0 &&
-        (opts.max_seconds < std::numeric_limits<double>::infinity() || opts.deadline != clock::time_point::max())) {
-      const auto now = clock::now();
-      if (now >= opts.deadline || std::chrono::duration<double>(now - t0).count() >= opts.max_seconds) {
-        status = SearchStatus::MaxTime;
-        terminal = id;
-        break;
-      }
+    if (timed && ((expanded & 255) == 0 || h_->timed_out()) && clock::now() >= deadline) {
+      status = SearchStatus::MaxTime;
+      terminal = id;
+      break;
     }
     if (opts.fail_fast && top.f == kInf) {
       terminal = id;
@@ -134,6 +139,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     nodes[static_cast<size_t>(id)].open = false;
     ++expanded;
     const double g0 = nodes[static_cast<size_t>(id)].g;
+    bool out_of_time = false;
     const auto succ = graph_->successors(eid);
     // The children's entries lie far apart: ask for all of them before the
     // loop needs the first, so their cache misses overlap.
@@ -148,6 +154,10 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
       if (!ce || ce->epoch != epoch) {
         ++counter;
         push(add_node(sc.child, id, sc.action, g), true);
+        if (timed && ((++generated & 63) == 0 || h_->timed_out()) && clock::now() >= deadline) {
+          out_of_time = true;
+          break;
+        }
         continue;
       }
       const int cnode = ce->node;
@@ -163,6 +173,13 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
         ++counter;
         push(cnode, true);
       }
+    }
+    if (out_of_time) {
+      // Ended inside this expansion: the terminal is the node just expanded
+      // (its f is at most the frontier's, so the values learned stay admissible).
+      status = SearchStatus::MaxTime;
+      terminal = id;
+      break;
     }
   }
 
@@ -218,7 +235,16 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
 
   std::vector<uint64_t> child(task.num_words());
   double best = -kInf;
+  bool cut = false;
   for (pddl::ActionId a : task.applicable_actions(s)) {
+    if (opts.deadline != std::chrono::steady_clock::time_point::max() &&
+        std::chrono::steady_clock::now() >= opts.deadline) {
+      // The run's deadline has passed: the remaining successors keep their
+      // old values (or -H), as after a search stopped by its budget.
+      ++st.stopped_by_budget;
+      cut = true;
+      break;
+    }
     task.apply(a, s.data(), child.data());
     const int cid = graph_->insert(child.data());
     if (const Entry& e = entry(cid); e.has_v && e.value_or_h == -kInf) continue;
@@ -232,7 +258,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }
-  set_value(graph_->insert(s.data()), best);
+  if (!cut) set_value(graph_->insert(s.data()), best);  // a partial maximum is no value
   return st;
 }
 

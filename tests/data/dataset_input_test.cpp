@@ -85,9 +85,15 @@ fs::path vh_slice() {
   return dir;
 }
 
+// The error of loading `dir`: the load's own, else those kept for the plans
+// that failed to load and for stimuli.json (they are raised only on use).
 std::string load_error(const fs::path& dir) {
   try {
-    Dataset::load(dir.string());
+    auto ds = Dataset::load(dir.string());
+    std::string kept;
+    for (const auto& b : ds.broken_plans()) kept += b.error + "\n";
+    kept += ds.stimuli_error();
+    if (!kept.empty()) return kept;
   } catch (const InputError& e) {
     return e.what();
   }
@@ -385,6 +391,69 @@ TEST_F(DatasetInput, SharedDatasetsStillValidate) {
   auto ds = Dataset::load(paths::dkg_dataset());
   EXPECT_TRUE(ds.stimulus("2.1.keys"));
   EXPECT_FALSE(ds.stimulus("demo0.1.keys"));
+}
+
+
+// ---- one bad plan file does not block the others
+
+TEST_F(DatasetInput, OneBadPlanFileLeavesTheOtherPlansUsable) {
+  fs::path dir = dkg_copy();
+  write(dir / "plans/observed/e1.2.keys.pddl", "(up human)\n; Can you bring me\n(wait robot)\n; the red key?\n");
+  auto ds = Dataset::load(dir.string());
+  ASSERT_EQ(ds.plans().size(), 3u);
+  ASSERT_EQ(ds.broken_plans().size(), 1u);
+  EXPECT_EQ(ds.broken_plans()[0].id, "e1.2.keys");
+  EXPECT_THAT(ds.broken_plans()[0].error, HasSubstr("plans/observed/e1.2.keys.pddl"));
+  EXPECT_EQ(ds.plan("e1.1.keys").id, "e1.1.keys");
+  EXPECT_EQ(ds.plan("e2.2.keys").id, "e2.2.keys");
+  // The bad plan raises its own error when asked for, naming its file.
+  try {
+    ds.plan("e1.2.keys");
+    FAIL() << "a plan that failed to load was returned";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("plan e1.2.keys could not be loaded"));
+    EXPECT_THAT(std::string(e.what()), HasSubstr("plans/observed/e1.2.keys.pddl"));
+  }
+  // validate still lists it, with the others checked as usual.
+  auto rep = validate_dataset(ds);
+  ASSERT_EQ(rep.results.size(), 4u);
+  EXPECT_EQ(rep.failed, 1);
+  for (const auto& r : rep.results) {
+    if (r.plan_id == "e1.2.keys") {
+      EXPECT_FALSE(r.ok);
+      EXPECT_THAT(r.error, HasSubstr("plans/observed/e1.2.keys.pddl"));
+    } else {
+      EXPECT_TRUE(r.ok) << r.plan_id << ": " << r.error;
+    }
+  }
+}
+
+TEST_F(DatasetInput, EveryBadPlanIsListedWithItsOwnFile) {
+  fs::path dir = dkg_copy();
+  fs::remove(dir / "plans/completed/e2.1.doors.pddl");
+  write(dir / "utterances/literal/e1.1.keys.txt", "");
+  auto ds = Dataset::load(dir.string());
+  EXPECT_EQ(ds.plans().size(), 2u);
+  ASSERT_EQ(ds.broken_plans().size(), 2u);
+  EXPECT_EQ(ds.broken_plans()[0].id, "e1.1.keys");
+  EXPECT_THAT(ds.broken_plans()[0].error, HasSubstr("utterances/literal/e1.1.keys.txt is empty"));
+  EXPECT_EQ(ds.broken_plans()[1].id, "e2.1.doors");
+  EXPECT_THAT(ds.broken_plans()[1].error, HasSubstr("missing completed plan for e2.1.doors"));
+  EXPECT_EQ(validate_dataset(ds).failed, 2);
+}
+
+// A malformed stimuli.json concerns validation only: the plans load and run,
+// and validate reports the file's error.
+TEST_F(DatasetInput, BadStimuliFileDoesNotBlockThePlans) {
+  fs::path dir = dkg_copy();
+  write(dir / "stimuli.json", "[{\"name\": ");
+  auto ds = Dataset::load(dir.string());
+  EXPECT_EQ(ds.plans().size(), 4u);
+  EXPECT_THAT(ds.stimuli_error(), HasSubstr("stimuli.json: malformed JSON"));
+  EXPECT_NO_THROW(ds.task("e1"));
+  auto rep = validate_dataset(ds);
+  EXPECT_EQ(rep.failed, 4);
+  for (const auto& r : rep.results) EXPECT_THAT(r.error, HasSubstr("stimuli.json")) << r.plan_id;
 }
 
 }  // namespace

@@ -176,8 +176,21 @@ namespace {
 
 // Writes `body` according to the reply fault that concerns transport/syntax.
 // Returns false when the fault is about content and the caller must build it.
-bool apply_body_fault(FakeReply reply, const std::string& body, httplib::Response& res) {
+bool apply_body_fault(FakeReply reply, const std::string& body, httplib::Response& res,
+                      const std::atomic<bool>& stopping) {
   switch (reply) {
+    case FakeReply::Endless:
+      // A JSON prefix, then one string that never closes, 64 KiB at a time.
+      res.set_chunked_content_provider("application/json", [&stopping](std::size_t offset, httplib::DataSink& sink) {
+        static const std::string filler(std::size_t{1} << 16, 'x');
+        if (stopping) return false;
+        if (offset == 0) {
+          const std::string head = R"({"choices": [{"index": 0, "text": ")";
+          return sink.write(head.data(), head.size());
+        }
+        return sink.write(filler.data(), filler.size());
+      });
+      return true;
     case FakeReply::MalformedJson:
       res.set_content("{\"choices\": [ {\"index\": 0,, oops", "application/json");
       return true;
@@ -331,7 +344,7 @@ void FakeOpenAiServer::start() {
                   {"choices", choices}};
     if (f.reply == FakeReply::MissingChoices) reply.erase("choices");
     const std::string text = reply.dump();
-    if (!apply_body_fault(f.reply, text, res)) res.set_content(text, "application/json");
+    if (!apply_body_fault(f.reply, text, res, impl_->stopping)) res.set_content(text, "application/json");
   });
 
   s.server.Post("/v1/chat/completions", [preamble, &s](const httplib::Request& req, httplib::Response& res) {
@@ -376,7 +389,7 @@ void FakeOpenAiServer::start() {
                   {"choices", json::array({{{"index", 0}, {"message", message}, {"finish_reason", "stop"}}})}};
     if (f.reply == FakeReply::MissingChoices) reply.erase("choices");
     const std::string out = reply.dump();
-    if (!apply_body_fault(f.reply, out, res)) res.set_content(out, "application/json");
+    if (!apply_body_fault(f.reply, out, res, s.stopping)) res.set_content(out, "application/json");
   });
 
   // Without TCP_NODELAY, header and body writes on a reused connection meet

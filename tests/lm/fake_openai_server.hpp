@@ -35,6 +35,7 @@ enum class FakeReply {
   NoEcho,                // logprobs cover only generated tokens (echo ignored)
   NonJsonAnswer,         // chat: the assistant text is not JSON
   MissingContent,        // chat: message.content null (with a refusal)
+  Endless,               // a chunked reply that never ends (until the client hangs up or stop())
 };
 
 struct FakeFaults {

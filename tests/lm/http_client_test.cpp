@@ -75,5 +75,38 @@ TEST(HttpClientTest, IsUsableFromSeveralThreads) {
   server.stop();
 }
 
+
+// A server that streams without end is cut off at the reply cap with an error
+// naming the URL and the cap, after one attempt (retrying would stream again).
+TEST(HttpClientTest, StopsReadingAnEndlessReplyAtTheCap) {
+  fake::FakeOpenAiServer server;
+  server.start();
+  fake::FakeFaults f;
+  f.reply = fake::FakeReply::Endless;
+  server.set_faults(f);
+  HttpOptions o;
+  o.total_timeout = 20000ms;  // far longer than reading the cap takes
+  o.backoff_initial = 1ms;
+  o.max_reply_bytes = std::size_t{1} << 20;
+  HttpClient client(o);
+  const std::string url = server.base_url() + "/completions";
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    client.post_json(url, R"({"prompt":"x"})", {});
+    FAIL() << "an endless reply was accepted";
+  } catch (const LmError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(url), std::string::npos) << msg;
+    EXPECT_NE(msg.find("1048576 bytes"), std::string::npos) << msg;
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 15s);
+  EXPECT_EQ(server.completion_requests(), 1);
+  server.stop();
+}
+
+TEST(HttpClientTest, DefaultReplyCapIsSixteenMebibytes) {
+  EXPECT_EQ(HttpOptions{}.max_reply_bytes, std::size_t{16} << 20);
+}
+
 }  // namespace
 }  // namespace clips::lm

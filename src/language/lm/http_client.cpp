@@ -29,11 +29,19 @@ constexpr std::size_t kMaxPooledHandles = 8;
 struct Transfer {
   std::string body;
   std::map<std::string, std::string> headers;
+  std::size_t max_body = 0;
+  bool too_large = false;
 };
 
 std::size_t on_body(char* data, std::size_t size, std::size_t count, void* user) {
-  static_cast<Transfer*>(user)->body.append(data, size * count);
-  return size * count;
+  auto* t = static_cast<Transfer*>(user);
+  const std::size_t n = size * count;
+  if (n > t->max_body - t->body.size()) {
+    t->too_large = true;
+    return 0;  // a short count makes libcurl abort the transfer (CURLE_WRITE_ERROR)
+  }
+  t->body.append(data, n);
+  return n;
 }
 
 std::size_t on_header(char* data, std::size_t size, std::size_t count, void* user) {
@@ -182,6 +190,7 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
   int timeouts = 0;
   for (int attempt = 1;; ++attempt) {
     Transfer t;
+    t.max_body = options_.max_reply_bytes;
     char errbuf[CURL_ERROR_SIZE] = {0};
     CURL* h = lease.h;
     curl_easy_setopt(h, CURLOPT_URL, url.c_str());
@@ -207,6 +216,11 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
     if (code == CURLE_OK) curl_easy_getinfo(h, CURLINFO_RESPONSE_CODE, &status);
 
     std::optional<std::chrono::milliseconds> server_wait;
+    if (t.too_large) {
+      // Not transient: the same request would stream the same endless reply.
+      throw LmError("POST " + url + ": reply exceeds the cap of " + std::to_string(options_.max_reply_bytes) +
+                    " bytes (--lm-max-reply-mb); stopped reading");
+    }
     if (code != CURLE_OK) {
       if (is_timeout(code)) ++timeouts;
       const bool retry = is_transient(code) || (is_timeout(code) && options_.retry_on_timeout &&

@@ -29,6 +29,11 @@ struct HttpOptions {
   // timeouts get at most this many extra attempts (inside max_retries), so a
   // dead server costs a couple of total_timeouts, not five.
   int max_timeout_retries = 1;
+  // Largest reply body accepted, in bytes. A server that streams without end
+  // (or a wrong URL serving a huge file) would otherwise fill memory; a scoring
+  // reply for a large batch is a few MiB at most. Exceeding it is an error.
+  std::size_t max_reply_bytes = kDefaultMaxReplyBytes;
+  static constexpr std::size_t kDefaultMaxReplyBytes = std::size_t{16} << 20;  // 16 MiB
 };
 
 struct HttpResponse {

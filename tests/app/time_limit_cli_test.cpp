@@ -1,0 +1,87 @@
+// `clips plan` time limits on a wide generated task (one 3-parameter action
+// over 15 objects, written to a temp folder): both planners return soon after
+// the limit, with a status and a message that say the limit was hit, never
+// "no plan exists". Before the limits reached inside expansions and h_max,
+// these runs went on for minutes.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <string>
+
+#include "eval/support.hpp"
+#include "search/wide_task.hpp"
+
+namespace clips::eval {
+namespace {
+
+using testing::clips_binary;
+using testing::contains;
+using testing::run;
+
+struct WideFiles {
+  testing::TempDir dir{"wide"};
+  std::string domain = (dir.path / "domain.pddl").string();
+  std::string problem = (dir.path / "p15.pddl").string();
+  WideFiles() {
+    std::ofstream(domain) << clips::testing::wide_domain_pddl();
+    std::ofstream(problem) << clips::testing::wide_problem_pddl(15, 5);
+  }
+};
+
+double timed_run(const std::string& args, testing::RunResult& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  r = run(clips_binary() + " plan " + args);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TEST(CliPlanLimits, AstarMaxSecondsHoldsOnAWideTask) {
+  WideFiles f;
+  testing::RunResult r;
+  const double secs =
+      timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --max-seconds 2", r);
+  EXPECT_LT(secs, 30) << r.out;
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "status max_time")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--max-seconds limit of 2 s reached")) << r.out;
+  EXPECT_FALSE(contains(r.out, "no plan exists")) << r.out;
+}
+
+TEST(CliPlanLimits, AstarTimeLimitHoldsOnAWideTask) {
+  WideFiles f;
+  testing::RunResult r;
+  const double secs = timed_run(
+      "--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --time-limit 2 --json", r);
+  EXPECT_LT(secs, 30) << r.out;
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "\"status\":\"time_limit\"")) << r.out;
+  EXPECT_TRUE(contains(r.out, "time limit of 2 s reached")) << r.out;
+}
+
+TEST(CliPlanLimits, RtaaTimeLimitHoldsOnAWideTask) {
+  WideFiles f;
+  testing::RunResult r;
+  const double secs = timed_run(
+      "--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --planner rtaa --time-limit 2", r);
+  EXPECT_LT(secs, 30) << r.out;
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "status time_limit")) << r.out;
+  EXPECT_TRUE(contains(r.out, "time limit of 2 s reached")) << r.out;
+}
+
+// The other side: a goal no action can reach (nothing adds `sealed`) is
+// reported as "no plan exists", not as a limit.
+TEST(CliPlanLimits, UnreachableGoalSaysNoPlanExists) {
+  WideFiles f;
+  testing::RunResult r;
+  timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --max-seconds 2" +
+                " --goal '(sealed o1)'",
+            r);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "status failure")) << r.out;
+  EXPECT_TRUE(contains(r.out, "no plan exists")) << r.out;
+  EXPECT_FALSE(contains(r.out, "limit")) << r.out;
+}
+
+}  // namespace
+}  // namespace clips::eval
