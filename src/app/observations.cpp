@@ -49,9 +49,9 @@ void add_observation_options(CLI::App* cmd, ObservationFlags& f) {
                   "Instead of --plan: a problem id of the dataset (e.g. 2); the observations are --actions and "
                   "--utterance, the candidate goals those of the problem");
   cmd->add_option("--actions", f.actions,
-                  "With --problem: the observed actions, either inline as PDDL action terms, e.g. \"(move human "
-                  "right) (pickup human key1)\", or a plan file with one action per line (and '; <utterance>' "
-                  "lines, as in the dataset's plans/observed/)");
+                  "With --problem: the observed actions. A value starting with '(' is inline PDDL action terms, "
+                  "e.g. \"(move human right) (pickup human key1)\"; anything else names a plan file with one action "
+                  "per line (and '; <utterance>' lines, as in the dataset's plans/observed/)");
   cmd->add_option("--utterance", f.utterance, "With --problem: what the human said (UTF-8 text)");
   cmd->add_option("--utterance-step", f.utterance_step,
                   "With --utterance: the number of actions done before it was said (default 0: before the first)")
