@@ -15,11 +15,20 @@ extern int g_exit_code;
 // The dataset directory default: $CLIPS_DATASET, else ../shared/dataset/<domain>.
 std::string default_dataset_hint();
 
+// --dataset DIR. Optional on the command line: without it, $CLIPS_DATASET is
+// used when it names a dataset (a folder with domain.pddl). With it, a DIR
+// that does not exist is looked up under $CLIPS_DATASET, so that with
+// CLIPS_DATASET=../shared/dataset, `--dataset doors-keys-gems` works.
+void add_dataset_option(CLI::App* cmd, std::string& dir, const std::string& help);
+// The directory to load; throws UsageError when there is none.
+std::string dataset_dir(const std::string& given);
+
 // Checks for numeric options, failing at parse time with a plain message
 // (CLI::PositiveNumber lets "nan" through and names its bound as 1.79769e+308).
 extern const CLI::Validator PositiveInteger;     // 1, 2, ...
 extern const CLI::Validator NonNegativeInteger;  // 0, 1, ...
 extern const CLI::Validator PositiveSeconds;     // a finite number > 0
+extern const CLI::Validator SeedValue;           // 0 .. 2^64-1 (CLI11 would wrap -1 and 2^64 silently)
 
 // The language-model flags every subcommand that scores utterances shares:
 // --lm embedded|openai, --lm-base-url, --lm-model (key from $OPENAI_API_KEY).

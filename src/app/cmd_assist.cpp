@@ -6,22 +6,26 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
+#include "app/observations.hpp"
 #include "eval/experiment.hpp"
 #include "language/listener.hpp"
 
 namespace clips::app {
 
 void register_assist(CLI::App& app) {
-  auto* cmd = app.add_subcommand("assist", "Infer the goal from a plan's prefix and utterance, then assist; print metrics");
+  auto* cmd = app.add_subcommand("assist", "Infer the goal from a plan's prefix and utterance, then assist; print metrics. With --problem: the assistant's "
+      "next action after the given actions and utterance");
   struct Opts {
-    std::string dataset, plan, method = "clips", assist = "qmdp_offline";
+    std::string dataset, method = "clips", assist = "qmdp_offline";
+    ObservationFlags obs;
     LmFlags lm;
     bool json = false;
     uint64_t seed = 1;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--dataset", o->dataset, "Dataset directory")->required();
-  cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys")->required();
+  add_dataset_option(cmd, o->dataset, "Dataset directory");
+  add_observation_options(cmd, o->obs);
   cmd->add_option("--method", o->method,
                   "clips, lang_only, action_only, literal_naive, literal_efficient (VH: literal), multimodal")
       ->check(CLI::IsMember({"clips", "lang_only", "action_only", "literal_naive", "literal_efficient", "literal",
@@ -35,14 +39,51 @@ void register_assist(CLI::App& app) {
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
   add_assistance_options(cmd, o->lm);
-  cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling");
+  cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling, 0..2^64-1 (default 1)")->check(SeedValue);
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->callback([o, mm] {
-    auto ds = data::Dataset::load(o->dataset);
+    check_observation_flags(o->obs);  // before loading anything
+    const bool adhoc = !o->obs.problem.empty();
+    if (adhoc && o->method != "clips" && o->method != "lang_only" && o->method != "action_only")
+      throw UsageError("with --problem, --method is clips, lang_only or action_only (the others need a dataset plan)");
+    if (adhoc && o->assist != "qmdp_offline")
+      throw UsageError("with --problem, the assistant's next action is the Q_MDP choice (--assist qmdp_offline)");
+    auto ds = data::Dataset::load(dataset_dir(o->dataset));
     if (const auto known = eval::known_methods(ds.kind());
         std::find(known.begin(), known.end(), o->method) == known.end())
       throw InputError("--method " + o->method + " does not apply to a " + data::to_string(ds.kind()) + " dataset");
-    const auto& p = ds.plan(o->plan);
+    if (adhoc) {
+      const data::PlanRecord obs = observations_record(ds, o->obs);
+      auto lm = make_lm(o->lm);
+      eval::ExperimentOptions eo;
+      eo.inference_threads = 0;
+      eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
+      eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
+      eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
+      const eval::LiveDecision d = eval::decide_next_action(ds, obs, *lm, eo, o->method);
+      const auto& goals = d.inference.goals;
+      if (o->json) {
+        nlohmann::ordered_json j;
+        j["problem"] = obs.problem_id;
+        j["method"] = o->method;
+        j["observed_actions"] = obs.observed.actions.size();
+        j["next_actor"] = d.next_actor;
+        j["action"] = d.action ? nlohmann::ordered_json(*d.action) : nlohmann::ordered_json();
+        j["goals"] = goals;
+        j["goal_posterior"] = d.goal_posterior;
+        fmt::print("{}\n", j.dump());
+      } else {
+        fmt::print("problem {} after {} observed action{} (method {})\n", obs.problem_id, obs.observed.actions.size(),
+                   obs.observed.actions.size() == 1 ? "" : "s", o->method);
+        for (size_t g = 0; g < goals.size(); ++g) fmt::print("  P({}) = {:.4f}\n", goals[g], d.goal_posterior[g]);
+        if (d.action)
+          fmt::print("assistant's next action: {}\n", *d.action);
+        else
+          fmt::print("next to act: {} (the assistant has nothing to decide)\n", d.next_actor);
+      }
+      return;
+    }
+    const auto& p = ds.plan(o->obs.plan);
     auto lm = make_lm(o->lm);
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
@@ -58,9 +99,12 @@ void register_assist(CLI::App& app) {
     eo.methods = {"clips"};
     if (name != "clips") eo.methods.push_back(name);
     auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
+    // Rethrown with their own type, so the exit status tells bad input from a failing LM server.
+    if (outcome.failure) std::rethrow_exception(outcome.failure);
     if (!outcome.error.empty()) throw InputError(outcome.error);
     for (const auto& w : outcome.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
     const eval::MethodResult* r = outcome.find(name);
+    if (r->failure) std::rethrow_exception(r->failure);
     if (!r->error.empty()) throw InputError(name + ": " + r->error);
     for (auto& n : r->notes) fmt::print(stderr, "{}: {}\n", name, n);
     if (o->json) {

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
 #include "eval/bench.hpp"
 #include "eval/report.hpp"
 #include "util/data_dir.hpp"
@@ -21,10 +22,13 @@ void register_bench(CLI::App& app) {
   auto out = std::make_shared<std::string>();
   auto assist = std::make_shared<std::string>("default");
   auto methods = std::make_shared<std::vector<std::string>>();
-  cmd->add_option("--dataset", o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)")->required();
-  cmd->add_option("--out", *out, "Write results.csv and summary.json into this directory");
+  add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
+  auto* out_opt = cmd->add_option("--out", *out,
+                                  "Write results.csv, posteriors.csv (goal posterior per plan, method, step and goal) "
+                                  "and summary.json into this directory");
   cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)")->check(PositiveInteger);
-  cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines (default 1)");
+  cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines, 0..2^64-1 (default 1)")
+      ->check(SeedValue);
   auto lm = std::make_shared<LmFlags>();
   add_lm_options(cmd, *lm);
   add_speaker_model_options(cmd, *lm);
@@ -36,13 +40,17 @@ void register_bench(CLI::App& app) {
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   // issue 8: HTML report and the multimodal baseline's chat endpoint.
   auto report = std::make_shared<std::string>();
-  cmd->add_option("--report", *report,
+  auto* report_opt = cmd->add_option("--report", *report,
                   "Also write DIR/report.html with per-plan GIFs and posterior plots (renders every plan: slower)");
   cmd->add_option("--chat-base-url", o->experiment.multimodal.base_url,
                   "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped");
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
   cmd->callback([=] {
+    // `--out ""` (an unset variable in a script) would silently write nothing.
+    if (out_opt->count() > 0 && out->empty()) throw UsageError("--out is empty: give a directory");
+    if (report_opt->count() > 0 && report->empty()) throw UsageError("--report is empty: give a directory");
+    o->dataset = dataset_dir(o->dataset);
     o->lm = lm->kind;
     o->lm_base_url = lm->base_url;
     o->lm_model = lm->model;
@@ -74,7 +82,8 @@ void register_bench(CLI::App& app) {
       };
       write("summary.json", eval::summary_json(rep));
       write("results.csv", eval::results_csv(rep));
-      fmt::print("wrote {}/summary.json and {}/results.csv{}\n", *out, *out,
+      write("posteriors.csv", eval::posteriors_csv(rep));
+      fmt::print(stderr, "wrote {0}/summary.json, {0}/results.csv and {0}/posteriors.csv{1}\n", *out,
                  rep.failed_plans ? " (failed plans: see the error column)" : "");
     }
     if (!report->empty()) {
@@ -82,9 +91,9 @@ void register_bench(CLI::App& app) {
       ro.dir = *report;
       ro.paper_json = util::data_dir() + "/paper/results.json";
       ro.jobs = o->jobs;
-      fmt::print("wrote {}\n", eval::write_report(rep, ro));
+      fmt::print(stderr, "wrote {}\n", eval::write_report(rep, ro));
     }
-    g_exit_code = rep.failed_plans == 0 ? 0 : 1;
+    g_exit_code = rep.failed_plans == 0 ? kExitOk : kExitSomeFailed;
   });
 }
 

@@ -34,8 +34,7 @@ void register_export_strips(CLI::App& app) {
     std::string dataset, problem, goal, costs = "1", out, from_plan;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--dataset", o->dataset, "Doors-keys-gems dataset directory (with domain.pddl and problems/)")
-      ->required();
+  add_dataset_option(cmd, o->dataset, "Doors-keys-gems dataset directory (with domain.pddl and problems/)");
   cmd->add_option("--problem", o->problem, "Problem id in the dataset (e.g. 2); optional with --from-plan");
   cmd->add_option("--goal", o->goal, "Goal: a conjunction of (has <agent> <item>) atoms, e.g. \"(has human gem2)\"")
       ->required();
@@ -44,7 +43,7 @@ void register_export_strips(CLI::App& app) {
       ->required();
   cmd->add_option("--from-plan", o->from_plan, "Start from the end of this observed plan (dataset plan id)");
   cmd->callback([o] {
-    auto ds = data::Dataset::load(o->dataset);
+    auto ds = data::Dataset::load(dataset_dir(o->dataset));
     if (ds.kind() != data::DomainKind::DoorsKeysGems)
       throw InputError("export-strips only supports doors-keys-gems datasets; " + o->dataset + " is " +
                        data::to_string(ds.kind()));
@@ -81,7 +80,7 @@ void register_export_strips(CLI::App& app) {
     write_file(dir / "domain.pddl", ex.domain);
     write_file(dir / "problem.pddl", ex.problem);
     write_file(dir / "export.json", meta.dump(2) + "\n");
-    fmt::print("wrote {}/domain.pddl, problem.pddl, export.json (costs {} scaled by {})\n", dir.string(), profile.name,
+    fmt::print(stderr, "wrote {}/domain.pddl, problem.pddl, export.json (costs {} scaled by {})\n", dir.string(), profile.name,
                ex.cost_scale);
     g_exit_code = 0;
   });

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
+#include "app/observations.hpp"
 #include "data/dataset.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
@@ -97,17 +98,19 @@ void print_budget_note(const inference::InferenceRun& run, size_t max_nodes) {
 }  // namespace
 
 void register_infer(CLI::App& app) {
-  auto* cmd = app.add_subcommand("infer", "Infer the human's goal from a plan's actions and instruction (CLIPS)");
+  auto* cmd = app.add_subcommand("infer", "Infer the human's goal from a plan's actions and instruction (CLIPS), or from actions and an utterance given "
+      "with --problem");
   struct Opts {
-    std::string dataset, plan, modalities = "both";
+    std::string dataset, modalities = "both";
+    ObservationFlags obs;
     LmFlags lm;
     bool json = false, explain = false;
     int top = 3;
     size_t max_nodes = size_t{1} << 18;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--dataset", o->dataset, "Dataset directory (with domain.pddl)")->required();
-  cmd->add_option("--plan", o->plan, "Observed plan id, e.g. 2.1.keys")->required();
+  add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl)");
+  add_observation_options(cmd, o->obs);
   cmd->add_option("--modalities", o->modalities,
                   "Which evidence the reported posterior uses: both (CLIPS, default), utterance or action")
       ->check(CLI::IsMember({"both", "utterance", "action"}));
@@ -120,10 +123,14 @@ void register_infer(CLI::App& app) {
                 "commands, and each hypothesis' rolled-out joint plan at the end");
   cmd->add_option("--top", o->top, "With --explain: commands shown per hypothesis (default 3)")
       ->check(PositiveInteger);
-  cmd->add_flag("--json", o->json, "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object");
+  cmd->add_flag("--json", o->json,
+                "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object (true_goal is null for "
+                "--problem observations)");
   cmd->callback([o] {
-    auto ds = data::Dataset::load(o->dataset);
-    const auto& plan = ds.plan(o->plan);
+    check_observation_flags(o->obs);  // before loading anything
+    auto ds = data::Dataset::load(dataset_dir(o->dataset));
+    const bool adhoc = !o->obs.problem.empty();
+    const data::PlanRecord plan = adhoc ? observations_record(ds, o->obs) : ds.plan(o->obs.plan);
     const inference::Modality modality = inference::parse_modality(o->modalities);
     auto lm = make_lm(o->lm);
     inference::InferenceOptions opts;
@@ -131,16 +138,18 @@ void register_infer(CLI::App& app) {
     opts.threads = 0;  // one plan: use every core
     opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     opts.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
-    const inference::InferenceRun run = inference::run_inference(ds, plan, *lm, opts);
+    const inference::InferenceRun run = adhoc ? inference::run_inference_on_observations(ds, plan, *lm, opts)
+                                              : inference::run_inference(ds, plan, *lm, opts);
     // Utterances the model could not read (weighted down or ignored): the user must know.
     for (const auto& w : run.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";
     if (o->json) {
       nlohmann::json j;
-      j["plan"] = run.plan_id;
+      j["plan"] = adhoc ? nlohmann::json() : nlohmann::json(run.plan_id);
       j["modality"] = inference::to_string(modality);
       j["goals"] = run.goals;
-      j["true_goal"] = true_goal;
+      j["true_goal"] = adhoc ? nlohmann::json() : nlohmann::json(true_goal);
+      if (adhoc) j["problem"] = plan.problem_id;
       j["steps"] = nlohmann::json::array();
       for (const auto& st : run.steps) {
         nlohmann::json step = {{"t", st.t}, {"posterior", st[modality].goals}};
@@ -155,7 +164,10 @@ void register_infer(CLI::App& app) {
       print_budget_note(run, o->max_nodes);
       return;
     }
-    fmt::print("plan {}: goal posterior ({}), true goal {}\n", run.plan_id, inference::to_string(modality), true_goal);
+    if (adhoc)
+      fmt::print("{}: goal posterior ({})\n", run.plan_id, inference::to_string(modality));
+    else
+      fmt::print("plan {}: goal posterior ({}), true goal {}\n", run.plan_id, inference::to_string(modality), true_goal);
     fmt::print("{:>4}  {:<30}", "t", "action");
     std::vector<size_t> width;
     for (const auto& g : run.goals) width.push_back(std::max<size_t>(9, g.size()));

@@ -6,9 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
+#include "util/utf8.hpp"
 
 namespace clips::app {
 
@@ -43,7 +45,7 @@ void register_listen(CLI::App& app) {
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--dataset", o->dataset, "Dataset directory (with domain.pddl and problems/)")->required();
+  add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl and problems/)");
   cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys; the utterance is heard at the end of its observed part")
       ->required();
   cmd->add_option("--utterance", o->utterance,
@@ -58,9 +60,11 @@ void register_listen(CLI::App& app) {
     // Reject a blank utterance before loading anything.
     if (o->utterance) {
       const auto& u = *o->utterance;
-      if (u.find_first_not_of(" \t\r\n\f\v") == std::string::npos) throw InputError("--utterance is empty");
+      if (u.find_first_not_of(" \t\r\n\f\v") == std::string::npos) throw UsageError("--utterance is empty");
+      // Checked here, not by the JSON writer after the work.
+      if (auto bad = util::utf8_problem(u); !bad.empty()) throw InputError("--utterance is " + bad);
     }
-    auto ds = data::Dataset::load(o->dataset);
+    auto ds = data::Dataset::load(dataset_dir(o->dataset));
     const auto& p = ds.plan(o->plan);
     auto task = ds.task(p.problem_id);
     const pddl::State s_T = pddl::simulate(*task, task->initial_state(), p.observed).states.back();

@@ -2,11 +2,13 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "domains/registry.hpp"
 #include "pddl/parser.hpp"
@@ -42,7 +44,7 @@ void register_plan(CLI::App& app) {
     std::optional<double> time_limit;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--dataset", o->dataset, "Dataset directory (with domain.pddl and problems/)");
+  add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl and problems/)");
   cmd->add_option("--problem", o->problem, "Problem id in the dataset (e.g. 2), or with --domain a problem file");
   cmd->add_option("--domain", o->domain_file, "A PDDL domain file (instead of --dataset)");
   auto* goal_opt = cmd->add_option("--goal", o->goal,
@@ -76,6 +78,8 @@ void register_plan(CLI::App& app) {
                                                      : std::numeric_limits<double>::infinity();
     if (goal_opt->count() > 0 && o->goal.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
       throw InputError("--goal is empty (omit it to plan for the problem's goal)");
+    if (o->domain_file.empty() && (!o->dataset.empty() || std::getenv("CLIPS_DATASET")))
+      o->dataset = dataset_dir(o->dataset);
     std::shared_ptr<const pddl::Task> task;
     data::DomainKind kind = data::DomainKind::Generic;
     pddl::State start;
@@ -199,7 +203,9 @@ void register_plan(CLI::App& app) {
       fmt::print("; status {}, cost {:.10g}, {} actions, {} expanded, {:.3f} s ({} heuristic, costs {})\n", status, cost,
                  plan.size(), expanded, seconds, hname, spec->profile().name);
     }
-    g_exit_code = status == "success" ? 0 : 1;
+    // "failure" is a finished search (A*: the goal is unreachable; RTAA*: a dead end); anything else
+    // that is not a success ran out of a budget.
+    g_exit_code = status == "success" ? kExitOk : status == "failure" ? kExitUnsolvable : kExitLimit;
   });
 }
 

@@ -17,14 +17,14 @@ void register_show(CLI::App& app) {
     std::optional<int> step;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--dataset", o->dataset, "Dataset directory")->required();
+  add_dataset_option(cmd, o->dataset, "Dataset directory");
   cmd->add_option("--plan", o->plan, "Plan id, e.g. 2.1.keys")->required();
   cmd->add_option("--step", o->step,
                   "Number of actions applied, counting the observed plan then its completion "
                   "(default: the end of the observed plan)")
       ->check(NonNegativeInteger);
   cmd->callback([o] {
-    auto ds = data::Dataset::load(o->dataset);
+    auto ds = data::Dataset::load(dataset_dir(o->dataset));
     const auto& p = ds.plan(o->plan);
     auto task = ds.task(p.problem_id);
     auto obs = pddl::simulate(*task, task->initial_state(), p.observed);

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "data/validate.hpp"
 
@@ -14,10 +15,10 @@ void register_validate(CLI::App& app) {
   auto* cmd = app.add_subcommand("validate", "Simulate every observed plan and its completion; check the true goals");
   auto dataset = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
-  cmd->add_option("--dataset", *dataset, "Dataset directory (with domain.pddl, problems/, plans/)")->required();
+  add_dataset_option(cmd, *dataset, "Dataset directory (with domain.pddl, problems/, plans/)");
   cmd->add_flag("-q,--quiet", *quiet, "Print only failures and the final line");
   cmd->callback([=] {
-    auto ds = data::Dataset::load(*dataset);
+    auto ds = data::Dataset::load(dataset_dir(*dataset));
     auto report = data::validate_dataset(ds);
     for (auto& r : report.results) {
       if (r.ok) {
@@ -27,7 +28,7 @@ void register_validate(CLI::App& app) {
       }
     }
     fmt::print("validated {} plans, {} failed\n", report.results.size(), report.failed);
-    g_exit_code = report.failed == 0 ? 0 : 1;
+    g_exit_code = report.failed == 0 ? kExitOk : kExitSomeFailed;
   });
 }
 

@@ -1,17 +1,50 @@
 // clips: Cooperative Language-Guided Inverse Plan Search, command line.
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <string>
 
+#include <new>
+
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
+#include "eval/multimodal.hpp"
+#include "language/lm/language_model.hpp"
 #include "util/error.hpp"
+#include "util/version.hpp"
 
 namespace clips::app {
 int g_exit_code = 0;
 std::string default_dataset_hint() {
   return "a dataset directory such as ../shared/dataset/doors-keys-gems (containing domain.pddl)";
+}
+
+void add_dataset_option(CLI::App* cmd, std::string& dir, const std::string& help) {
+  cmd->add_option("--dataset", dir,
+                  help + "; default $CLIPS_DATASET when it holds domain.pddl, and a name not found here is looked "
+                         "up under $CLIPS_DATASET");
+}
+
+std::string dataset_dir(const std::string& given) {
+  namespace fs = std::filesystem;
+  const char* env = std::getenv("CLIPS_DATASET");
+  const std::string root = env ? env : "";
+  std::error_code ec;
+  if (!given.empty()) {
+    if (fs::exists(given, ec) || root.empty() || fs::path(given).is_absolute()) return given;
+    const fs::path under = fs::path(root) / given;
+    return fs::is_directory(under, ec) ? under.string() : given;
+  }
+  if (root.empty()) throw UsageError("--dataset is required (or set $CLIPS_DATASET to a dataset directory)");
+  if (fs::exists(fs::path(root) / "domain.pddl", ec)) return root;
+  std::string names;
+  for (const auto& e : fs::directory_iterator(root, ec))
+    if (fs::exists(e.path() / "domain.pddl", ec)) names += (names.empty() ? "" : ", ") + e.path().filename().string();
+  throw UsageError("--dataset is required: $CLIPS_DATASET=" + root + " is not a dataset (no domain.pddl)" +
+                   (names.empty() ? "" : "; it holds " + names + ": give e.g. --dataset " + names.substr(0, names.find(','))));
 }
 
 namespace {
@@ -26,6 +59,20 @@ bool all_digits(const std::string& s) {
 
 }  // namespace
 
+std::string exit_code_help() {
+  return "Exit status:\n"
+         "  0  success\n"
+         "  1  ran to the end, but some items failed (validate: plans that do not check; bench: plans that could "
+         "not be evaluated)\n"
+         "  2  usage error: unknown subcommand or option, missing or malformed value\n"
+         "  3  input error: a file or field is unreadable or invalid (the message names it)\n"
+         "  4  no plan exists: the search proved the goal unreachable\n"
+         "  5  a time, node or step limit stopped the search before it found a plan\n"
+         "  6  the language model or chat server failed (connection, HTTP status, malformed reply)\n"
+         "  7  out of memory\n"
+         "  8  internal error (a bug; please report it with the command line)\n";
+}
+
 const CLI::Validator PositiveInteger(
     [](std::string& in) -> std::string {
       if (all_digits(in) && in.find_first_not_of("+0") != std::string::npos) return {};
@@ -38,6 +85,17 @@ const CLI::Validator NonNegativeInteger(
       return in + " is not a non-negative integer";
     },
     "NONNEGATIVE");
+const CLI::Validator SeedValue(
+    [](std::string& in) -> std::string {
+      if (all_digits(in)) {
+        errno = 0;
+        char* end = nullptr;
+        std::strtoull(in.c_str(), &end, 10);
+        if (errno != ERANGE) return {};
+      }
+      return in + " is not a seed (an integer from 0 to 18446744073709551615)";
+    },
+    "SEED");
 const CLI::Validator PositiveSeconds(
     [](std::string& in) -> std::string {
       char* end = nullptr;
@@ -49,21 +107,29 @@ const CLI::Validator PositiveSeconds(
 }  // namespace clips::app
 
 int main(int argc, char** argv) {
+  using namespace clips::app;
   CLI::App app{"clips: infer a human's goal from their actions and instructions, and help them reach it.\n"
                "Implements Cooperative Language-Guided Inverse Plan Search (Zhi-Xuan et al., AAMAS 2024)."};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
-  clips::app::register_validate(app);
-  clips::app::register_show(app);
-  clips::app::register_plan(app);
-  clips::app::register_assist(app);
-  clips::app::register_bench(app);
-  clips::app::register_infer(app);
-  clips::app::register_listen(app);
-  clips::app::register_lm_score(app);
-  clips::app::register_export_strips(app);
-  clips::app::register_render(app);
-  clips::app::register_serve(app);
+  app.set_version_flag("--version", clips::util::version_line(), "Print the version (and git commit) and exit");
+  app.footer(exit_code_help());
+  register_validate(app);
+  register_show(app);
+  register_plan(app);
+  register_assist(app);
+  register_bench(app);
+  register_infer(app);
+  register_listen(app);
+  register_lm_score(app);
+  register_export_strips(app);
+  register_render(app);
+  register_serve(app);
+  for (CLI::App* sub : app.get_subcommands({})) sub->footer("Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.");
+  auto fail = [](int code, const char* what) {
+    std::fprintf(stderr, "clips: error: %s\n", what);
+    return code;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -74,15 +140,24 @@ int main(int argc, char** argv) {
       for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
       std::fprintf(stderr, "clips: unknown subcommand '%s'; valid subcommands: %s\nRun with --help for more information.\n",
                    app.remaining().front().c_str(), names.c_str());
-      return static_cast<int>(CLI::ExitCodes::RequiredError);
+      return kExitUsage;
     }
-    return app.exit(e);
+    // --help and --version print and succeed; every other parse error is a usage error.
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "clips: error: %s\nRun with --help for more information.\n", e.what());
+    return kExitUsage;
   } catch (const clips::InputError& e) {
-    std::fprintf(stderr, "clips: error: %s\n", e.what());
-    return 2;
+    return fail(kExitInput, e.what());
+  } catch (const clips::lm::LmError& e) {
+    return fail(kExitLanguageModel, e.what());
+  } catch (const clips::eval::MultimodalError& e) {
+    return fail(kExitLanguageModel, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(kExitOutOfMemory, "out of memory");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "clips: error: %s\n", e.what());
-    return 2;
+    std::fprintf(stderr, "clips: internal error: %s\n", e.what());
+    return kExitInternal;
   }
-  return clips::app::g_exit_code;
+  return g_exit_code;
 }

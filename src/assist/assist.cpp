@@ -229,6 +229,14 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   return r;
 }
 
+std::optional<ActionId> qmdp_decision(const AssistSetup& setup, std::vector<Hypothesis> belief, const State& s,
+                                      int t) {
+  Episode ep(setup);
+  if (ep.principal_turn(s)) return std::nullopt;
+  for (auto& h : belief) h.policy = std::make_shared<search::Policy>(*h.policy);  // never touch the caller's
+  return ep.qmdp_decide(belief, s, t);
+}
+
 AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<const model::Specification> true_spec,
                          std::shared_ptr<heuristics::Heuristic> true_heuristic) {

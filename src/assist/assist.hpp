@@ -112,6 +112,14 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<heuristics::Heuristic> true_heuristic);
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
 
+// One Q_MDP choice of the assistant in `s` at model time `t` (observed steps
+// + 1 for the first decision), exactly as the simulated runs decide: for
+// assisting a live human, where no true goal or completed plan exists. The
+// hypotheses' policies are copied before refining. `s` must be the
+// assistant's turn; when it is the principal's, nullopt.
+std::optional<pddl::ActionId> qmdp_decision(const AssistSetup& setup, std::vector<Hypothesis> belief,
+                                            const pddl::State& s, int t);
+
 // Metrics shared by every method.
 double plan_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan);
 double human_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan,

@@ -6,12 +6,17 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "language/listener.hpp"
+#include "util/hash.hpp"
+#include "util/version.hpp"
 
 namespace clips::eval {
 
@@ -62,7 +67,57 @@ void check_selection(const data::Dataset& ds, const BenchOptions& opts) {
                                  name_list(known, known.size())));
 }
 
+std::string utc_now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::string csv_quote(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
 }  // namespace
+
+std::string dataset_fingerprint(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files = {fs::path(dir) / "domain.pddl"};
+  std::vector<fs::path> problems;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fs::path(dir) / "problems", ec))
+    if (e.path().extension() == ".pddl") problems.push_back(e.path());
+  std::sort(problems.begin(), problems.end());
+  files.insert(files.end(), problems.begin(), problems.end());
+  std::uint64_t h = util::kFnv64Offset;
+  for (const auto& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    if (!in) continue;
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    const std::string name = f.filename().string();
+    h = util::fnv1a64(name, h);
+    h = util::fnv1a64(std::string_view("\0", 1), h);
+    h = util::fnv1a64(bytes.str(), h);
+  }
+  return fmt::format("{:016x}", h);
+}
+
+const nlohmann::json* paper_results_for(const BenchReport& r, const nlohmann::json& paper_all) {
+  if (!paper_all.is_object() || !paper_all.contains(r.domain)) return nullptr;
+  const auto fp = paper_all.find("_fingerprints");
+  if (fp == paper_all.end() || !fp->is_object() || !fp->contains(r.domain)) return nullptr;
+  const auto& known = (*fp)[r.domain];
+  const auto matches = [&](const nlohmann::json& v) { return v.is_string() && v.get<std::string>() == r.fingerprint; };
+  bool ok = matches(known);
+  if (known.is_array())
+    for (const auto& v : known) ok |= matches(v);
+  return ok ? &paper_all[r.domain] : nullptr;
+}
 
 BenchReport run_bench(const BenchOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
@@ -71,6 +126,11 @@ BenchReport run_bench(const BenchOptions& opts) {
   check_selection(ds0, opts);
   rep.domain = data::to_string(ds0.kind());
   rep.dataset = opts.dataset;
+  rep.fingerprint = dataset_fingerprint(opts.dataset);
+  rep.started_utc = utc_now_iso8601();
+  rep.seed = opts.experiment.seed;
+  rep.assistance = opts.experiment.all_assistance ? "all" : "default";
+  rep.methods_requested = opts.experiment.methods;
   std::vector<const data::PlanRecord*> todo;
   for (auto& p : ds0.plans()) {
     bool wanted = opts.plans.empty() ? p.evaluated
@@ -165,6 +225,16 @@ std::string summary_json(const BenchReport& r) {
   nlohmann::ordered_json j;
   j["domain"] = r.domain;
   j["dataset"] = r.dataset;
+  j["dataset_fingerprint"] = r.fingerprint;
+  j["clips_version"] = util::version();
+  j["git_commit"] = util::git_commit().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(util::git_commit());
+  j["date"] = r.started_utc;
+  j["seed"] = r.seed;
+  j["assistance"] = r.assistance;
+  nlohmann::ordered_json ran = nlohmann::ordered_json::array();
+  for (auto& s : r.summary) ran.push_back(s.method);
+  j["methods_run"] = ran;
+  j["methods_requested"] = r.methods_requested;  // [] = the domain's defaults
   j["plans"] = r.plans.size();
   j["failed_plans"] = r.failed_plans;
   j["lm"] = r.lm;
@@ -176,6 +246,10 @@ std::string summary_json(const BenchReport& r) {
   nlohmann::ordered_json methods = nlohmann::ordered_json::object();
   for (auto& s : r.summary) {
     nlohmann::ordered_json m = nlohmann::ordered_json::object();
+    int n = 0;  // plans the method ran on without an error
+    for (auto& p : r.plans)
+      if (const MethodResult* mr = p.find(s.method); mr && mr->error.empty()) ++n;
+    m["n"] = n;
     for (auto& name : kMetricNames) {
       auto it = s.metrics.find(name);
       if (it == s.metrics.end()) continue;
@@ -187,18 +261,17 @@ std::string summary_json(const BenchReport& r) {
   return j.dump(2) + "\n";
 }
 
+// Columns after the first two (plan, method, which readers take by position)
+// are read by name; `domain` was added last so no position moved.
 std::string results_csv(const BenchReport& r) {
   std::string out = "plan,method,p_true_goal,assist_precision,assist_recall,plan_length,human_cost,plan_cost,"
-                    "rel_plan_length,rel_human_cost,goal_success,seconds,options,goal_posterior,error\n";
-  auto quote = [](std::string s) {
-    std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-  };
+                    "rel_plan_length,rel_human_cost,goal_success,seconds,options,goal_posterior,error,domain\n";
+  // Six significant digits: fast plans take well under a millisecond.
+  const auto secs = [](double v) { return fmt::format("{:.6g}", v); };
   for (auto& p : r.plans) {
     if (!p.error.empty()) {
-      // plan, 10 empty metric fields, seconds, options, goal_posterior, error: the header's 15 fields.
-      out += p.plan_id + std::string(11, ',') + fmt::format("{:.3f}", p.seconds) + ",,," + quote(p.error) + "\n";
+      // plan, 10 empty metric fields, seconds, options, goal_posterior, error, domain: the header's 16 fields.
+      out += p.plan_id + std::string(11, ',') + secs(p.seconds) + ",,," + csv_quote(p.error) + "," + r.domain + "\n";
       continue;
     }
     for (auto& m : p.methods) {
@@ -207,11 +280,32 @@ std::string results_csv(const BenchReport& r) {
       for (size_t g = 0; g < m.goal_posterior.size(); ++g)
         post += (g ? ";" : "") + p.goals[g] + "=" + fmt::format("{:.4g}", m.goal_posterior[g]);
       auto relative = [&](double v) { return m.has_relative ? fmt::format("{:.6g}", v) : std::string(); };
-      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{:.3f},{},{},{}\n", p.plan_id,
+      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{},{},{},{},{}\n", p.plan_id,
                          m.method, m.p_true_goal ? fmt::format("{:.6g}", *m.p_true_goal) : "", m.precision, m.recall,
                          m.plan_length, m.human_cost, m.plan_cost, relative(m.rel_plan_length),
-                         relative(m.rel_human_cost), m.goal_success, m.seconds, quote(opts), quote(post),
-                         m.error.empty() ? "" : quote(m.error));
+                         relative(m.rel_human_cost), m.goal_success, secs(m.seconds), csv_quote(opts), csv_quote(post),
+                         m.error.empty() ? "" : csv_quote(m.error), r.domain);
+    }
+  }
+  return out;
+}
+
+std::string posteriors_csv(const BenchReport& r) {
+  std::string out = "domain,plan,method,t,goal,probability\n";
+  const auto rows = [&](const PlanOutcome& p, const MethodResult& m, size_t t, const std::vector<double>& post) {
+    for (size_t g = 0; g < post.size() && g < p.goals.size(); ++g)
+      out += fmt::format("{},{},{},{},{},{:.17g}\n", r.domain, p.plan_id, m.method, t, p.goals[g], post[g]);
+  };
+  for (auto& p : r.plans) {
+    if (!p.error.empty()) continue;
+    for (auto& m : p.methods) {
+      if (!m.error.empty()) continue;
+      if (!m.posterior_steps.empty()) {
+        for (size_t t = 0; t < m.posterior_steps.size(); ++t) rows(p, m, t, m.posterior_steps[t]);
+      } else if (!m.goal_posterior.empty()) {
+        const size_t T = p.goal_posterior_steps.empty() ? 0 : p.goal_posterior_steps.size() - 1;
+        rows(p, m, T, m.goal_posterior);
+      }
     }
   }
   return out;
@@ -225,7 +319,7 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
     } catch (...) {
     }
   }
-  const nlohmann::json* ours_paper = paper.contains(r.domain) ? &paper[r.domain] : nullptr;
+  const nlohmann::json* ours_paper = paper_results_for(r, paper);
   std::vector<std::pair<std::string, std::string>> cols = {{"p_true_goal", "P(g_true)"},
                                                            {"assist_precision", "precision"},
                                                            {"assist_recall", "recall"},
@@ -236,7 +330,8 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
   out += fmt::format("{:<26}", "method");
   for (auto& [k, label] : cols) out += fmt::format(" | {:^23}", label);
   out += "\n" + fmt::format("{:<26}", "");
-  for (size_t i = 0; i < cols.size(); ++i) out += fmt::format(" | {:^11} {:^11}", "ours", "paper");
+  for (size_t i = 0; i < cols.size(); ++i)
+    out += ours_paper ? fmt::format(" | {:^11} {:^11}", "ours", "paper") : fmt::format(" | {:^23}", "ours");
   out += "\n" + std::string(26 + cols.size() * 26, '-') + "\n";
   bool no_reference = false;  // relative metrics without a CLIPS run to compare with
   for (auto& s : r.summary) {
@@ -248,8 +343,12 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
                          : relative         ? "n/a"
                                             : "–";
       no_reference |= relative && it == s.metrics.end();
+      if (!ours_paper) {
+        out += fmt::format(" | {:^23}", ours);
+        continue;
+      }
       std::string theirs = "–";
-      if (ours_paper && ours_paper->contains(s.method) && (*ours_paper)[s.method].contains(k)) {
+      if (ours_paper->contains(s.method) && (*ours_paper)[s.method].contains(k)) {
         auto v = (*ours_paper)[s.method][k];
         theirs = fmt::format("{:.2f} ({:.2f})", v[0].get<double>(), v[1].get<double>());
       }
@@ -257,7 +356,8 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
     }
     out += "\n";
   }
-  if (ours_paper && ours_paper->contains("multimodal") && !r.summary.empty()) {
+  // The paper has a multimodal row for doors-keys-gems only; say why ours has none.
+  if (r.domain == "doors-keys-gems" && !r.summary.empty()) {
     bool ran = false;
     for (auto& s : r.summary) ran |= s.method == "multimodal";
     if (!ran) out += "multimodal (GPT-4V-style)  | skipped: no chat endpoint configured (see --help)\n";

@@ -2,7 +2,9 @@
 // `clips bench`: every plan of a dataset directory x every method, in
 // parallel over plans, with deterministic results for a given seed whatever
 // the number of jobs; aggregated like the paper's Table 1.
+#include <cstdint>
 #include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,11 @@ struct MethodSummary {
 
 struct BenchReport {
   std::string domain, dataset, lm;
+  std::string fingerprint;       // dataset_fingerprint(dataset): tells the paper's datasets from others
+  std::string started_utc;       // ISO 8601, e.g. 2026-12-02T05:01:02Z
+  uint64_t seed = 1;
+  std::string assistance;        // "default" (offline Q_MDP) or "all"
+  std::vector<std::string> methods_requested;  // --methods; empty: the domain's defaults
   std::string speaker_rule;      // the CLIPS speaker model's command rule
   std::string utterance_timing;  // before or after the action at the utterance's index
   std::string qa_floor;          // Q_MDP floor: dead-ends or horizon
@@ -43,7 +50,22 @@ BenchReport run_bench(const BenchOptions& opts);
 // Writers.
 std::string summary_json(const BenchReport& r);
 std::string results_csv(const BenchReport& r);
-// A table laid out like the paper's Table 1, with its numbers beside ours.
+// Long format, one row per (plan, method, step t, goal): the goal posterior
+// after t observed actions, at full precision (%.17g). Inference methods have
+// rows for t = 0..T; a method with only a final posterior (multimodal) one
+// row per goal at t = T.
+std::string posteriors_csv(const BenchReport& r);
+// A table laid out like the paper's Table 1, with its numbers beside ours
+// when the dataset is one of the paper's (paper_results_for).
 std::string results_table(const BenchReport& r, const std::string& paper_json_path);
+
+// A dataset's fingerprint: FNV-1a (64 bits, hex) over the names and bytes of
+// domain.pddl and problems/*.pddl, in name order. The paper's datasets have
+// theirs recorded in data/paper/results.json ("_fingerprints"), so a folder
+// of the same layout and name but other problems is not taken for them.
+std::string dataset_fingerprint(const std::string& dir);
+// The paper's numbers for the report's domain (results.json's entry), or
+// nullptr when the report's dataset is not the paper's.
+const nlohmann::json* paper_results_for(const BenchReport& r, const nlohmann::json& paper_all);
 
 }  // namespace clips::eval

@@ -172,6 +172,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
         const auto& post = inf.final_posterior(mod);
         r.p_true_goal = post.goals.at(inf.true_goal);
         r.goal_posterior = post.goals;
+        for (const auto& st : inf.steps) r.posterior_steps.push_back(st[mod].goals);
         std::vector<assist::Hypothesis> hyps;
         for (size_t h = 0; h < post.hypotheses.size(); ++h)
           hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h])});
@@ -255,6 +256,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
           score(r, mm.result);
         } catch (const std::exception& e) {
           r.error = e.what();
+          r.failure = std::current_exception();
         }
       } else {
         throw InputError("unknown method '" + m + "'");
@@ -271,8 +273,49 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     }
   } catch (const std::exception& e) {
     out.error = e.what();
+    out.failure = std::current_exception();
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations, lm::LanguageModel& lm,
+                                const ExperimentOptions& opts, const std::string& method) {
+  if (method != "clips" && method != "lang_only" && method != "action_only")
+    throw InputError("--method " + method + " cannot assist from ad-hoc observations (clips, lang_only or action_only)");
+  auto task = ds.task(observations.problem_id);
+  const DomainFacts df = facts_of(ds.kind());
+  inference::InferenceOptions io;
+  io.utterance.speaker_rule = opts.speaker_rule;
+  io.threads = opts.inference_threads;
+  io.utterance_timing = opts.utterance_timing;
+  LiveDecision out;
+  out.inference = inference::run_inference_on_observations(ds, observations, lm, io);
+  const inference::Belief& belief = *out.inference.belief;
+  const Modality mod = method == "clips" ? Modality::Both : method == "lang_only" ? Modality::UtteranceOnly
+                                                                                   : Modality::ActionOnly;
+  const auto& post = out.inference.final_posterior(mod);
+  out.goal_posterior = post.goals;
+
+  assist::AssistSetup setup;
+  setup.task = task;
+  setup.start = belief.state();
+  setup.observed_steps = static_cast<int>(out.inference.steps.size()) - 1;
+  setup.horizon = df.horizon;
+  setup.principal = df.principal;
+  setup.assistant = df.assistant;
+  setup.noop_cost = df.noop_cost;
+  setup.refine = belief.searches();
+  setup.qa_floor = opts.qa_floor;
+  if (setup.observed_steps >= setup.horizon)
+    throw InputError("the observations are " + std::to_string(setup.observed_steps) + " actions long, at or past the "
+                     "assistance horizon of " + std::to_string(setup.horizon) + " steps");
+  std::vector<assist::Hypothesis> hyps;
+  for (size_t h = 0; h < post.hypotheses.size(); ++h)
+    hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h])});
+  const auto a = assist::qmdp_decision(setup, std::move(hyps), setup.start, setup.observed_steps + 1);
+  out.next_actor = a ? df.assistant : df.principal;
+  if (a) out.action = task->action_name(*a);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // The experiment runner behind `clips bench` and `clips assist`: for one
 // dataset plan, run inference once (three modalities), assistance for every
 // method, and score each run with the paper's metrics (clips-spec.md 10).
+#include <exception>
 #include <map>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 #include "data/dataset.hpp"
 #include "assist/assist.hpp"
 #include "eval/multimodal.hpp"
+#include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
 
@@ -24,6 +26,8 @@ struct MethodResult {
   std::string method;
   std::optional<double> p_true_goal;  // inference methods only
   std::vector<double> goal_posterior;
+  // Inference methods: the goal posterior after each observed step ([0]: at s_0).
+  std::vector<std::vector<double>> posterior_steps;
   double precision = 0, recall = 0;
   double plan_length = 0, human_cost = 0, plan_cost = 0;
   double rel_plan_length = 0, rel_human_cost = 0;  // / CLIPS offline Q_MDP on the same plan
@@ -36,6 +40,7 @@ struct MethodResult {
   // (issue 8) A method that failed on this plan (e.g. the multimodal endpoint
   // or its answer); such results are left out of the aggregates.
   std::string error;
+  std::exception_ptr failure;  // what set `error`, so a caller can rethrow it with its type
   std::vector<std::string> notes;  // e.g. multimodal actions that were skipped
 };
 
@@ -48,6 +53,7 @@ struct PlanOutcome {
   double seconds = 0;
   std::string error;  // non-empty when the plan could not be evaluated
   std::vector<std::string> utterance_warnings;  // inference::InferenceRun::utterance_warnings
+  std::exception_ptr failure;  // the exception behind `error` (its type tells input from LM failures)
   // (issue 8) CLIPS goal posterior after each observed step ([0]: at s_0), for pictures.
   std::vector<std::vector<double>> goal_posterior_steps;
   const MethodResult* find(const std::string& m) const;
@@ -73,6 +79,19 @@ struct ExperimentOptions {
 std::vector<std::string> default_methods(data::DomainKind kind, bool all_assistance);
 // Every method name evaluate_plan accepts on this kind of domain.
 std::vector<std::string> known_methods(data::DomainKind kind);
+
+// Assisting a live human: inference over observations that are not a dataset
+// plan (built by the caller; see inference::run_inference_on_observations),
+// then one Q_MDP decision of the assistant in the state they lead to, with the
+// posterior of `method` (clips, lang_only or action_only).
+struct LiveDecision {
+  inference::InferenceRun inference;
+  std::string next_actor;             // who acts next in the final state
+  std::optional<std::string> action;  // the assistant's choice; nullopt on the principal's turn
+  std::vector<double> goal_posterior; // the weights behind it, per goal
+};
+LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations, lm::LanguageModel& lm,
+                                const ExperimentOptions& opts, const std::string& method);
 
 // Runs every requested method on one plan. Thread-safe for distinct Datasets.
 PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,

@@ -224,7 +224,9 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
     } catch (...) {
     }
   }
-  const nlohmann::json* paper = paper_all.contains(r.domain) ? &paper_all[r.domain] : nullptr;
+  // Only the paper's own datasets are shown beside its numbers.
+  const nlohmann::json* paper = paper_results_for(r, paper_all);
+  const size_t per_metric = paper ? 2 : 1;
 
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   h += "<title>CLIPS bench report \u2014 " + html_escape(r.domain) + "</title>\n<style>" + std::string(kStyle) +
@@ -236,11 +238,11 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
                    r.max_rss_kb / 1024.0);
 
   // ---- results table
-  h += "<h2>Results (mean, standard error in brackets), ours beside the paper's</h2>\n<table class=\"results\">\n<tr><th "
-       "rowspan=\"2\">method</th>";
-  for (auto& c : kColumns) h += "<th colspan=\"2\">" + html_escape(c.label) + "</th>";
+  h += std::string("<h2>Results (mean, standard error in brackets)") + (paper ? ", ours beside the paper's" : "") +
+       "</h2>\n<table class=\"results\">\n<tr><th rowspan=\"2\">method</th>";
+  for (auto& c : kColumns) h += fmt::format("<th colspan=\"{}\">", per_metric) + html_escape(c.label) + "</th>";
   h += "</tr>\n<tr>";
-  for (size_t i = 0; i < kColumns.size(); ++i) h += "<th>ours</th><th>paper</th>";
+  for (size_t i = 0; i < kColumns.size(); ++i) h += paper ? "<th>ours</th><th>paper</th>" : "<th>ours</th>";
   h += "</tr>\n";
   bool multimodal_ran = false;
   for (auto& s : r.summary) {
@@ -249,14 +251,14 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
     for (auto& c : kColumns) {
       auto it = s.metrics.find(c.key);
       h += cell(it == s.metrics.end() ? nullptr : &it->second);
-      h += paper_cell(paper_value(paper, s.method, c.key));
+      if (paper) h += paper_cell(paper_value(paper, s.method, c.key));
     }
     h += "</tr>\n";
   }
-  if (paper && paper->contains("multimodal") && !multimodal_ran) {
+  if (r.domain == "doors-keys-gems" && !multimodal_ran) {
     h += fmt::format("<tr class=\"skipped\"><td class=\"m\">multimodal</td><td colspan=\"{}\">skipped: no chat endpoint "
                      "configured (--chat-base-url or $CLIPS_CHAT_BASE_URL)</td></tr>\n",
-                     kColumns.size() * 2);
+                     kColumns.size() * per_metric);
   }
   h += "</table>\n";
 

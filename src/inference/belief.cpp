@@ -326,8 +326,10 @@ StepRecord Belief::record(std::string action, bool evidence, std::vector<Utteran
 
 // ---------------------------------------------------------------------------
 
-InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
-                           const InferenceOptions& options) {
+namespace {
+
+InferenceRun run_observed(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                          const InferenceOptions& options, bool known_truth) {
   const auto t0 = std::chrono::steady_clock::now();
   auto task = dataset.task(plan.problem_id);
   ProfileSet ps = plan_cost_profiles(dataset.kind(), plan);
@@ -335,7 +337,7 @@ InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord&
   run.plan_id = plan.id;
   auto goals = dataset.candidate_goals(plan);
   for (auto& g : goals) run.goals.push_back(g.label);
-  run.true_goal = dataset.true_goal_index(plan);
+  run.true_goal = known_truth ? dataset.true_goal_index(plan) : -1;
   for (auto& p : ps.profiles) run.profiles.push_back(p.name);
   run.true_profile = ps.true_index;
 
@@ -369,6 +371,18 @@ InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord&
     for (const auto& u : st.utterances)
       if (!u.warning.empty()) run.utterance_warnings.push_back(u.warning);
   return run;
+}
+
+}  // namespace
+
+InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                           const InferenceOptions& options) {
+  return run_observed(dataset, plan, lm, options, /*known_truth=*/true);
+}
+
+InferenceRun run_inference_on_observations(const data::Dataset& dataset, const data::PlanRecord& plan,
+                                           lm::LanguageModel& lm, const InferenceOptions& options) {
+  return run_observed(dataset, plan, lm, options, /*known_truth=*/false);
 }
 
 }  // namespace clips::inference

@@ -237,4 +237,12 @@ struct InferenceRun {
 InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
                            const InferenceOptions& options = {});
 
+// The same over observations that are not a dataset plan (actions and
+// utterances given on the command line): `observed` on the dataset's problem
+// `plan.problem_id`, with the candidate goals of that problem and the cost
+// profiles of `plan.tag` (mDKG: keys or doors). `plan.completed` is not read
+// and no true goal is known (true_goal = -1).
+InferenceRun run_inference_on_observations(const data::Dataset& dataset, const data::PlanRecord& plan,
+                                           lm::LanguageModel& lm, const InferenceOptions& options = {});
+
 }  // namespace clips::inference

@@ -98,7 +98,7 @@ TEST(CliPlan, RunTimeLimitStopsRtaaAndAstar) {
                  planner + " --goal '(> (xloc human) 100)' --time-limit 1" +
                  (planner == "rtaa" ? " --max-seconds 0.2" : ""));  // 0.2 s would end A*'s single search
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    EXPECT_EQ(r.status, 1) << planner << "\n" << r.out;
+    EXPECT_EQ(r.status, 5) << planner << "\n" << r.out;
     EXPECT_TRUE(contains(r.out, "stopped: time limit of 1 s reached after")) << planner << "\n" << r.out;
     EXPECT_TRUE(contains(r.out, "status time_limit")) << planner << "\n" << r.out;
     EXPECT_LT(secs, 15) << planner;
@@ -109,7 +109,7 @@ TEST(CliPlan, JsonReportsTheTimeLimitStatus) {
   if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not found";
   auto r = run(clips_binary() + " plan --dataset " + clips::paths::dkg_dataset() +
                " --problem 2 --planner rtaa --goal '(> (xloc human) 100)' --time-limit 0.5 --json");
-  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.status, 5) << r.out;
   EXPECT_TRUE(contains(r.out, "\"status\":\"time_limit\"")) << r.out;
 }
 

@@ -137,7 +137,7 @@ TEST(RenderCli, PngAndBadArguments) {
   auto img = render::read_png(out);
   EXPECT_GT(img.width, 200);
   EXPECT_GT(img.height, 100);
-  r = testing::run(clips_binary() + " render --dataset " + examples_dkg() + " --plan e1.1.keys --step 999 --out " +
+  r = testing::run(clips_binary() + " render --dataset " + examples_dkg() + " --plan e1.1.keys --step 999 --force --out " +
                    out.string());
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.out.find("out of range"), std::string::npos) << r.out;
