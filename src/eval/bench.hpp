@@ -3,6 +3,7 @@
 // parallel over plans, with deterministic results for a given seed whatever
 // the number of jobs; aggregated like the paper's Table 1.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ struct BenchReport {
   double wall_seconds = 0;
   long max_rss_kb = 0;
   int failed_plans = 0;
+  // The dataset the plans ran on (loaded once, shared by every worker);
+  // write_report reuses it instead of loading it again.
+  std::shared_ptr<const data::Dataset> loaded;
 };
 
 BenchReport run_bench(const BenchOptions& opts);
