@@ -42,6 +42,7 @@ void register_plan(CLI::App& app) {
     double max_seconds = 300;
     int max_steps = 200;
     std::optional<double> time_limit;
+    int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions;
   };
   auto o = std::make_shared<Opts>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl and problems/)");
@@ -69,6 +70,11 @@ void register_plan(CLI::App& app) {
                               "astar: only --max-seconds)",
                               kRtaaTimeLimit))
       ->check(PositiveSeconds);
+  cmd->add_option("--max-ground-actions", o->max_ground_actions,
+                  fmt::format("Refuse to ground a task that may have more ground actions than this (default {}; "
+                              "each takes about half a kilobyte)",
+                              pddl::GroundingOptions::kDefaultMaxGroundActions))
+      ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
   cmd->add_flag("--json", o->json, "Print one JSON object: plan, cost, expanded, seconds, status");
   cmd->callback([o, goal_opt] {
     using clock = std::chrono::steady_clock;
@@ -86,6 +92,7 @@ void register_plan(CLI::App& app) {
     if (!o->dataset.empty()) {
       if (o->problem.empty() && o->from_plan.empty()) throw InputError("--problem or --from-plan is required with --dataset");
       auto ds = data::Dataset::load(o->dataset);
+      ds.set_max_ground_actions(o->max_ground_actions);
       kind = ds.kind();
       if (!o->from_plan.empty()) {
         const auto& p = ds.plan(o->from_plan);
@@ -102,7 +109,9 @@ void register_plan(CLI::App& app) {
         throw InputError("give --dataset DIR --problem ID, or --domain FILE --problem FILE");
       auto d = std::make_shared<pddl::Domain>(pddl::load_domain(o->domain_file));
       auto p = std::make_shared<pddl::Problem>(pddl::load_problem(*d, o->problem));
-      task = std::make_shared<pddl::Task>(d, p, data::grounding_options(kind));
+      pddl::GroundingOptions go = data::grounding_options(kind);
+      go.max_ground_actions = o->max_ground_actions;
+      task = std::make_shared<pddl::Task>(d, p, go);
       start = task->initial_state();
     }
     std::string goal = o->goal;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -279,9 +280,20 @@ struct PlanKey {
   }
 };
 
+// CLIPS_DEBUG_LOAD=1: one stderr line per dataset load and per grounded
+// problem, to check that parallel commands load and ground once.
+bool debug_load() {
+  static const bool on = [] {
+    const char* v = std::getenv("CLIPS_DEBUG_LOAD");
+    return v && *v && std::string(v) != "0";
+  }();
+  return on;
+}
+
 }  // namespace
 
 Dataset Dataset::load(const std::string& dir_in) {
+  if (debug_load()) std::fprintf(stderr, "dataset: loading %s\n", dir_in.c_str());
   Dataset ds;
   ds.dir_ = dir_in;
   fs::path dir(dir_in);
@@ -401,15 +413,25 @@ std::string Dataset::problem_path(const std::string& problem_id) const {
 }
 
 std::shared_ptr<const pddl::Task> Dataset::task(const std::string& problem_id) const {
-  static std::mutex mu;
-  std::lock_guard<std::mutex> lock(mu);
-  auto it = tasks_.find(problem_id);
-  if (it != tasks_.end()) return it->second;
+  std::shared_ptr<TaskSlot> slot;
+  {
+    std::lock_guard<std::mutex> lock(tasks_->mutex);
+    auto& s = tasks_->slots[problem_id];
+    if (!s) s = std::make_shared<TaskSlot>();
+    slot = s;
+  }
+  std::lock_guard<std::mutex> lock(slot->mutex);
+  if (slot->task) return slot->task;
+  // A failure leaves the slot empty: the next caller tries again (and fails
+  // with the same error).
+  if (debug_load()) std::fprintf(stderr, "dataset: grounding problem %s\n", problem_id.c_str());
   auto prob = std::make_shared<pddl::Problem>(pddl::load_problem(*domain_, problem_path(problem_id),
                                                                    /*with_goal=*/kind_ == DomainKind::Generic));
-  auto t = std::make_shared<pddl::Task>(domain_, prob, grounding_options(kind_));
+  pddl::GroundingOptions go = grounding_options(kind_);
+  go.max_ground_actions = max_ground_actions_;
+  auto t = std::make_shared<pddl::Task>(domain_, prob, go);
   if (kind_ == DomainKind::DoorsKeysGems) check_dkg_positions(*t, problem_path(problem_id));
-  tasks_[problem_id] = t;
+  slot->task = t;
   return t;
 }
 

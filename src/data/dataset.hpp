@@ -16,6 +16,7 @@
 // plan is asked for, so every other plan stays usable.
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,11 +72,17 @@ class Dataset {
   // Throws InputError listing ids, or with the plan's own load error.
   const PlanRecord& plan(const std::string& id) const;
 
-  // Grounded task of a problem (grounded once, then shared). For mDKG, throws
+  // Grounded task of a problem (grounded once, then shared). Thread-safe: the
+  // first caller for a problem grounds it while later callers for the same
+  // problem wait; other problems load in parallel. A Dataset (and its tasks)
+  // can be shared by any number of threads. For mDKG, throws
   // an InputError naming the problem file if an agent or door is not on the
   // grid, or a key or gem is neither on it nor held by an agent.
   std::shared_ptr<const pddl::Task> task(const std::string& problem_id) const;
   std::string problem_path(const std::string& problem_id) const;
+  // Raises or lowers GroundingOptions::max_ground_actions for tasks grounded
+  // after the call (clips plan --max-ground-actions).
+  void set_max_ground_actions(int64_t n) { max_ground_actions_ = n; }
 
   // The candidate goals of a plan's problem, in the paper's order, and the
   // index of the plan's true goal among them.
@@ -97,7 +104,18 @@ class Dataset {
   std::map<std::string, std::vector<std::string>> goal_sets_;   // VH problem -> labels
   std::map<std::string, StimulusInfo> stimuli_;
   std::string stimuli_error_;  // a malformed stimuli.json: raised by stimulus()
-  mutable std::map<std::string, std::shared_ptr<const pddl::Task>> tasks_;
+  int64_t max_ground_actions_ = pddl::GroundingOptions::kDefaultMaxGroundActions;
+  // Grounded tasks, one slot per problem, each with its own lock. Shared by
+  // copies of the Dataset (the tasks are immutable).
+  struct TaskSlot {
+    std::mutex mutex;
+    std::shared_ptr<const pddl::Task> task;
+  };
+  struct TaskTable {
+    std::mutex mutex;  // guards `slots` only, never held while grounding
+    std::map<std::string, std::shared_ptr<TaskSlot>> slots;
+  };
+  std::shared_ptr<TaskTable> tasks_ = std::make_shared<TaskTable>();
 };
 
 // The two list files the loader reads, parsed from their text (`path` names

@@ -48,9 +48,9 @@ PlanCheck validate_plan(const Dataset& ds, const PlanRecord& p) {
     int truth = ds.true_goal_index(p);
     std::vector<int> reached;
     for (size_t i = 0; i < goals.size(); ++i) {
-      pddl::CondId g = task->compile_text(goals[i].condition,
+      pddl::CompiledCondition g = task->compile_text(goals[i].condition,
                                               goals[i].source.empty() ? "goal " + goals[i].label : goals[i].source);
-      if (task->holds(comp.states.back(), g)) reached.push_back(static_cast<int>(i));
+      if (g.holds(comp.states.back())) reached.push_back(static_cast<int>(i));
     }
     if (ds.kind() == DomainKind::VirtualHome) {
       // VH goals nest (juice1 is part of juice2): the completion must reach the

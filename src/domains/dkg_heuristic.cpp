@@ -19,9 +19,10 @@ namespace {
 // nullopt = the subformula was dropped (not a has/unlocked-by structure).
 using Dnf = std::optional<std::vector<DkgClause>>;
 
-Dnf to_dnf(const DkgMapAnalysis& m, CondId c, std::optional<pddl::PredId> has, std::optional<pddl::PredId> ub) {
+Dnf to_dnf(const DkgMapAnalysis& m, const pddl::CompiledCondition& g, CondId c, std::optional<pddl::PredId> has,
+           std::optional<pddl::PredId> ub) {
   const pddl::Task& t = m.task();
-  const CNode& n = t.cnode(c);
+  const CNode& n = g.cnode(c);
   switch (n.op) {
     case CNode::True: return std::vector<DkgClause>{DkgClause{}};
     case CNode::False: return std::vector<DkgClause>{};
@@ -35,7 +36,7 @@ Dnf to_dnf(const DkgMapAnalysis& m, CondId c, std::optional<pddl::PredId> has, s
     case CNode::And: {
       std::vector<DkgClause> acc{DkgClause{}};  // empty conjunction = true
       for (int i = 0; i < n.b; ++i) {
-        Dnf kid = to_dnf(m, t.ckids()[n.a + i], has, ub);
+        Dnf kid = to_dnf(m, g, g.ckids()[n.a + i], has, ub);
         if (!kid) continue;
         std::vector<DkgClause> prod;
         for (const auto& x : acc)
@@ -52,7 +53,7 @@ Dnf to_dnf(const DkgMapAnalysis& m, CondId c, std::optional<pddl::PredId> has, s
     case CNode::Or: {
       std::vector<DkgClause> acc;  // empty disjunction = false
       for (int i = 0; i < n.b; ++i) {
-        Dnf kid = to_dnf(m, t.ckids()[n.a + i], has, ub);
+        Dnf kid = to_dnf(m, g, g.ckids()[n.a + i], has, ub);
         if (kid) acc.insert(acc.end(), kid->begin(), kid->end());
       }
       return acc;
@@ -65,11 +66,11 @@ bool in(uint64_t mask, int i) { return (mask >> i) & 1u; }
 
 }  // namespace
 
-std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, CondId goal) {
+std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, const pddl::CompiledCondition& goal) {
   const auto& d = map.task().domain();
   // The goal is a conjunction of goal terms in the reference, so a goal that
   // is dropped entirely leaves an empty conjunction: one empty clause.
-  Dnf r = to_dnf(map, goal, d.find_predicate("has"), d.find_predicate("unlocked-by"));
+  Dnf r = to_dnf(map, goal, goal.root(), d.find_predicate("has"), d.find_predicate("unlocked-by"));
   std::vector<DkgClause> out = r ? *r : std::vector<DkgClause>{DkgClause{}};
   // Drop repeated clauses (the reference's unique! on goal terms).
   std::vector<DkgClause> uniq;
@@ -406,15 +407,15 @@ void DkgDistanceHeuristic::prepare(const model::Specification& spec, const pddl:
   kids_.clear();
   has_.clear();
   has_pred_ = t.domain().find_predicate("has");
-  root_ = compile(spec.goal());
+  root_ = compile(spec.goal(), spec.goal().root());
   fill_has_ = nullptr;
   m.read(root.data(), view_);
 }
 
-int DkgDistanceHeuristic::compile(CondId c) {
+int DkgDistanceHeuristic::compile(const pddl::CompiledCondition& g, CondId c) {
   const DkgMapAnalysis& m = *map_;
   const pddl::Task& t = m.task();
-  const CNode& n = t.cnode(c);
+  const CNode& n = g.cnode(c);
   Node node;
   switch (n.op) {
     case CNode::True: node.op = Node::Zero; break;
@@ -436,7 +437,7 @@ int DkgDistanceHeuristic::compile(CondId c) {
     case CNode::And:
     case CNode::Or: {
       std::vector<int> ks;
-      for (int i = 0; i < n.b; ++i) ks.push_back(compile(t.ckids()[n.a + i]));
+      for (int i = 0; i < n.b; ++i) ks.push_back(compile(g, g.ckids()[n.a + i]));
       node.op = n.op == CNode::And ? Node::Max : Node::Min;
       node.a = static_cast<int>(kids_.size());
       node.b = static_cast<int>(ks.size());

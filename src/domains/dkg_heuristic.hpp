@@ -42,7 +42,7 @@ using DkgClause = std::vector<DkgGoalAtom>;
 // their parent (as the reference's transform_goals does); a conjunction left
 // empty is true (one empty clause), a disjunction left empty is false (no
 // clauses). Static parts are already folded by the Task's compiler.
-std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, pddl::CondId goal);
+std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, const pddl::CompiledCondition& goal);
 
 // Minimum action costs over both agents (5.5 (c)).
 struct DkgMinCosts {
@@ -152,7 +152,7 @@ class DkgDistanceHeuristic : public heuristics::Heuristic {
     std::vector<double> handover_from;  // per agent: (handover b agent item) cost, inf if none
     double agent_cheapest = 0;          // cheapest action of the goal agent
   };
-  int compile(pddl::CondId c);
+  int compile(const pddl::CompiledCondition& goal, pddl::CondId c);
   double eval(int node, const uint64_t* s);
   double has_bound(const HasBound& h, const uint64_t* s) const;
 

@@ -122,7 +122,8 @@ const nlohmann::json* paper_results_for(const BenchReport& r, const nlohmann::js
 BenchReport run_bench(const BenchOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
   BenchReport rep;
-  auto ds0 = data::Dataset::load(opts.dataset);
+  rep.loaded = std::make_shared<const data::Dataset>(data::Dataset::load(opts.dataset));
+  const data::Dataset& ds0 = *rep.loaded;
   check_selection(ds0, opts);
   rep.domain = data::to_string(ds0.kind());
   rep.dataset = opts.dataset;
@@ -159,8 +160,9 @@ BenchReport run_bench(const BenchOptions& opts) {
   std::mutex mu;
   bool tty = opts.progress && isatty(STDERR_FILENO);
   auto worker = [&] {
-    // Each worker grounds its own tasks: compiled conditions are not shared across threads.
-    auto ds = data::Dataset::load(opts.dataset);
+    // Every worker shares ds0: its tasks are immutable once grounded, and each
+    // problem is grounded once, by whichever worker needs it first.
+    const data::Dataset& ds = ds0;
     for (;;) {
       size_t i = next++;
       if (i >= todo.size()) return;

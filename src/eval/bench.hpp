@@ -4,6 +4,7 @@
 // the number of jobs; aggregated like the paper's Table 1.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct BenchReport {
   double wall_seconds = 0;
   long max_rss_kb = 0;
   int failed_plans = 0;
+  // The dataset the plans ran on (loaded once, shared by every worker);
+  // write_report reuses it instead of loading it again.
+  std::shared_ptr<const data::Dataset> loaded;
 };
 
 BenchReport run_bench(const BenchOptions& opts);

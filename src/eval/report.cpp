@@ -313,8 +313,15 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
   if (ec) throw InputError("cannot create report directory " + o.dir + "/plans: " + ec.message());
   std::vector<PlanAssets> assets(r.plans.size());
   std::atomic<size_t> next{0};
+  // One dataset for every worker: the bench's own when it ran here, else loaded once.
+  std::shared_ptr<const data::Dataset> ds = r.loaded;
+  std::string load_error;
+  if (!ds) try {
+      ds = std::make_shared<const data::Dataset>(data::Dataset::load(r.dataset));
+    } catch (const std::exception& e) {
+      load_error = e.what();
+    }
   auto worker = [&] {
-    std::optional<data::Dataset> ds;
     for (;;) {
       size_t i = next++;
       if (i >= r.plans.size()) return;
@@ -322,7 +329,7 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
       PlanAssets& a = assets[i];
       if (!p.error.empty()) continue;
       try {
-        if (!ds) ds = data::Dataset::load(r.dataset);  // one per thread: tasks are not shared across threads
+        if (!ds) throw InputError(load_error);
         const auto& rec = ds->plan(p.plan_id);
         auto task = ds->task(rec.problem_id);
         std::vector<std::string> colours;

@@ -18,15 +18,15 @@ void positive_conjuncts(const pddl::Task& t, pddl::CondId c, std::vector<int>& o
 }
 
 // DNF of a condition over positive atoms; anything else counts as true.
-std::vector<std::vector<int>> dnf(const pddl::Task& t, pddl::CondId c) {
-  const CNode& n = t.cnode(c);
+std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId c) {
+  const CNode& n = g.cnode(c);
   switch (n.op) {
     case CNode::False: return {};
     case CNode::Atom: return {{n.a}};
     case CNode::Or: {
       std::vector<std::vector<int>> out;
       for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(t, t.ckids()[n.a + i]);
+        auto k = dnf(g, g.ckids()[n.a + i]);
         out.insert(out.end(), k.begin(), k.end());
       }
       return out;
@@ -34,7 +34,7 @@ std::vector<std::vector<int>> dnf(const pddl::Task& t, pddl::CondId c) {
     case CNode::And: {
       std::vector<std::vector<int>> acc{{}};
       for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(t, t.ckids()[n.a + i]);
+        auto k = dnf(g, g.ckids()[n.a + i]);
         std::vector<std::vector<int>> next;
         for (auto& a : acc)
           for (auto& b : k) {
@@ -69,7 +69,7 @@ void HMaxHeuristic::prepare(const model::Specification& spec, const pddl::State&
     cost_[a] = spec.cost(a);
     for (int p : pre_[a]) achievers_of_pre_[p].push_back(a);
   }
-  goal_clauses_ = dnf(t, spec.goal());
+  goal_clauses_ = dnf(spec.goal(), spec.goal().root());
   atom_cost_.assign(nb, kInf);
   act_cost_.assign(na, kInf);
   unsat_.assign(na, 0);

@@ -233,7 +233,7 @@ ListenerResult literal_listener(const pddl::Task& task, const pddl::State& s, co
 
 // ---- commands as goals ----------------------------------------------------------
 
-pddl::CondId compile_command_goal(const pddl::Task& task, const commands::Command& command,
+pddl::CompiledCondition compile_command_goal(const pddl::Task& task, const commands::Command& command,
                                   const commands::LanguageConfig& config) {
   const std::string formula = command.to_goal_formula(config);
   return task.compile_text(formula, "<goal of " + command.display_form() + ">");
@@ -247,7 +247,7 @@ pddl::State completed_final_state(const pddl::Task& task, const pddl::PlanFile& 
 
 bool state_satisfies_command(const pddl::Task& task, const pddl::State& state, const commands::Command& command,
                              const commands::LanguageConfig& config) {
-  return task.holds(state, compile_command_goal(task, command, config));
+  return compile_command_goal(task, command, config).holds(state);
 }
 
 pddl::State achieved_facts(const pddl::Task& task, const std::vector<pddl::State>& states) {

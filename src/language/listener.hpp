@@ -118,7 +118,7 @@ ListenerResult literal_listener(const pddl::Task& task, const pddl::State& s, co
 // ---- commands as goals ----------------------------------------------------------
 
 // The goal formula of a command (spec 9.9 / VH spec 7.4) compiled in `task`.
-pddl::CondId compile_command_goal(const pddl::Task& task, const commands::Command& command,
+pddl::CompiledCondition compile_command_goal(const pddl::Task& task, const commands::Command& command,
                                   const commands::LanguageConfig& config);
 
 // The state after the observed plan and then its completion (the completed plan

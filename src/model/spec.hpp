@@ -44,11 +44,11 @@ class Specification {
   const pddl::Task& task() const { return *task_; }
   std::shared_ptr<const pddl::Task> task_ptr() const { return task_; }
   const std::string& goal_text() const { return goal_text_; }
-  pddl::CondId goal() const { return goal_; }
+  const pddl::CompiledCondition& goal() const { return goal_; }
   const CostProfile& profile() const { return profile_; }
   double cost(pddl::ActionId a) const { return action_cost_[a]; }
-  bool is_goal(const uint64_t* s) const { return task_->eval(goal_, s); }
-  bool is_goal(const pddl::State& s) const { return task_->holds(s, goal_); }
+  bool is_goal(const uint64_t* s) const { return goal_.eval(s); }
+  bool is_goal(const pddl::State& s) const { return goal_.holds(s); }
   // Minimum cost over all actions with this name (any agent), +inf if none.
   double min_cost(const std::string& action_name) const;
   // A stable key for caches: goal text + profile name.
@@ -57,7 +57,7 @@ class Specification {
  private:
   std::shared_ptr<const pddl::Task> task_;
   std::string goal_text_;
-  pddl::CondId goal_;
+  pddl::CompiledCondition goal_;  // owned here: compiling it leaves the task untouched
   CostProfile profile_;
   std::vector<double> action_cost_;
 };

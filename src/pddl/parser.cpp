@@ -210,6 +210,8 @@ class ExprParser {
     for (auto& tn : names) {
       if (tn.name.empty() || tn.name[0] != '?')
         fail(tn.loc, "expected a variable (starting with '?'), found '" + tn.name + "'");
+      if (std::find(vnames.begin(), vnames.end(), tn.name.substr(1)) != vnames.end())
+        fail(tn.loc, "variable '" + tn.name + "' is declared twice in one list");
       auto t = d_.find_type(tn.type);
       if (!t) fail(tn.loc, "unknown type '" + tn.type + "'");
       scope.vars.push_back({tn.name.substr(1), *t});
@@ -500,6 +502,8 @@ void parse_action(Domain& d, const SExpr& sec) {
       expect_list(val, "a parameter list");
       for (auto& tn : typed_list(val.items, 0, val)) {
         if (tn.name.empty() || tn.name[0] != '?') fail(tn.loc, "expected a parameter variable, found '" + tn.name + "'");
+        if (std::find(a.param_names.begin(), a.param_names.end(), tn.name.substr(1)) != a.param_names.end())
+          fail(tn.loc, "parameter '" + tn.name + "' of action '" + a.name + "' is declared twice");
         a.param_names.push_back(tn.name.substr(1));
         a.param_types.push_back(type_of_name(d, tn));
         ep.scope.vars.push_back({tn.name.substr(1), a.param_types.back()});
@@ -524,7 +528,7 @@ void parse_action(Domain& d, const SExpr& sec) {
 // ---------------------------------------------------------------- Domain
 
 Domain parse_domain(const std::string& text, const std::string& file) {
-  auto top = read_sexprs(text, file);
+  auto top = read_pddl_forms(text, file);
   if (top.size() != 1 || !top[0].is_list || top[0].head() != "define")
     fail(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (domain NAME) ...)");
   const SExpr& def = top[0];
@@ -579,7 +583,7 @@ Domain load_domain(const std::string& path) { return parse_domain(read_text_file
 // ---------------------------------------------------------------- Problem
 
 Problem parse_problem(const Domain& d, const std::string& text, const std::string& file, bool with_goal) {
-  auto top = read_sexprs(text, file);
+  auto top = read_pddl_forms(text, file);
   if (top.size() != 1 || !top[0].is_list || top[0].head() != "define")
     fail(top.empty() ? SourceLoc{file, 1, 1} : top[0].loc, "expected (define (problem NAME) ...)");
   const SExpr& def = top[0];

@@ -33,11 +33,19 @@ class Reader {
     if (t_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;  // byte-order mark
   }
 
-  std::vector<SExpr> all() {
+  // Reads every top-level expression; with `max_forms`, text after that many
+  // is an error at once, before it is read (a PDDL file holds one form).
+  std::vector<SExpr> all(size_t max_forms = std::string::npos) {
     std::vector<SExpr> out;
     for (;;) {
       skip();
       if (pos_ >= t_.size()) return out;
+      if (out.size() == max_forms)
+        throw SyntaxError(here(), "unexpected text after the end of the (define ...) expression");
+      // A top-level atom cannot start a PDDL form: stop at the first one.
+      if (max_forms != std::string::npos && t_[pos_] != '(' && t_[pos_] != ')')
+        throw SyntaxError(here(), "expected '(' to open (define ...), found '" +
+                                      printable(t_.substr(pos_, std::min<size_t>(20, t_.size() - pos_))) + "'");
       out.push_back(expr(1));
     }
   }
@@ -72,6 +80,10 @@ class Reader {
   SExpr expr(int depth) {
     SExpr e;
     e.loc = here();
+    // Every parsed node costs ~100 bytes: stop huge inputs before they cost gigabytes.
+    if (++tokens_ > kMaxTokens)
+      throw SyntaxError(e.loc, "more than " + std::to_string(kMaxTokens) +
+                                   " tokens: input this large is not supported (real PDDL files have thousands)");
     char c = t_[pos_];
     if (c == ')') throw SyntaxError(e.loc, "unbalanced parentheses: unexpected ')'");
     if (c == '(') {
@@ -106,12 +118,17 @@ class Reader {
   size_t pos_ = 0;
   int line_ = 1;
   int col_ = 1;
+  long tokens_ = 0;  // atoms and lists read so far
 };
 
 }  // namespace
 
 std::vector<SExpr> read_sexprs(const std::string& text, const std::string& file) {
   return Reader(text, SourceLoc{file, 1, 1}).all();
+}
+
+std::vector<SExpr> read_pddl_forms(const std::string& text, const std::string& file) {
+  return Reader(text, SourceLoc{file, 1, 1}).all(1);
 }
 
 SExpr read_one_sexpr(const std::string& text, const std::string& label) {
@@ -132,6 +149,17 @@ std::string read_text_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError(SourceLoc{path, 0, 0}, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
+  // One copy of the text in memory, not two (a stream buffer and its string).
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec) {
+      std::string text(static_cast<size_t>(size), '\0');
+      in.read(text.data(), static_cast<std::streamsize>(size));
+      text.resize(static_cast<size_t>(in.gcount()));
+      return text;
+    }
+  }
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();

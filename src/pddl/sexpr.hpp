@@ -14,6 +14,11 @@ namespace clips::pddl {
 // recursive pass over expressions (reading, conversion, grounding) relies on
 // this bound to stay far from a stack overflow.
 constexpr int kMaxNesting = 1000;
+// At most this many atoms and lists in one text: the largest dataset file has
+// under 2,000, and each node costs ~100 bytes, so a huge input (50 MB of
+// repeated tokens) is refused in a fraction of a second instead of after
+// gigabytes.
+constexpr long kMaxTokens = 1'000'000;
 
 // An error of the reader itself; keeps location and message apart so callers
 // can add context without repeating the location.
@@ -40,6 +45,9 @@ struct SExpr {
 
 // Parses every top-level expression of `text`; `file` is used in messages.
 std::vector<SExpr> read_sexprs(const std::string& text, const std::string& file);
+// A PDDL file: one top-level list. A top-level atom or any text after the
+// first expression is an error at once, before the rest is read.
+std::vector<SExpr> read_pddl_forms(const std::string& text, const std::string& file);
 // Parses exactly one expression (e.g. a goal given on the command line).
 SExpr read_one_sexpr(const std::string& text, const std::string& label);
 // The same for text cut out of a file at `origin`, so positions point into it.

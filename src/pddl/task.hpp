@@ -7,15 +7,29 @@
 //   GroundAction  name + argument objects, a compiled precondition, compiled
 //               effects (unconditional add/delete/numeric, plus conditional
 //               ones) and the set of its `active`-style trigger bit.
-//   CondId      a compiled condition (precondition, goal, any formula) in the
-//               task's expression pool; evaluated directly on state words.
+//   CondId      a compiled condition (precondition, goal, any formula) in an
+//               expression pool; evaluated directly on state words.
+//   CompiledCondition  a condition compiled after grounding (a goal, a
+//               command's goal): it owns its own expression pool, so compiling
+//               one never touches the task.
 //
-// Grounding runs in two passes: the first folds predicates and functions that
-// no action schema changes; the second also folds ground atoms and fluents
-// that no surviving ground action changes (e.g. (has robot gem1) when the robot
-// may never hold gems). Predicates listed in GroundingOptions::keep_dynamic stay
-// in the state even if no action changes them, because callers set them on
-// copies of states (e.g. `frozen` in the assistance simulations).
+// Grounding (grounder.cpp) runs in two passes: the first folds predicates and
+// functions that no action schema changes; the second also folds ground atoms
+// and fluents that no surviving ground action changes (e.g. (has robot gem1)
+// when the robot may never hold gems). Predicates listed in
+// GroundingOptions::keep_dynamic stay in the state even if no action changes
+// them, because callers set them on copies of states (e.g. `frozen` in the
+// assistance simulations). Before it materialises the ground actions of a
+// schema, the grounder bounds their number and refuses (InputError naming the
+// action and the count) above GroundingOptions::max_ground_actions.
+// Runtime queries live in task.cpp, successor generation in successor.cpp.
+//
+// Threads: a Task is immutable once its constructor returns. Every const
+// member function (lookups, apply, applicable_actions, eval, compile,
+// compile_text, explain_inapplicable) may be called from any number of threads
+// at once on one shared Task; none of them writes to the task. A
+// CompiledCondition is likewise immutable and shareable; it must not outlive
+// its Task.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -37,6 +51,11 @@ struct GroundingOptions {
   std::vector<std::string> schema_order;    // enumeration order of schemas (default: declared)
   bool first_param_fastest = false;         // vary the first parameter fastest
   bool objects_by_name = false;             // order objects by name instead of declaration
+  // Refuse to ground an action schema whose ground actions may number more than
+  // this (an upper bound from the parameters' object counts after pruning by
+  // static unary preconditions). About 0.5 kB each: the default is ~1 GB.
+  int64_t max_ground_actions = kDefaultMaxGroundActions;
+  static constexpr int64_t kDefaultMaxGroundActions = 2'000'000;
 };
 
 struct BitMatrix {
@@ -71,6 +90,8 @@ struct GroundAction {
   double cost = 0;  // from (increase (total-cost) n), 0 without :action-costs
   int trigger_bit = -1;  // a positive atom every applicable state has, or -1
 };
+
+class CompiledCondition;
 
 class Task {
  public:
@@ -142,9 +163,12 @@ class Task {
   std::vector<ActionId> applicable_actions(const State& s) const;
 
   // ---- conditions
-  CondId compile(const Condition& c, std::vector<ObjectId> binding) const;
-  CondId compile_text(const std::string& text, const std::string& label = "<condition>") const;
-  bool eval(CondId c, const uint64_t* s) const;
+  // Compiles a lifted condition (variables bound by `binding`, -1 = free) or a
+  // PDDL formula into its own pool; the task is not changed.
+  CompiledCondition compile(const Condition& c, std::vector<ObjectId> binding) const;
+  CompiledCondition compile_text(const std::string& text, const std::string& label = "<condition>") const;
+  // Conditions of the task's own pool: action preconditions and effect conditions.
+  bool eval(CondId c, const uint64_t* s) const { return eval_in(pool_, c, s); }
   bool holds(const State& s, CondId c) const { return eval(c, s.data()); }
   bool is_const_true(CondId c) const { return c == kTrue; }
   bool is_const_false(CondId c) const { return c == kFalse; }
@@ -170,14 +194,24 @@ class Task {
     int64_t v = 0;  // Const value; Fluent slot; GetIndex matrix index
     int a = 0, b = 0;  // Fluent: a = constant offset added to the slot's value
   };
-  const CNode& cnode(CondId c) const { return cnodes_[c]; }
-  const std::vector<int>& ckids() const { return ckids_; }
+  // A pool of compiled expression nodes; every pool starts with True, False.
+  struct Pool {
+    std::vector<CNode> cnodes;
+    std::vector<int> ckids;
+    std::vector<NNode> nnodes;
+  };
+  // The task's own pool (action preconditions and effect conditions).
+  const CNode& cnode(CondId c) const { return pool_.cnodes[c]; }
+  const std::vector<int>& ckids() const { return pool_.ckids; }
 
  private:
+  friend class ConditionCompiler;
   friend class Grounder;
+  friend class CompiledCondition;
   static constexpr CondId kTrue = 0, kFalse = 1;
 
-  int64_t eval_num(int n, const uint64_t* s) const;
+  bool eval_in(const Pool& pool, CondId c, const uint64_t* s) const;
+  int64_t eval_num(const Pool& pool, int n, const uint64_t* s) const;
   void apply_list(const EffectList& e, const uint64_t* src, uint64_t* dst, bool adds) const;
 
   std::shared_ptr<const Domain> domain_;
@@ -262,10 +296,30 @@ class Task {
   int compile_gen(CondId c);
   bool eval_gen(int g, const uint64_t* s) const;
 
-  mutable std::vector<CNode> cnodes_;
-  mutable std::vector<int> ckids_;
-  mutable std::vector<NNode> nnodes_;
-  mutable std::map<std::string, CondId> text_cache_;
+  Pool pool_;
+};
+
+// A condition compiled against a grounded task, with its own expression pool
+// (Task::compile). Immutable: evaluate it from any thread.
+class CompiledCondition {
+ public:
+  CondId root() const { return root_; }
+  bool eval(const uint64_t* s) const { return task_->eval_in(pool_, root_, s); }
+  bool holds(const State& s) const { return eval(s.data()); }
+  bool is_const_true() const { return root_ == Task::kTrue; }
+  bool is_const_false() const { return root_ == Task::kFalse; }
+  // Structure, for heuristics that read a goal's shape.
+  const Task::CNode& cnode(CondId c) const { return pool_.cnodes[c]; }
+  const std::vector<int>& ckids() const { return pool_.ckids; }
+
+ private:
+  friend class Grounder;
+  friend class Task;
+  CompiledCondition(const Task& task, Task::Pool pool, CondId root)
+      : task_(&task), pool_(std::move(pool)), root_(root) {}
+  const Task* task_;
+  Task::Pool pool_;
+  CondId root_;
 };
 
 }  // namespace clips::pddl

@@ -114,18 +114,18 @@ TEST(Simulation, PickupUnlockHandoverAndExistentialGoal) {
   Grid g;
   State s = g.run({"(wait human)", "(pickup robot key1)", "(wait human)", "(right robot)"});
   // Robot at (2,1), human at (2,2): adjacent, so hand-over is possible.
-  CondId robot_has_red = g.t.compile_text("(exists (?k - key) (and (has robot ?k) (iscolor ?k red)))");
-  CondId robot_has_blue = g.t.compile_text("(exists (?k - key) (and (has robot ?k) (iscolor ?k blue)))");
-  EXPECT_TRUE(g.t.holds(s, robot_has_red));
-  EXPECT_FALSE(g.t.holds(s, robot_has_blue));
+  auto robot_has_red = g.t.compile_text("(exists (?k - key) (and (has robot ?k) (iscolor ?k red)))");
+  auto robot_has_blue = g.t.compile_text("(exists (?k - key) (and (has robot ?k) (iscolor ?k blue)))");
+  EXPECT_TRUE(robot_has_red.holds(s));
+  EXPECT_FALSE(robot_has_blue.holds(s));
   s = g.t.apply(s, *g.t.find_action("(wait human)"));
   s = g.t.apply(s, *g.t.find_action("(handover robot human key1)"));
-  EXPECT_TRUE(g.t.holds(s, g.t.compile_text("(and (has human key1) (pickedup-by robot key1))")));
-  EXPECT_FALSE(g.t.holds(s, robot_has_red));
+  EXPECT_TRUE(g.t.compile_text("(and (has human key1) (pickedup-by robot key1))").holds(s));
+  EXPECT_FALSE(robot_has_red.holds(s));
   // Human at (2,2) is above the door at (2,3): unlock consumes the key.
   s = g.t.apply(s, *g.t.find_action("(unlock human key1 door1)"));
-  EXPECT_TRUE(g.t.holds(s, g.t.compile_text("(and (not (locked door1)) (unlocked-by human door1) (unlocked-with key1 door1))")));
-  EXPECT_FALSE(g.t.holds(s, g.t.compile_text("(has human key1)")));
+  EXPECT_TRUE(g.t.compile_text("(and (not (locked door1)) (unlocked-by human door1) (unlocked-with key1 door1))").holds(s));
+  EXPECT_FALSE(g.t.compile_text("(has human key1)").holds(s));
   EXPECT_EQ(g.t.value(s, g.t.fluent("xloc", {"key1"})), -1);
 }
 
@@ -192,10 +192,10 @@ TEST(OtherDomain, TypedBlocksWorldGroundsAndSimulates) {
   // a on b is wanted but b must end on c: (place a b) first, then b cannot move.
   Simulation sim = simulate(t, t.initial_state(), plan);
   EXPECT_DOUBLE_EQ(sim.cost, 6.0);  // two picks at 2, two places at 1
-  EXPECT_TRUE(t.holds(sim.states.back(), t.compile_text("(on a b)")));
+  EXPECT_TRUE(t.compile_text("(on a b)").holds(sim.states.back()));
   EXPECT_EQ(t.value(sim.states.back(), t.fluent("moves", {})), 2);
   // Conditional effect: picking b from a cleared a; picking from the table did not clear it twice.
-  EXPECT_TRUE(t.holds(sim.states[1], t.compile_text("(clear a)")));
+  EXPECT_TRUE(t.compile_text("(clear a)").holds(sim.states[1]));
   // imply: heavy c may only go on the table.
   State s = sim.states[0];
   s = t.apply(s, *t.find_action("(pick c table)"));
@@ -205,6 +205,6 @@ TEST(OtherDomain, TypedBlocksWorldGroundsAndSimulates) {
   EXPECT_TRUE(t.applicable(*t.find_action("(place c table)"), s.data()));
   // The problem goal compiles and is not yet reached.
   int nv = 0;
-  CondId goal = t.compile(*p->goal, std::vector<ObjectId>(p->goal_num_vars + nv, -1));
-  EXPECT_FALSE(t.holds(sim.states.back(), goal));
+  auto goal = t.compile(*p->goal, std::vector<ObjectId>(p->goal_num_vars + nv, -1));
+  EXPECT_FALSE(goal.holds(sim.states.back()));
 }

@@ -1,0 +1,123 @@
+// Limits that hold on input built to exhaust memory or slip wrong values in:
+// the grounder bounds each schema before materialising it, the reader stops
+// huge or malformed files early, and costs and parameter lists are checked.
+#include <gtest/gtest.h>
+
+#include "pddl/parser.hpp"
+#include "pddl/task.hpp"
+#include "pddl/support.hpp"
+
+using namespace clips;
+using namespace clips::pddl;
+
+namespace {
+
+using clips::pddl::testing::error_of;
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// One 3-parameter action over `n` objects, `rooms` of which are rooms (a
+// static unary precondition on ?z).
+const char* kLinkDomain = R"((define (domain links)
+  (:requirements :strips :typing)
+  (:types thing)
+  (:predicates (linked ?x ?y ?z - thing) (room ?z - thing))
+  (:action link :parameters (?x ?y ?z - thing)
+    :precondition (and (room ?z) (not (linked ?x ?y ?z)))
+    :effect (linked ?x ?y ?z)))
+)";
+
+std::string link_problem(int n, int rooms) {
+  std::string objs, init;
+  for (int i = 0; i < n; ++i) objs += " o" + std::to_string(i);
+  for (int i = 0; i < rooms; ++i) init += " (room o" + std::to_string(i) + ")";
+  return "(define (problem p) (:domain links) (:objects" + objs + " - thing) (:init" + init + ") (:goal (and)))";
+}
+
+std::shared_ptr<const Task> ground_links(int n, int rooms, int64_t limit) {
+  auto d = std::make_shared<Domain>(parse_domain(kLinkDomain, "links.pddl"));
+  auto p = std::make_shared<Problem>(parse_problem(*d, link_problem(n, rooms), "p.pddl"));
+  GroundingOptions opts;
+  opts.max_ground_actions = limit;
+  return std::make_shared<Task>(d, p, opts);
+}
+
+TEST(GroundingLimit, HugeSchemaIsRefusedBeforeGrounding) {
+  // 200 x 200 x 200 = 8 million ground actions: refused at once by the
+  // default limit, naming the action, its location and the count.
+  auto d = std::make_shared<Domain>(parse_domain(kLinkDomain, "links.pddl"));
+  auto p = std::make_shared<Problem>(parse_problem(*d, link_problem(200, 200), "p.pddl"));
+  std::string e = error_of([&] { Task t(d, p); });
+  EXPECT_TRUE(has(e, "links.pddl:5:")) << e;
+  EXPECT_TRUE(has(e, "action 'link'")) << e;
+  EXPECT_TRUE(has(e, "8000000")) << e;
+  EXPECT_TRUE(has(e, "--max-ground-actions")) << e;
+}
+
+TEST(GroundingLimit, LimitIsAnOptionAndCountsStaticPruning) {
+  // 6 objects, 2 rooms: 6 x 6 x 2 = 72 possible actions (not 216).
+  EXPECT_TRUE(has(error_of([&] { ground_links(6, 2, 71); }), "up to 72 ground actions")) << "limit 71";
+  auto t = ground_links(6, 2, 72);
+  EXPECT_EQ(t->num_actions(), 72);
+  // Raising the limit grounds what the default refuses to.
+  EXPECT_EQ(ground_links(6, 6, 216)->num_actions(), 216);
+  EXPECT_FALSE(error_of([&] { ground_links(6, 6, 215); }).empty());
+}
+
+TEST(ReaderLimit, HugeFileOfRepeatedTokensFailsFast) {
+  std::string text = "(define (domain d)";
+  for (long i = 0; i <= kMaxTokens; ++i) text += " x";
+  text += ")";
+  std::string e = error_of([&] { parse_domain(text, "huge.pddl"); });
+  EXPECT_TRUE(has(e, "huge.pddl:1:")) << e;
+  EXPECT_TRUE(has(e, "tokens")) << e;
+}
+
+TEST(ReaderLimit, TopLevelAtomsAndTrailingTextStopAtOnce) {
+  std::string tail(100000, 'y');
+  std::string e = error_of([&] { parse_domain("x " + tail, "atoms.pddl"); });
+  EXPECT_TRUE(has(e, "atoms.pddl:1:1:")) << e;
+  e = error_of([&] { parse_domain("(define (domain d))\n  (" + tail + ")", "two.pddl"); });
+  EXPECT_TRUE(has(e, "two.pddl:2:3:")) << e;
+  EXPECT_TRUE(has(e, "after the end")) << e;
+}
+
+TEST(ActionCosts, NegativeCostIsALocatedError) {
+  const char* dom = R"((define (domain c) (:requirements :strips :action-costs)
+  (:predicates (done))
+  (:functions (total-cost) - number)
+  (:action go :parameters ()
+    :precondition (not (done))
+    :effect (and (done) (increase (total-cost) -3))))
+)";
+  auto d = std::make_shared<Domain>(parse_domain(dom, "c.pddl"));
+  auto p = std::make_shared<Problem>(
+      parse_problem(*d, "(define (problem q) (:domain c) (:init (= (total-cost) 0)) (:goal (done)))", "q.pddl"));
+  std::string e = error_of([&] { Task t(d, p); });
+  EXPECT_TRUE(has(e, "c.pddl:6:")) << e;
+  EXPECT_TRUE(has(e, "(go)")) << e;
+  EXPECT_TRUE(has(e, "negative cost (-3)")) << e;
+}
+
+TEST(Parameters, DuplicateNamesAreLocatedParseErrors) {
+  const std::string dom = R"((define (domain dup) (:requirements :strips :typing :existential-preconditions)
+  (:types t)
+  (:predicates (p ?a ?b - t))
+  (:action a :parameters (?x ?y - t ?x - t)
+    :precondition (p ?x ?y) :effect (not (p ?x ?y))))
+)";
+  std::string e = error_of([&] { parse_domain(dom, "dup.pddl"); });
+  EXPECT_TRUE(has(e, "dup.pddl:4:")) << e;
+  EXPECT_TRUE(has(e, "'?x'")) << e;
+  EXPECT_TRUE(has(e, "declared twice")) << e;
+  // In a quantifier's list too.
+  std::string q = dom;
+  q.replace(q.find("(?x ?y - t ?x - t)"), 18, "(?x - t)");
+  q.replace(q.find(":precondition (p ?x ?y)"), 23, ":precondition (exists (?y ?y - t) (p ?x ?y))");
+  q.replace(q.find("(not (p ?x ?y))"), 15, "(not (p ?x ?x))");
+  e = error_of([&] { parse_domain(q, "dupq.pddl"); });
+  EXPECT_TRUE(has(e, "dupq.pddl:5:")) << e;
+  EXPECT_TRUE(has(e, "declared twice")) << e;
+}
+
+}  // namespace
