@@ -99,6 +99,24 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<heuristics::Heuristic> true_heuristic);
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
 
+// One assistant decision in state s at model timestep t, for callers that
+// drive the episode themselves (the public clips::Session). The hypotheses'
+// policies are refined at s (setup.refine), as the simulated episodes do.
+struct Decision {
+  pddl::ActionId action = -1;
+  std::vector<pddl::ActionId> candidates;  // the active agent's applicable actions
+  // Per candidate. Q_MDP: the weighted, floored Q-value; pi-bar: the
+  // probability that the policy mixture takes it.
+  std::vector<double> values;
+  // Every hypothesis above the weight threshold has the same best action
+  // (Q_MDP then takes it whatever the weighted values say).
+  bool unanimous = false;
+};
+Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t);
+// pi-bar_MDP's action: the mode of the mixture of the hypotheses' greedy
+// policies (each hypothesis above the threshold votes with its weight).
+Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s);
+
 // Metrics shared by every method.
 double plan_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan);
 double human_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan,

@@ -286,6 +286,12 @@ struct PlanKey {
 
 }  // namespace
 
+void check_utterance(const std::string& text, const SourceLoc& loc) { check_utterance_text(text, loc); }
+
+void check_problem(const pddl::Task& task, DomainKind kind, const std::string& path) {
+  if (kind == DomainKind::DoorsKeysGems) check_dkg_positions(task, path);
+}
+
 Dataset Dataset::load(const std::string& dir_in) {
   Dataset ds;
   ds.dir_ = dir_in;
