@@ -10,6 +10,7 @@ PKGS=(
   wordnet-dev wordnet-base
   libcairo2-dev libpng-dev libgif-dev
   chromium
+  pybind11-dev python3-dev python3-pytest
 )
 missing=()
 for p in "${PKGS[@]}"; do
