@@ -28,6 +28,7 @@ run: build
 bench: build
 	@$(BUILD_DIR)/clips_bench --benchmark_min_time=0.2
 	@bash scripts/bench-report.sh $(BUILD_DIR) "$(DATASET)"
+	@CLIPS_DATASET="$(DATASET)" python3 bench/python_session_bench.py $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR)
