@@ -37,6 +37,7 @@ run: build
 bench: build
 	@$(BUILD_DIR)/clips_bench --benchmark_min_time=0.2
 	@bash scripts/bench-report.sh $(BUILD_DIR) "$(DATASET)"
+	@CLIPS_DATASET="$(DATASET)" python3 bench/python_session_bench.py $(BUILD_DIR)
 
 fuzz-build: deps
 	@cmake -S . -B $(FUZZ_DIR) -DCLIPS_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Release >/dev/null

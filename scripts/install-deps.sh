@@ -11,6 +11,7 @@ PKGS=(
   libcairo2-dev libpng-dev libgif-dev
   chromium python3-websocket
   clang-14 libclang-rt-14-dev libfuzzer-14-dev
+  pybind11-dev python3-dev python3-pytest
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -44,16 +44,19 @@ double human_cost(const model::Specification& spec, const std::vector<ActionId>&
   return c;
 }
 
+namespace {
+
+const double kLog10 = std::log(10.0);
+
 // The Q_MDP choice at timestep t (spec 9.3): the common best action when
 // every hypothesis above the threshold agrees, else the argmax of the
 // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
-// floored at the cost of waiting to the horizon.
-QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const State& s, int t) {
+// floored at the cost of waiting to the horizon. The weighted values are
+// computed for a unanimous choice too only when `values_always` (the
+// simulated episodes do not read them).
+Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const std::vector<Hypothesis>& belief,
+                     const State& s, int t, bool values_always) {
   const pddl::Task& task = *setup.task;
-  const auto wait = task.find_action("(wait " + setup.assistant + ")");
-  if (!wait) throw InputError("assistance needs a (wait " + setup.assistant + ") action");
-  const ActionId assistant_wait = *wait;
-  QmdpDecision out;
   std::vector<const Hypothesis*> live;
   for (auto& h : belief)
     if (h.weight >= setup.weight_threshold) live.push_back(&h);
@@ -67,9 +70,16 @@ QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesi
     if (!b || (common && *common != *b)) all_same = false;
     if (b && !common) common = b;
   }
-  auto acts = task.applicable_actions(s);
-  out.candidates = acts;
-  std::vector<double> qa(acts.size(), 0.0);
+  Decision d;
+  d.unanimous = all_same && common;
+  if (d.unanimous && !values_always) {
+    d.action = *common;
+    return d;
+  }
+  d.candidates = task.applicable_actions(s);
+  const auto& acts = d.candidates;
+  std::vector<double>& qa = d.values;
+  qa.assign(acts.size(), 0.0);
   for (size_t k = 0; k < live.size(); ++k) {
     const Hypothesis* h = live[k];
     const auto& qs = qvals[k];
@@ -82,15 +92,15 @@ QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesi
       qa[i] += h->weight * q;
     }
   }
-  out.expected_value = qa;
-  if (all_same && common) {
-    out.action = *common;
-    out.unanimous = true;
-    return out;
-  }
   size_t best = 0;
   for (size_t i = 1; i < acts.size(); ++i)
     if (qa[i] > qa[best]) best = i;
+  if (d.unanimous) {
+    d.action = *common;
+    return d;
+  }
+  if (acts.empty()) throw InputError("no action is applicable in the assistance state");
+  d.action = acts[best];
   if (debug_qmdp()) {
     // CLIPS_DEBUG_QMDP=1: each contested decision, per live hypothesis.
     std::fprintf(stderr, "qmdp t=%d choose %s\n", t, task.action_name(acts[best]).c_str());
@@ -101,13 +111,14 @@ QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesi
     }
     for (size_t i = 0; i < acts.size(); ++i) std::fprintf(stderr, "  QA %s=%.3f\n", task.action_name(acts[i]).c_str(), qa[i]);
   }
-  out.action = acts.empty() ? assistant_wait : acts[best];
-  return out;
+  return d;
 }
 
-namespace {
-
-const double kLog10 = std::log(10.0);
+ActionId find_wait(const pddl::Task& task, const std::string& agent) {
+  auto w = task.find_action("(wait " + agent + ")");
+  if (!w) throw InputError("assistance needs a (wait " + agent + ") action");
+  return *w;
+}
 
 // Shared machinery of one simulated episode.
 struct Episode {
@@ -157,7 +168,7 @@ struct Episode {
   }
 
   ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t) const {
-    return qmdp_decision(setup, belief, s, t).action;
+    return decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false).action;
   }
 
   // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true
@@ -229,13 +240,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   return r;
 }
 
-std::optional<ActionId> qmdp_decision(const AssistSetup& setup, std::vector<Hypothesis> belief, const State& s,
-                                      int t) {
-  Episode ep(setup);
-  if (ep.principal_turn(s)) return std::nullopt;
-  for (auto& h : belief) h.policy = std::make_shared<search::Policy>(*h.policy);  // never touch the caller's
-  return ep.qmdp_decide(belief, s, t);
-}
+bool assistant_turn(const AssistSetup& setup, const State& s) { return !Episode(setup).principal_turn(s); }
 
 AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<const model::Specification> true_spec,
@@ -338,6 +343,41 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
   }
   mean.goal_reached = mean.success >= 0.5;
   return mean;
+}
+
+Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t) {
+  return decide_qmdp(setup, find_wait(*setup.task, setup.assistant), belief, s, t, /*values_always=*/true);
+}
+
+Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s) {
+  const pddl::Task& task = *setup.task;
+  Decision d;
+  d.candidates = task.applicable_actions(s);
+  d.values.assign(d.candidates.size(), 0.0);
+  std::optional<ActionId> common;
+  bool all_same = true;
+  double total = 0;
+  for (const Hypothesis& h : belief) {
+    if (h.weight < setup.weight_threshold) continue;
+    if (setup.refine) h.policy->refine(s, setup.refine_options);
+    // As in pibar_mdp: a hypothesis with no way to its goal waits.
+    auto b = h.policy->value(s) > -kInf ? h.policy->best_action(s) : std::nullopt;
+    const ActionId a = b ? *b : find_wait(task, setup.assistant);
+    if (common && *common != a) all_same = false;
+    if (!common) common = a;
+    for (size_t i = 0; i < d.candidates.size(); ++i)
+      if (d.candidates[i] == a) d.values[i] += h.weight;
+    total += h.weight;
+  }
+  if (total > 0)
+    for (double& v : d.values) v /= total;
+  size_t best = 0;
+  for (size_t i = 1; i < d.candidates.size(); ++i)
+    if (d.values[i] > d.values[best]) best = i;
+  if (d.candidates.empty()) throw InputError("no action is applicable in the assistance state");
+  d.action = d.candidates[best];
+  d.unanimous = all_same && common.has_value();
+  return d;
 }
 
 }  // namespace clips::assist

@@ -92,19 +92,6 @@ class OnlineBelief {
   virtual std::vector<Hypothesis>& hypotheses() = 0;
 };
 
-// One Q_MDP decision of the assistant in state `s` at timestep t (spec 9.3),
-// with the weighted value of every applicable action, so callers can show why
-// the action was chosen. Hypotheses' policies are refined at `s` (when
-// setup.refine) within setup.refine_options.
-struct QmdpDecision {
-  pddl::ActionId action = -1;
-  bool unanimous = false;  // every hypothesis above the threshold agreed
-  std::vector<pddl::ActionId> candidates;  // applicable actions in `s`
-  std::vector<double> expected_value;      // Σ_h w_h Q_h(s, a), floored as setup.qa_floor says
-};
-QmdpDecision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s,
-                           int t);
-
 // The simulated principal's plan-following rule needs the true hypothesis.
 AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
 AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
@@ -112,13 +99,26 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<heuristics::Heuristic> true_heuristic);
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
 
-// One Q_MDP choice of the assistant in `s` at model time `t` (observed steps
-// + 1 for the first decision), exactly as the simulated runs decide: for
-// assisting a live human, where no true goal or completed plan exists. The
-// hypotheses' policies are copied before refining. `s` must be the
-// assistant's turn; when it is the principal's, nullopt.
-std::optional<pddl::ActionId> qmdp_decision(const AssistSetup& setup, std::vector<Hypothesis> belief,
-                                            const pddl::State& s, int t);
+// Whether `s` is the assistant's turn (the principal is not the active agent).
+bool assistant_turn(const AssistSetup& setup, const pddl::State& s);
+// One assistant decision in state s at model timestep t, for callers that
+// drive the episode themselves (clips::Session, clips serve, `assist
+// --problem`). The simulated episodes decide by the same rule. The hypotheses'
+// policies are refined at s (setup.refine), as the simulated episodes do.
+struct Decision {
+  pddl::ActionId action = -1;
+  std::vector<pddl::ActionId> candidates;  // the active agent's applicable actions
+  // Per candidate. Q_MDP: the weighted, floored Q-value; pi-bar: the
+  // probability that the policy mixture takes it.
+  std::vector<double> values;
+  // Every hypothesis above the weight threshold has the same best action
+  // (Q_MDP then takes it whatever the weighted values say).
+  bool unanimous = false;
+};
+Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t);
+// pi-bar_MDP's action: the mode of the mixture of the hypotheses' greedy
+// policies (each hypothesis above the threshold votes with its weight).
+Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s);
 
 // Metrics shared by every method.
 double plan_cost(const model::Specification& spec, const std::vector<pddl::ActionId>& plan);

@@ -292,6 +292,12 @@ bool debug_load() {
 
 }  // namespace
 
+void check_utterance(const std::string& text, const SourceLoc& loc) { check_utterance_text(text, loc); }
+
+void check_problem(const pddl::Task& task, DomainKind kind, const std::string& path) {
+  if (kind == DomainKind::DoorsKeysGems) check_dkg_positions(task, path);
+}
+
 Dataset Dataset::load(const std::string& dir_in) {
   if (debug_load()) std::fprintf(stderr, "dataset: loading %s\n", dir_in.c_str());
   Dataset ds;

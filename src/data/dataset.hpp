@@ -128,6 +128,12 @@ std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const
                                                   const std::vector<BrokenPlan>& broken = {});
 std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
                                         const std::map<std::string, std::string>& goal_defs);
+// An utterance given outside a plan file: non-empty, valid UTF-8; throws
+// InputError at `loc` otherwise.
+void check_utterance(const std::string& text, const SourceLoc& loc);
+// The checks Dataset::task makes of a grounded problem (mDKG: every agent,
+// door, key and gem is on the grid or held), for problems loaded elsewhere.
+void check_problem(const pddl::Task& task, DomainKind kind, const std::string& path);
 
 // Grounding options each domain needs (e.g. keep `frozen` in the state).
 pddl::GroundingOptions grounding_options(DomainKind k);

@@ -313,9 +313,13 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   std::vector<assist::Hypothesis> hyps;
   for (size_t h = 0; h < post.hypotheses.size(); ++h)
     hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h])});
-  const auto a = assist::qmdp_decision(setup, std::move(hyps), setup.start, setup.observed_steps + 1);
-  out.next_actor = a ? df.assistant : df.principal;
-  if (a) out.action = task->action_name(*a);
+  if (!assist::assistant_turn(setup, setup.start)) {
+    out.next_actor = df.principal;
+    return out;
+  }
+  const assist::Decision d = assist::qmdp_decision(setup, hyps, setup.start, setup.observed_steps + 1);
+  out.next_actor = df.assistant;
+  out.action = task->action_name(d.action);
   return out;
 }
 

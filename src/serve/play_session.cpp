@@ -228,7 +228,7 @@ json PlaySession::assist(bool apply) {
     d["reason"] = q.unanimous ? "every likely goal agrees" : "highest expected value over the goal posterior";
     json cands = json::array();
     for (size_t i = 0; i < q.candidates.size(); ++i)
-      cands.push_back({{"action", task_->action_name(q.candidates[i])}, {"value", number_or_null(q.expected_value[i])}});
+      cands.push_back({{"action", task_->action_name(q.candidates[i])}, {"value", number_or_null(q.values[i])}});
     d["candidates"] = std::move(cands);
   }
   d["action"] = task_->action_name(chosen);

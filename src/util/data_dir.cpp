@@ -37,9 +37,16 @@ std::vector<fs::path> candidates() {
     out.emplace_back(env);
     return out;  // an explicit choice is never second-guessed
   }
+  // <prefix>/bin/clips and <prefix>/lib/libclips.so sit one level below the
+  // prefix; a multiarch libdir (lib/x86_64-linux-gnu) two, the Python module
+  // (lib/python3/dist-packages) three.
   for (const fs::path& dir : {executable_dir(), library_dir()}) {
     if (dir.empty()) continue;
-    out.push_back(dir.parent_path() / "share" / "clips");
+    fs::path up = dir;
+    for (int level = 0; level < 3 && up.has_parent_path() && up.parent_path() != up; ++level) {
+      up = up.parent_path();
+      out.push_back(up / "share" / "clips");
+    }
   }
 #ifdef CLIPS_SOURCE_DATA_DIR
   out.emplace_back(CLIPS_SOURCE_DATA_DIR);

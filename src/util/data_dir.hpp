@@ -4,7 +4,8 @@
 // domain packs' files). Searched in order:
 //   1. $CLIPS_DATA_DIR (the data root: it holds language/, paper/, domains/);
 //   2. <prefix>/share/clips beside an installed executable or library
-//      (<prefix>/bin/clips or <prefix>/lib/libclips*);
+//      (<prefix>/bin/clips, <prefix>/lib[/<multiarch>]/libclips*, or the
+//      Python module in <prefix>/lib/python3/dist-packages);
 //   3. the source tree's data/ folder, for builds run from their build tree.
 // The first that exists wins; data_path() names the file it looked for when
 // none has it.

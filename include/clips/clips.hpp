@@ -1,0 +1,5 @@
+#pragma once
+// Everything of the public clips API.
+#include "clips/errors.hpp"
+#include "clips/session.hpp"
+#include "clips/version.hpp"

@@ -1,0 +1,142 @@
+"""The Python binding of clips: the session API, dataset plans, errors."""
+import json
+import os
+import pathlib
+import subprocess
+import threading
+
+import pytest
+
+import clips
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "data" / "examples" / "doors-keys-gems"
+SHARED = pathlib.Path(os.environ.get("CLIPS_DATASET", ROOT.parent / "shared" / "dataset")) / "doors-keys-gems"
+BINARY_DIR = pathlib.Path(os.environ.get("CLIPS_BINARY_DIR", ROOT / "build"))
+
+
+def plan_lines(dataset, plan):
+    """(actions, {index: [utterances]}) of an observed plan file."""
+    actions, said = [], {}
+    for line in (pathlib.Path(dataset) / "plans" / "observed" / f"{plan}.pddl").read_text().splitlines():
+        line = line.strip()
+        if line.startswith(";"):
+            said.setdefault(len(actions), []).append(line[1:].strip())
+        elif line:
+            actions.append(line)
+    return actions, said
+
+
+def replay(dataset, plan):
+    """Goal posteriors of a Session replaying a plan, at the points `clips infer` reports them."""
+    actions, said = plan_lines(dataset, plan)
+    s = clips.Session.open_dataset(str(dataset), plan)
+    T = len(actions)
+    out = []
+    for t in range(T + 1):
+        if t > 0:
+            s.observe(actions[t - 1])
+        # `clips infer` scores utterances said after t actions in step t + 1,
+        # except at the start and the end.
+        if t in (0, T):
+            for u in said.get(t, []):
+                s.hear(u)
+        out.append(list(s.posterior()["goals"].values()))
+        if t not in (0, T):
+            for u in said.get(t, []):
+                s.hear(u)
+    return out
+
+
+def check_against_cli(dataset, plan):
+    cli = BINARY_DIR / "clips"
+    if not cli.exists():
+        pytest.skip(f"no CLI at {cli}")
+    infer = json.loads(subprocess.run([str(cli), "infer", "--json", "--dataset", str(dataset), "--plan", plan],
+                                      check=True, capture_output=True, text=True).stdout)
+    got = replay(dataset, plan)
+    assert len(got) == len(infer["steps"])
+    for t, (mine, theirs) in enumerate(zip(got, infer["steps"])):
+        assert mine == pytest.approx(theirs["posterior"], abs=1e-9), f"{plan} t={t}"
+    # run_plan gives the same numbers without a session.
+    run = clips.run_plan(str(dataset), plan)
+    assert len(run["steps"]) == len(infer["steps"])
+    for mine, theirs in zip(run["steps"], infer["steps"]):
+        assert mine["clips"] == pytest.approx(theirs["posterior"], abs=1e-9)
+
+
+def test_session_reproduces_clips_infer_on_the_papers_dataset():
+    if not (SHARED / "domain.pddl").exists():
+        pytest.skip(f"no shared dataset at {SHARED}")
+    check_against_cli(SHARED, "2.1.keys")
+
+
+def test_session_reproduces_clips_infer_on_a_repo_example():
+    check_against_cli(EXAMPLES, "e2.2.keys")
+
+
+def test_posterior_assist_and_trace_are_plain_python_values():
+    s = clips.Session.open_dataset(str(EXAMPLES), "e1")
+    step = s.observe("(left human)")
+    assert step["agent"] == "human" and step["evidence"] is True
+    s.observe("(wait robot)")
+    s.hear("Can you get me the yellow key?")
+    s.observe("(left human)")
+    post = s.posterior()
+    assert sum(post["goals"].values()) == pytest.approx(1.0)
+    assert max(post["goals"], key=post["goals"].get) == "gem3"  # the yellow key's side (problems/e1.txt)
+    assert len(post["hypotheses"]) == 8
+    decision = s.assist()
+    assert decision["assistant_turn"] and "robot" in decision["action"]
+    assert decision["goal_weights"] == post["goals"]
+    assert decision["action"] in [c["action"] for c in decision["candidates"]]
+    assert [st["t"] for st in s.trace()] == [0, 1, 2, 3]
+    assert s.trace()[2]["utterances"] == ["Can you get me the yellow key?"]
+    assert "h" in str(s)
+    json.dumps(s.trace())  # plain values all the way down
+
+
+def test_errors_map_to_python_exceptions_with_the_same_messages():
+    s = clips.Session.open_dataset(str(EXAMPLES), "e1")
+    s.observe("(left human)")
+    before = s.posterior()
+    with pytest.raises(clips.InapplicableActionError, match=r"\(left human\)"):
+        s.observe("(left human)")  # the robot is to move
+    assert issubclass(clips.InapplicableActionError, clips.InputError)
+    assert issubclass(clips.InputError, ValueError)
+    with pytest.raises(clips.InputError, match="fly"):
+        s.observe("(fly human)")
+    with pytest.raises(clips.InputError):
+        s.hear("")
+    assert s.t == 1 and s.posterior() == before
+    with pytest.raises(clips.InputError, match="unknown method"):
+        clips.Session.open_dataset(str(EXAMPLES), "e1", method="telepathy")
+    with pytest.raises(clips.InputError, match="no problem or plan 'zz'"):
+        clips.Session.open_dataset(str(EXAMPLES), "zz")
+
+
+def test_inference_releases_the_gil():
+    # Two sessions on two Python threads: with the GIL released during
+    # inference they run concurrently and still agree with one thread.
+    def run(out, i):
+        s = clips.Session.open_dataset(str(EXAMPLES), "e1.1.keys")
+        for a in ["(left human)", "(wait robot)", "(left human)"]:
+            s.observe(a)
+        out[i] = s.posterior()["goals"]
+
+    out = [None, None]
+    threads = [threading.Thread(target=run, args=(out, i)) for i in range(2)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    alone = [None]
+    run(alone, 0)
+    assert out[0] == alone[0] and out[1] == alone[0]
+
+
+def test_run_bench_returns_rows_per_plan_and_method():
+    rep = clips.run_bench(str(EXAMPLES), methods=["clips"], plans=["e1.1.keys"], jobs=1)
+    assert [(r["plan"], r["method"]) for r in rep["rows"]] == [("e1.1.keys", "clips")]
+    assert 0 <= rep["rows"][0]["p_true_goal"] <= 1
+    assert "clips" in rep["summary"]
