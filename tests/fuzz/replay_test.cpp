@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct Case {
   const char* name;
   Target run;
 };
+
+// So that test names and listings show the target, not the struct's bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 const Case kTargets[] = {
     {"sexpr", clips_fuzz_sexpr},         {"pddl", clips_fuzz_pddl},

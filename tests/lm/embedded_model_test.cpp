@@ -181,6 +181,17 @@ TEST(EmbeddedNormalisation, VeryLongUnknownWordsStayFiniteAndKeepTheComparison) 
   EXPECT_TRUE(std::isfinite(score("\n", utterance(3000))));
 }
 
+TEST(EmbeddedNormalisation, SeveralLongUnknownWordsInOneClauseStayFinite) {
+  // Each word alone is above the rescaling threshold, but their product in
+  // one clause used to underflow (score -inf, prefix score NaN; found by
+  // fuzz/utterance_fuzz).
+  const std::string red = literal_prompt("(handover you me key1) where (iscolor key1 red)");
+  const std::string u = "the h" + std::string(60, 'c') + "e and the i" + std::string(80, 'c') + "n";
+  EXPECT_TRUE(std::isfinite(score(red, u)));
+  std::vector<clips::lm::ScoreRequest> prefix = {{red, " " + u}};
+  EXPECT_TRUE(std::isfinite(model().score(prefix)[0]));
+}
+
 TEST(EmbeddedModel, IsDeterministicAcrossInstancesAndCalls) {
   const std::string p = pragmatic_prompt("(unlock you key1 door1) where (iscolor door1 blue)");
   const double a = score(p, "Can you open the blue door?");

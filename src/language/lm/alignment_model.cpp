@@ -31,7 +31,11 @@ constexpr double kMention = 0.85;       // prior mean of the rho (Beta pseudo-co
 constexpr double kRequestClause = 0.8;
 constexpr size_t kMaxAnchors = 4;  // action groups whose mention requires an anchor token
 constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
-constexpr double kLogTinyToken = -600;  // log-probability below which a token's sources are rescaled
+// Log-probability below which a token's sources are rescaled. The clause
+// products fold into logs once below 1e-200 (about e^-460), so a factor must
+// stay above about e^-248 for the product not to underflow first: -200 leaves
+// room for the mixture weights.
+constexpr double kLogTinyToken = -200;
 
 // Field weights inside a group, renormalised over the fields present.
 constexpr double kWeightVerb = 0.3;
