@@ -150,7 +150,6 @@ std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
   // One copy of the text in memory, not two (a stream buffer and its string).
-  std::error_code ec;
   if (std::filesystem::is_regular_file(path, ec)) {
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec) {
