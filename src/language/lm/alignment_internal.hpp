@@ -153,6 +153,12 @@ struct AlignmentModel::Bound {
   int num_actions = 0;
 };
 
+// Per-token source probabilities of one utterance under one bound command;
+// p_group[g * n + i] is unit g's own emission at token i.
+struct AlignmentModel::TokenSources {
+  std::vector<double> p_bg, p_you, p_me, p_gen, p_mod, p_group;
+};
+
 struct AlignmentModel::Counts {
   std::vector<std::vector<double>> table;  // per trained table, per word id
   std::vector<double> bg;

@@ -293,46 +293,51 @@ double AlignmentModel::length_log_prob(int actions, int n, bool complete) const 
   return std::log(std::max(1.0 - below, floor_tail));
 }
 
-double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool complete,
-                                Counts* counts, double weight) const {
+namespace {
+
+// The action groups a clause of each type talks about (header, item 4): a
+// request those of the listener; a statement the speaker's own, and what
+// is handed to the speaker ("I'm in need of the blue key").
+bool in_role(const AlignmentModel::Bound::Group& grp, bool statement) {
+  return statement ? grp.speaker || grp.to_speaker : !grp.speaker;
+}
+
+}  // namespace
+
+// The largest mass any trained noun table gives a word: whether it names a type.
+double AlignmentModel::best_noun_mass(int id, const std::string& w) const {
+  double best = 0;
+  for (int t : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(t)]->at(id, w));
+  return best;
+}
+
+// Colour binding (header, item 6): the share of its copy weight that
+// group g of c (an attribute unit, or a number field's group) keeps at token i.
+double AlignmentModel::colour_binding(const Bound& c, size_t g, const EncodedUtterance& u, size_t i) const {
+  const Bound::Group& grp = c.groups[g];
+  const bool have_heads = u.noun_heads.size() == u.ids.size();
+  if (!have_heads || grp.type_nouns[0] == nullptr) return 1.0;
+  bool typed = false;
+  for (int j : u.noun_heads[i]) {
+    if (j < 0) continue;
+    const int hid = u.ids[static_cast<size_t>(j)];
+    const std::string& hw = u.words[static_cast<size_t>(j)];
+    const double best = best_noun_mass(hid, hw);
+    if (best < kTypedNoun) return 1.0;  // "one", "thing": says nothing about the type
+    typed = true;
+    const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
+    if (own >= kBindRatio * best) return 1.0;
+  }
+  return typed ? kMisboundCopy : 1.0;
+}
+
+// Contradicted colours (header, item 7): contra[2 * i + t] is the factor on
+// token i in a clause of type t (0: request, groups of "you"; 1: statement,
+// groups of "me").
+std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const EncodedUtterance& u) const {
   const size_t n = u.ids.size();
   const size_t G = c.groups.size();
-  const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
-  const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
-  const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
-  const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
-  const bool have_spans = u.in_modifier.size() == n;
   const bool have_heads = u.noun_heads.size() == n;
-
-  // The action groups a clause of each type talks about (header, item 4): a
-  // request those of the listener; a statement the speaker's own, and what
-  // is handed to the speaker ("I'm in need of the blue key").
-  auto in_role = [](const Bound::Group& grp, bool statement) {
-    return statement ? grp.speaker || grp.to_speaker : !grp.speaker;
-  };
-
-  // Colour binding (header, item 6): the share of its copy weight that
-  // attribute unit g keeps at token i.
-  auto bind_factor = [&](const Bound::Group& grp, size_t i) {
-    if (!have_heads || grp.type_nouns[0] == nullptr) return 1.0;
-    bool typed = false;
-    for (int j : u.noun_heads[i]) {
-      if (j < 0) continue;
-      const int hid = u.ids[static_cast<size_t>(j)];
-      const std::string& hw = u.words[static_cast<size_t>(j)];
-      double best = 0;
-      for (int t : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(t)]->at(hid, hw));
-      if (best < kTypedNoun) return 1.0;  // "one", "thing": says nothing about the type
-      typed = true;
-      const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
-      if (own >= kBindRatio * best) return 1.0;
-    }
-    return typed ? kMisboundCopy : 1.0;
-  };
-
-  // Contradicted colours (header, item 7): contra[2 * i + t] is the factor on
-  // token i in a clause of type t (0: request, groups of "you"; 1: statement,
-  // groups of "me").
   std::vector<double> contra(2 * n, 1.0);
   if (have_heads) {
     for (size_t i = 0; i < n; ++i) {
@@ -345,8 +350,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           if (j < 0) continue;
           const int hid = u.ids[static_cast<size_t>(j)];
           const std::string& hw = u.words[static_cast<size_t>(j)];
-          double best = 0;
-          for (int tb : noun_tables_) best = std::max(best, tables_[static_cast<size_t>(tb)]->at(hid, hw));
+          const double best = best_noun_mass(hid, hw);
           if (best < kTypedNoun) {
             contradicted = false;  // "one", "thing": may be anything of any colour
             break;
@@ -381,12 +385,29 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       }
     }
   }
+  return contra;
+}
 
   // Per-token source probabilities; p_group[g * n + i] is unit g's own emission
   // (its fields' weights sum to 1 for an action group; for an optional unit
   // such as a recipient it is that unit's table alone).
   // Inside a modifier span an action group's noun and number fields give way to M.
-  std::vector<double> p_bg(n), p_you(n), p_me(n), p_gen(n), p_mod(n, 0.0), p_group(n * G);
+AlignmentModel::TokenSources AlignmentModel::token_sources(const Bound& c, const EncodedUtterance& u) const {
+  const size_t n = u.ids.size();
+  const size_t G = c.groups.size();
+  const Table& a_you = *tables_[static_cast<size_t>(table_ids_.at("A:you"))];
+  const Table& a_me = *tables_[static_cast<size_t>(table_ids_.at("A:me"))];
+  const Table& gen = *tables_[static_cast<size_t>(table_ids_.at("GEN"))];
+  const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
+  const bool have_spans = u.in_modifier.size() == n;
+  TokenSources s;
+  s.p_bg.resize(n);
+  s.p_you.resize(n);
+  s.p_me.resize(n);
+  s.p_gen.resize(n);
+  s.p_mod.assign(n, 0.0);
+  s.p_group.resize(n * G);
+  auto& [p_bg, p_you, p_me, p_gen, p_mod, p_group] = s;
   for (size_t i = 0; i < n; ++i) {
     const int id = u.ids[i];
     const std::string& w = u.words[i];
@@ -406,13 +427,15 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
         continue;
       }
       for (const Bound::Field& f : c.groups[g].fields)
-        v += f.weight * f.table->at(id, w) * (f.number ? bind_factor(c.groups[g], i) : 1.0);
+        v += f.weight * f.table->at(id, w) * (f.number ? colour_binding(c, g, u, i) : 1.0);
       for (const Bound::Copy& cp : c.groups[g].copies) {
-        if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight * bind_factor(c.groups[g], i);
+        if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight * colour_binding(c, g, u, i);
       }
       p_group[g * n + i] = v;
     }
   }
+  return s;
+}
 
   // A very long unknown word's background probability is below the double
   // range (one character-model factor per letter), and so would be every
@@ -420,6 +443,10 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   // factor instead, which every forward pass below carries through as a
   // constant (each is linear in one token's sources) and which is added back
   // at the end: exact, and ordinary tokens are left untouched.
+double AlignmentModel::rescale_tiny_tokens(TokenSources& s, const EncodedUtterance& u) const {
+  const size_t n = u.ids.size();
+  const size_t G = n == 0 ? 0 : s.p_group.size() / n;
+  auto& [p_bg, p_you, p_me, p_gen, p_mod, p_group] = s;
   double token_log_scale = 0;
   for (size_t i = 0; i < n; ++i) {
     if (u.ids[i] >= 0) continue;
@@ -441,6 +468,19 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     p_bg[i] = std::exp(log_bg - hi);
     token_log_scale += hi;
   }
+  return token_log_scale;
+}
+
+double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool complete,
+                                Counts* counts, double weight) const {
+  const size_t n = u.ids.size();
+  const size_t G = c.groups.size();
+  const bool have_spans = u.in_modifier.size() == n;
+
+  const std::vector<double> contra = colour_contradictions(c, u);
+  TokenSources sources = token_sources(c, u);
+  const double token_log_scale = rescale_tiny_tokens(sources, u);
+  const auto& [p_bg, p_you, p_me, p_gen, p_mod, p_group] = sources;
 
   const bool enumerate = G <= static_cast<size_t>(kMaxEnumeratedGroups);
   const uint32_t all = G >= 32 ? ~0u : (1u << G) - 1u;
@@ -732,7 +772,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
               if (f.residual) counts->non_copy += e;
             }
             for (const Bound::Copy& cp : grp.copies) {
-              if (id == cp.id) counts->copy += unit * cp.weight * bind_factor(grp, i);
+              if (id == cp.id) counts->copy += unit * cp.weight * colour_binding(c, g, u, i);
             }
           }
         }

@@ -223,8 +223,15 @@ class AlignmentModel {
   double char_prob(const std::string& w) const;
   double char_log_prob(const std::string& w) const;
   double bg_prob(int id, const std::string& w) const;
+  // The steps of log_prob() and of the E-step (alignment_model.cpp).
+  struct TokenSources;  // each token's probability under every source of the mixture
   double evaluate(const Bound& c, const EncodedUtterance& u, bool complete, Counts* counts,
                   double weight) const;
+  double best_noun_mass(int id, const std::string& w) const;
+  double colour_binding(const Bound& c, size_t g, const EncodedUtterance& u, size_t i) const;
+  std::vector<double> colour_contradictions(const Bound& c, const EncodedUtterance& u) const;
+  TokenSources token_sources(const Bound& c, const EncodedUtterance& u) const;
+  double rescale_tiny_tokens(TokenSources& s, const EncodedUtterance& u) const;
   double length_log_prob(int actions, int n, bool complete) const;
 
   // Lexical class bits of a vocabulary word (kWord* in the .cpp), for the
