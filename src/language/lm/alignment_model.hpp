@@ -118,6 +118,13 @@
 // Content fields never emit closed-class words unless their base contains them;
 // verb fields only learn verb-like words and noun fields noun-like ones (WordNet
 // sense counts), so a noun table shared by several actions cannot soak up verbs.
+//
+// Files, by job: alignment_model.cpp (binding commands and the probability
+// model), english_reader.cpp (encode(): spelling repair, lexical classes,
+// clauses, modifier spans, the nouns colours and numbers describe, pronoun
+// antecedents), alignment_training.cpp (EM), alignment_snapshot.cpp (save and
+// load); alignment_internal.hpp holds what they share. tests/lm/
+// alignment_behaviour_test.cpp pins golden scores across refactorings.
 #include <array>
 #include <cstdint>
 #include <memory>

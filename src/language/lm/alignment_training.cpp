@@ -2,22 +2,17 @@
 #include "language/lm/alignment_model.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cstdio>
 #include <cmath>
-#include <cstring>
-#include <limits>
 #include <map>
 #include <mutex>
 #include <set>
 #include <string_view>
 #include <unordered_set>
 
+#include "language/lm/alignment_internal.hpp"
 #include "language/lm/language_model.hpp"
 #include "language/lm/utterance_tokens.hpp"
 #include "language/lm/wordnet_lexicon.hpp"
-#include "util/hash.hpp"
-#include "language/lm/alignment_internal.hpp"
 
 namespace clips::lm {
 
