@@ -118,6 +118,13 @@
 // Content fields never emit closed-class words unless their base contains them;
 // verb fields only learn verb-like words and noun fields noun-like ones (WordNet
 // sense counts), so a noun table shared by several actions cannot soak up verbs.
+//
+// Files, by job: alignment_model.cpp (binding commands and the probability
+// model), english_reader.cpp (encode(): spelling repair, lexical classes,
+// clauses, modifier spans, the nouns colours and numbers describe, pronoun
+// antecedents), alignment_training.cpp (EM), alignment_snapshot.cpp (save and
+// load); alignment_internal.hpp holds what they share. tests/lm/
+// alignment_behaviour_test.cpp pins golden scores across refactorings.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -223,8 +230,15 @@ class AlignmentModel {
   double char_prob(const std::string& w) const;
   double char_log_prob(const std::string& w) const;
   double bg_prob(int id, const std::string& w) const;
+  // The steps of log_prob() and of the E-step (alignment_model.cpp).
+  struct TokenSources;  // each token's probability under every source of the mixture
   double evaluate(const Bound& c, const EncodedUtterance& u, bool complete, Counts* counts,
                   double weight) const;
+  double best_noun_mass(int id, const std::string& w) const;
+  double colour_binding(const Bound& c, size_t g, const EncodedUtterance& u, size_t i) const;
+  std::vector<double> colour_contradictions(const Bound& c, const EncodedUtterance& u) const;
+  TokenSources token_sources(const Bound& c, const EncodedUtterance& u) const;
+  double rescale_tiny_tokens(TokenSources& s, const EncodedUtterance& u) const;
   double length_log_prob(int actions, int n, bool complete) const;
 
   // Lexical class bits of a vocabulary word (kWord* in the .cpp), for the

@@ -1,0 +1,308 @@
+// The alignment model's reading of an English utterance: spelling repair,
+// lexical classes, clauses, post-nominal modifiers, the nouns colours and
+// numbers describe, and the antecedents of "it"/"them" (see alignment_model.hpp, items 3, 5-7).
+#include "language/lm/alignment_model.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <set>
+#include <string_view>
+#include <unordered_set>
+
+#include "language/lm/alignment_internal.hpp"
+#include "language/lm/utterance_tokens.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
+
+namespace clips::lm {
+
+namespace {
+
+bool is_relative_pronoun(std::string_view w) { return w == "that" || w == "which"; }
+
+}  // namespace
+
+uint8_t closed_class_flags(std::string_view w) {
+  static const std::set<std::string_view> determiners = {
+      "a",    "an",   "the",   "this",    "that", "these", "those", "some",  "any",  "my",
+      "your", "our",  "his",   "her",     "their", "its",  "another", "each", "every", "both",
+      "one",  "two",  "three", "four",    "five",  "six",  "no"};
+  static const std::set<std::string_view> pronouns = {"me", "you", "us", "him", "her", "them",
+                                                      "it", "myself", "yourself", "ourselves"};
+  static const std::set<std::string_view> indefinite = {"something", "anything", "everything", "someone"};
+  uint8_t f = 0;
+  if (is_function_word(w)) f |= kWordFunction;
+  if (determiners.count(w) != 0) f |= kWordDeterminer;
+  if (pronouns.count(w) != 0) f |= kWordPronoun;
+  if (w == "for" || w == "to") f |= kWordPreposition;
+  if (indefinite.count(w) != 0) f |= kWordIndefinite;
+  return f;
+}
+
+namespace {
+
+// One edit apart: a substitution, an insertion or deletion, or a swap of two
+// neighbouring letters ("yelow", "kye", "bleu" from "yellow", "key", "blue").
+bool one_edit_apart(const std::string& a, const std::string& b) {
+  if (a == b) return false;
+  if (a.size() == b.size()) {
+    size_t i = 0;
+    while (a[i] == b[i]) ++i;
+    if (a.compare(i + 1, std::string::npos, b, i + 1, std::string::npos) == 0) return true;  // substitution
+    return i + 1 < a.size() && a[i] == b[i + 1] && a[i + 1] == b[i] &&
+           a.compare(i + 2, std::string::npos, b, i + 2, std::string::npos) == 0;  // swap
+  }
+  const std::string& l = a.size() > b.size() ? a : b;
+  const std::string& s = a.size() > b.size() ? b : a;
+  if (l.size() != s.size() + 1) return false;
+  size_t i = 0;
+  while (i < s.size() && l[i] == s[i]) ++i;
+  return l.compare(i + 1, std::string::npos, s, i, std::string::npos) == 0;
+}
+
+// Runs of three or more equal letters cut to `keep` letters ("pleeease").
+std::string shorten_runs(const std::string& w, size_t keep) {
+  std::string out;
+  for (size_t i = 0; i < w.size();) {
+    size_t j = i;
+    while (j < w.size() && w[j] == w[i]) ++j;
+    out.append(j - i >= 3 ? keep : j - i, w[i]);
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
+// Spelling repair for a token the model has never seen. Elongated words
+// ("neeed", "pleeease") are read with their letter runs shortened when that
+// gives a known word. A word that WordNet does not know either is read as the
+// content word of the vocabulary one edit away, the most frequent if several
+// are: "yelow" -> "yellow", "kye" -> "key", "rd" -> "red" (a two-letter token
+// only by a dropped letter). Real words stay as written ("soon" is never read
+// as "spoon"), and so do function words and tokens with digits.
+std::string AlignmentModel::respell(const std::string& w) const {
+  if (w.size() < 2 || is_function_word(w)) return w;
+  for (char ch : w)
+    if (ch < 'a' || ch > 'z') return w;
+  WordNetLexicon& wn = WordNetLexicon::instance();
+  auto known = [&](const std::string& x) { return word_ids_.count(x) != 0 || is_function_word(x) || wn.knows(x); };
+  const bool one_letter = w.find_first_not_of(w[0]) == std::string::npos;  // "zzzz" is no elongated word
+  if (const std::string two = shorten_runs(w, 2); two != w && !one_letter) {
+    if (known(two)) return two;
+    if (const std::string one = shorten_runs(w, 1); known(one)) return one;
+  }
+  if (wn.knows(w)) return w;
+  int best = -1;
+  bool best_full = false;
+  for (size_t id = 0; id < words_.size() && id < bg_.size() && id < word_flags_.size(); ++id) {
+    const std::string& v = words_[id];
+    if (v.size() < 3 || v.size() + 1 < w.size() || v.size() > w.size() + 1) continue;
+    if (w.size() == 2 && v.size() != 3) continue;  // "rd", "gt": only a dropped letter
+    const uint8_t f = word_flags_[id];
+    if ((f & kWordFunction) != 0 || (f & (kWordNoun | kWordVerb | kWordModifier)) == 0) continue;
+    if (!one_edit_apart(w, v)) continue;
+    // A dropped letter is the commoner slip than an extra one ("glases" is
+    // "glasses" rather than "glass"); among equals, the more frequent word.
+    const bool full = v.size() >= w.size();
+    if (best < 0 || full > best_full || (full == best_full && bg_[id] > bg_[static_cast<size_t>(best)])) {
+      best = static_cast<int>(id);
+      best_full = full;
+    }
+  }
+  return best >= 0 ? words_[static_cast<size_t>(best)] : w;
+}
+
+std::string AlignmentModel::respelled(const std::string& w) const {
+  {
+    std::shared_lock lock(respell_mutex_);
+    if (auto it = respelled_.find(w); it != respelled_.end()) return it->second;
+  }
+  std::string r = respell(w);
+  std::unique_lock lock(respell_mutex_);
+  if (respelled_.size() > (1u << 14)) respelled_.clear();  // bound memory in a long-running server
+  respelled_.emplace(w, r);
+  return r;
+}
+
+EncodedUtterance AlignmentModel::encode(const std::string& text) const {
+  EncodedUtterance u;
+  u.words = tokenize_utterance(text);
+  u.ids.reserve(u.words.size());
+  for (size_t i = 0; i < u.words.size(); ++i) {
+    if (word_ids_.count(u.words[i]) == 0) u.words[i] = respelled(u.words[i]);
+    auto it = word_ids_.find(u.words[i]);
+    u.ids.push_back(it == word_ids_.end() ? -1 : it->second);
+    if (is_clause_end(u.words[i])) u.clause_end.push_back(static_cast<int>(i) + 1);
+  }
+  if (u.clause_end.empty() || u.clause_end.back() != static_cast<int>(u.words.size())) {
+    u.clause_end.push_back(static_cast<int>(u.words.size()));
+  }
+  mark_modifiers(u);
+  mark_pronoun_antecedents(u);
+  return u;
+}
+
+uint8_t AlignmentModel::word_flags(int id, const std::string& w) const {
+  if (id >= 0 && static_cast<size_t>(id) < word_flags_.size()) return word_flags_[static_cast<size_t>(id)];
+  // Unknown words: closed-class lists, else read as a noun (a name of something).
+  const uint8_t f = closed_class_flags(w);
+  return (f & kWordFunction) != 0 ? f : static_cast<uint8_t>(f | kWordNoun);
+}
+
+// For each object "it"/"them" in a clause that reads as a request (it has
+// "you", or no "i"/"we" subject: "come get it open"), the closest
+// colour-bearing noun phrase of an earlier clause is what the request is
+// about. A simple recency rule: the reading only decides which role's
+// objects a colour may contradict.
+void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
+  // "it" before a verb of being or an auxiliary is the empty subject of "it
+  // would be great if ...", which points back at nothing.
+  static const std::unordered_set<std::string> dummy_next = {
+      "is", "s", "was", "would", "will", "d", "might", "could", "should", "may", "must",
+      "seems", "looks", "be", "has", "can", "does", "did", "sounds"};
+  const size_t n = u.words.size();
+  u.asked_for.assign(n, 0);
+  if (u.noun_heads.size() != n) return;
+  size_t clause_start = 0;
+  for (size_t e : u.clause_end) {
+    const size_t end = std::min(e, n);
+    bool you = false, first_person = false, pronoun = false;
+    for (size_t i = clause_start; i < end; ++i) {
+      const std::string& w = u.words[i];
+      you = you || w == "you";
+      first_person = first_person || w == "i" || w == "we";
+      const bool dummy = w == "it" && i + 1 < n && dummy_next.count(u.words[i + 1]) != 0;
+      pronoun = pronoun || (w == "it" && !dummy) || w == "them";
+    }
+    if (pronoun && (you || !first_person)) {
+      // The latest colour token before this clause that has a head noun.
+      for (size_t i = clause_start; i-- > 0;) {
+        if (u.noun_heads[i][0] >= 0 && i < u.ids.size() && u.ids[i] >= 0 &&
+            static_cast<size_t>(u.ids[i]) < attribute_word_.size() && attribute_word_[static_cast<size_t>(u.ids[i])]) {
+          u.asked_for[i] = 1;
+          break;
+        }
+      }
+    }
+    clause_start = end;
+  }
+}
+
+// Post-nominal prepositional modifiers, read left to right: a span opens after
+// "for"/"to" whose preceding word heads a noun phrase (a noun after a
+// determiner, possibly with adjectives between, or "something"), and covers the
+// following determiners, pronouns, adjectives and participles up to and
+// including the head noun or pronoun. A verb right after the preposition is an
+// infinitive ("a key to open the door"): it ends the span, so its object is not
+// inside it. The flag of token i depends only on tokens before i.
+void AlignmentModel::mark_modifiers(EncodedUtterance& u) const {
+  const size_t n = u.words.size();
+  u.in_modifier.assign(n, 0);
+  std::vector<uint8_t> f(n);
+  for (size_t i = 0; i < n; ++i) f[i] = word_flags(u.ids[i], u.words[i]);
+  auto heads_noun_phrase = [&](size_t j) {
+    if ((f[j] & kWordIndefinite) != 0) return true;
+    const bool one = u.words[j] == "one" || u.words[j] == "ones";
+    if (!one && ((f[j] & kWordFunction) != 0 || (f[j] & kWordNoun) == 0)) return false;
+    for (size_t back = 1; back <= 3 && back <= j; ++back) {
+      const uint8_t g = f[j - back];
+      if ((g & kWordDeterminer) != 0) return true;
+      const bool modifier = (g & kWordModifier) != 0 || ((g & kWordFunction) == 0 && (g & kWordNoun) != 0 &&
+                                                         (g & kWordVerb) == 0);
+      if (!modifier) return false;
+    }
+    return false;
+  };
+  // Head nouns of adjectives and colours: the first following token that is
+  // neither a closed-class word nor a modifier, if it is a noun and comes
+  // within kMaxHeadDistance tokens without crossing a clause end.
+  // Determiners and number words ("two", "both", "some") get their head noun
+  // the same way, for the number binding of evaluate().
+  u.noun_heads.assign(n, {-1, -1});
+  for (size_t i = 0; i < n; ++i) {
+    if ((f[i] & (kWordModifier | kWordDeterminer)) == 0) continue;
+    for (size_t j = i + 1; j < n && j <= i + kMaxHeadDistance; ++j) {
+      if (is_clause_end(u.words[j]) || (f[j] & kWordFunction) != 0) break;
+      if ((f[j] & kWordModifier) != 0) continue;
+      if ((f[j] & kWordNoun) != 0) u.noun_heads[i][0] = static_cast<int>(j);
+      break;
+    }
+    // A colour placed after its noun ("pass me the key blue") describes the
+    // noun just before it when no noun follows.
+    const bool ends_phrase = i + 1 == n || is_clause_end(u.words[i + 1]) || (f[i + 1] & kWordFunction) != 0;
+    if (u.noun_heads[i][0] < 0 && (f[i] & kWordModifier) != 0 && ends_phrase && i > 0 &&
+        (f[i - 1] & kWordNoun) != 0 && (f[i - 1] & (kWordFunction | kWordModifier)) == 0)
+      u.noun_heads[i][0] = static_cast<int>(i) - 1;
+  }
+  bool open = false;
+  int k = 0;
+  int anchor = -1;   // the noun the open span attaches to
+  int purpose = -1;  // after "a key to open": that noun, for the verb's object
+  int relative = -1;  // after "the key that": that noun, once the verb is read
+  int pk = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (open) {
+      u.in_modifier[i] = 1;
+      if ((f[i] & kWordModifier) != 0) u.noun_heads[i][1] = anchor;
+    }
+    if (is_clause_end(u.words[i])) {
+      open = false;
+      purpose = relative = -1;
+      continue;
+    }
+    if (purpose >= 0 && !open) {
+      // The object of a purpose infinitive ("a key to open [this yellow
+      // door]") is read as usual, but its colours may describe the key too.
+      if ((f[i] & kWordModifier) != 0) u.noun_heads[i][1] = purpose;
+      const bool np_word = (f[i] & kWordFunction) != 0 || (f[i] & kWordModifier) != 0;
+      if (++pk > kMaxModifierSpan || !np_word) purpose = -1;
+    }
+    if (relative >= 0 && i > 0 && is_relative_pronoun(u.words[i - 1])) {
+      purpose = relative;  // token i is the relative clause's verb
+      pk = 0;
+      relative = -1;
+    }
+    if (open) {
+      ++k;
+      const uint8_t g = f[i];
+      if ((g & kWordPronoun) == 0 && k == 1 && (g & kWordVerb) != 0) {
+        open = false;  // an infinitive's verb ("a key to open ..."): its object follows
+        purpose = anchor;
+        pk = 0;
+      } else if ((g & kWordPronoun) != 0 || (k == 1 && (g & kWordVerb) != 0)) {
+        open = false;  // a pronoun
+      } else if ((g & kWordFunction) != 0 || (g & kWordModifier) != 0 ||
+                 ((g & kWordVerb) != 0 && (g & kWordNoun) == 0)) {
+        // Determiners, adjectives, colours and participles ("the locked door").
+        open = k < kMaxModifierSpan;
+      } else {
+        open = false;  // the head noun, or an infinitive's verb
+      }
+    } else if ((f[i] & kWordPreposition) != 0 && i > 0 && heads_noun_phrase(i - 1)) {
+      open = true;
+      k = 0;
+      anchor = static_cast<int>(i) - 1;
+    } else if ((f[i] & kWordPreposition) != 0 && (i == 0 || is_clause_end(u.words[i - 1]))) {
+      // Fronted: "For this yellow door, I need a key." The span opens as
+      // usual (it depends on earlier tokens only); the noun it attaches to is
+      // the first noun phrase of the next clause, read ahead like the heads.
+      open = true;
+      k = 0;
+      anchor = -1;
+      size_t j = i + 1;
+      while (j < n && !is_clause_end(u.words[j])) ++j;
+      for (++j; j < n && !is_clause_end(u.words[j]); ++j)
+        if (heads_noun_phrase(j)) {
+          anchor = static_cast<int>(j);
+          break;
+        }
+    } else if (is_relative_pronoun(u.words[i]) && i > 0 && i + 1 < n && heads_noun_phrase(i - 1) &&
+               (f[i + 1] & kWordVerb) != 0 && (f[i + 1] & kWordModifier) == 0) {
+      // A relative clause ("the key that opens this yellow door") reads like
+      // a purpose infinitive: its object's colours may describe the noun too.
+      relative = static_cast<int>(i) - 1;  // takes effect after the verb
+    }
+  }
+}
+
+}  // namespace clips::lm

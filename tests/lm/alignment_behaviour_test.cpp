@@ -1,0 +1,121 @@
+// Score tests for behaviours of the alignment model (alignment_model.hpp) that
+// the other embedded-model tests leave unpinned, and a golden-score regression
+// test that holds the model's numbers fixed across refactorings.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_prompts.hpp"
+
+namespace clips::lm {
+namespace {
+
+using testing::literal_prompt;
+using testing::pragmatic_prompt;
+using testing::vh_prompt;
+
+EmbeddedLanguageModel& model() {
+  static EmbeddedLanguageModel m([] {
+    EmbeddedModelOptions o;
+    o.cache_dir = "off";  // train from the corpus: a stale cache must not hide a change
+    return o;
+  }());
+  return m;
+}
+
+double score(const std::string& prompt, const std::string& continuation) {
+  return model().score({{prompt, continuation}}).at(0);
+}
+
+// Item 4, C: the copy probability alpha is one parameter shared by all
+// colours, so a colour the corpus has rarely ("orange": 21 times, against 292
+// for "blue") is copied from the command as readily as a frequent one. Without the
+// copy only the contradiction of item 7 tells the keys apart (3.2 and 3.4
+// nats when the copy was disabled to check this test; 5.2 and 8.8 with it).
+TEST(AlignmentBehaviour, RareColoursAreCopiedAsReadilyAsFrequentOnes) {
+  const std::string orange = literal_prompt("(pickup you key1) where (iscolor key1 orange)");
+  const std::string blue = literal_prompt("(pickup you key1) where (iscolor key1 blue)");
+  const double gap_orange = score(orange, " Pick up the orange key.\n") - score(blue, " Pick up the orange key.\n");
+  const double gap_blue = score(blue, " Pick up the blue key.\n") - score(orange, " Pick up the blue key.\n");
+  std::printf("[shared copy] orange %.2f, blue %.2f nats\n", gap_orange, gap_blue);
+  EXPECT_GT(gap_orange, 4.5);
+  EXPECT_GT(gap_blue, 4.5);
+  // Rare or frequent, the copied colour tells the keys apart (the rare one
+  // even more: the shared residual table already expects "blue" anywhere).
+  EXPECT_GT(gap_orange, gap_blue - 1.0);
+}
+
+// Item 4, P: a hand-over's recipient unit emits "here", "my way", ... when
+// mentioned. Appending such a word to a request helps a hand-over to the
+// speaker and not a pickup of the same key (the verb and noun are the same
+// in both utterances, so the difference of differences is the recipient's).
+TEST(AlignmentBehaviour, RecipientWordsSpeakForHandOvers) {
+  const std::string hand = literal_prompt("(handover you me key1) where (iscolor key1 red)");
+  const std::string pick = literal_prompt("(pickup you key1) where (iscolor key1 red)");
+  const char* plain = " Bring the red key.\n";
+  const char* here = " Bring the red key here.\n";
+  const double gain_hand = score(hand, here) - score(hand, plain);
+  const double gain_pick = score(pick, here) - score(pick, plain);
+  std::printf("[recipient] \"here\" gains %.2f nats for the hand-over, %.2f for the pickup\n", gain_hand, gain_pick);
+  // (4.2 nats; 0 with the recipient unit disabled.)
+  EXPECT_GT(gain_hand, gain_pick + 1.0);
+}
+
+struct Golden {
+  const char* kind;  // "L" literal, "P" pragmatic, "V" virtual-home, "E" empty prompt
+  const char* command;
+  const char* continuation;
+  double log_prob;
+};
+
+std::string prompt_of(const Golden& g) {
+  switch (g.kind[0]) {
+    case 'L': return literal_prompt(g.command);
+    case 'P': return pragmatic_prompt(g.command);
+    case 'V': return vh_prompt(g.command);
+    default: return "\n";
+  }
+}
+
+// The log-scores below were recorded by running this test against the
+// unsplit alignment_model.cpp (commit a126c13) with CLIPS_GOLDEN_PRINT=1; they
+// are not derived by hand. They cover every step of the model: length, mention
+// sums, anchors, clause types, modifiers, colour binding and contradiction,
+// number binding, pronoun antecedents, misspellings, unknown words, prefixes
+// and the empty-command prompt. Re-record them only for an intended change of
+// the model, and say so in the commit.
+const std::vector<Golden> kGolden = {
+    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.405423359783185},
+    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.721563911707193},
+    {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
+     " Bring me both red", -13.821025965510673},
+    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -57.061597102829325},
+    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.950867944200958},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
+     " This red door has me stuck; could you open it?\n", -71.267764601538133},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -29.419073142274996},
+    {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
+     " Pass me the red key pls, would it be possible?\n", -76.501865027837709},
+    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.669852990517846},
+    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -25.174307633283632},
+    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685302211650662},
+    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.737214962404956},
+    {"E", "", " Hello there.\n", -28.177224224689475},
+};
+
+TEST(AlignmentGolden, ScoresMatchTheRecordedOnes) {
+  const bool print = std::getenv("CLIPS_GOLDEN_PRINT") != nullptr;
+  for (const Golden& g : kGolden) {
+    const double s = score(prompt_of(g), g.continuation);
+    if (print) std::printf("GOLDEN %.17g  %s | %s\n", s, g.command, g.continuation);
+    EXPECT_NEAR(s, g.log_prob, 1e-9) << g.kind << " " << g.command << " /" << g.continuation;
+  }
+}
+
+}  // namespace
+}  // namespace clips::lm
