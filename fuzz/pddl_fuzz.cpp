@@ -4,6 +4,7 @@
 // work grows as objects^parameters): large inputs and tasks whose estimated
 // ground size is large are skipped, not fuzzed.
 #include <memory>
+#include <optional>
 
 #include "fuzz/fuzz_target.hpp"
 #include "pddl/parser.hpp"
@@ -57,13 +58,12 @@ CLIPS_FUZZ_TARGET(pddl) {
     if (ground_size(*domain, *problem) > kMaxGroundSize) return 0;
     const Task task(domain, problem);
     // Walk a few steps (first applicable action each time), checking the goal.
-    const CondId goal = problem->goal
-                            ? task.compile(*problem->goal, std::vector<ObjectId>(problem->goal_num_vars, -1))
-                            : -1;
+    std::optional<CompiledCondition> goal;
+    if (problem->goal) goal = task.compile(*problem->goal, std::vector<ObjectId>(problem->goal_num_vars, -1));
     State s = task.initial_state();
     (void)task.state_str(s);
     for (int step = 0; step < 4; ++step) {
-      if (goal >= 0) (void)task.holds(s, goal);
+      if (goal) (void)goal->holds(s);
       const auto next = task.applicable_actions(s);
       if (next.empty()) break;
       (void)task.action_name(next.front());

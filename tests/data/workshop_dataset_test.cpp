@@ -95,7 +95,7 @@ TEST_F(WorkshopDataset, EveryProblemHasAGoalSetOfThreeToSixDefinedGoalsThatCompi
       ASSERT_TRUE(definitions_.count(l)) << "no goals/definitions/" << l << ".pddl";
       EXPECT_NO_THROW(task->compile_text(definitions_[l], l)) << l;
       // Nothing to do from the start would make the goal useless as a candidate.
-      EXPECT_FALSE(task->holds(task->initial_state(), task->compile_text(definitions_[l], l))) << l;
+      EXPECT_FALSE(task->compile_text(definitions_[l], l).holds(task->initial_state())) << l;
     }
   }
 }
@@ -137,17 +137,17 @@ TEST_F(WorkshopDataset, CompletionsReachTheTrueGoalAndNoOtherCandidate) {
       EXPECT_EQ(agent_of(*task, comp.actions[i]), (obs.actions.size() + i) % 2 == 0 ? "human" : "robot")
           << "completion step " << i + 1;
     // The true goal is reached by the last action, not before.
-    pddl::CondId truth = task->compile_text(definitions_[p.tag], p.tag);
-    EXPECT_TRUE(task->holds(comp.states.back(), truth));
+    const pddl::CompiledCondition truth = task->compile_text(definitions_[p.tag], p.tag);
+    EXPECT_TRUE(truth.holds(comp.states.back()));
     for (size_t i = 0; i + 1 < comp.states.size(); ++i)
-      EXPECT_FALSE(task->holds(comp.states[i], truth)) << "reached after " << i << " completion steps";
+      EXPECT_FALSE(truth.holds(comp.states[i])) << "reached after " << i << " completion steps";
     auto truth_parts = conjuncts(definitions_[p.tag]);
     for (auto& l : labels) {
       if (l == p.tag) continue;
       auto parts = conjuncts(definitions_[l]);
       bool sub_goal = std::includes(truth_parts.begin(), truth_parts.end(), parts.begin(), parts.end());
       if (!sub_goal) {
-        EXPECT_FALSE(task->holds(comp.states.back(), task->compile_text(definitions_[l], l)))
+        EXPECT_FALSE(task->compile_text(definitions_[l], l).holds(comp.states.back()))
             << "the completion also reaches " << l;
       }
     }
