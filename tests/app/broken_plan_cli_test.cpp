@@ -38,7 +38,7 @@ TEST(CliBrokenPlan, OtherPlansStillRun) {
 TEST(CliBrokenPlan, TheBadPlanNamesItsFile) {
   BrokenCopy c;
   auto r = run(clips_binary() + " infer --dataset " + c.ds + " --plan e1.2.keys");
-  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(r.status, 3) << r.out;  // an input error
   EXPECT_TRUE(contains(r.out, "plans/observed/e1.2.keys.pddl")) << r.out;
 }
 

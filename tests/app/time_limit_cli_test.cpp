@@ -41,7 +41,7 @@ TEST(CliPlanLimits, AstarMaxSecondsHoldsOnAWideTask) {
   const double secs =
       timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --max-seconds 2", r);
   EXPECT_LT(secs, 30) << r.out;
-  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.status, 5) << r.out;  // a limit stopped the search
   EXPECT_TRUE(contains(r.out, "status max_time")) << r.out;
   EXPECT_TRUE(contains(r.out, "--max-seconds limit of 2 s reached")) << r.out;
   EXPECT_FALSE(contains(r.out, "no plan exists")) << r.out;
@@ -53,7 +53,7 @@ TEST(CliPlanLimits, AstarTimeLimitHoldsOnAWideTask) {
   const double secs = timed_run(
       "--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --time-limit 2 --json", r);
   EXPECT_LT(secs, 30) << r.out;
-  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.status, 5) << r.out;  // a limit stopped the search
   EXPECT_TRUE(contains(r.out, "\"status\":\"time_limit\"")) << r.out;
   EXPECT_TRUE(contains(r.out, "time limit of 2 s reached")) << r.out;
 }
@@ -64,7 +64,7 @@ TEST(CliPlanLimits, RtaaTimeLimitHoldsOnAWideTask) {
   const double secs = timed_run(
       "--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --planner rtaa --time-limit 2", r);
   EXPECT_LT(secs, 30) << r.out;
-  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.status, 5) << r.out;  // a limit stopped the search
   EXPECT_TRUE(contains(r.out, "status time_limit")) << r.out;
   EXPECT_TRUE(contains(r.out, "time limit of 2 s reached")) << r.out;
 }
@@ -77,7 +77,7 @@ TEST(CliPlanLimits, UnreachableGoalSaysNoPlanExists) {
   timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --max-seconds 2" +
                 " --goal '(sealed o1)'",
             r);
-  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.status, 4) << r.out;  // no plan exists
   EXPECT_TRUE(contains(r.out, "status failure")) << r.out;
   EXPECT_TRUE(contains(r.out, "no plan exists")) << r.out;
   EXPECT_FALSE(contains(r.out, "limit")) << r.out;
