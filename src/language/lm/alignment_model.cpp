@@ -441,7 +441,14 @@ AlignmentModel::TokenSources AlignmentModel::token_sources(const Bound& c, const
 double AlignmentModel::rescale_tiny_tokens(TokenSources& s, const EncodedUtterance& u) const {
   const size_t n = u.ids.size();
   const size_t G = n == 0 ? 0 : s.p_group.size() / n;
-  auto& [p_bg, p_you, p_me, p_gen, p_mod, p_group] = s;
+  // Plain references, not a structured binding: lambdas below capture them
+  // (clang before 16 cannot capture structured bindings).
+  auto& p_bg = s.p_bg;
+  auto& p_you = s.p_you;
+  auto& p_me = s.p_me;
+  auto& p_gen = s.p_gen;
+  auto& p_mod = s.p_mod;
+  auto& p_group = s.p_group;
   double token_log_scale = 0;
   for (size_t i = 0; i < n; ++i) {
     if (u.ids[i] >= 0) continue;
@@ -475,7 +482,13 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const std::vector<double> contra = colour_contradictions(c, u);
   TokenSources sources = token_sources(c, u);
   const double token_log_scale = rescale_tiny_tokens(sources, u);
-  const auto& [p_bg, p_you, p_me, p_gen, p_mod, p_group] = sources;
+  // Plain references (lambdas capture them; see rescale_tiny_tokens).
+  const auto& p_bg = sources.p_bg;
+  const auto& p_you = sources.p_you;
+  const auto& p_me = sources.p_me;
+  const auto& p_gen = sources.p_gen;
+  const auto& p_mod = sources.p_mod;
+  const auto& p_group = sources.p_group;
 
   const bool enumerate = G <= static_cast<size_t>(kMaxEnumeratedGroups);
   const uint32_t all = G >= 32 ? ~0u : (1u << G) - 1u;
