@@ -255,6 +255,19 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
   }
 }
 
+nlohmann::json parse_choices_reply(const std::string& body, const std::string& context) {
+  nlohmann::json j = nlohmann::json::parse(body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) {
+    throw LmError(context + "body is not valid JSON (" + std::to_string(body.size()) +
+                  " bytes: " + server_error_text(body) + ")");
+  }
+  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
+  auto choices = j.find("choices");
+  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
+  if (!choices->is_array()) throw LmError(context + "choices is not an array");
+  return j;
+}
+
 std::string server_error_text(const std::string& body) {
   auto j = nlohmann::json::parse(body, nullptr, /*allow_exceptions=*/false);
   if (j.is_object()) {

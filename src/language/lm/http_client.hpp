@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <map>
 #include <mutex>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,11 @@ class HttpClient {
 // The server's own error text from a JSON error body ({"error":{"message":..}},
 // {"message":..} or {"detail":..}), or a short prefix of the raw body.
 std::string server_error_text(const std::string& body);
+
+// A completions or chat reply body, parsed and checked to be a JSON object
+// whose "choices" is an array (the shape both endpoints share); otherwise an
+// LmError whose message starts with `context`.
+nlohmann::json parse_choices_reply(const std::string& body, const std::string& context);
 
 // Helpers shared by the backends.
 std::string env_or(const char* name, const std::string& fallback);

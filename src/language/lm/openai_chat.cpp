@@ -30,15 +30,8 @@ std::string png_data_url(const std::vector<std::uint8_t>& png) {
 
 std::string parse_chat_reply(const std::string& body, const ChatRequest& request,
                              const std::string& context) {
-  json j = json::parse(body, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) {
-    throw LmError(context + "body is not valid JSON (" + std::to_string(body.size()) +
-                  " bytes: " + server_error_text(body) + ")");
-  }
-  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
-  auto choices = j.find("choices");
-  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
-  if (!choices->is_array()) throw LmError(context + "choices is not an array");
+  const json j = parse_choices_reply(body, context);
+  const auto choices = j.find("choices");
   if (choices->empty()) throw LmError(context + "choices is empty");
   const json& choice = (*choices)[0];
   if (!choice.is_object()) throw LmError(context + "choices[0] is not an object");

@@ -135,15 +135,8 @@ double sum_continuation_logprobs(const json& logprobs, const std::string& prompt
 std::vector<double> parse_completions_reply(const std::string& body,
                                             const std::vector<const ScoreRequest*>& chunk,
                                             double temperature, const std::string& context) {
-  json j = json::parse(body, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) {
-    throw LmError(context + "body is not valid JSON (" + std::to_string(body.size()) +
-                  " bytes: " + server_error_text(body) + ")");
-  }
-  if (!j.is_object()) throw LmError(context + "body is not a JSON object");
-  auto choices = j.find("choices");
-  if (choices == j.end() || choices->is_null()) throw LmError(context + "choices missing");
-  if (!choices->is_array()) throw LmError(context + "choices is not an array");
+  const json j = parse_choices_reply(body, context);
+  const auto choices = j.find("choices");
   if (choices->size() != chunk.size()) {
     throw LmError(context + "choices has " + std::to_string(choices->size()) + " entries, expected " +
                   std::to_string(chunk.size()) + " (one per prompt)");
