@@ -37,7 +37,7 @@ CLIPS_FUZZ_TARGET(dataset) {
   static const std::vector<PlanRecord> plans = known_plans();
   try {
     if (data[0] % 2 == 0) {
-      for (const auto& [name, s] : parse_stimuli(text, "<stimuli.json>", DomainKind::DoorsKeysGems, plans)) {
+      for (const auto& [name, s] : parse_stimuli(text, "<stimuli.json>", plans)) {
         for (int o : s.best_options)
           if (o < 1 || o > s.option_count) __builtin_trap();
       }

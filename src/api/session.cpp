@@ -11,9 +11,7 @@
 #include "assist/assist.hpp"
 #include "clips/version.hpp"
 #include "data/dataset.hpp"
-#include "domains/dkg_world.hpp"
-#include "domains/registry.hpp"
-#include "domains/vh_world.hpp"
+#include "domains/pack.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "pddl/parser.hpp"
@@ -65,52 +63,15 @@ void check_backend(const std::string& backend) {
   throw InputError("unknown language model backend '" + backend + "' (expected " + known + ")");
 }
 
-// Who assists whom, and the episode horizon (as in eval's experiments).
-struct Roles {
-  std::string principal, assistant;
-  int horizon;
-  double noop_cost;
-};
-Roles roles_of(data::DomainKind kind, const inference::Belief& b) {
-  if (kind == data::DomainKind::VirtualHome) return {"actor", "helper", 50, 1.0};
-  if (kind == data::DomainKind::DoorsKeysGems) return {"human", "robot", 100, 0.6};
-  const auto& c = b.utterance_model().config();
-  return {c.speaker, c.listener, 100, 1.0};
-}
-
 std::vector<data::GoalSpec> custom_goals(const std::vector<std::string>& conditions) {
   std::vector<data::GoalSpec> out;
   for (const auto& c : conditions) out.push_back({c, c, "<goal>"});
   return out;
 }
 
-std::vector<model::CostProfile> custom_profiles(data::DomainKind kind, const std::vector<std::string>& names) {
+std::vector<model::CostProfile> custom_profiles(const domains::Pack& pack, const std::vector<std::string>& names) {
   std::vector<model::CostProfile> out;
-  for (const auto& n : names) out.push_back(domains::cost_profile(kind, n));
-  return out;
-}
-
-std::vector<model::CostProfile> default_profiles(data::DomainKind kind) {
-  if (kind == data::DomainKind::DoorsKeysGems) return {model::dkg_profile(3), model::dkg_profile(4)};
-  return {model::unit_profile()};
-}
-
-// VirtualHome goal sets of a domain folder laid out like the dataset:
-// goals/sets/<problem stem>.txt lists labels, goals/definitions/<label>.pddl
-// holds each condition.
-std::vector<data::GoalSpec> folder_goal_set(const fs::path& dir, const std::string& stem) {
-  const fs::path set = dir / "goals" / "sets" / (stem + ".txt");
-  std::ifstream in(set);
-  if (!in) throw InputError("no goal set " + set.string() + " (give the candidate goals in SessionOptions::goals)");
-  std::vector<data::GoalSpec> out;
-  for (std::string line; std::getline(in, line);) {
-    const auto b = line.find_first_not_of(" \t\r"), e = line.find_last_not_of(" \t\r");
-    if (b == std::string::npos) continue;
-    const std::string label = line.substr(b, e - b + 1);
-    const fs::path def = dir / "goals" / "definitions" / (label + ".pddl");
-    if (!fs::exists(def)) throw InputError(SourceLoc{set.string(), 0, 0}, "goal '" + label + "' has no file " + def.string());
-    out.push_back({label, pddl::read_text_file(def.string()), def.string()});
-  }
+  for (const auto& n : names) out.push_back(pack.cost_profile(n));
   return out;
 }
 
@@ -119,28 +80,28 @@ std::vector<data::GoalSpec> folder_goal_set(const fs::path& dir, const std::stri
 struct Session::Impl {
   SessionOptions options;
   std::shared_ptr<const pddl::Task> task;
-  data::DomainKind kind = data::DomainKind::Generic;
+  domains::PackPtr pack;
   std::unique_ptr<inference::Belief> belief;
   std::shared_ptr<lm::LanguageModel> lm;  // built at the first utterance
   std::vector<std::string> goal_labels, profile_names;
   inference::StepRecord last;  // the belief's record of the current step
   std::vector<Step> trace;
-  Roles roles;
+  domains::Roles roles;
   std::optional<pddl::Task::AtomRef> assistant_active;  // null: no (active agent) predicate
 
-  Impl(SessionOptions o, std::shared_ptr<const pddl::Task> t, data::DomainKind k, std::vector<data::GoalSpec> goals,
+  Impl(SessionOptions o, std::shared_ptr<const pddl::Task> t, domains::PackPtr p, std::vector<data::GoalSpec> goals,
        std::vector<model::CostProfile> profiles)
-      : options(std::move(o)), task(std::move(t)), kind(k) {
+      : options(std::move(o)), task(std::move(t)), pack(std::move(p)) {
     check_backend(options.language_model.backend);
     if (!options.goals.empty()) goals = custom_goals(options.goals);
-    if (!options.cost_profiles.empty()) profiles = custom_profiles(kind, options.cost_profiles);
+    if (!options.cost_profiles.empty()) profiles = custom_profiles(*pack, options.cost_profiles);
     for (const auto& g : goals) goal_labels.push_back(g.label);
     for (const auto& p : profiles) profile_names.push_back(p.name);
     inference::InferenceOptions io;
     io.refine.max_nodes = options.max_nodes;
     io.threads = options.threads;
-    belief = std::make_unique<inference::Belief>(task, kind, std::move(goals), std::move(profiles), io);
-    roles = roles_of(kind, *belief);
+    belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
+    roles = pack->roles();
     try {
       assistant_active = task->atom("active", {roles.assistant});
     } catch (const InputError&) {
@@ -210,18 +171,18 @@ Session Session::open_dataset(const std::string& dataset_dir, const std::string&
   std::vector<model::CostProfile> profiles;
   data::PlanRecord problem_only;
   if (plan) {
-    profiles = inference::plan_cost_profiles(ds.kind(), *plan).profiles;
+    profiles = inference::plan_cost_profiles(ds.pack(), *plan).profiles;
   } else {
     if (!fs::exists(ds.problem_path(problem)))
       throw InputError("no problem or plan '" + problem + "' in " + dataset_dir + " (no " + ds.problem_path(problem) + ")");
     problem_only.id = problem_only.problem_id = problem;
     plan = &problem_only;
-    profiles = default_profiles(ds.kind());
+    profiles = ds.pack().default_profiles();
   }
   auto task = ds.task(plan->problem_id);
   std::vector<data::GoalSpec> goals;
   if (options.goals.empty()) goals = ds.candidate_goals(*plan);
-  return Session(std::make_unique<Impl>(std::move(options), task, ds.kind(), std::move(goals), std::move(profiles)));
+  return Session(std::make_unique<Impl>(std::move(options), task, ds.pack_ptr(), std::move(goals), std::move(profiles)));
 }
 
 Session Session::open_domain(const std::string& domain_dir, const std::string& problem_file, SessionOptions options) {
@@ -230,27 +191,22 @@ Session Session::open_domain(const std::string& domain_dir, const std::string& p
   if (!fs::exists(dom)) throw InputError("domain folder '" + domain_dir + "' has no domain.pddl");
   if (!fs::exists(problem_file)) throw InputError("problem file '" + problem_file + "' does not exist");
   auto domain = std::make_shared<pddl::Domain>(pddl::load_domain(dom.string()));
-  data::DomainKind kind = data::DomainKind::Generic;
-  if (domain->name == "doors-keys-gems") kind = data::DomainKind::DoorsKeysGems;
-  else if (domain->name == "virtual-home") kind = data::DomainKind::VirtualHome;
-  auto prob = std::make_shared<pddl::Problem>(
-      pddl::load_problem(*domain, problem_file, /*with_goal=*/kind == data::DomainKind::Generic));
-  auto task = std::make_shared<const pddl::Task>(domain, prob, data::grounding_options(kind));
-  data::check_problem(*task, kind, problem_file);
+  domains::PackPtr pack = domains::find_pack(*domain, domain_dir);
+  auto task = data::ground_problem(*pack, domain, problem_file);
   std::vector<data::GoalSpec> goals;
   if (options.goals.empty()) {
-    if (kind == data::DomainKind::DoorsKeysGems) {
-      for (auto g : task->objects_of_type("gem"))
-        goals.push_back({task->object_name(g), "(has human " + task->object_name(g) + ")", ""});
-    } else if (kind == data::DomainKind::VirtualHome) {
-      goals = folder_goal_set(dir, fs::path(problem_file).stem().string());
-    } else if (task->problem().goal_sexpr) {
-      goals.push_back({"goal", task->problem().goal_sexpr->str(), problem_file});
+    if (pack->spec().goals.source == domains::GoalSource::GoalSets) {
+      goals = data::folder_goal_set(domain_dir, fs::path(problem_file).stem().string());
     } else {
-      throw InputError(problem_file + " has no :goal; give the candidate goals in SessionOptions::goals");
+      try {
+        goals = pack->problem_goals(*task, problem_file);
+      } catch (const InputError& e) {
+        throw InputError(std::string(e.what()) + "; give the candidate goals in SessionOptions::goals");
+      }
     }
   }
-  return Session(std::make_unique<Impl>(std::move(options), task, kind, std::move(goals), default_profiles(kind)));
+  auto profiles = pack->default_profiles();
+  return Session(std::make_unique<Impl>(std::move(options), task, pack, std::move(goals), std::move(profiles)));
 }
 
 const Step& Session::observe(const std::string& action) {
@@ -349,18 +305,12 @@ AssistDecision Session::assist() {
 int Session::t() const { return impl_->belief->t(); }
 
 std::string Session::state() const {
-  const pddl::State& s = impl_->belief->state();
-  if (impl_->kind == data::DomainKind::DoorsKeysGems) {
-    domains::DkgWorld w(*impl_->task);
-    return w.ascii(s) + w.describe(s);
-  }
-  if (impl_->kind == data::DomainKind::VirtualHome) return domains::VhWorld(*impl_->task).describe(s);
-  return impl_->task->state_str(s);
+  return impl_->pack->describe_state(*impl_->task, impl_->belief->state());
 }
 
 const std::vector<Step>& Session::trace() const { return impl_->trace; }
 
-std::string Session::domain() const { return data::to_string(impl_->kind); }
+std::string Session::domain() const { return impl_->pack->name(); }
 
 bool Session::assistant_turn() const { return impl_->assistant_turn(); }
 

@@ -49,9 +49,9 @@ void register_assist(CLI::App& app) {
     if (adhoc && o->assist != "qmdp_offline")
       throw UsageError("with --problem, the assistant's next action is the Q_MDP choice (--assist qmdp_offline)");
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
-    if (const auto known = eval::known_methods(ds.kind());
+    if (const auto known = eval::known_methods(ds.pack());
         std::find(known.begin(), known.end(), o->method) == known.end())
-      throw InputError("--method " + o->method + " does not apply to a " + data::to_string(ds.kind()) + " dataset");
+      throw InputError("--method " + o->method + " does not apply to a " + ds.pack().name() + " dataset");
     if (adhoc) {
       const data::PlanRecord obs = observations_record(ds, o->obs);
       auto lm = make_lm(o->lm);

@@ -9,8 +9,7 @@
 
 #include "app/cli.hpp"
 #include "data/dataset.hpp"
-#include "domains/dkg_strips.hpp"
-#include "domains/registry.hpp"
+#include "domains/pack.hpp"
 #include "pddl/plan.hpp"
 
 namespace clips::app {
@@ -44,9 +43,6 @@ void register_export_strips(CLI::App& app) {
   cmd->add_option("--from-plan", o->from_plan, "Start from the end of this observed plan (dataset plan id)");
   cmd->callback([o] {
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
-    if (ds.kind() != data::DomainKind::DoorsKeysGems)
-      throw InputError("export-strips only supports doors-keys-gems datasets; " + o->dataset + " is " +
-                       data::to_string(ds.kind()));
     std::string problem = o->problem;
     std::shared_ptr<const pddl::Task> task;
     pddl::State start;
@@ -62,8 +58,12 @@ void register_export_strips(CLI::App& app) {
       task = ds.task(problem);
       start = task->initial_state();
     }
-    auto profile = domains::cost_profile(ds.kind(), o->costs);
-    auto ex = domains::export_strips(*task, start, o->goal, profile);
+    auto profile = ds.pack().cost_profile(o->costs);
+    auto exported = ds.pack().export_strips(*task, start, o->goal, profile);
+    if (!exported)
+      throw InputError("export-strips needs a domain pack that compiles its tasks to STRIPS (doors-keys-gems does); " +
+                       o->dataset + " is " + ds.pack().name());
+    const domains::StripsExport& ex = *exported;
 
     namespace fs = std::filesystem;
     fs::path dir(o->out);

@@ -70,7 +70,7 @@ void register_listen(CLI::App& app) {
     const pddl::State s_T = pddl::simulate(*task, task->initial_state(), p.observed).states.back();
     const std::string utterance = o->utterance ? *o->utterance : default_utterance(o->dataset, p);
 
-    const auto setup = language::literal_listener_setup(language::language_domain_of(*task));
+    const auto setup = language::literal_listener_setup(ds.pack_ptr());
     auto lm = make_lm(o->lm);
     const auto result = language::literal_listener(*task, s_T, utterance, setup, *lm);
 

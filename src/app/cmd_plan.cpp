@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cstdlib>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -10,7 +11,7 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
-#include "domains/registry.hpp"
+#include "domains/pack.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "search/rtaa.hpp"
@@ -87,13 +88,13 @@ void register_plan(CLI::App& app) {
     if (o->domain_file.empty() && (!o->dataset.empty() || std::getenv("CLIPS_DATASET")))
       o->dataset = dataset_dir(o->dataset);
     std::shared_ptr<const pddl::Task> task;
-    data::DomainKind kind = data::DomainKind::Generic;
+    domains::PackPtr pack;
     pddl::State start;
     if (!o->dataset.empty()) {
       if (o->problem.empty() && o->from_plan.empty()) throw InputError("--problem or --from-plan is required with --dataset");
       auto ds = data::Dataset::load(o->dataset);
       ds.set_max_ground_actions(o->max_ground_actions);
-      kind = ds.kind();
+      pack = ds.pack_ptr();
       if (!o->from_plan.empty()) {
         const auto& p = ds.plan(o->from_plan);
         if (!o->problem.empty() && o->problem != p.problem_id)
@@ -108,8 +109,10 @@ void register_plan(CLI::App& app) {
       if (o->domain_file.empty() || o->problem.empty())
         throw InputError("give --dataset DIR --problem ID, or --domain FILE --problem FILE");
       auto d = std::make_shared<pddl::Domain>(pddl::load_domain(o->domain_file));
+      // A pack.json beside the domain file, or the shared/built-in pack of its name.
+      pack = domains::find_pack(*d, std::filesystem::path(o->domain_file).parent_path().string());
       auto p = std::make_shared<pddl::Problem>(pddl::load_problem(*d, o->problem));
-      pddl::GroundingOptions go = data::grounding_options(kind);
+      pddl::GroundingOptions go = pack->spec().grounding;
       go.max_ground_actions = o->max_ground_actions;
       task = std::make_shared<pddl::Task>(d, p, go);
       start = task->initial_state();
@@ -123,10 +126,12 @@ void register_plan(CLI::App& app) {
       throw InputError("goal " + goal + " is empty: give at least one condition, e.g. \"(has human gem1)\"");
     std::string costs = o->costs;
     if (costs.empty())
-      costs = kind == data::DomainKind::DoorsKeysGems ? "1" : (task->domain().total_cost ? "task" : "unit");
-    auto spec = std::make_shared<model::Specification>(task, goal, domains::cost_profile(kind, costs));
-    std::string hname = o->heuristic.empty() ? domains::default_admissible_heuristic(kind) : o->heuristic;
-    std::shared_ptr<heuristics::Heuristic> h = domains::make_heuristic(hname, *task, kind);
+      costs = !pack->spec().default_cost_profile.empty() ? pack->spec().default_cost_profile
+              : task->domain().total_cost                ? "task"
+                                                         : "unit";
+    auto spec = std::make_shared<model::Specification>(task, goal, pack->cost_profile(costs));
+    std::string hname = o->heuristic.empty() ? pack->default_admissible_heuristic() : o->heuristic;
+    std::shared_ptr<heuristics::Heuristic> h = pack->make_heuristic(hname, *task);
     search::SearchOptions so;
     so.max_nodes = o->max_nodes;
     so.max_seconds = o->max_seconds;

@@ -5,8 +5,6 @@
 
 #include "app/cli.hpp"
 #include "data/dataset.hpp"
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
 
 namespace clips::app {
 
@@ -41,15 +39,7 @@ void register_show(CLI::App& app) {
     }
     for (auto& u : p.observed.utterances)
       if (u.index <= step) fmt::print("utterance (after {} actions): \"{}\"\n", u.index, u.text);
-    if (ds.kind() == data::DomainKind::DoorsKeysGems) {
-      domains::DkgWorld w(*task);
-      fmt::print("{}{}", w.ascii(s), w.describe(s));
-    } else if (ds.kind() == data::DomainKind::VirtualHome) {
-      domains::VhWorld w(*task);
-      fmt::print("{}", w.describe(s));
-    } else {
-      fmt::print("{}", task->state_str(s));
-    }
+    fmt::print("{}", ds.pack().describe_state(*task, s));
   });
 }
 

@@ -94,7 +94,8 @@ data::PlanRecord observations_record(const data::Dataset& ds, const ObservationF
   data::PlanRecord rec;
   rec.id = "problem " + f.problem + " (observations given on the command line)";
   rec.problem_id = f.problem;
-  rec.tag = ds.kind() == data::DomainKind::DoorsKeysGems ? f.condition : "";
+  // The plan's condition where the pack gives tags a meaning (mDKG keys/doors).
+  rec.tag = ds.pack().spec().plan_tags.empty() ? "" : f.condition;
   if (!f.actions.empty()) rec.observed = is_inline(f.actions) ? inline_actions(f.actions) : actions_file(f.actions);
   rec.observed.path = f.actions.empty() ? "--utterance" : rec.observed.path;
 
@@ -124,9 +125,11 @@ data::PlanRecord observations_record(const data::Dataset& ds, const ObservationF
     if (blank(u.text)) throw InputError(u.loc, "empty utterance");
     if (auto bad = util::utf8_problem(u.text); !bad.empty()) throw InputError(u.loc, "utterance is " + bad);
   }
-  if (ds.kind() == data::DomainKind::DoorsKeysGems && rec.observed.utterances.size() > 1)
-    throw InputError("a Doors-Keys-Gems observation holds at most one utterance (the model hears one); got " +
-                     std::to_string(rec.observed.utterances.size()) + " (--utterance and '; ' lines of --actions)");
+  if (const int most = ds.pack().spec().max_utterances_per_plan;
+      most > 0 && static_cast<int>(rec.observed.utterances.size()) > most)
+    throw InputError(fmt::format("a {} observation holds at most {} utterance(s) (the model hears that many); got {} "
+                                 "(--utterance and '; ' lines of --actions)",
+                                 ds.pack().name(), most, rec.observed.utterances.size()));
   if (rec.observed.actions.empty() && rec.observed.utterances.empty())
     throw InputError("--actions " + f.actions + " holds no action and no utterance");
   return rec;

@@ -19,29 +19,6 @@ namespace fs = std::filesystem;
 
 namespace clips::data {
 
-std::string to_string(DomainKind k) {
-  switch (k) {
-    case DomainKind::DoorsKeysGems: return "doors-keys-gems";
-    case DomainKind::VirtualHome: return "virtual-home";
-    case DomainKind::Generic: return "generic";
-  }
-  return "generic";
-}
-
-pddl::GroundingOptions grounding_options(DomainKind k) {
-  pddl::GroundingOptions o;
-  // The assistance simulations and literal planning set these flags on copies
-  // of states, so they must stay state variables although no action sets them.
-  o.keep_dynamic = {"frozen", "nograb", "noput"};
-  if (k == DomainKind::VirtualHome) {
-    // The reference's enumeration order (clips-spec-virtual-home.md 2.4).
-    o.schema_order = {"grab", "move", "put", "stack", "wait"};
-    o.first_param_fastest = true;
-    o.objects_by_name = true;
-  }
-  return o;
-}
-
 namespace {
 
 void check_utterance_text(const std::string& text, const SourceLoc& loc) {
@@ -81,19 +58,15 @@ std::string utterance_file(const std::string& path) {
   return out;
 }
 
-// Utterances of an observed plan: each must be non-empty, valid UTF-8 text.
-// A Doors-Keys-Gems plan has at most one, spoken after its actions; there may
-// be no actions (15.1.doors). The paper's plans all have exactly one (the rule
-// `validate` applies to a dataset), but inference from actions alone is a
-// legitimate use, so the loader accepts a plan without one. VirtualHome plans
-// may have several utterances. An observed plan with neither actions nor
-// utterances gives nothing to infer from and is rejected.
-void check_observed_plan(DomainKind kind, const pddl::PlanFile& obs) {
+// Utterances of an observed plan: each must be non-empty, valid UTF-8 text,
+// and no more than the pack allows (mDKG: one, spoken after the actions;
+// there may be no actions, as in 15.1.doors). Inference from actions alone
+// is a legitimate use, so the loader accepts a plan without an utterance. An
+// observed plan with neither actions nor utterances gives nothing to infer
+// from and is rejected.
+void check_observed_plan(const domains::Pack& pack, const pddl::PlanFile& obs) {
   for (auto& u : obs.utterances) check_utterance_text(u.text, u.loc);
-  if (kind == DomainKind::DoorsKeysGems && obs.utterances.size() > 1)
-    throw InputError(obs.utterances[1].loc,
-                     "a second utterance; a Doors-Keys-Gems observed plan has at most one ';' line (the first is "
-                     "at line " + std::to_string(obs.utterances[0].loc.line) + ")");
+  pack.check_observed_plan(obs);
   if (obs.actions.empty() && obs.utterances.empty())
     throw InputError(SourceLoc{obs.path, 0, 0}, "observed plan is empty (no actions and no '; <utterance>' line)");
 }
@@ -132,12 +105,12 @@ std::string describe_json(const nlohmann::json& v) {
 // integral numbers in range (1.0 is accepted; 1.5 and 1e30 are not), "goal" is
 // [g] with g a 0-based gem index, "best_option" is [[o, ...]] with 1-based
 // option numbers up to "option_count". Each entry must name a plan of the
-// dataset, at most once, and for Doors-Keys-Gems agree with that plan's
-// condition ("type" = the tag in its file name) and observed utterance.
+// dataset, at most once, and agree with that plan's condition ("type" = the
+// tag in its file name) and observed utterance.
 }  // namespace
 
 std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const std::string& path,
-                                                  DomainKind kind, const std::vector<PlanRecord>& plans,
+                                                  const std::vector<PlanRecord>& plans,
                                                   const std::vector<BrokenPlan>& broken) {
   nlohmann::json j;
   try {
@@ -206,7 +179,7 @@ std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const
     const auto& best = one_element("best_option");
     if (!best.is_array()) throw field_error("best_option", "expected [[o, ...]], got [" + describe_json(best) + "]");
     for (const auto& v : best) s.best_options.push_back(integer("best_option", v, 1, s.option_count));
-    if (kind == DomainKind::DoorsKeysGems) {
+    {
       if (s.type != plan->tag)
         throw field_error("type", "\"" + s.type + "\" differs from the plan's condition \"" + plan->tag + "\"");
       // The loader has checked that the observed plan holds at most one utterance.
@@ -240,35 +213,6 @@ std::vector<std::string> parse_goal_set(const std::string& text, const std::stri
 
 namespace {
 
-// Where a Doors-Keys-Gems problem starts: every agent and door on the grid,
-// every key and gem on it or held by an agent. The search and inference
-// treat an object elsewhere as unreachable (a gem with no position would get
-// probability 0 without a word), so the problem is rejected instead.
-void check_dkg_positions(const pddl::Task& t, const std::string& path) {
-  const SourceLoc loc{path, 0, 0};
-  auto walls = t.fluent("walls", {});
-  if (!walls.matrix) throw InputError(loc, "a Doors-Keys-Gems problem needs a (walls) bit-matrix");
-  const long long W = walls.matrix->cols, H = walls.matrix->rows;
-  const std::string grid = std::to_string(W) + "x" + std::to_string(H) + " grid";
-  const pddl::State s0 = t.initial_state();
-  const auto agents = t.objects_of_type("agent");
-  for (const char* type : {"agent", "door", "item"})
-    for (pddl::ObjectId o : t.objects_of_type(type)) {
-      const std::string& name = t.object_name(o);
-      const bool item = std::string(type) == "item";
-      if (item && std::any_of(agents.begin(), agents.end(), [&](pddl::ObjectId a) {
-            return t.test(s0, t.atom("has", {t.object_name(a), name}));
-          }))
-        continue;
-      const long long x = t.value(s0, t.fluent("xloc", {name})), y = t.value(s0, t.fluent("yloc", {name}));
-      const std::string held = item ? " (and no agent holds it)" : "";
-      if (x < 1 || y < 1) throw InputError(loc, name + " has no position on the " + grid + held);
-      if (x > W || y > H)
-        throw InputError(loc, name + " is outside the " + grid + " at (" + std::to_string(x) + ", " +
-                                  std::to_string(y) + ")" + held);
-    }
-}
-
 // Sort key: numeric map id, its letter suffix, then plan index.
 struct PlanKey {
   int num;
@@ -294,8 +238,33 @@ bool debug_load() {
 
 void check_utterance(const std::string& text, const SourceLoc& loc) { check_utterance_text(text, loc); }
 
-void check_problem(const pddl::Task& task, DomainKind kind, const std::string& path) {
-  if (kind == DomainKind::DoorsKeysGems) check_dkg_positions(task, path);
+std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
+                                                 std::shared_ptr<const pddl::Domain> domain,
+                                                 const std::string& problem_path, int64_t max_ground_actions) {
+  const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
+  auto prob = std::make_shared<pddl::Problem>(pddl::load_problem(*domain, problem_path, with_goal));
+  pddl::GroundingOptions go = pack.spec().grounding;
+  go.max_ground_actions = max_ground_actions;
+  auto t = std::make_shared<const pddl::Task>(std::move(domain), std::move(prob), go);
+  pack.check_problem(*t, problem_path);
+  return t;
+}
+
+std::vector<GoalSpec> folder_goal_set(const std::string& dir_in, const std::string& problem_id) {
+  const fs::path dir(dir_in), defs = dir / "goals" / "definitions";
+  const fs::path set = dir / "goals" / "sets" / (problem_id + ".txt");
+  if (!fs::exists(set)) throw InputError("no goal set " + set.string() + " for problem " + problem_id);
+  std::map<std::string, std::string> texts;
+  std::vector<GoalSpec> out;
+  const std::string text = pddl::read_text_file(set.string());
+  // Read only the definitions the set names.
+  for (auto& [line_no, label] : lines_of(text)) {
+    const fs::path def = defs / (label + ".pddl");
+    if (fs::exists(def)) texts[label] = pddl::read_text_file(def.string());
+  }
+  for (const auto& label : parse_goal_set(text, set.string(), texts))
+    out.push_back({label, texts.at(label), (defs / (label + ".pddl")).string()});
+  return out;
 }
 
 Dataset Dataset::load(const std::string& dir_in) {
@@ -308,8 +277,7 @@ Dataset Dataset::load(const std::string& dir_in) {
   fs::path dom = dir / "domain.pddl";
   if (!fs::exists(dom)) throw InputError("dataset directory '" + dir_in + "' has no domain.pddl");
   ds.domain_ = std::make_shared<pddl::Domain>(pddl::load_domain(dom.string()));
-  if (ds.domain_->name == "doors-keys-gems") ds.kind_ = DomainKind::DoorsKeysGems;
-  else if (ds.domain_->name == "virtual-home") ds.kind_ = DomainKind::VirtualHome;
+  ds.pack_ = domains::find_pack(*ds.domain_, dir_in);
 
   fs::path obs_dir = dir / "plans" / "observed";
   fs::path comp_dir = dir / "plans" / "completed";
@@ -346,7 +314,7 @@ Dataset Dataset::load(const std::string& dir_in) {
       throw InputError(SourceLoc{e.path().string(), 0, 0}, "plan file name must look like <problem>.<index>.<tag>.pddl");
     }
     r.observed = pddl::load_plan(e.path().string());
-    check_observed_plan(ds.kind_, r.observed);
+    check_observed_plan(*ds.pack_, r.observed);
     fs::path cp = comp_dir / e.path().filename();
     if (!fs::exists(cp)) throw InputError(SourceLoc{cp.string(), 0, 0}, "missing completed plan for " + stem);
     r.completed = pddl::load_plan(cp.string());
@@ -364,11 +332,12 @@ Dataset Dataset::load(const std::string& dir_in) {
   std::sort(recs.begin(), recs.end(), [](auto& a, auto& b) { return a.first < b.first; });
   for (auto& [k, r] : recs) ds.plans_.push_back(std::move(r));
 
-  if (ds.kind_ == DomainKind::VirtualHome) {
+  if (ds.pack_->spec().goals.source == domains::GoalSource::GoalSets) {
     fs::path defs = dir / "goals" / "definitions";
     fs::path sets = dir / "goals" / "sets";
     if (!fs::is_directory(defs) || !fs::is_directory(sets))
-      throw InputError("VirtualHome dataset '" + dir_in + "' needs goals/definitions/ and goals/sets/");
+      throw InputError("dataset '" + dir_in + "' needs goals/definitions/ and goals/sets/ (the " +
+                       ds.pack_->name() + " pack takes its candidate goals from goal sets)");
     for (auto& e : fs::directory_iterator(defs))
       if (e.path().extension() == ".pddl") {
         ds.goal_defs_[e.path().stem().string()] = pddl::read_text_file(e.path().string());
@@ -387,7 +356,7 @@ Dataset Dataset::load(const std::string& dir_in) {
   fs::path stim = dir / "stimuli.json";
   // A bad stimuli.json concerns `validate` only: its error is kept for it.
   if (fs::exists(stim)) try {
-      ds.stimuli_ = parse_stimuli(pddl::read_text_file(stim.string()), stim.string(), ds.kind_, ds.plans_, ds.broken_);
+      ds.stimuli_ = parse_stimuli(pddl::read_text_file(stim.string()), stim.string(), ds.plans_, ds.broken_);
     } catch (const InputError& err) {
       ds.stimuli_error_ = err.what();
     }
@@ -431,52 +400,24 @@ std::shared_ptr<const pddl::Task> Dataset::task(const std::string& problem_id) c
   // A failure leaves the slot empty: the next caller tries again (and fails
   // with the same error).
   if (debug_load()) std::fprintf(stderr, "dataset: grounding problem %s\n", problem_id.c_str());
-  auto prob = std::make_shared<pddl::Problem>(pddl::load_problem(*domain_, problem_path(problem_id),
-                                                                   /*with_goal=*/kind_ == DomainKind::Generic));
-  pddl::GroundingOptions go = grounding_options(kind_);
-  go.max_ground_actions = max_ground_actions_;
-  auto t = std::make_shared<pddl::Task>(domain_, prob, go);
-  if (kind_ == DomainKind::DoorsKeysGems) check_dkg_positions(*t, problem_path(problem_id));
+  auto t = ground_problem(*pack_, domain_, problem_path(problem_id), max_ground_actions_);
   slot->task = t;
   return t;
 }
 
 std::vector<GoalSpec> Dataset::candidate_goals(const PlanRecord& p) const {
   std::vector<GoalSpec> out;
-  if (kind_ == DomainKind::VirtualHome) {
+  if (pack_->spec().goals.source == domains::GoalSource::GoalSets) {
     auto it = goal_sets_.find(p.problem_id);
     if (it == goal_sets_.end()) throw InputError("no goal set goals/sets/" + p.problem_id + ".txt for plan " + p.id);
     for (auto& l : it->second) out.push_back({l, goal_defs_.at(l), goal_def_paths_.at(l)});
     return out;
   }
-  if (kind_ == DomainKind::DoorsKeysGems) {
-    auto t = task(p.problem_id);
-    for (auto g : t->objects_of_type("gem")) out.push_back({t->object_name(g), "(has human " + t->object_name(g) + ")", ""});
-    return out;
-  }
-  auto t = task(p.problem_id);
-  if (t->problem().goal) out.push_back({"goal", "<problem goal>", ""});
-  return out;
+  return pack_->problem_goals(*task(p.problem_id), problem_path(p.problem_id));
 }
 
 int Dataset::true_goal_index(const PlanRecord& p) const {
-  auto goals = candidate_goals(p);
-  if (kind_ == DomainKind::VirtualHome) {
-    for (size_t i = 0; i < goals.size(); ++i)
-      if (goals[i].label == p.tag) return static_cast<int>(i);
-    throw InputError("plan " + p.id + ": its goal label '" + p.tag + "' is not in goals/sets/" + p.problem_id + ".txt");
-  }
-  if (kind_ == DomainKind::DoorsKeysGems) {
-    if (p.completed.actions.empty()) throw InputError(SourceLoc{p.completed.path, 0, 0}, "completed plan is empty");
-    const auto& last = p.completed.actions.back();
-    auto e = pddl::read_one_sexpr(last.text, last.loc.file);
-    if (e.head() != "pickup" || e.items.size() != 3 || e.items[1].atom != "human")
-      throw InputError(last.loc, "a completed plan must end with (pickup human <gem>), found " + last.text);
-    for (size_t i = 0; i < goals.size(); ++i)
-      if (goals[i].label == e.items[2].atom) return static_cast<int>(i);
-    throw InputError(last.loc, "the completed plan ends by picking up '" + e.items[2].atom + "', which is not a gem");
-  }
-  return 0;
+  return pack_->true_goal_index(*task(p.problem_id), candidate_goals(p), p.tag, p.observed, p.completed);
 }
 
 const std::optional<StimulusInfo> Dataset::stimulus(const std::string& plan_id) const {

@@ -2,8 +2,10 @@
 // Loader for the paper's dataset layout, for any directory shaped like
 //   <dir>/domain.pddl, problems/<P>.pddl, plans/{observed,completed}/<plan>.pddl
 // plus, for Doors-Keys-Gems, utterances/{pragmatic,literal}/<plan>.txt and
-// stimuli.json, and for VirtualHome, goals/definitions/<label>.pddl and
-// goals/sets/<P>.txt. The domain kind is read from the domain file's name.
+// stimuli.json, and where the domain's pack takes goals from goal sets,
+// goals/definitions/<label>.pddl and goals/sets/<P>.txt. The domain pack
+// (domains/pack.hpp) is found from the domain's name or the folder's own
+// pack.json; everything domain-specific below comes from it.
 //
 // Loading rejects, with an InputError naming the file (and line, or entry and
 // field for stimuli.json): utterance files with other than one non-blank
@@ -21,13 +23,11 @@
 #include <string>
 #include <vector>
 
+#include "domains/pack.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
 
 namespace clips::data {
-
-enum class DomainKind { DoorsKeysGems, VirtualHome, Generic };
-std::string to_string(DomainKind k);
 
 struct PlanRecord {
   std::string id;          // file stem, e.g. "2.1.keys" or "1.1.stew_chicken"
@@ -41,12 +41,7 @@ struct PlanRecord {
   std::optional<std::string> literal_utterance;    // utterances/literal (mDKG)
 };
 
-// One candidate goal: a label and a PDDL condition.
-struct GoalSpec {
-  std::string label;      // e.g. "gem2" or "set_table1"
-  std::string condition;  // e.g. "(has human gem2)"
-  std::string source;     // the file `condition` was read from ("" when built in code), for error locations
-};
+using GoalSpec = domains::GoalSpec;
 
 // A plan that could not be loaded, and why (the message names the file).
 struct BrokenPlan {
@@ -65,7 +60,9 @@ class Dataset {
   static Dataset load(const std::string& dir);
 
   const std::string& dir() const { return dir_; }
-  DomainKind kind() const { return kind_; }
+  // What clips knows about the domain beyond its PDDL.
+  const domains::Pack& pack() const { return *pack_; }
+  const domains::PackPtr& pack_ptr() const { return pack_; }
   std::shared_ptr<const pddl::Domain> domain() const { return domain_; }
   const std::vector<PlanRecord>& plans() const { return plans_; }  // the plans that loaded
   const std::vector<BrokenPlan>& broken_plans() const { return broken_; }  // in file-name order
@@ -95,13 +92,13 @@ class Dataset {
 
  private:
   std::string dir_;
-  DomainKind kind_ = DomainKind::Generic;
+  domains::PackPtr pack_;
   std::shared_ptr<const pddl::Domain> domain_;
   std::vector<PlanRecord> plans_;
   std::vector<BrokenPlan> broken_;
-  std::map<std::string, std::string> goal_defs_;                 // VH label -> condition text
-  std::map<std::string, std::string> goal_def_paths_;            // VH label -> its goals/definitions file
-  std::map<std::string, std::vector<std::string>> goal_sets_;   // VH problem -> labels
+  std::map<std::string, std::string> goal_defs_;                 // goal label -> condition text
+  std::map<std::string, std::string> goal_def_paths_;            // goal label -> its goals/definitions file
+  std::map<std::string, std::vector<std::string>> goal_sets_;   // problem -> labels
   std::map<std::string, StimulusInfo> stimuli_;
   std::string stimuli_error_;  // a malformed stimuli.json: raised by stimulus()
   int64_t max_ground_actions_ = pddl::GroundingOptions::kDefaultMaxGroundActions;
@@ -119,23 +116,27 @@ class Dataset {
 };
 
 // The two list files the loader reads, parsed from their text (`path` names
-// the file in errors). stimuli.json: every entry checked against `plans`
-// (see dataset.cpp), except entries naming a plan in `broken` (set aside at
-// load), which are skipped. goals/sets/<P>.txt: one goal label per non-blank line,
+// the file in errors). stimuli.json (the mDKG experiment's stimulus list):
+// every entry checked against `plans` (see dataset.cpp), except entries
+// naming a plan in `broken` (set aside at load), which are skipped. goals/sets/<P>.txt: one goal label per non-blank line,
 // each defined in `goal_defs` and listed once.
 std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const std::string& path,
-                                                  DomainKind kind, const std::vector<PlanRecord>& plans,
+                                                  const std::vector<PlanRecord>& plans,
                                                   const std::vector<BrokenPlan>& broken = {});
 std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
                                         const std::map<std::string, std::string>& goal_defs);
 // An utterance given outside a plan file: non-empty, valid UTF-8; throws
 // InputError at `loc` otherwise.
 void check_utterance(const std::string& text, const SourceLoc& loc);
-// The checks Dataset::task makes of a grounded problem (mDKG: every agent,
-// door, key and gem is on the grid or held), for problems loaded elsewhere.
-void check_problem(const pddl::Task& task, DomainKind kind, const std::string& path);
-
-// Grounding options each domain needs (e.g. keep `frozen` in the state).
-pddl::GroundingOptions grounding_options(DomainKind k);
+// A problem of `domain` grounded as its pack asks and checked by it (what
+// Dataset::task does), for problems outside a dataset. Loads the problem's
+// :goal only when the pack takes its goal from there.
+std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
+                                                 std::shared_ptr<const pddl::Domain> domain,
+                                                 const std::string& problem_path,
+                                                 int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions);
+// The goal set goals/sets/<problem>.txt of a folder in the dataset layout,
+// with each label's condition from goals/definitions/.
+std::vector<GoalSpec> folder_goal_set(const std::string& dir, const std::string& problem_id);
 
 }  // namespace clips::data

@@ -8,23 +8,13 @@
 namespace clips::data {
 
 std::vector<std::string> true_options(const Dataset& ds, const PlanRecord& p) {
-  std::vector<std::string> out;
-  auto add = [&](const std::string& o) {
-    if (std::find(out.begin(), out.end(), o) == out.end()) out.push_back(o);
-  };
-  for (auto& line : p.completed.actions) {
-    auto e = pddl::read_one_sexpr(line.text, line.loc.file);
-    if (!e.is_list || e.items.size() < 2) continue;
-    const std::string& h = e.head();
-    if (ds.kind() == DomainKind::DoorsKeysGems) {
-      if (e.items[1].atom != "robot") continue;
-      if (p.tag == "keys" && h == "pickup" && e.items.size() == 3) add(e.items[2].atom);
-      if (p.tag == "doors" && h == "unlock" && e.items.size() == 4) add(e.items[3].atom);
-    } else if (ds.kind() == DomainKind::VirtualHome) {
-      if (h == "grab" && e.items[1].atom == "helper" && e.items.size() >= 3) add(e.items[2].atom);
-    }
+  std::shared_ptr<const pddl::Task> task;
+  try {
+    task = ds.task(p.problem_id);
+  } catch (const InputError&) {
+    // Without the problem, option types are not checked (validate_plan reports the problem).
   }
-  return out;
+  return ds.pack().options_taken(p.completed, p.tag, task.get());
 }
 
 namespace {
@@ -45,46 +35,22 @@ PlanCheck validate_plan(const Dataset& ds, const PlanRecord& p) {
     r.observed_steps = static_cast<int>(obs.actions.size());
     r.completed_steps = static_cast<int>(comp.actions.size());
     auto goals = ds.candidate_goals(p);
+    // Whatever the pack's rule for the true goal, the completion must reach
+    // it, and no other goal but its parts.
     int truth = ds.true_goal_index(p);
-    std::vector<int> reached;
-    for (size_t i = 0; i < goals.size(); ++i) {
-      pddl::CompiledCondition g = task->compile_text(goals[i].condition,
-                                              goals[i].source.empty() ? "goal " + goals[i].label : goals[i].source);
-      if (g.holds(comp.states.back())) reached.push_back(static_cast<int>(i));
-    }
-    if (ds.kind() == DomainKind::VirtualHome) {
-      // VH goals nest (juice1 is part of juice2): the completion must reach the
-      // true goal, and every other goal it reaches must be a part of it.
-      auto atoms_of = [&](const std::string& text) {
-        auto e = pddl::read_one_sexpr(text, "goal");
-        std::set<std::string> out;
-        if (e.head() == "and")
-          for (size_t i = 1; i < e.items.size(); ++i) out.insert(e.items[i].str());
-        else
-          out.insert(e.str());
-        return out;
-      };
-      auto truth_atoms = atoms_of(goals[truth].condition);
-      std::vector<int> maximal;
-      for (int i : reached) {
-        auto a = atoms_of(goals[i].condition);
-        bool part = i != truth && std::includes(truth_atoms.begin(), truth_atoms.end(), a.begin(), a.end());
-        if (!part) maximal.push_back(i);
-      }
-      reached = maximal;
-    }
-    if (reached.size() != 1) {
-      std::string names;
-      for (int i : reached) names += " " + goals[i].label;
-      r.error = "completion reaches " + std::to_string(reached.size()) + " candidate goals (expected exactly 1):" + names;
+    int reached = -1;
+    try {
+      reached = domains::reached_goal_index(*task, goals, p.observed, p.completed);
+    } catch (const InputError& e) {
+      r.error = e.what();
       return r;
     }
-    if (reached[0] != truth) {
-      r.error = "completion reaches " + goals[reached[0]].label + " but the dataset's true goal is " + goals[truth].label;
+    if (reached != truth) {
+      r.error = "completion reaches " + goals[reached].label + " but the dataset's true goal is " + goals[truth].label;
       return r;
     }
     r.goal = goals[truth].label;
-    if (ds.kind() == DomainKind::DoorsKeysGems) {
+    if (ds.pack().spec().max_utterances_per_plan == 1) {
       if (p.observed.utterances.size() != 1) {
         r.error = "expected exactly one utterance in the observed plan, found " + std::to_string(p.observed.utterances.size());
         return r;

@@ -24,18 +24,13 @@
 #include <string>
 #include <vector>
 
+#include "domains/pack.hpp"
 #include "model/spec.hpp"
 #include "pddl/state.hpp"
 #include "pddl/task.hpp"
 
 namespace clips::domains {
 
-struct StripsExport {
-  std::string domain;    // PDDL text of the STRIPS domain
-  std::string problem;   // PDDL text of the STRIPS problem
-  int cost_scale = 1;    // exported cost = original cost * cost_scale
-  std::string goal;      // the goal as exported, e.g. "(and (has human gem2))"
-};
 
 // Throws InputError for goals that are not a conjunction of (has agent item)
 // atoms, for costs that cannot be made integral by a factor up to 1000, for

@@ -57,13 +57,13 @@ void check_selection(const data::Dataset& ds, const BenchOptions& opts) {
   if (!unknown.empty())
     throw InputError(fmt::format("--plans: unknown plan id{} {} in {}; valid ids: {}", unknown.size() > 1 ? "s" : "",
                                  name_list(unknown), opts.dataset, name_list(ids)));
-  const auto known = known_methods(ds.kind());
+  const auto known = known_methods(ds.pack());
   unknown.clear();
   for (auto& m : opts.experiment.methods)
     if (std::find(known.begin(), known.end(), m) == known.end()) unknown.push_back(m);
   if (!unknown.empty())
     throw InputError(fmt::format("--methods: unknown method{} {} for a {} dataset; valid methods: {}",
-                                 unknown.size() > 1 ? "s" : "", name_list(unknown), data::to_string(ds.kind()),
+                                 unknown.size() > 1 ? "s" : "", name_list(unknown), ds.pack().name(),
                                  name_list(known, known.size())));
 }
 
@@ -125,7 +125,7 @@ BenchReport run_bench(const BenchOptions& opts) {
   rep.loaded = std::make_shared<const data::Dataset>(data::Dataset::load(opts.dataset));
   const data::Dataset& ds0 = *rep.loaded;
   check_selection(ds0, opts);
-  rep.domain = data::to_string(ds0.kind());
+  rep.domain = ds0.pack().name();
   rep.dataset = opts.dataset;
   rep.fingerprint = dataset_fingerprint(opts.dataset);
   rep.started_utc = utc_now_iso8601();
@@ -139,10 +139,7 @@ BenchReport run_bench(const BenchOptions& opts) {
     if (wanted) todo.push_back(&p);
   }
   if (todo.empty()) throw InputError("no plans to evaluate in " + opts.dataset);
-  language::LanguageModelOptions lmo;
-  lmo.base_url = opts.lm_base_url;
-  lmo.model = opts.lm_model;
-  auto lm = language::make_language_model(opts.lm, lmo);
+  auto lm = opts.language_model ? opts.language_model : language::make_language_model(opts.lm, opts.lm_options);
   rep.lm = lm->name();
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);

@@ -11,6 +11,7 @@
 
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
+#include "language/listener.hpp"
 
 namespace clips::eval {
 
@@ -18,8 +19,11 @@ struct BenchOptions {
   std::string dataset;
   int jobs = 0;  // 0: all cores
   ExperimentOptions experiment;
+  // The language model: `language_model` when set (the CLI builds it from the
+  // same --lm flags as every other subcommand), else lm + lm_options.
+  std::shared_ptr<lm::LanguageModel> language_model;
   std::string lm = "embedded";
-  std::string lm_base_url, lm_model;
+  language::LanguageModelOptions lm_options;
   std::vector<std::string> plans;  // empty: every evaluated plan
   bool progress = true;
 };

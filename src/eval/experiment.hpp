@@ -17,11 +17,7 @@
 
 namespace clips::eval {
 
-// Method names are an interface (summary.json keys): keep them stable.
-//   clips, lang_only, action_only            inference + offline Q_MDP
-//   <m>/qmdp_online, <m>/pibar               with --assist all
-//   literal_efficient, literal_naive         mDKG literal listeners
-//   literal                                  VirtualHome literal listener
+// One method's result row on one plan (the methods: eval/methods.hpp).
 struct MethodResult {
   std::string method;
   std::optional<double> p_true_goal;  // inference methods only
@@ -34,7 +30,9 @@ struct MethodResult {
   bool has_relative = false;  // rel_* are set: the "clips" method ran on this plan
   double goal_success = 0;
   std::map<std::string, double> options;
-  std::vector<std::string> plan;  // executed actions (the most likely run)
+  std::vector<pddl::ActionId> actions;  // executed actions (the most likely run)
+  std::vector<std::string> plan;        // the same, printed
+
   std::vector<double> decision_seconds;  // per assistant decision (Q_MDP)
   double seconds = 0;
   // (issue 8) A method that failed on this plan (e.g. the multimodal endpoint
@@ -76,9 +74,9 @@ struct ExperimentOptions {
   MultimodalOptions multimodal;
 };
 
-std::vector<std::string> default_methods(data::DomainKind kind, bool all_assistance);
+std::vector<std::string> default_methods(const domains::Pack& pack, bool all_assistance);
 // Every method name evaluate_plan accepts on this kind of domain.
-std::vector<std::string> known_methods(data::DomainKind kind);
+std::vector<std::string> known_methods(const domains::Pack& pack);
 
 // Assisting a live human: inference over observations that are not a dataset
 // plan (built by the caller; see inference::run_inference_on_observations),

@@ -112,22 +112,12 @@ MultimodalAnswer parse_multimodal_answer(const std::string& text, const std::vec
   return a;
 }
 
-std::string multimodal_rules(data::DomainKind kind) {
-  if (kind == data::DomainKind::VirtualHome)
-    return "Rules of the household world. Two agents take turns: the actor (the human) and the helper (you, the "
-           "assistant). Items (plates, cups, food, ...) lie on fixtures (tables, cabinets, the fridge, ...). An agent "
-           "stands next to one fixture; (move A F1 F2) walks from F1 to F2. (grab A I F) picks up item I from fixture "
-           "F where A stands, if nothing is stacked on I; an agent holds at most one item. (put A I F) puts the held "
-           "item on fixture F; (stack A I J F) puts held item I on top of item J at F. (wait A) does nothing. "
-           "The actor wants one of the candidate goals, each a set of items to gather on a table; the helper's "
-           "job is to fetch the items that goal needs.";
-  return "Rules of the Doors, Keys and Gems world. A grid of walls (dark) and floor cells. Two agents take turns: the "
-         "human and the robot (you, the assistant). Each turn an agent does one action: (up A), (down A), (left A), "
-         "(right A) move one cell (not into walls or locked doors); (pickup A I) picks up a key or gem on A's cell; "
-         "(unlock A K D) opens door D next to A using a held key K of the same colour, and uses the key up; "
-         "(handover A B I) gives held item I to agent B on the same or an adjacent cell; (wait A) does nothing. "
-         "The robot may not pick up gems. The human wants exactly one of the gems; the robot should help by "
-         "fetching the keys or opening the doors the human needs.";
+std::string multimodal_rules(const domains::Pack& pack) {
+  if (!pack.spec().rules_text.empty()) return pack.spec().rules_text;
+  const domains::Roles& r = pack.roles();
+  return "Rules of the " + pack.name() + " world (its PDDL actions are the moves). Two agents take turns: the " +
+         r.principal + " (the human) and the " + r.assistant + " (you, the assistant). The " + r.principal +
+         " wants one of the candidate goals; the " + r.assistant + " should help reach it.";
 }
 
 lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanRecord& plan, const State& s_T,
@@ -139,25 +129,19 @@ lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanReco
   ro.cell_px = cell_px;
   ro.labels = render::RenderOptions::Labels::Always;
   render::Image img;
-  std::string objects, assistant;
-  if (ds.kind() == data::DomainKind::VirtualHome) {
-    domains::VhWorld w(*task);
-    img = render::render_png(vh_scene(w, s_T, {utterance, "", {}, {}}), ro);
-    assistant = w.name(w.helper());
-    for (auto i : w.items()) objects += w.name(i) + " (" + w.item_type(i) + "), ";
-    for (auto f : w.fixtures()) objects += w.name(f) + ", ";
-  } else {
-    domains::DkgWorld w(*task);
-    img = render::render_png(dkg_scene(w, s_T, {utterance, "", {}, {}}), ro);
-    assistant = w.name(w.robot());
-    for (auto group : {&w.keys(), &w.doors(), &w.gems()})
-      for (auto o : *group) objects += w.name(o) + " (" + w.color(o) + "), ";
+  const domains::Pack& pack = ds.pack();
+  const std::string assistant = pack.roles().assistant;
+  const std::string objects = pack.object_list(*task);
+  switch (pack.spec().scene) {
+    case domains::SceneKind::Cards: img = render::render_png(vh_scene(domains::VhWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
+    case domains::SceneKind::Grid: img = render::render_png(dkg_scene(domains::DkgWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
+    case domains::SceneKind::Text:
+      throw InputError("the multimodal baseline needs a picture, and the " + pack.name() + " pack draws none (scene \"text\")");
   }
-  if (objects.size() >= 2) objects.resize(objects.size() - 2);
   std::string goal_list;
   for (auto& g : goals) goal_list += (goal_list.empty() ? "" : ", ") + g;
 
-  std::string prompt = multimodal_rules(ds.kind()) + "\n\n" +
+  std::string prompt = multimodal_rules(pack) + "\n\n" +
                        "The picture shows the current state. Objects: " + objects + ".\n" +
                        "The human just said: \"" + utterance + "\"\n" + "Candidate goals: " + goal_list + ".\n\n" +
                        "Answer with one JSON object and nothing else, of the form\n"

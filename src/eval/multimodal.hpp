@@ -51,7 +51,7 @@ struct MultimodalAnswer {
 MultimodalAnswer parse_multimodal_answer(const std::string& text, const std::vector<std::string>& goals);
 
 // The domain's rules, in a few plain sentences.
-std::string multimodal_rules(data::DomainKind kind);
+std::string multimodal_rules(const domains::Pack& pack);
 
 // The chat request for one plan (exposed for tests and logging).
 lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanRecord& plan, const pddl::State& s_T,

@@ -334,7 +334,7 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
         auto task = ds->task(rec.problem_id);
         std::vector<std::string> colours;
         for (size_t g = 0; g < p.goals.size(); ++g)
-          colours.push_back(css_colour(goal_colour(*task, ds->kind(), p.goals[g]), g));
+          colours.push_back(css_colour(goal_colour(*task, ds->pack(), p.goals[g]), g));
         std::vector<int> utt;
         for (auto& u : rec.observed.utterances) {
           utt.push_back(u.index);
@@ -343,7 +343,7 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
         a.svg_text = posterior_svg(p.goals, colours, p.goal_posterior_steps, p.true_goal, utt);
         a.svg = "plans/" + p.plan_id + "_posterior.svg";
         std::ofstream(fs::path(o.dir) / a.svg) << a.svg_text;
-        if (o.render_gifs) {
+        if (o.render_gifs && ds->pack().spec().scene != domains::SceneKind::Text) {
           PlanRun run;
           run.goals = p.goals;
           run.observed_posterior = p.goal_posterior_steps;

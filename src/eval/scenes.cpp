@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "render/gif.hpp"
+#include "render/theme.hpp"
 #include "util/error.hpp"
 
 namespace clips::eval {
@@ -89,21 +90,24 @@ render::HomeScene vh_scene(const domains::VhWorld& w, const pddl::State& s, cons
   return scene;
 }
 
-std::string goal_colour(const pddl::Task& task, data::DomainKind kind, const std::string& goal) {
-  if (kind != data::DomainKind::DoorsKeysGems) return "";
-  auto o = task.find_object(goal);
-  if (!o || !task.object_is_a(*o, "gem")) return "";
-  for (ObjectId c : task.objects_of_type("color"))
-    if (task.atom("iscolor", {goal, task.object_name(c)}).value) return task.object_name(c);
+std::string goal_colour(const pddl::Task& task, const domains::Pack& pack, const std::string& goal) {
+  if (!task.find_object(goal)) return "";
+  // The first qualifier value that names a colour the pictures know.
+  for (const auto& q : pack.qualifier_of(task)(goal)) {
+    if (q.args.size() != 2) continue;
+    const std::string& value = q.args[0] == goal ? q.args[1] : q.args[0];
+    const render::Rgb c = render::named_colour(value), none = render::theme::neutral;
+    if (c.r != none.r || c.g != none.g || c.b != none.b) return value;
+  }
   return "";
 }
 
-std::vector<render::PosteriorBar> posterior_bars(const pddl::Task& task, data::DomainKind kind,
+std::vector<render::PosteriorBar> posterior_bars(const pddl::Task& task, const domains::Pack& pack,
                                                  const std::vector<std::string>& goals,
                                                  const std::vector<double>& p) {
   std::vector<render::PosteriorBar> bars;
   for (size_t g = 0; g < goals.size(); ++g)
-    bars.push_back({goals[g], goal_colour(task, kind, goals[g]), g < p.size() ? p[g] : 0.0});
+    bars.push_back({goals[g], goal_colour(task, pack, goals[g]), g < p.size() ? p[g] : 0.0});
   return bars;
 }
 
@@ -121,7 +125,9 @@ std::string caption_at(const data::PlanRecord& plan, int t) {
 PlanFrames plan_frames(const data::Dataset& ds, const data::PlanRecord& plan, const PlanRun& run) {
   auto task = ds.task(plan.problem_id);
   PlanFrames out;
-  out.kind = ds.kind();
+  out.scene = ds.pack().spec().scene;
+  if (out.scene == domains::SceneKind::Text)
+    throw InputError("the " + ds.pack().name() + " pack draws no pictures (its scene is \"text\"; see docs/domains.md)");
   auto sim = pddl::simulate(*task, task->initial_state(), plan.observed);
   std::vector<pddl::State> states = sim.states;
   out.observed_steps = static_cast<int>(sim.actions.size());
@@ -145,9 +151,9 @@ PlanFrames plan_frames(const data::Dataset& ds, const data::PlanRecord& plan, co
     else if (t > T && !run.final_posterior.empty()) p = &run.final_posterior;
     else if (!run.observed_posterior.empty()) p = &run.observed_posterior.back();
     if (!p || run.goals.empty()) return {};
-    return posterior_bars(*task, ds.kind(), run.goals, *p);
+    return posterior_bars(*task, ds.pack(), run.goals, *p);
   };
-  if (ds.kind() == data::DomainKind::VirtualHome) {
+  if (out.scene == domains::SceneKind::Cards) {
     domains::VhWorld world(*task);
     for (size_t t = 0; t < states.size(); ++t) {
       SceneExtras ex{caption_at(plan, static_cast<int>(t)), title(static_cast<int>(t)), bars_at(static_cast<int>(t)), {}};

@@ -26,12 +26,13 @@ render::GridScene dkg_scene(const domains::DkgWorld& world, const pddl::State& s
 // VirtualHome: fixtures with their piles, where each agent is and what it holds.
 render::HomeScene vh_scene(const domains::VhWorld& world, const pddl::State& s, const SceneExtras& extras = {});
 
-// Bars for a goal posterior; mDKG goals named after gems get the gem's colour.
-std::vector<render::PosteriorBar> posterior_bars(const pddl::Task& task, data::DomainKind kind,
+// Bars for a goal posterior; goals named after an object whose qualifier is a
+// colour (mDKG gems) get that colour.
+std::vector<render::PosteriorBar> posterior_bars(const pddl::Task& task, const domains::Pack& pack,
                                                  const std::vector<std::string>& goals,
                                                  const std::vector<double>& probabilities);
 // The colour name of a goal label ("red" for a red gem; "" when none).
-std::string goal_colour(const pddl::Task& task, data::DomainKind kind, const std::string& goal);
+std::string goal_colour(const pddl::Task& task, const domains::Pack& pack, const std::string& goal);
 
 // Everything needed to draw one plan over time.
 struct PlanRun {
@@ -44,15 +45,17 @@ struct PlanRun {
 
 // One frame per state: s_0 .. s_T (observed), then one per assisted action.
 struct PlanFrames {
-  data::DomainKind kind = data::DomainKind::DoorsKeysGems;
-  std::vector<render::GridScene> grid;  // mDKG
-  std::vector<render::HomeScene> home;  // VirtualHome
+  domains::SceneKind scene = domains::SceneKind::Grid;
+  std::vector<render::GridScene> grid;  // grid scenes (mDKG)
+  std::vector<render::HomeScene> home;  // cards scenes (VirtualHome)
   int observed_steps = 0;               // T
   int assisted_steps = 0;               // A; frames = T + 1 + A
   size_t size() const { return grid.empty() ? home.size() : grid.size(); }
 };
 
-// Throws InputError when an assisted action does not apply.
+// The pack's scene kind picks the picture (grid or cards). Throws InputError
+// when an assisted action does not apply, or for a pack with no pictures
+// (scene "text").
 PlanFrames plan_frames(const data::Dataset& ds, const data::PlanRecord& plan, const PlanRun& run);
 
 // Renders frames [first, last] and writes a looping GIF (slower on the first

@@ -129,4 +129,99 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
   return best;
 }
 
+void FFHeuristic::prepare(const model::Specification& spec, const pddl::State&) {
+  if (spec_ == &spec) return;
+  spec_ = &spec;
+  const pddl::Task& t = spec.task();
+  const int na = t.num_actions(), nb = t.num_atoms();
+  pre_.assign(na, {});
+  add_.assign(na, {});
+  cost_.assign(na, 0);
+  achievers_of_pre_.assign(nb, {});
+  for (int a = 0; a < na; ++a) {
+    positive_conjuncts(t, t.action(a).pre, pre_[a]);
+    add_[a] = t.action(a).eff.add;
+    for (auto& ce : t.action(a).cond_eff) add_[a].insert(add_[a].end(), ce.eff.add.begin(), ce.eff.add.end());
+    cost_[a] = spec.cost(a);
+    for (int p : pre_[a]) achievers_of_pre_[p].push_back(a);
+  }
+  goal_clauses_ = dnf(spec.goal(), spec.goal().root());
+  atom_cost_.assign(nb, kInf);
+  act_cost_.assign(na, 0);
+  unsat_.assign(na, 0);
+  supporter_.assign(nb, -1);
+  in_plan_.assign(na, 0);
+  atom_done_.assign(nb, 0);
+}
+
+double FFHeuristic::estimate(const uint64_t* s) {
+  if (!spec_) return 0;
+  if (timed_out()) return 0;
+  if (spec_->is_goal(s)) return 0;
+  const pddl::Task& t = spec_->task();
+  const int na = t.num_actions(), nb = t.num_atoms();
+  // h_add with best supporters (Dijkstra over atoms; an action's cost is the
+  // sum of its preconditions' costs plus its own).
+  std::fill(atom_cost_.begin(), atom_cost_.end(), kInf);
+  std::fill(supporter_.begin(), supporter_.end(), -1);
+  using QE = std::pair<double, int>;
+  std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+  for (int b = 0; b < nb; ++b)
+    if (pddl::get_bit(s, b)) {
+      atom_cost_[b] = 0;
+      q.push({0, b});
+    }
+  auto relax = [&](int a) {
+    const double ac = act_cost_[a] + cost_[a];
+    for (int e : add_[a])
+      if (ac < atom_cost_[e]) {
+        atom_cost_[e] = ac;
+        supporter_[e] = a;
+        q.push({ac, e});
+      }
+  };
+  for (int a = 0; a < na; ++a) {
+    unsat_[a] = static_cast<int>(pre_[a].size());
+    act_cost_[a] = 0;
+    if (unsat_[a] == 0) relax(a);
+  }
+  const bool watch = deadline() != Clock::time_point::max();
+  unsigned pops = 0;
+  while (!q.empty()) {
+    if (watch && (++pops & 4095) == 0 && out_of_time()) return 0;
+    auto [c, b] = q.top();
+    q.pop();
+    if (c > atom_cost_[b]) continue;
+    for (int a : achievers_of_pre_[b]) {
+      act_cost_[a] += c;
+      if (--unsat_[a] == 0) relax(a);
+    }
+  }
+  // The cheapest goal clause by h_add, then its relaxed plan.
+  const std::vector<int>* best = nullptr;
+  double best_cost = kInf;
+  for (auto& clause : goal_clauses_) {
+    double sum = 0;
+    for (int b : clause) sum += atom_cost_[b];
+    if (sum < best_cost) best_cost = sum, best = &clause;
+  }
+  if (!best || best_cost >= kInf) return kInf;
+  std::fill(in_plan_.begin(), in_plan_.end(), 0);
+  std::fill(atom_done_.begin(), atom_done_.end(), 0);
+  double h = 0;
+  std::vector<int> open(best->begin(), best->end());
+  while (!open.empty()) {
+    const int b = open.back();
+    open.pop_back();
+    if (atom_done_[b]) continue;
+    atom_done_[b] = 1;
+    const int a = supporter_[b];
+    if (a < 0 || in_plan_[a]) continue;  // true in s, or already planned
+    in_plan_[a] = 1;
+    h += cost_[a];
+    for (int p : pre_[a]) open.push_back(p);
+  }
+  return h;
+}
+
 }  // namespace clips::heuristics

@@ -6,6 +6,12 @@
 //                   conditional effects as unconditional. Ignoring conditions
 //                   only makes the task easier, so h_max of the relaxation is
 //                   admissible and consistent for the real task.
+//   FFHeuristic     h_FF over the same relaxation: the cost of a relaxed plan
+//                   extracted from h_add's best supporters. Not admissible
+//                   (it may overestimate), but it counts every subgoal, where
+//                   h_max sees only the most expensive one, so it tells apart
+//                   actions that h_max values alike; the default of generic
+//                   domain packs for the human model's policies.
 #include <vector>
 
 #include "heuristics/heuristic.hpp"
@@ -41,6 +47,23 @@ class HMaxHeuristic : public Heuristic {
   std::vector<double> atom_cost_, act_cost_;
   std::vector<int> unsat_;
   bool trivially_unknown_goal_ = false;
+};
+
+class FFHeuristic : public Heuristic {
+ public:
+  std::string name() const override { return "hff"; }
+  bool admissible() const override { return false; }
+  bool consistent() const override { return false; }
+  bool estimates_depend_on_root() const override { return false; }
+  void prepare(const model::Specification& spec, const pddl::State& root) override;
+  double estimate(const uint64_t* s) override;
+
+ private:
+  const model::Specification* spec_ = nullptr;
+  std::vector<std::vector<int>> pre_, add_, achievers_of_pre_, goal_clauses_;
+  std::vector<double> cost_, atom_cost_, act_cost_;
+  std::vector<int> unsat_, supporter_;
+  std::vector<char> in_plan_, atom_done_;
 };
 
 }  // namespace clips::heuristics

@@ -7,8 +7,6 @@
 #include <cmath>
 #include <limits>
 
-#include "domains/registry.hpp"
-#include "inference/vh_value.hpp"
 #include "language/lm/readability.hpp"
 #include "pddl/plan.hpp"
 #include "util/error.hpp"
@@ -21,11 +19,6 @@ constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-bool registry_has(data::DomainKind kind, const std::string& name) {
-  auto names = domains::heuristic_names(kind);
-  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 }  // namespace
@@ -46,43 +39,28 @@ Modality parse_modality(const std::string& text) {
   throw InputError("unknown modality '" + text + "' (expected both, utterance or action)");
 }
 
-std::string inference_heuristic_name(data::DomainKind kind) {
-  if (kind == data::DomainKind::VirtualHome) return "vh";
-  if (kind == data::DomainKind::DoorsKeysGems && registry_has(kind, "dkg-mst")) return "dkg-mst";
-  return domains::default_admissible_heuristic(kind);
-}
-
-std::unique_ptr<heuristics::Heuristic> make_inference_heuristic(const std::string& name, const pddl::Task& task,
-                                                                data::DomainKind kind) {
-  if (name == "vh" && !registry_has(kind, "vh")) return std::make_unique<VhValueHeuristic>(task);
-  return domains::make_heuristic(name, task, kind);
-}
-
-ProfileSet plan_cost_profiles(data::DomainKind kind, const data::PlanRecord& plan) {
-  if (kind == data::DomainKind::DoorsKeysGems) {
-    // Code, not paper (spec 13 item 1): two candidate profiles per condition.
-    if (plan.tag == "keys") return {{model::dkg_profile(3), model::dkg_profile(4)}, 0};
-    if (plan.tag == "doors") return {{model::dkg_profile(1), model::dkg_profile(2)}, 0};
-    throw InputError("plan " + plan.id + ": condition must be keys or doors, got '" + plan.tag + "'");
-  }
-  return {{model::unit_profile()}, 0};
+ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord& plan) {
+  pack.check_plan_tag(plan.tag, plan.id);
+  return pack.profiles_for(plan.tag);
 }
 
 // ---------------------------------------------------------------------------
 
-Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, std::vector<data::GoalSpec> goals,
+Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, std::vector<data::GoalSpec> goals,
                std::vector<model::CostProfile> profiles, InferenceOptions options)
     : task_(std::move(task)),
-      kind_(kind),
+      pack_(std::move(pack)),
       goals_(std::move(goals)),
       profiles_(std::move(profiles)),
       options_(std::move(options)) {
   if (goals_.empty() || profiles_.empty()) throw InputError("inference needs at least one goal and one cost profile");
-  search_ = options_.search.value_or(kind_ != data::DomainKind::VirtualHome);
-  const std::string hname = options_.heuristic.empty() ? inference_heuristic_name(kind_) : options_.heuristic;
+  if (!pack_) throw InputError("inference needs a domain pack");
+  const domains::InferenceSettings& settings = pack_->spec().inference;
+  search_ = options_.search.value_or(settings.search);
+  const std::string hname = options_.heuristic.empty() ? settings.heuristic : options_.heuristic;
   const TemperatureWeights prior = options_.temperature_prior.value_or(
-      kind_ == data::DomainKind::VirtualHome ? vh_temperature_prior() : dkg_temperature_prior());
-  utterance_model_ = std::make_shared<UtteranceModel>(task_, kind_, options_.utterance);
+      inverse_gamma_prior(settings.temperature_shape, settings.temperature_scale));
+  utterance_model_ = std::make_shared<UtteranceModel>(task_, pack_, options_.utterance);
   const pddl::State s0 = task_->initial_state();
   // One state graph for all hypotheses: they search the same neighbourhood.
   if (search_) graph_ = std::make_shared<search::StateGraph>(task_);
@@ -91,7 +69,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, st
       auto spec = std::make_shared<model::Specification>(task_, goals_[g].condition, profiles_[c],
                                                          goals_[g].source.empty() ? "<goal>" : goals_[g].source);
       // One heuristic per hypothesis: prepare() binds it to its specification.
-      std::shared_ptr<heuristics::Heuristic> h = make_inference_heuristic(hname, *task_, kind_);
+      std::shared_ptr<heuristics::Heuristic> h = pack_->make_heuristic(hname, *task_);
       // Without search, V = -h is read directly, so bind h to the goal now.
       if (!search_) h->prepare(*spec, s0);
       hyps_.push_back({g, c, spec});
@@ -332,7 +310,7 @@ InferenceRun run_observed(const data::Dataset& dataset, const data::PlanRecord& 
                           const InferenceOptions& options, bool known_truth) {
   const auto t0 = std::chrono::steady_clock::now();
   auto task = dataset.task(plan.problem_id);
-  ProfileSet ps = plan_cost_profiles(dataset.kind(), plan);
+  ProfileSet ps = plan_cost_profiles(dataset.pack(), plan);
   InferenceRun run;
   run.plan_id = plan.id;
   auto goals = dataset.candidate_goals(plan);
@@ -350,7 +328,7 @@ InferenceRun run_observed(const data::Dataset& dataset, const data::PlanRecord& 
   for (const auto& u : plan.observed.utterances)
     if (u.index >= 0 && u.index <= T) utterances[u.index].push_back(u.text);
 
-  run.belief = std::make_shared<Belief>(task, dataset.kind(), std::move(goals), std::move(ps.profiles), options);
+  run.belief = std::make_shared<Belief>(task, dataset.pack_ptr(), std::move(goals), std::move(ps.profiles), options);
   Belief& b = *run.belief;
   if (options.utterance_timing == UtteranceTiming::Before) {
     run.steps.push_back(b.start(s0, utterances[0], &lm));

@@ -47,19 +47,11 @@ inline constexpr std::array<Modality, 3> kModalities = {Modality::Both, Modality
 std::string to_string(Modality m);  // "both", "utterance", "action"
 Modality parse_modality(const std::string& text);  // throws InputError
 
-// The heuristic behind the inference policies: mDKG "dkg-mst" once the domain
-// registry offers it (else its default), VH "vh" (vh_value.hpp).
-std::string inference_heuristic_name(data::DomainKind kind);
-std::unique_ptr<heuristics::Heuristic> make_inference_heuristic(const std::string& name, const pddl::Task& task,
-                                                                data::DomainKind kind);
-
-// Candidate cost profiles of a plan and the index of the true one (spec 4.3):
-// mDKG keys {C3, C4} (true C3), doors {C1, C2} (true C1); VH unit costs.
-struct ProfileSet {
-  std::vector<model::CostProfile> profiles;
-  int true_index = 0;
-};
-ProfileSet plan_cost_profiles(data::DomainKind kind, const data::PlanRecord& plan);
+// Candidate cost profiles of a plan and the index of the true one, from its
+// pack (spec 4.3: mDKG keys {C3, C4} (true C3), doors {C1, C2} (true C1); VH
+// unit costs). Throws InputError naming the plan for a tag the pack rejects.
+using domains::ProfileSet;
+ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord& plan);
 
 struct InferenceOptions {
   // Budgets of each A* search inside a refinement (spec 5.1: 2^18, no time limit).
@@ -68,10 +60,10 @@ struct InferenceOptions {
     o.max_nodes = size_t{1} << 18;
     return o;
   }();
-  // nullopt: by domain (mDKG refines, VH does not: V = -h_g).
+  // nullopt: the pack's (mDKG refines, VH does not: V = -h_g).
   std::optional<bool> search;
-  std::string heuristic;  // empty: inference_heuristic_name(kind)
-  std::optional<TemperatureWeights> temperature_prior;  // empty: by domain
+  std::string heuristic;  // empty: the pack's inference heuristic
+  std::optional<TemperatureWeights> temperature_prior;  // empty: the pack's
   UtteranceModelOptions utterance;
   // Include the goal-independent log p_speak / log(1 - p_speak) factors (they
   // change only the log marginal likelihood, never a posterior).
@@ -138,7 +130,7 @@ struct StepRecord {
 
 class Belief {
  public:
-  Belief(std::shared_ptr<const pddl::Task> task, data::DomainKind kind, std::vector<data::GoalSpec> goals,
+  Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, std::vector<data::GoalSpec> goals,
          std::vector<model::CostProfile> profiles, InferenceOptions options = {});
 
   // INIT (step 0): fresh policies refined at s0; utterances spoken before any
@@ -162,7 +154,8 @@ class Belief {
   Posterior posterior(Modality m) const;
 
   const pddl::Task& task() const { return *task_; }
-  data::DomainKind kind() const { return kind_; }
+  const domains::Pack& pack() const { return *pack_; }
+  const domains::PackPtr& pack_ptr() const { return pack_; }
   const std::vector<data::GoalSpec>& goals() const { return goals_; }
   const std::vector<model::CostProfile>& profiles() const { return profiles_; }
   const std::vector<Hypothesis>& hypotheses() const { return hyps_; }
@@ -193,7 +186,7 @@ class Belief {
   bool is_speaker_action(pddl::ActionId a) const;
 
   std::shared_ptr<const pddl::Task> task_;
-  data::DomainKind kind_;
+  domains::PackPtr pack_;
   std::vector<data::GoalSpec> goals_;
   std::vector<model::CostProfile> profiles_;
   InferenceOptions options_;

@@ -42,65 +42,66 @@ UtteranceTiming parse_utterance_timing(const std::string& text) {
 
 std::string to_string(UtteranceTiming t) { return t == UtteranceTiming::Before ? "before" : "after"; }
 
-UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, data::DomainKind kind,
+UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack,
                                const UtteranceModelOptions& options)
     : task_(std::move(task)),
-      config_(kind == data::DomainKind::VirtualHome ? commands::virtual_home_language()
-                                                    : commands::doors_keys_gems_language()),
-      rollout_kind_(kind == data::DomainKind::VirtualHome ? RolloutKind::WeightedAStarNoGrab : RolloutKind::Greedy),
+      config_(pack->language()),
+      rollout_kind_(pack->spec().inference.rollout.kind),
       options_(options) {
   if (options_.speaker_rule == SpeakerRule::Paper) {
     config_.speaker_actions = config_.paper_speaker_actions;
     config_.exclude_chains = config_.paper_exclude_chains;
   }
-  const std::string dir = options_.language_dir.empty() ? util::data_dir() + "/language"
-                                                        : options_.language_dir;
-  auto all = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");
-  auto orders = commands::load_prompt_orders(dir + "/prompt-orders.json");
-  auto it = orders.find(config_.domain);
-  if (it == orders.end()) throw InputError("no prompt order for domain " + config_.domain + " in " + dir);
-  examples_ = commands::order_examples(all, config_.domain, it->second.pragmatic);
-
+  examples_ = pack->fewshot(/*literal=*/false, options_.language_dir);
   const pddl::Task& t = *task_;
   const auto& dom = t.domain();
   for (int o = 0; o < t.num_objects(); ++o)
     type_of_[t.object_name(o)] = dom.types[t.problem().objects[o].type].name;
   // Qualifier candidates: every (object, value) pair whose atom is dynamic or
   // statically true; the state decides among dynamic ones.
-  if (auto pred = dom.find_predicate(config_.qualifier); pred && dom.predicates[*pred].arg_types.size() == 2) {
-    const int obj_pos = config_.qualifier_object_arg - 1;
-    for (int o = 0; o < t.num_objects(); ++o)
-      for (int v = 0; v < t.num_objects(); ++v) {
-        std::vector<pddl::ObjectId> args(2);
-        args[obj_pos] = o;
-        args[1 - obj_pos] = v;
-        bool typed = true;
-        for (int i = 0; i < 2; ++i)
-          typed = typed && dom.is_subtype(t.problem().objects[args[i]].type, dom.predicates[*pred].arg_types[i]);
-        if (!typed) continue;
-        auto ref = t.atom(*pred, args);
-        if (ref.bit >= 0 || ref.value) qualifiers_[t.object_name(o)].push_back({t.object_name(v), ref});
-      }
+  for (const std::string& name : config_.qualifiers()) {
+    QualifierAtoms q{name, {}};
+    if (auto pred = dom.find_predicate(name); pred && dom.predicates[*pred].arg_types.size() == 2) {
+      const int obj_pos = config_.qualifier_object_arg - 1;
+      for (int o = 0; o < t.num_objects(); ++o)
+        for (int v = 0; v < t.num_objects(); ++v) {
+          std::vector<pddl::ObjectId> args(2);
+          args[obj_pos] = o;
+          args[1 - obj_pos] = v;
+          bool typed = true;
+          for (int i = 0; i < 2; ++i)
+            typed = typed && dom.is_subtype(t.problem().objects[args[i]].type, dom.predicates[*pred].arg_types[i]);
+          if (!typed) continue;
+          auto ref = t.atom(*pred, args);
+          if (ref.bit >= 0 || ref.value) q.of_object[t.object_name(o)].push_back({t.object_name(v), ref});
+        }
+    }
+    qualifiers_.push_back(std::move(q));
   }
-  if (rollout_kind_ == RolloutKind::WeightedAStarNoGrab) {
-    auto nograb = dom.find_predicate("nograb");
+  if (const std::string& flag = pack->spec().inference.rollout.speaker_flag;
+      rollout_kind_ == RolloutKind::WeightedAStar && !flag.empty()) {
+    auto pred = dom.find_predicate(flag);
     auto speaker = t.find_object(config_.speaker);
-    if (!nograb || !speaker) throw InputError("the VH rollout needs (nograb " + config_.speaker + ")");
-    speaker_nograb_ = t.atom(*nograb, {*speaker});
+    if (!pred || !speaker) throw InputError("the " + pack->name() + " rollout needs (" + flag + " " + config_.speaker + ")");
+    speaker_flag_ = t.atom(*pred, {*speaker});
   }
 }
 
-std::optional<commands::Term> UtteranceModel::qualifier(const std::string& object, const pddl::State& s) const {
-  auto it = qualifiers_.find(object);
-  if (it == qualifiers_.end()) return std::nullopt;
-  for (const auto& [value, ref] : it->second)
-    if (task_->test(s, ref)) {
-      commands::Term t{config_.qualifier, {}};
-      t.args = config_.qualifier_object_arg == 1 ? std::vector<std::string>{object, value}
-                                                 : std::vector<std::string>{value, object};
-      return t;
-    }
-  return std::nullopt;
+std::vector<commands::Term> UtteranceModel::qualifiers(const std::string& object, const pddl::State& s) const {
+  std::vector<commands::Term> out;
+  for (const auto& q : qualifiers_) {
+    auto it = q.of_object.find(object);
+    if (it == q.of_object.end()) continue;
+    for (const auto& [value, ref] : it->second)
+      if (task_->test(s, ref)) {
+        commands::Term t{q.predicate, {}};
+        t.args = config_.qualifier_object_arg == 1 ? std::vector<std::string>{object, value}
+                                                   : std::vector<std::string>{value, object};
+        out.push_back(std::move(t));
+        break;
+      }
+  }
+  return out;
 }
 
 commands::Term UtteranceModel::term(pddl::ActionId a) const {
@@ -115,7 +116,7 @@ std::vector<pddl::ActionId> UtteranceModel::rollout(const search::Policy& policy
   // VH: the principal may not collect new items, so every remaining item is the
   // helper's to grab and can be delegated in a command.
   pddl::State start = s;
-  task_->set(start, speaker_nograb_, true);
+  if (speaker_flag_) task_->set(start, *speaker_flag_, true);
   if (policy.spec().is_goal(start)) return {};
   search::SearchOptions so;
   so.max_nodes = options_.astar_max_nodes;
@@ -135,7 +136,7 @@ std::vector<commands::Command> UtteranceModel::commands_at(const search::Policy&
   for (pddl::ActionId a : rollout(policy, s)) terms.push_back(term(a));
   // Qualifiers are read in the scoring state (objects keep their colour / type).
   auto salient = commands::extract_salient(
-      terms, config_, [&](const std::string& o) { return qualifier(o, s); });
+      terms, config_, [&](const std::string& o) { return qualifiers(o, s); });
   return commands::enumerate_commands(salient, config_, [this](const std::string& o) {
     auto it = type_of_.find(o);
     return it == type_of_.end() ? std::string("object") : it->second;

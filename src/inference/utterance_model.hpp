@@ -26,10 +26,11 @@
 
 namespace clips::inference {
 
-enum class RolloutKind {
-  Greedy,             // mDKG: best_action of the policy, no search (spec 7.2)
-  WeightedAStarNoGrab // VH: weighted A* towards g with (nograb speaker) set (VH spec 6.1)
-};
+// How the speaker's rollout runs (the pack's inference.rollout):
+//   Greedy         mDKG: best_action of the policy, no search (spec 7.2)
+//   WeightedAStar  VH: weighted A* towards g, with the pack's speaker flag
+//                  ((nograb speaker)) set first (VH spec 6.1)
+using RolloutKind = domains::RolloutSettings::Kind;
 
 // Which of the speaker's own actions the CLIPS speaker's commands may hold
 // (spec 13 item 2). Paper: joint commands keep the speaker's part ("I'm going
@@ -50,9 +51,9 @@ std::string to_string(UtteranceTiming t);
 
 struct UtteranceModelOptions {
   SpeakerRule speaker_rule = SpeakerRule::Paper;
-  int rollout_steps = 100;                 // greedy rollout bound (mDKG)
-  size_t astar_max_nodes = size_t{1} << 16;  // VH rollout budget
-  double astar_weight = 2.0;               // VH rollout: f = g + 2h
+  int rollout_steps = 100;                 // greedy rollout bound
+  size_t astar_max_nodes = size_t{1} << 16;  // weighted-A* rollout budget
+  double astar_weight = 2.0;               // weighted-A* rollout: f = g + 2h
   // Directory with fewshot-examples.tsv and prompt-orders.json; empty: the
   // language/ folder of util::data_dir().
   std::string language_dir;
@@ -71,7 +72,7 @@ struct HypothesisUtterance {
 
 class UtteranceModel {
  public:
-  UtteranceModel(std::shared_ptr<const pddl::Task> task, data::DomainKind kind,
+  UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack,
                  const UtteranceModelOptions& options = {});
 
   const commands::LanguageConfig& config() const { return config_; }
@@ -88,8 +89,9 @@ class UtteranceModel {
                                                       const std::vector<std::string>& utterances,
                                                       lm::LanguageModel& lm) const;
 
-  // The qualifying predicate of an object in state s (static facts fold into the task).
-  std::optional<commands::Term> qualifier(const std::string& object, const pddl::State& s) const;
+  // The qualifying predicates of an object in state s, one per qualifier
+  // predicate that holds (static facts fold into the task).
+  std::vector<commands::Term> qualifiers(const std::string& object, const pddl::State& s) const;
 
  private:
   commands::Term term(pddl::ActionId a) const;
@@ -100,9 +102,13 @@ class UtteranceModel {
   UtteranceModelOptions options_;
   std::vector<commands::FewShotExample> examples_;  // pragmatic order
   std::unordered_map<std::string, std::string> type_of_;
-  // Per object: candidate qualifier values and the atom that says so.
-  std::unordered_map<std::string, std::vector<std::pair<std::string, pddl::Task::AtomRef>>> qualifiers_;
-  pddl::Task::AtomRef speaker_nograb_;
+  // Per qualifier predicate (config order), per object: candidate values and the atom that says so.
+  struct QualifierAtoms {
+    std::string predicate;
+    std::unordered_map<std::string, std::vector<std::pair<std::string, pddl::Task::AtomRef>>> of_object;
+  };
+  std::vector<QualifierAtoms> qualifiers_;
+  std::optional<pddl::Task::AtomRef> speaker_flag_;  // set on the speaker before a weighted-A* rollout
 };
 
 }  // namespace clips::inference

@@ -9,8 +9,6 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
 #include "language/commands/enumerate.hpp"
 #include "language/lm/cached_model.hpp"
 #include "language/lm/embedded_model.hpp"
@@ -22,72 +20,24 @@ namespace clips::language {
 
 namespace {
 
-constexpr const char* kDkg = "doors-keys-gems";
-constexpr const char* kVh = "virtual-home";
-
 bool is_blank(const std::string& text) {
   return std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c) != 0; });
 }
 
-pddl::ObjectId require_object(const pddl::Task& task, const std::string& name) {
-  auto o = task.find_object(name);
-  if (!o) throw InputError("the problem has no object '" + name + "' (needed by the literal listener)");
-  return *o;
-}
-
-// The type name the command lifting expects: key/door/gem in mDKG, item/fixture
-// in VH (their variable counters are per type), else the declared type.
-std::string type_name(const pddl::Task& task, pddl::ObjectId o) {
-  for (const char* t : {"key", "door", "gem", "item", "fixture"})
+// The type name the command lifting expects (variable counters are per
+// type): the first of the pack's variable types the object belongs to
+// (mDKG key/door/gem, VH item/fixture), else its declared type.
+std::string type_name(const pddl::Task& task, const domains::Pack& pack, pddl::ObjectId o) {
+  for (const auto& t : pack.spec().literal.variable_types)
     if (task.domain().find_type(t) && task.object_is_a(o, t)) return t;
   return task.domain().types[task.problem().objects[o].type].name;
 }
 
-commands::TypeLookup type_lookup(const pddl::Task& task) {
-  return [&task](const std::string& object) {
+commands::TypeLookup type_lookup(const pddl::Task& task, const domains::Pack& pack) {
+  return [&task, &pack](const std::string& object) {
     auto o = task.find_object(object);
-    return o ? type_name(task, *o) : std::string();
+    return o ? type_name(task, pack, *o) : std::string();
   };
-}
-
-std::vector<commands::Term> dkg_candidates(const pddl::Task& task, const pddl::State& s,
-                                           const commands::LanguageConfig& config) {
-  const domains::DkgWorld world(task);
-  const pddl::ObjectId robot = require_object(task, config.listener);
-  const std::string& robot_name = task.object_name(robot);
-  const std::string& human_name = task.object_name(require_object(task, config.speaker));
-  // `forbidden` is the only static precondition besides colours; a robot
-  // forbidden to hold an item can neither pick it up nor hand it over.
-  auto forbidden = [&](pddl::ObjectId item) {
-    if (!task.domain().find_predicate("forbidden")) return false;
-    return task.test(s, task.atom("forbidden", {robot_name, task.object_name(item)}));
-  };
-  std::vector<commands::Term> out;
-  for (pddl::ObjectId k : world.keys())
-    if (!forbidden(k)) out.push_back({"pickup", {robot_name, world.name(k)}});
-  for (pddl::ObjectId k : world.keys())
-    if (!forbidden(k)) out.push_back({"handover", {robot_name, human_name, world.name(k)}});
-  for (pddl::ObjectId k : world.keys())
-    for (pddl::ObjectId d : world.doors())
-      if (!world.color(k).empty() && world.color(k) == world.color(d))
-        out.push_back({"unlock", {robot_name, world.name(k), world.name(d)}});
-  return out;
-}
-
-std::vector<commands::Term> vh_candidates(const pddl::Task& task, const pddl::State& s,
-                                          const commands::LanguageConfig& config) {
-  const domains::VhWorld world(task);
-  const std::string& helper = task.object_name(require_object(task, config.listener));
-  auto by_name = [&](std::vector<pddl::ObjectId> objects) {
-    std::sort(objects.begin(), objects.end(),
-              [&](pddl::ObjectId a, pddl::ObjectId b) { return world.name(a) < world.name(b); });
-    return objects;
-  };
-  std::vector<commands::Term> out;
-  for (pddl::ObjectId f : by_name(world.fixtures()))
-    for (pddl::ObjectId i : by_name(world.items()))
-      if (world.placed(s, i, f)) out.push_back({"grab", {helper, world.name(i), world.name(f)}});
-  return out;
 }
 
 }  // namespace
@@ -122,66 +72,38 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
 
 std::string language_data_dir() { return util::data_dir() + "/language"; }
 
-LiteralListenerSetup literal_listener_setup(const std::string& domain, const std::string& data_dir) {
+LiteralListenerSetup literal_listener_setup(domains::PackPtr pack, const std::string& data_dir) {
+  if (!pack) throw InputError("the literal listener needs a domain pack");
+  if (!pack->spec().literal.enabled || pack->language().salient_actions.empty())
+    throw InputError("domain " + pack->name() + " has no literal listener (its pack declares no salient actions" +
+                     std::string(pack->spec().literal.enabled ? "" : " or disables literal_listener") + ")");
   LiteralListenerSetup setup;
-  if (domain == kDkg) {
-    setup.config = commands::doors_keys_gems_language();
-    setup.temperature = 1.0;
-  } else if (domain == kVh) {
-    setup.config = commands::virtual_home_language();
-    setup.temperature = 0.5;
-  } else {
-    throw InputError("the literal listener knows no domain '" + domain + "' (known: " + kDkg + ", " + kVh + ")");
-  }
-  const std::string dir = data_dir.empty() ? language_data_dir() : data_dir;
-  const auto examples = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");
-  const auto orders = commands::load_prompt_orders(dir + "/prompt-orders.json");
-  const auto it = orders.find(domain);
-  if (it == orders.end()) throw InputError(dir + "/prompt-orders.json: no prompt orders for '" + domain + "'");
-  setup.examples = commands::order_examples(examples, domain, it->second.literal);
+  setup.config = pack->language();
+  setup.temperature = pack->spec().literal.temperature;
+  setup.examples = pack->fewshot(/*literal=*/true, data_dir);
+  setup.pack = std::move(pack);
   return setup;
 }
 
-std::string language_domain_of(const pddl::Task& task) {
-  const auto& d = task.domain();
-  if (d.find_type("key") && d.find_type("door")) return kDkg;
-  if (d.find_type("item") && d.find_type("fixture")) return kVh;
-  throw InputError("domain '" + d.name + "' is neither doors-keys-gems nor virtual-home: no literal listener");
+LiteralListenerSetup literal_listener_setup(const std::string& domain, const std::string& data_dir) {
+  return literal_listener_setup(domains::builtin_pack(domain), data_dir);
 }
 
 // ---- candidates and commands --------------------------------------------------
 
 std::vector<commands::Term> literal_candidate_actions(const pddl::Task& task, const pddl::State& s,
-                                                      const commands::LanguageConfig& config) {
-  if (config.domain == kDkg) return dkg_candidates(task, s, config);
-  if (config.domain == kVh) return vh_candidates(task, s, config);
-  throw InputError("the literal listener knows no domain '" + config.domain + "'");
+                                                      const domains::Pack& pack) {
+  return pack.literal_candidates(task, s);
 }
 
 std::vector<commands::Command> literal_commands(const pddl::Task& task, const pddl::State& s,
-                                                const commands::LanguageConfig& config) {
-  const auto candidates = literal_candidate_actions(task, s, config);
+                                                const LiteralListenerSetup& setup) {
+  const auto candidates = literal_candidate_actions(task, s, *setup.pack);
   // Qualifiers (colours, item types) are static facts of the problem, so they
   // are looked up in the task rather than the state.
-  commands::QualifierLookup qualifier_of;
-  if (config.domain == kDkg) {
-    auto world = std::make_shared<domains::DkgWorld>(task);
-    qualifier_of = [world, &task, &config](const std::string& object) -> std::optional<commands::Term> {
-      auto o = task.find_object(object);
-      if (!o || world->color(*o).empty()) return std::nullopt;
-      return commands::Term{config.qualifier, {object, world->color(*o)}};
-    };
-  } else {
-    auto world = std::make_shared<domains::VhWorld>(task);
-    qualifier_of = [world, &task, &config](const std::string& object) -> std::optional<commands::Term> {
-      auto o = task.find_object(object);
-      if (!o || !task.object_is_a(*o, "item")) return std::nullopt;
-      const std::string type = world->item_type(*o);
-      if (type.empty()) return std::nullopt;
-      return commands::Term{config.qualifier, {object, type}};
-    };
-  }
-  return commands::enumerate_literal_candidates(candidates, config, qualifier_of, type_lookup(task));
+  const commands::QualifierLookup qualifier_of = setup.pack->qualifier_of(task);
+  return commands::enumerate_literal_candidates(candidates, setup.config, qualifier_of,
+                                                type_lookup(task, *setup.pack));
 }
 
 // ---- scoring ------------------------------------------------------------------
@@ -228,7 +150,7 @@ ListenerResult literal_listener(const pddl::Task& task, const pddl::State& s, co
                                 const LiteralListenerSetup& setup, lm::LanguageModel& lm) {
   // Check the utterance before the (possibly large) enumeration.
   if (is_blank(utterance)) throw InputError("--utterance is empty");
-  return rank_commands(literal_commands(task, s, setup.config), utterance, setup, lm);
+  return rank_commands(literal_commands(task, s, setup), utterance, setup, lm);
 }
 
 // ---- commands as goals ----------------------------------------------------------

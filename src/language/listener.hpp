@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "domains/pack.hpp"
 #include "language/commands/command.hpp"
 #include "language/commands/fewshot.hpp"
 #include "language/commands/language_config.hpp"
@@ -53,10 +54,12 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind,
 // ---- listener setup ---------------------------------------------------------
 
 struct LiteralListenerSetup {
-  commands::LanguageConfig config;
+  domains::PackPtr pack;            // the domain: candidates, qualifiers, variable types
+  commands::LanguageConfig config;  // the pack's command language (a copy callers may adjust)
   std::vector<commands::FewShotExample> examples;  // the literal examples, in prompt order
-  // Summed log-probabilities are divided by this: 1 for mDKG, 0.5 for VH (the
-  // reference queries davinci-002 at temperature 0.5 and scales the scores).
+  // Summed log-probabilities are divided by this (the pack's literal_listener
+  // temperature): 1 for mDKG, 0.5 for VH (the reference queries davinci-002
+  // at temperature 0.5 and scales the scores).
   double temperature = 1.0;
 };
 
@@ -64,33 +67,32 @@ struct LiteralListenerSetup {
 // folder of util::data_dir() (the embedded LM reads its corpus from there too).
 std::string language_data_dir();
 
-// Setup for `domain` ("doors-keys-gems" or "virtual-home"): the built-in
-// language config, the literal examples in the LITERAL prompt order of
-// prompt-orders.json, and the domain's temperature. Throws clips::InputError
-// for another domain or unreadable data files.
+// Setup for a domain pack: its language config, its literal few-shot
+// examples in prompt order, and its listener temperature. Throws
+// clips::InputError if the pack has no literal listener or its data files
+// are unreadable.
+LiteralListenerSetup literal_listener_setup(domains::PackPtr pack, const std::string& data_dir = "");
+// The same for a built-in pack by name ("doors-keys-gems", "virtual-home").
 LiteralListenerSetup literal_listener_setup(const std::string& domain, const std::string& data_dir = "");
-
-// The language domain of a grounded task, judged from its types:
-// "doors-keys-gems" (key/door), "virtual-home" (item/fixture); throws
-// clips::InputError otherwise.
-std::string language_domain_of(const pddl::Task& task);
 
 // ---- candidates and commands --------------------------------------------------
 
-// The ground salient listener actions of the literal listener in state `s`:
+// The ground salient listener actions of the literal listener in state `s`
+// (Pack::literal_candidates):
 // mDKG (spec 9.7): (pickup robot k) for every key, (handover robot human k) for
 // every key, (unlock robot k d) for every key/door pair of the same colour, in
 // that order (keys and doors in declaration order), dropping only actions that
 // are statically impossible (forbidden items); held or used keys are kept.
 // VH (VH spec 7.1): (grab helper i f) for every (placed i f) in `s`, ordered by
-// fixture name, then item name.
+// fixture name, then item name. Other packs: every ground salient action of
+// the listener.
 std::vector<commands::Term> literal_candidate_actions(const pddl::Task& task, const pddl::State& s,
-                                                      const commands::LanguageConfig& config);
+                                                      const domains::Pack& pack);
 
 // The distinct lifted commands over those candidates (spec 7.4/7.5 with K from
-// the config: 3 for mDKG, 4 for VH), in enumeration order.
+// setup.config: 3 for mDKG, 4 for VH), in enumeration order.
 std::vector<commands::Command> literal_commands(const pddl::Task& task, const pddl::State& s,
-                                                const commands::LanguageConfig& config);
+                                                const LiteralListenerSetup& setup);
 
 // ---- scoring ------------------------------------------------------------------
 

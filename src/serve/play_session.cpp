@@ -4,9 +4,7 @@
 #include <cmath>
 
 #include "assist/assist.hpp"
-#include "domains/registry.hpp"
 #include "eval/scenes.hpp"
-#include "inference/vh_value.hpp"
 #include "search/astar.hpp"
 #include "util/error.hpp"
 
@@ -50,13 +48,15 @@ PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::stri
     : ds_(std::move(dataset)),
       dataset_name_(std::move(dataset_name)),
       problem_(problem),
-      kind_(ds_->kind()),
+      pack_(ds_->pack_ptr()),
       method_(method),
       lm_(std::move(lm)),
       limits_(limits) {
   check_method(method_);
-  if (kind_ == data::DomainKind::Generic)
-    throw InputError("field 'dataset': only Doors-Keys-Gems and VirtualHome datasets can be played");
+  if (pack_->spec().scene == domains::SceneKind::Text)
+    throw InputError("field 'dataset': the " + pack_->name() +
+                     " pack draws no scene (its scene is \"text\"), so the page cannot show it; grid and cards packs "
+                     "can be played");
   for (const auto& p : ds_->plans()) {
     if (p.problem_id != problem_) continue;
     if (plan_id.empty() ? plan_ == nullptr : p.id == plan_id) plan_ = &p;
@@ -68,14 +68,12 @@ PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::stri
   task_ = ds_->task(problem_);
   goals_ = ds_->candidate_goals(*plan_);
   true_goal_ = ds_->true_goal_index(*plan_);
-  profiles_ = inference::plan_cost_profiles(kind_, *plan_).profiles;
-  if (kind_ == data::DomainKind::VirtualHome) {
-    principal_ = "actor", assistant_ = "helper", horizon_ = 50;
-    vh_.emplace(*task_);
-  } else {
-    principal_ = "human", assistant_ = "robot", horizon_ = 100;
-    dkg_.emplace(*task_);
-  }
+  profiles_ = inference::plan_cost_profiles(*pack_, *plan_).profiles;
+  principal_ = pack_->roles().principal;
+  assistant_ = pack_->roles().assistant;
+  horizon_ = pack_->roles().horizon;
+  if (pack_->spec().scene == domains::SceneKind::Cards) vh_.emplace(*task_);
+  else dkg_.emplace(*task_);
   options_.refine.max_nodes = limits_.inference_nodes;
   options_.refine.max_seconds = limits_.search_seconds;
   options_.threads = 1;  // sessions already run in parallel
@@ -83,7 +81,7 @@ PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::stri
 }
 
 void PlaySession::rebuild(const std::vector<Event>& events) {
-  belief_ = std::make_unique<inference::Belief>(task_, kind_, goals_, profiles_, options_);
+  belief_ = std::make_unique<inference::Belief>(task_, pack_, goals_, profiles_, options_);
   last_ = belief_->start(task_->initial_state());
   events_.clear();
   history_.clear();
@@ -161,7 +159,7 @@ std::optional<std::string> PlaySession::reached_goal() const {
 
 const language::ListenerResult& PlaySession::literal_reading() const {
   if (!literal_) {
-    auto setup = language::literal_listener_setup(language::language_domain_of(*task_));
+    auto setup = language::literal_listener_setup(pack_);
     literal_ = language::literal_listener(*task_, *utterance_state_, *utterance_, setup, *lm_);
   }
   return *literal_;
@@ -184,12 +182,10 @@ json PlaySession::assist(bool apply) {
     if (utterance_) {
       const auto& ranked = literal_reading();
       if (!ranked.commands.empty()) {
-        auto config = language::literal_listener_setup(language::language_domain_of(*task_)).config;
+        const auto& config = pack_->language();
         const auto& top = ranked.commands.front();
         auto spec = std::make_shared<model::Specification>(task_, top.command.to_goal_formula(config), profiles_[0]);
-        std::unique_ptr<heuristics::Heuristic> h;
-        if (kind_ == data::DomainKind::VirtualHome) h = std::make_unique<inference::VhPlanningHeuristic>(*task_);
-        else h = domains::make_heuristic(domains::model_heuristic(kind_), *task_, kind_);
+        std::unique_ptr<heuristics::Heuristic> h = pack_->make_heuristic(pack_->spec().literal.planning_heuristic, *task_);
         search::SearchOptions so;
         so.max_nodes = limits_.assist_nodes;
         so.max_seconds = limits_.search_seconds;
@@ -266,7 +262,7 @@ json PlaySession::posterior_json(Modality m) const {
   json goals = json::array();
   for (size_t g = 0; g < goals_.size(); ++g)
     goals.push_back({{"goal", goals_[g].label},
-                     {"colour", eval::goal_colour(*task_, kind_, goals_[g].label)},
+                     {"colour", eval::goal_colour(*task_, *pack_, goals_[g].label)},
                      {"p", post.goals[g]}});
   j["goals"] = std::move(goals);
   json profiles = json::array();
@@ -368,7 +364,7 @@ json PlaySession::reading() const {
 json PlaySession::state() const {
   json j;
   j["dataset"] = dataset_name_;
-  j["domain"] = data::to_string(kind_);
+  j["domain"] = pack_->name();
   j["problem"] = problem_;
   j["plan"] = plan_->id;
   j["method"] = method_;

@@ -99,7 +99,7 @@ class PlaySession {
   std::string dataset_name_, problem_;
   const data::PlanRecord* plan_ = nullptr;
   std::shared_ptr<const pddl::Task> task_;
-  data::DomainKind kind_;
+  domains::PackPtr pack_;
   std::vector<data::GoalSpec> goals_;
   std::vector<model::CostProfile> profiles_;
   int true_goal_ = -1;

@@ -155,7 +155,7 @@ Reply Service::datasets() const {
       plans[p.problem_id].push_back(p.id);
     }
     for (const auto& pid : order) problems.push_back({{"id", pid}, {"plans", plans[pid]}});
-    out.push_back({{"name", name}, {"domain", data::to_string(ds->kind())}, {"problems", std::move(problems)}});
+    out.push_back({{"name", name}, {"domain", ds->pack().name()}, {"problems", std::move(problems)}});
   }
   return json_reply(200, json{{"datasets", std::move(out)}, {"methods", play_methods()}});
 }

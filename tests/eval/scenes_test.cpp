@@ -79,7 +79,7 @@ TEST(Scenes, HeldItemsAndUnlockedDoorsAlongAPlan) {
 TEST(Scenes, PosteriorBarsUseGemColours) {
   auto ds = data::Dataset::load(examples_dkg());
   auto task = ds.task("e1");
-  auto bars = posterior_bars(*task, ds.kind(), {"gem1", "gem2", "gem3", "gem4"}, {0.1, 0.2, 0.3, 0.4});
+  auto bars = posterior_bars(*task, ds.pack(), {"gem1", "gem2", "gem3", "gem4"}, {0.1, 0.2, 0.3, 0.4});
   ASSERT_EQ(bars.size(), 4u);
   EXPECT_EQ(bars[0].colour, "red");
   EXPECT_EQ(bars[1].colour, "yellow");

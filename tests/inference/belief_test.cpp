@@ -31,14 +31,14 @@ const char* kCorridor = R"(
 std::shared_ptr<const pddl::Task> corridor_task() {
   auto d = std::make_shared<pddl::Domain>(pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
   auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, kCorridor, "corridor.pddl"));
-  return std::make_shared<pddl::Task>(d, p, data::grounding_options(data::DomainKind::DoorsKeysGems));
+  return std::make_shared<pddl::Task>(d, p, domains::builtin_pack("doors-keys-gems")->spec().grounding);
 }
 
 Belief corridor_belief(const std::shared_ptr<const pddl::Task>& task) {
   std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)", ""}, {"gem2", "(has human gem2)", ""}};
   InferenceOptions opts;
   opts.heuristic = "hmax";  // admissible, so the refined values are exact here
-  return Belief(task, data::DomainKind::DoorsKeysGems, goals, {model::dkg_profile(3), model::dkg_profile(4)}, opts);
+  return Belief(task, domains::builtin_pack("doors-keys-gems"), goals, {model::dkg_profile(3), model::dkg_profile(4)}, opts);
 }
 
 pddl::ActionId act(const pddl::Task& task, const std::string& text) { return *task.find_action(text); }

@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "inference/belief.hpp"
-#include "inference/vh_value.hpp"
+#include "domains/vh_value.hpp"
 #include "language/listener.hpp"
 #include "test_paths.hpp"
 
@@ -65,7 +65,7 @@ TEST(DkgDataset, AllPlansThreeModalities) {
   if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
   // With h_max instead of the MST heuristic the 2^18-node refinements take
   // ~18 min for all plans (more than ctest's 900 s limit): opt in explicitly.
-  if (inference_heuristic_name(data::DomainKind::DoorsKeysGems) != "dkg-mst" && !std::getenv("CLIPS_INFER_ALL_PLANS"))
+  if (domains::builtin_pack("doors-keys-gems")->spec().inference.heuristic != "dkg-mst" && !std::getenv("CLIPS_INFER_ALL_PLANS"))
     GTEST_SKIP() << "dkg-mst not registered yet; set CLIPS_INFER_ALL_PLANS=1 to run with h_max";
   auto lm = embedded_lm();
   if (!lm) GTEST_SKIP() << "no embedded LM";
@@ -119,7 +119,7 @@ TEST(VhDataset, HeuristicTestVectors) {
   if (!std::filesystem::exists(paths::vh_dataset() + "/domain.pddl")) GTEST_SKIP() << "no VH dataset";
   auto ds = data::Dataset::load(paths::vh_dataset());
   auto task = ds.task("2");
-  VhValueHeuristic h(*task);
+  domains::VhValueHeuristic h(*task);
   pddl::State s0 = task->initial_state();
   pddl::State nograb = s0;
   task->set(nograb, task->atom("nograb", {"actor"}), true);
@@ -139,7 +139,7 @@ TEST(VhDataset, CommandSetsOfPlan2_1) {
   const auto& plan = ds.plan("2.1.set_table1");
   auto task = ds.task(plan.problem_id);
   auto goals = ds.candidate_goals(plan);
-  Belief b(task, ds.kind(), goals, {model::unit_profile()});
+  Belief b(task, ds.pack_ptr(), goals, {model::unit_profile()});
   EXPECT_FALSE(b.searches());
   const auto sim = pddl::simulate(*task, task->initial_state(), plan.observed);
   const pddl::State& s2 = sim.states[2];

@@ -39,7 +39,7 @@ struct InferenceRun {
 std::vector<double> infer(const std::shared_ptr<const pddl::Task>& task, const InferenceRun& run) {
   InferenceOptions opts;
   opts.heuristic = "hmax";
-  Belief b(task, data::DomainKind::DoorsKeysGems, run.goals, {model::dkg_profile(1), model::dkg_profile(2)}, opts);
+  Belief b(task, domains::builtin_pack("doors-keys-gems"), run.goals, {model::dkg_profile(1), model::dkg_profile(2)}, opts);
   std::vector<double> out;
   auto keep = [&](const StepRecord& r) {
     const auto& g = r[Modality::Both].goals;
@@ -53,7 +53,7 @@ std::vector<double> infer(const std::shared_ptr<const pddl::Task>& task, const I
 TEST(SharedTask, ConcurrentInferencesMatchSequentialOnes) {
   auto d = std::make_shared<pddl::Domain>(pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
   auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, kRow, "row.pddl"));
-  auto task = std::make_shared<const pddl::Task>(d, p, data::grounding_options(data::DomainKind::DoorsKeysGems));
+  auto task = std::make_shared<const pddl::Task>(d, p, domains::builtin_pack("doors-keys-gems")->spec().grounding);
   const std::vector<InferenceRun> runs = {
       {{{"gem1", "(has human gem1)", ""}, {"gem2", "(has human gem2)", ""}},
        {"(left human)", "(wait robot)", "(left human)"}},

@@ -62,8 +62,8 @@ class DkgListener : public ::testing::Test {
 // Problem 1: key1 red, key2 yellow; door1 red, door2 yellow, door3 yellow.
 TEST_F(DkgListener, CandidatesOfProblemOne) {
   const auto& p = data_->plan("1.1.keys");
-  const auto config = commands::doors_keys_gems_language();
-  EXPECT_EQ(printed(literal_candidate_actions(*p.task, p.s_T, config)),
+  const auto pack = domains::builtin_pack("doors-keys-gems");
+  EXPECT_EQ(printed(literal_candidate_actions(*p.task, p.s_T, *pack)),
             (std::vector<std::string>{"(pickup robot key1)", "(pickup robot key2)", "(handover robot human key1)",
                                       "(handover robot human key2)", "(unlock robot key1 door1)",
                                       "(unlock robot key2 door2)", "(unlock robot key2 door3)"}));
@@ -78,7 +78,7 @@ TEST_F(DkgListener, CandidatesOfProblemOne) {
 //    unlock pair FG is single-coloured, so FG plus one of A, B, C, D -> 4.
 TEST_F(DkgListener, CommandCountsOfProblemOne) {
   const auto& p = data_->plan("1.1.keys");
-  const auto cmds = literal_commands(*p.task, p.s_T, commands::doors_keys_gems_language());
+  const auto cmds = literal_commands(*p.task, p.s_T, literal_listener_setup("doors-keys-gems"));
   EXPECT_EQ(count_with_actions(cmds, 1), 6u);
   EXPECT_EQ(count_with_actions(cmds, 2), 16u);
   EXPECT_EQ(count_with_actions(cmds, 3), 4u);
@@ -94,10 +94,10 @@ TEST_F(DkgListener, CommandCountsOfProblemOne) {
 // candidate list equals the one of the initial state.
 TEST_F(DkgListener, CandidatesIgnoreTheDynamicState) {
   const auto& p = data_->plan("3.1.keys");
-  const auto config = commands::doors_keys_gems_language();
+  const auto pack = domains::builtin_pack("doors-keys-gems");
   const auto end = pddl::simulate(*p.task, p.s_T, p.completed).states.back();
-  const auto at_start = literal_candidate_actions(*p.task, p.task->initial_state(), config);
-  EXPECT_EQ(literal_candidate_actions(*p.task, end, config), at_start);
+  const auto at_start = literal_candidate_actions(*p.task, p.task->initial_state(), *pack);
+  EXPECT_EQ(literal_candidate_actions(*p.task, end, *pack), at_start);
   // 5 keys -> 5 pickups + 5 handovers; unlocks: yellow key1-door4, blue key2-door2/door5,
   // red key3/4/5 x door1/door3 -> 1 + 2 + 6 = 9.
   EXPECT_EQ(at_start.size(), 19u);
@@ -146,8 +146,9 @@ TEST_F(DkgListener, CompletedPlanSatisfiesItsCommands) {
   // human spends key4 on door3 before key5 arrives, so no single state has
   // both keys with the human, but the plan did hand over two red keys.
   const auto& p = data_->plan("3.1.keys");
-  const auto config = commands::doors_keys_gems_language();
-  const auto cmds = literal_commands(*p.task, p.s_T, config);
+  const auto setup = literal_listener_setup("doors-keys-gems");
+  const auto& config = setup.config;
+  const auto cmds = literal_commands(*p.task, p.s_T, setup);
   auto find = [&](const std::string& display) {
     for (const auto& c : cmds)
       if (c.display_form() == display) return c;
@@ -198,12 +199,12 @@ TEST(VhListener, CandidatesCountsAndTemperature) {
   EXPECT_EQ(setup.temperature, 0.5);
   ASSERT_EQ(setup.examples.size(), 12u);
   EXPECT_EQ(setup.examples.front().index, 5);
-  const auto cands = printed(literal_candidate_actions(*p.task, p.s_T, setup.config));
+  const auto cands = printed(literal_candidate_actions(*p.task, p.s_T, *setup.pack));
   ASSERT_EQ(cands.size(), 15u);
   EXPECT_EQ(cands.front(), "(grab helper bowl1 cabinet1)");
   EXPECT_EQ(cands[4], "(grab helper plate2 cabinet2)");
   EXPECT_EQ(cands.back(), "(grab helper cutleryknife4 cabinet4)");
-  const auto cmds = literal_commands(*p.task, p.s_T, setup.config);
+  const auto cmds = literal_commands(*p.task, p.s_T, setup);
   // Singles: one per item type. Pairs: ordered type pairs in candidate order
   // (bowl<plate<fork<knife), fixture sharing implied by the types: bb, bp, bf,
   // bk, pp, pf, pk, ff, fk, kk.

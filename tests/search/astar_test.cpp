@@ -9,7 +9,7 @@
 #include <set>
 
 #include "data/dataset.hpp"
-#include "domains/registry.hpp"
+#include "domains/pack.hpp"
 #include "heuristics/basic.hpp"
 #include "search/rtaa.hpp"
 #include "test_paths.hpp"
@@ -72,7 +72,7 @@ TEST(AStar, DefaultHeuristicMatchesUniformCostSearchOnTheDataset) {
     for (int g = 1; g <= 4; ++g)
       for (int c = 1; c <= 4; ++c) {
         auto spec = spec_for(ds, p, g, c);
-        auto h = domains::make_heuristic(domains::default_admissible_heuristic(ds.kind()), spec->task(), ds.kind());
+        auto h = ds.pack().make_heuristic(ds.pack().default_admissible_heuristic(), spec->task());
         double ucs = true_cost(*spec, spec->task().initial_state(), 1u << 15);
         if (std::isnan(ucs)) {
           ++skipped;
@@ -327,8 +327,8 @@ TEST(Rtaa, LookaheadMatchesTheSpecsRefineOnPlainAStar) {
     for (size_t budget : {size_t{16}, size_t{200}, std::numeric_limits<size_t>::max()}) {
       auto spec = spec_for(ds, problem, 1, 3);
       const pddl::Task& task = spec->task();
-      search::Policy pol(spec, domains::make_heuristic("dkg-mst", task, data::DomainKind::DoorsKeysGems));
-      ReferenceRefine ref{spec, domains::make_heuristic("dkg-mst", task, data::DomainKind::DoorsKeysGems), {}, {}};
+      search::Policy pol(spec, domains::builtin_pack("doors-keys-gems")->make_heuristic("dkg-mst", task));
+      ReferenceRefine ref{spec, domains::builtin_pack("doors-keys-gems")->make_heuristic("dkg-mst", task), {}, {}};
       search::SearchOptions o;
       o.max_nodes = budget;
       std::mt19937 rng(7);

@@ -1,5 +1,6 @@
 #include "language/commands/language_config.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -14,6 +15,17 @@ const SalientActionRule* LanguageConfig::salient_rule(const std::string& action)
   for (const auto& rule : salient_actions)
     if (rule.action == action) return &rule;
   return nullptr;
+}
+
+std::vector<std::string> LanguageConfig::qualifiers() const {
+  std::vector<std::string> out = {qualifier};
+  out.insert(out.end(), more_qualifiers.begin(), more_qualifiers.end());
+  return out;
+}
+
+bool LanguageConfig::is_qualifier(const std::string& predicate) const {
+  return predicate == qualifier ||
+         std::find(more_qualifiers.begin(), more_qualifiers.end(), predicate) != more_qualifiers.end();
 }
 
 std::string LanguageConfig::to_pronoun(const std::string& name) const {
@@ -163,8 +175,20 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   if (doc.contains("qualifier")) {
     const json& q = doc["qualifier"];
     c.qualifier = r.string(r.field(q, "predicate", "qualifier"), "qualifier.predicate");
+    for (const auto& [key, value] : q.items())
+      if (key != "predicate" && key != "object_arg" && key != "more") r.fail("qualifier." + key, "unknown key");
     if (q.contains("object_arg"))
       c.qualifier_object_arg = r.positive_int(q["object_arg"], "qualifier.object_arg");
+    if (q.contains("more")) {
+      const json& more = q["more"];
+      if (!more.is_array()) r.fail("qualifier.more", "expected an array of predicate names");
+      for (std::size_t i = 0; i < more.size(); ++i) {
+        const std::string key = "qualifier.more[" + std::to_string(i) + "]";
+        const std::string name = r.string(more[i], key);
+        if (c.is_qualifier(name)) r.fail(key, "'" + name + "' is already a qualifier");
+        c.more_qualifiers.push_back(name);
+      }
+    }
   }
   if (doc.contains("speaker")) read_party(r, doc["speaker"], "speaker", c.speaker, c.speaker_pronoun);
   if (doc.contains("listener"))

@@ -50,6 +50,9 @@ struct LanguageConfig {
   // The qualifying predicate attached to each focal object, e.g. (iscolor key2 red).
   std::string qualifier = "iscolor";
   int qualifier_object_arg = 1;  // 1-based position of the object in the qualifier
+  // Further qualifying predicates, same object position, attached after the
+  // first (e.g. issize then ismaterial: "the big wooden plank").
+  std::vector<std::string> more_qualifiers;
 
   std::string speaker = "human";
   std::string listener = "robot";
@@ -86,6 +89,9 @@ struct LanguageConfig {
   GoalVariables goal_variables = GoalVariables::Existential;
 
   const SalientActionRule* salient_rule(const std::string& action) const;
+  // `qualifier` then `more_qualifiers`.
+  std::vector<std::string> qualifiers() const;
+  bool is_qualifier(const std::string& predicate) const;
   // Maps an agent name to its pronoun and back; other names pass through.
   std::string to_pronoun(const std::string& name) const;
   std::string to_agent_name(const std::string& arg) const;

@@ -15,19 +15,24 @@ std::vector<SalientAction> extract_salient(const std::vector<Term>& actions, con
       throw std::invalid_argument("salient action " + to_pddl(action) + " has too few arguments");
     SalientAction s{action, action.args[rule->agent_arg - 1], action.args[rule->focal_arg - 1], {}};
     if (qualifier_of)
-      if (auto q = qualifier_of(s.focal)) s.predicates.push_back(std::move(*q));
+      for (auto& q : qualifier_of(s.focal)) s.predicates.push_back(std::move(q));
     salient.push_back(std::move(s));
   }
   return salient;
 }
 
 QualifierLookup qualifier_lookup_from_facts(std::vector<Term> facts, const LanguageConfig& config) {
-  return [facts = std::move(facts), name = config.qualifier,
-          index = static_cast<std::size_t>(config.qualifier_object_arg - 1)](
-             const std::string& object) -> std::optional<Term> {
-    for (const auto& fact : facts)
-      if (fact.name == name && index < fact.args.size() && fact.args[index] == object) return fact;
-    return std::nullopt;
+  return [facts = std::move(facts), names = config.qualifiers(),
+          index = static_cast<std::size_t>(config.qualifier_object_arg - 1)](const std::string& object) {
+    // The first fact of each qualifier predicate, in the config's order.
+    std::vector<Term> out;
+    for (const auto& name : names)
+      for (const auto& fact : facts)
+        if (fact.name == name && index < fact.args.size() && fact.args[index] == object) {
+          out.push_back(fact);
+          break;
+        }
+    return out;
   };
 }
 

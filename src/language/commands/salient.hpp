@@ -20,7 +20,8 @@ struct SalientAction {
 };
 
 // The qualifying predicate of an object in the scoring state, if any.
-using QualifierLookup = std::function<std::optional<Term>(const std::string& object)>;
+// The qualifier terms of an object, in the config's qualifier order (empty: none).
+using QualifierLookup = std::function<std::vector<Term>(const std::string& object)>;
 // The PDDL type of an object ("key", "door", "item", "fixture", ...).
 using TypeLookup = std::function<std::string(const std::string& object)>;
 
@@ -30,7 +31,7 @@ using TypeLookup = std::function<std::string(const std::string& object)>;
 std::vector<SalientAction> extract_salient(const std::vector<Term>& actions, const LanguageConfig& config,
                                            const QualifierLookup& qualifier_of);
 
-// A lookup over a list of facts: the first fact named config.qualifier whose
+// A lookup over a list of facts: for each of config.qualifiers(), the first fact of that name whose
 // object argument is the object, e.g. from {(iscolor key2 red), (iscolor door1 blue)}.
 QualifierLookup qualifier_lookup_from_facts(std::vector<Term> facts, const LanguageConfig& config);
 

@@ -1,4 +1,4 @@
-#include "inference/vh_value.hpp"
+#include "domains/vh_value.hpp"
 
 #include <algorithm>
 #include <regex>
@@ -6,7 +6,7 @@
 
 #include "util/error.hpp"
 
-namespace clips::inference {
+namespace clips::domains {
 
 namespace {
 bool holds(const uint64_t* s, const pddl::Task::AtomRef& a) { return a.bit >= 0 ? pddl::get_bit(s, a.bit) : a.value; }
@@ -113,9 +113,9 @@ double VhValueHeuristic::estimate(const uint64_t* s) {
   return item_cost + move_cost;
 }
 
-}  // namespace clips::inference
+}  // namespace clips::domains
 
-namespace clips::inference {
+namespace clips::domains {
 
 void VhPlanningHeuristic::prepare(const model::Specification& spec, const pddl::State& root) {
   VhValueHeuristic::prepare(spec, root);
@@ -164,4 +164,4 @@ void VhPlanningHeuristic::prepare(const model::Specification& spec, const pddl::
   }
 }
 
-}  // namespace clips::inference
+}  // namespace clips::domains

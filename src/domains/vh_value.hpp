@@ -9,7 +9,7 @@
 
 #include "heuristics/heuristic.hpp"
 
-namespace clips::inference {
+namespace clips::domains {
 
 class VhValueHeuristic : public heuristics::Heuristic {
  public:
@@ -40,9 +40,9 @@ class VhValueHeuristic : public heuristics::Heuristic {
   std::vector<std::vector<pddl::Task::AtomRef>> next_to_;  // [agent][fixture]
 };
 
-}  // namespace clips::inference
+}  // namespace clips::domains
 
-namespace clips::inference {
+namespace clips::domains {
 
 // VH heuristic plus the action filter used by the literal listener's A*
 // (clips-spec-virtual-home.md 4.3). The filter is fixed per planning call from
@@ -61,4 +61,4 @@ class VhPlanningHeuristic : public VhValueHeuristic {
   std::vector<char> keep_;
 };
 
-}  // namespace clips::inference
+}  // namespace clips::domains

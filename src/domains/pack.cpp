@@ -1,0 +1,440 @@
+// The generic behaviour of a pack: everything derived from its PackSpec.
+#include "domains/pack.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "heuristics/basic.hpp"
+#include "pddl/parser.hpp"
+#include "pddl/sexpr.hpp"
+#include "util/data_dir.hpp"
+#include "util/error.hpp"
+
+namespace clips::domains {
+
+namespace fs = std::filesystem;
+
+Pack::Pack(PackSpec spec) : spec_(std::move(spec)) {}
+
+void Pack::check_problem(const pddl::Task&, const std::string&) const {}
+
+void Pack::check_observed_plan(const pddl::PlanFile& obs) const {
+  const int most = spec_.max_utterances_per_plan;
+  const int n = static_cast<int>(obs.utterances.size());
+  if (most <= 0 || n <= most) return;
+  const auto& extra = obs.utterances[static_cast<size_t>(most)];
+  if (most == 1)
+    throw InputError(extra.loc, "a second utterance; a " + spec_.name + " observed plan has at most one ';' line (the "
+                                "first is at line " + std::to_string(obs.utterances[0].loc.line) + ")");
+  throw InputError(extra.loc, "utterance " + std::to_string(most + 1) + "; a " + spec_.name +
+                                  " observed plan has at most " + std::to_string(most) + " ';' lines");
+}
+
+void Pack::check_plan_tag(const std::string& tag, const std::string& plan_id) const {
+  if (spec_.plan_tags.empty()) return;
+  if (std::find(spec_.plan_tags.begin(), spec_.plan_tags.end(), tag) != spec_.plan_tags.end()) return;
+  std::string known;
+  for (const auto& t : spec_.plan_tags) known += (known.empty() ? "" : " or ") + t;
+  throw InputError("plan " + plan_id + ": condition must be " + known + ", got '" + tag + "'");
+}
+
+// ---- goals --------------------------------------------------------------------
+
+std::vector<GoalSpec> Pack::problem_goals(const pddl::Task& task, const std::string& problem_path) const {
+  std::vector<GoalSpec> out;
+  if (spec_.goals.source == GoalSource::Objects) {
+    const std::string& tpl = spec_.goals.condition;
+    const size_t at = tpl.find("{}");
+    for (pddl::ObjectId o : task.objects_of_type(spec_.goals.object_type)) {
+      const std::string& name = task.object_name(o);
+      out.push_back({name, tpl.substr(0, at) + name + tpl.substr(at + 2), ""});
+    }
+    if (out.empty())
+      throw InputError(SourceLoc{problem_path, 0, 0}, "no object of type '" + spec_.goals.object_type +
+                                                          "', so no candidate goal (pack " + spec_.name +
+                                                          ": goals.object_type)");
+    return out;
+  }
+  if (spec_.goals.source == GoalSource::ProblemGoal) {
+    if (!task.problem().goal_sexpr)
+      throw InputError(SourceLoc{problem_path, 0, 0},
+                       "the problem has no :goal, and pack " + spec_.name + " takes its candidate goal from there");
+    out.push_back({"goal", task.problem().goal_sexpr->str(), problem_path});
+    return out;
+  }
+  throw InputError("pack " + spec_.name + ": goal sets are files of a dataset (goals/sets/), not of a problem");
+}
+
+namespace {
+
+// The atoms of a conjunction (or the one atom), as text.
+std::set<std::string> atoms_of(const std::string& text) {
+  auto e = pddl::read_one_sexpr(text, "goal");
+  std::set<std::string> out;
+  if (e.head() == "and")
+    for (size_t i = 1; i < e.items.size(); ++i) out.insert(e.items[i].str());
+  else
+    out.insert(e.str());
+  return out;
+}
+
+}  // namespace
+
+int reached_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& goals, const pddl::PlanFile& observed,
+                       const pddl::PlanFile& completed) {
+  auto obs = pddl::simulate(task, task.initial_state(), observed);
+  auto comp = pddl::simulate(task, obs.states.back(), completed);
+  std::vector<int> reached;
+  for (size_t i = 0; i < goals.size(); ++i) {
+    auto g = task.compile_text(goals[i].condition, goals[i].source.empty() ? "goal " + goals[i].label : goals[i].source);
+    if (g.holds(comp.states.back())) reached.push_back(static_cast<int>(i));
+  }
+  // Goals may nest (juice1 is a part of juice2): the most demanding one reached is meant.
+  std::vector<int> maximal;
+  for (int i : reached) {
+    const auto a = atoms_of(goals[i].condition);
+    bool part = false;
+    for (int j : reached) {
+      if (j == i) continue;
+      const auto b = atoms_of(goals[j].condition);
+      if (b.size() > a.size() && std::includes(b.begin(), b.end(), a.begin(), a.end())) part = true;
+    }
+    if (!part) maximal.push_back(i);
+  }
+  if (maximal.size() == 1) return maximal[0];
+  std::string names;
+  for (int i : maximal) names += " " + goals[i].label;
+  throw InputError("completion reaches " + std::to_string(maximal.size()) +
+                   " candidate goals (expected exactly 1):" + (names.empty() ? " none" : names));
+}
+
+int Pack::true_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& goals, const std::string& tag,
+                          const pddl::PlanFile& observed, const pddl::PlanFile& completed) const {
+  switch (spec_.goals.true_goal) {
+    case TrueGoalRule::PlanTag: {
+      for (size_t i = 0; i < goals.size(); ++i)
+        if (goals[i].label == tag) return static_cast<int>(i);
+      std::string known;
+      for (const auto& g : goals) known += (known.empty() ? "" : ", ") + g.label;
+      throw InputError(SourceLoc{observed.path, 0, 0},
+                       "the plan's goal label '" + tag + "' is not a candidate goal of its problem (" + known + ")");
+    }
+    case TrueGoalRule::LastActionObject: {
+      if (completed.actions.empty()) throw InputError(SourceLoc{completed.path, 0, 0}, "completed plan is empty");
+      const auto& last = completed.actions.back();
+      auto e = pddl::read_one_sexpr(last.text, last.loc.file);
+      for (size_t k = e.items.size(); k-- > 1;)
+        for (size_t i = 0; i < goals.size(); ++i)
+          if (goals[i].label == e.items[k].atom) return static_cast<int>(i);
+      throw InputError(last.loc, "the completed plan's last action " + last.text +
+                                     " names no candidate goal (pack " + spec_.name + ": goals.true_goal)");
+    }
+    case TrueGoalRule::CompletionReaches: return reached_goal_index(task, goals, observed, completed);
+  }
+  return 0;
+}
+
+// ---- costs ----------------------------------------------------------------------
+
+ProfileSet Pack::profiles_for(const std::string& tag) const {
+  if (spec_.cost_profiles.empty()) return {{model::unit_profile()}, 0};
+  const ProfileRule* fallback = nullptr;
+  for (const auto& r : spec_.cost_profiles) {
+    if (r.tag == tag) return {r.profiles, r.true_index};
+    if (r.tag.empty()) fallback = &r;
+  }
+  // A live session has no tag: the untagged rule, else the first.
+  if (!fallback && tag.empty()) fallback = &spec_.cost_profiles.front();
+  if (fallback) return {fallback->profiles, fallback->true_index};
+  std::string known;
+  for (const auto& r : spec_.cost_profiles) known += (known.empty() ? "" : ", ") + r.tag;
+  throw InputError("pack " + spec_.name + " has no cost profiles for plans tagged '" + tag + "' (tags: " + known + ")");
+}
+
+model::CostProfile Pack::cost_profile(const std::string& which) const {
+  if (which == "unit") return model::unit_profile();
+  if (which == "task") return model::task_costs_profile();
+  std::vector<std::string> names;
+  for (const auto& r : spec_.cost_profiles)
+    for (const auto& p : r.profiles) {
+      if (p.name == which) return p;
+      if (std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
+    }
+  if (which.empty()) return model::unit_profile();
+  std::string known = "unit, task";
+  for (const auto& n : names) known += ", " + n;
+  throw InputError("--costs '" + which + "' is not a cost profile of " + spec_.name + " (known: " + known + ")");
+}
+
+// ---- heuristics ------------------------------------------------------------------
+
+std::vector<std::string> Pack::heuristic_names() const { return {"hmax", "blind", "hff"}; }
+
+std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& name, const pddl::Task&) const {
+  if (name == "blind") return std::make_unique<heuristics::BlindHeuristic>();
+  if (name == "hmax") return std::make_unique<heuristics::HMaxHeuristic>();
+  if (name == "hff") return std::make_unique<heuristics::FFHeuristic>();
+  std::string known;
+  for (auto& n : heuristic_names()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError("unknown heuristic '" + name + "' for " + spec_.name + " (known: " + known + ")");
+}
+
+// ---- language -------------------------------------------------------------------
+
+std::vector<commands::FewShotExample> Pack::fewshot(bool literal, const std::string& language_dir) const {
+  const FewShotSource& src = spec_.fewshot;
+  const std::vector<int>& declared = literal ? src.literal_order : src.pragmatic_order;
+  std::vector<commands::FewShotExample> all;
+  if (!src.file.empty()) {
+    fs::path file(src.file);
+    if (file.is_relative() && !spec_.source.empty()) file = fs::path(spec_.source).parent_path() / file;
+    all = commands::load_fewshot_examples(file);
+    if (!declared.empty()) return commands::order_examples(all, src.domain, declared);
+    std::vector<commands::FewShotExample> out;
+    for (auto& e : all)
+      if (e.domain == src.domain && (!literal || e.in_literal_prompt)) out.push_back(e);
+    if (out.empty())
+      throw InputError(SourceLoc{file.string(), 0, 0}, "no few-shot example for domain '" + src.domain + "'" +
+                                                           (literal ? " marked for the literal prompt" : ""));
+    return out;
+  }
+  const std::string dir = language_dir.empty() ? util::data_dir() + "/language" : language_dir;
+  all = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");
+  if (!declared.empty()) return commands::order_examples(all, src.domain, declared);
+  const auto orders = commands::load_prompt_orders(dir + "/prompt-orders.json");
+  const auto it = orders.find(src.domain);
+  if (it != orders.end()) return commands::order_examples(all, src.domain, literal ? it->second.literal : it->second.pragmatic);
+  std::vector<commands::FewShotExample> out;
+  for (auto& e : all)
+    if (e.domain == src.domain && (!literal || e.in_literal_prompt)) out.push_back(e);
+  return out;  // may be empty: the model then works from its generated corpus alone
+}
+
+// ---- literal listener --------------------------------------------------------------
+
+std::vector<commands::Term> Pack::literal_candidates(const pddl::Task& task, const pddl::State&) const {
+  std::vector<commands::Term> out;
+  const auto& cfg = spec_.language;
+  for (pddl::ActionId a = 0; a < task.num_actions(); ++a) {
+    const auto& ga = task.action(a);
+    const std::string& name = task.domain().actions[ga.schema].name;
+    const auto* rule = cfg.salient_rule(name);
+    if (!rule || rule->agent_arg < 1 || rule->agent_arg > static_cast<int>(ga.args.size())) continue;
+    if (task.object_name(ga.args[rule->agent_arg - 1]) != cfg.listener) continue;
+    commands::Term t{name, {}};
+    for (auto o : ga.args) t.args.push_back(task.object_name(o));
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+QualifierOf Pack::qualifier_of(const pddl::Task& task) const {
+  const auto& cfg = spec_.language;
+  // Static facts only: a qualifier describes what an object is.
+  auto facts = std::make_shared<std::map<std::string, std::vector<commands::Term>>>();
+  const int obj = cfg.qualifier_object_arg == 2 ? 1 : 0;
+  for (const std::string& name : cfg.qualifiers()) {
+    auto pred = task.domain().find_predicate(name);
+    if (!pred || task.domain().predicates[*pred].arg_types.size() != 2) continue;
+    const auto& types = task.domain().predicates[*pred].arg_types;
+    std::set<std::string> done;  // one value per object and predicate
+    for (pddl::ObjectId a = 0; a < task.num_objects(); ++a) {
+      if (!task.domain().is_subtype(task.problem().objects[a].type, types[0])) continue;
+      for (pddl::ObjectId b = 0; b < task.num_objects(); ++b) {
+        if (!task.domain().is_subtype(task.problem().objects[b].type, types[1])) continue;
+        auto ref = task.atom(*pred, {a, b});
+        if (ref.bit >= 0 || !ref.value) continue;
+        const std::string object = task.object_name(obj == 0 ? a : b);
+        if (!done.insert(object).second) continue;
+        (*facts)[object].push_back(commands::Term{name, {task.object_name(a), task.object_name(b)}});
+      }
+    }
+  }
+  return [facts](const std::string& object) -> std::vector<commands::Term> {
+    auto it = facts->find(object);
+    return it == facts->end() ? std::vector<commands::Term>{} : it->second;
+  };
+}
+
+std::function<bool(const std::string&)> Pack::goal_unsatisfiable(const pddl::Task&) const { return {}; }
+
+// ---- assistance options -------------------------------------------------------------
+
+namespace {
+
+// The declared rules, or one per salient action (on its focal argument).
+std::vector<OptionRule> option_rules(const PackSpec& spec) {
+  if (!spec.options.empty()) return spec.options;
+  std::vector<OptionRule> out;
+  for (const auto& r : spec.language.salient_actions) out.push_back({r.action, r.focal_arg, "", ""});
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::string> Pack::option_of(const pddl::Task& task, pddl::ActionId a, const std::string& tag) const {
+  const auto& ga = task.action(a);
+  if (ga.args.empty() || task.object_name(ga.args[0]) != spec_.roles.assistant) return std::nullopt;
+  const std::string& name = task.domain().actions[ga.schema].name;
+  for (const auto& r : option_rules(spec_)) {
+    if (r.action != name || (!r.tag.empty() && r.tag != tag)) continue;
+    if (r.object_arg > static_cast<int>(ga.args.size())) continue;
+    const pddl::ObjectId o = ga.args[r.object_arg - 1];
+    if (!r.object_type.empty() && !task.object_is_a(o, r.object_type)) continue;
+    return task.object_name(o);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> Pack::options_taken(const pddl::PlanFile& completed, const std::string& tag,
+                                             const pddl::Task* task) const {
+  std::vector<std::string> out;
+  const auto rules = option_rules(spec_);
+  for (const auto& line : completed.actions) {
+    auto e = pddl::read_one_sexpr(line.text, line.loc.file);
+    if (!e.is_list || e.items.size() < 2 || e.items[1].atom != spec_.roles.assistant) continue;
+    for (const auto& r : rules) {
+      if (r.action != e.head() || (!r.tag.empty() && r.tag != tag)) continue;
+      if (r.object_arg >= static_cast<int>(e.items.size())) continue;
+      const std::string& o = e.items[static_cast<size_t>(r.object_arg)].atom;
+      if (!r.object_type.empty() && task) {
+        auto id = task->find_object(o);
+        if (!id || !task->object_is_a(*id, r.object_type)) continue;
+      }
+      if (std::find(out.begin(), out.end(), o) == out.end()) out.push_back(o);
+      break;
+    }
+  }
+  return out;
+}
+
+bool Pack::is_option_object(const pddl::Task& task, const std::string& object, const std::string& tag) const {
+  auto id = task.find_object(object);
+  if (!id) return false;
+  for (const auto& r : option_rules(spec_)) {
+    if (!r.tag.empty() && r.tag != tag) continue;
+    std::string type = r.object_type;
+    if (type.empty()) {
+      const int schema = task.domain().find_action(r.action);
+      if (schema < 0) continue;
+      const auto& params = task.domain().actions[static_cast<size_t>(schema)].param_types;
+      if (r.object_arg > static_cast<int>(params.size())) continue;
+      type = task.domain().types[static_cast<size_t>(params[static_cast<size_t>(r.object_arg - 1)])].name;
+    }
+    if (task.object_is_a(*id, type)) return true;
+  }
+  return false;
+}
+
+// ---- showing states ---------------------------------------------------------------
+
+std::string Pack::describe_state(const pddl::Task& task, const pddl::State& s) const { return task.state_str(s); }
+
+std::string Pack::object_list(const pddl::Task& task) const {
+  const auto qualifier = qualifier_of(task);
+  std::string out;
+  for (pddl::ObjectId o = 0; o < task.num_objects(); ++o) {
+    const std::string& name = task.object_name(o);
+    if (name == spec_.roles.principal || name == spec_.roles.assistant) continue;
+    out += (out.empty() ? "" : ", ") + name;
+    std::string values;
+    for (const auto& q : qualifier(name))
+      if (q.args.size() == 2) values += (values.empty() ? "" : ", ") + (q.args[0] == name ? q.args[1] : q.args[0]);
+    if (!values.empty()) out += " (" + values + ")";
+  }
+  return out;
+}
+
+std::optional<StripsExport> Pack::export_strips(const pddl::Task&, const pddl::State&, const std::string&,
+                                                const model::CostProfile&) const {
+  return std::nullopt;
+}
+
+// ---- checking a spec against a domain ------------------------------------------------
+
+void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
+  const SourceLoc loc{spec.source.empty() ? "pack " + spec.name : spec.source, 0, 0};
+  auto fail = [&](const std::string& field, const std::string& why) { throw InputError(loc, field + ": " + why); };
+  if (spec.name != d.name)
+    fail("domain", "\"" + spec.name + "\" differs from the PDDL domain's name \"" + d.name + "\" (" + d.file + ")");
+  auto action = [&](const std::string& field, const std::string& name) {
+    const int a = d.find_action(name);
+    if (a < 0) fail(field, "the domain has no action '" + name + "'");
+    return &d.actions[static_cast<size_t>(a)];
+  };
+  auto arity_ok = [&](const std::string& field, const pddl::ActionSchema* a, int pos) {
+    if (pos < 1 || pos > static_cast<int>(a->param_types.size()))
+      fail(field, "action '" + a->name + "' has " + std::to_string(a->param_types.size()) + " parameters, not " +
+                      std::to_string(pos));
+  };
+  auto type = [&](const std::string& field, const std::string& name) {
+    if (!d.find_type(name)) fail(field, "the domain has no type '" + name + "'");
+  };
+  action("roles.noop_action", spec.roles.noop_action);
+  for (size_t i = 0; i < spec.grounding.schema_order.size(); ++i)
+    action("grounding.schema_order[" + std::to_string(i) + "]", spec.grounding.schema_order[i]);
+  if (spec.goals.source == GoalSource::Objects) type("goals.object_type", spec.goals.object_type);
+  for (size_t i = 0; i < spec.language.salient_actions.size(); ++i) {
+    const auto& r = spec.language.salient_actions[i];
+    const std::string f = "language.salient_actions[" + std::to_string(i) + "]";
+    auto* a = action(f + ".action", r.action);
+    arity_ok(f + ".agent_arg", a, r.agent_arg);
+    arity_ok(f + ".focal_arg", a, r.focal_arg);
+  }
+  for (const auto& [name, atoms] : spec.language.goal_atoms) action("language.goal_atoms." + name, name);
+  if (!spec.language.salient_actions.empty()) {
+    const auto names = spec.language.qualifiers();
+    for (size_t i = 0; i < names.size(); ++i) {
+      const std::string field = i == 0 ? "language.qualifier.predicate" : "language.qualifier.more[" + std::to_string(i - 1) + "]";
+      auto q = d.find_predicate(names[i]);
+      if (!q) fail(field, "the domain has no predicate '" + names[i] + "'");
+      if (d.predicates[*q].arg_types.size() != 2)
+        fail(field, "'" + names[i] + "' must take 2 arguments (object, value)");
+    }
+  }
+  for (size_t i = 0; i < spec.options.size(); ++i) {
+    const std::string f = "assistance_options[" + std::to_string(i) + "]";
+    auto* a = action(f + ".action", spec.options[i].action);
+    arity_ok(f + ".object_arg", a, spec.options[i].object_arg);
+    if (!spec.options[i].object_type.empty()) type(f + ".object_type", spec.options[i].object_type);
+  }
+  if (!spec.inference.rollout.speaker_flag.empty() && !d.find_predicate(spec.inference.rollout.speaker_flag))
+    fail("inference.rollout.speaker_flag", "the domain has no predicate '" + spec.inference.rollout.speaker_flag + "'");
+  for (size_t i = 0; i < spec.literal.variable_types.size(); ++i)
+    type("literal_listener.variable_types[" + std::to_string(i) + "]", spec.literal.variable_types[i]);
+  for (const auto& r : spec.cost_profiles)
+    for (const auto& p : r.profiles)
+      for (const auto& [key, cost] : p.costs)
+        action("cost_profiles: profile " + p.name + ": costs." + key.first, key.second);
+}
+
+// ---- finding a pack -----------------------------------------------------------------
+
+PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
+  std::optional<PackSpec> spec;
+  bool declared = true;
+  if (!dir.empty() && fs::exists(fs::path(dir) / "pack.json")) {
+    spec = load_pack_spec((fs::path(dir) / "pack.json").string());
+  } else {
+    std::error_code ec;
+    const fs::path shared = fs::path(util::data_dir()) / "domains" / domain.name / "pack.json";
+    if (fs::exists(shared, ec)) spec = load_pack_spec(shared.string());
+    else spec = builtin_pack_spec(domain.name);
+  }
+  if (!spec) {
+    // The generic pack: every default (docs/domains.md).
+    PackSpec s;
+    s.name = domain.name;
+    s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
+    s.language.domain = s.name;
+    s.language.salient_actions.clear();
+    s.fewshot.domain = s.name;
+    spec = std::move(s);
+    declared = false;  // nothing to check: `clips plan` works on any domain
+  }
+  if (declared) check_pack_against(*spec, domain);
+  return make_pack(std::move(*spec));
+}
+
+}  // namespace clips::domains

@@ -1,0 +1,341 @@
+// Reading pack.json into a PackSpec. Every field is optional except "domain";
+// unknown fields and bad values are errors naming the file and the field.
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "domains/pack.hpp"
+#include "util/error.hpp"
+
+namespace clips::domains {
+
+namespace {
+
+using nlohmann::json;
+
+class Fields {
+ public:
+  explicit Fields(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& why) const {
+    throw InputError(SourceLoc{source_, 0, 0}, field + ": " + why);
+  }
+  // Rejects keys outside `known` (a misspelt field would otherwise be ignored).
+  void only(const json& obj, const std::string& path, const std::set<std::string>& known) const {
+    if (!obj.is_object()) fail(path.empty() ? "(top level)" : path, "expected an object");
+    for (const auto& [key, value] : obj.items())
+      if (!known.contains(key)) {
+        std::string list;
+        for (const auto& k : known)
+          if (k != "comment") list += (list.empty() ? "" : ", ") + k;
+        fail(join(path, key), "unknown field (known: " + list + ")");
+      }
+  }
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+  std::string text(const json& v, const std::string& field, bool allow_empty = false) const {
+    if (!v.is_string() || (!allow_empty && v.get<std::string>().empty()))
+      fail(field, allow_empty ? "expected a string" : "expected a non-empty string");
+    return v.get<std::string>();
+  }
+  int integer(const json& v, const std::string& field, long long lo, long long hi) const {
+    if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+      fail(field, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+    return static_cast<int>(v.get<long long>());
+  }
+  double number(const json& v, const std::string& field, double lo, bool lo_open) const {
+    if (!v.is_number()) fail(field, "expected a number");
+    const double x = v.get<double>();
+    if (!(lo_open ? x > lo : x >= lo) || !std::isfinite(x))
+      fail(field, "expected a finite number " + std::string(lo_open ? "> " : ">= ") + std::to_string(lo));
+    return x;
+  }
+  bool boolean(const json& v, const std::string& field) const {
+    if (!v.is_boolean()) fail(field, "expected true or false");
+    return v.get<bool>();
+  }
+  std::vector<std::string> strings(const json& v, const std::string& field) const {
+    if (!v.is_array()) fail(field, "expected an array of strings");
+    std::vector<std::string> out;
+    for (size_t i = 0; i < v.size(); ++i) out.push_back(text(v[i], field + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+  std::vector<int> indices(const json& v, const std::string& field) const {
+    if (!v.is_array()) fail(field, "expected an array of integers");
+    std::vector<int> out;
+    for (size_t i = 0; i < v.size(); ++i) out.push_back(integer(v[i], field + "[" + std::to_string(i) + "]", 0, 1 << 30));
+    return out;
+  }
+  template <class E>
+  E choice(const json& v, const std::string& field, const std::vector<std::pair<const char*, E>>& options) const {
+    if (v.is_string())
+      for (const auto& [name, e] : options)
+        if (v.get<std::string>() == name) return e;
+    std::string allowed;
+    for (const auto& [name, e] : options) allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+    fail(field, "expected one of: " + allowed);
+  }
+  const std::string& source() const { return source_; }
+
+ private:
+  std::string source_;
+};
+
+model::CostProfile read_profile(const Fields& f, const json& v, const std::string& path) {
+  f.only(v, path, {"name", "default", "costs", "comment"});
+  model::CostProfile p;
+  if (!v.contains("name")) f.fail(path + ".name", "missing");
+  p.name = f.text(v["name"], path + ".name");
+  if (v.contains("default")) p.default_cost = f.number(v["default"], path + ".default", 0, false);
+  if (v.contains("costs")) {
+    const json& c = v["costs"];
+    if (!c.is_object()) f.fail(path + ".costs", "expected an object {\"<agent>\": {\"<action>\": cost}}");
+    for (const auto& [agent, actions] : c.items()) {
+      const std::string ap = path + ".costs." + agent;
+      if (!actions.is_object()) f.fail(ap, "expected an object {\"<action>\": cost}");
+      for (const auto& [action, cost] : actions.items())
+        p.costs[{agent, action}] = f.number(cost, ap + "." + action, 0, false);
+    }
+  }
+  return p;
+}
+
+}  // namespace
+
+PackSpec parse_pack_spec(const std::string& json_text, const std::string& source) {
+  json doc;
+  try {
+    doc = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw InputError(SourceLoc{source, 0, 0}, std::string("invalid JSON: ") + e.what());
+  }
+  const Fields f(source);
+  f.only(doc, "",
+         {"domain", "code", "grounding", "roles", "goals", "cost_profiles", "default_cost_profile", "inference", "language", "fewshot",
+          "literal_listener", "assistance_options", "max_utterances_per_plan", "plan_tags", "scene", "rules_text",
+          "comment"});
+  PackSpec s;
+  s.source = source;
+  if (!doc.contains("domain")) f.fail("domain", "missing (the PDDL domain name the pack is for)");
+  s.name = f.text(doc["domain"], "domain");
+  if (doc.contains("code")) s.code = f.text(doc["code"], "code", true);
+  s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
+
+  if (doc.contains("grounding")) {
+    const json& g = doc["grounding"];
+    f.only(g, "grounding", {"keep_dynamic", "schema_order", "first_param_fastest", "objects_by_name", "comment"});
+    if (g.contains("keep_dynamic"))
+      for (auto& p : f.strings(g["keep_dynamic"], "grounding.keep_dynamic")) s.grounding.keep_dynamic.insert(p);
+    if (g.contains("schema_order")) s.grounding.schema_order = f.strings(g["schema_order"], "grounding.schema_order");
+    if (g.contains("first_param_fastest"))
+      s.grounding.first_param_fastest = f.boolean(g["first_param_fastest"], "grounding.first_param_fastest");
+    if (g.contains("objects_by_name"))
+      s.grounding.objects_by_name = f.boolean(g["objects_by_name"], "grounding.objects_by_name");
+  }
+
+  if (doc.contains("roles")) {
+    const json& r = doc["roles"];
+    f.only(r, "roles", {"principal", "assistant", "noop_action", "horizon", "noop_cost",
+                        "principal_follows_completed_plan", "comment"});
+    if (r.contains("principal")) s.roles.principal = f.text(r["principal"], "roles.principal");
+    if (r.contains("assistant")) s.roles.assistant = f.text(r["assistant"], "roles.assistant");
+    if (r.contains("noop_action")) s.roles.noop_action = f.text(r["noop_action"], "roles.noop_action");
+    if (r.contains("horizon")) s.roles.horizon = f.integer(r["horizon"], "roles.horizon", 1, 100000);
+    if (r.contains("noop_cost")) s.roles.noop_cost = f.number(r["noop_cost"], "roles.noop_cost", 0, false);
+    if (r.contains("principal_follows_completed_plan"))
+      s.roles.principal_follows_completed_plan =
+          f.boolean(r["principal_follows_completed_plan"], "roles.principal_follows_completed_plan");
+  }
+  if (s.roles.principal == s.roles.assistant) f.fail("roles.assistant", "must differ from roles.principal");
+
+  if (doc.contains("goals")) {
+    const json& g = doc["goals"];
+    f.only(g, "goals", {"source", "object_type", "condition", "true_goal", "comment"});
+    if (g.contains("source"))
+      s.goals.source = f.choice<GoalSource>(g["source"], "goals.source",
+                                            {{"goal-sets", GoalSource::GoalSets},
+                                             {"objects", GoalSource::Objects},
+                                             {"problem-goal", GoalSource::ProblemGoal}});
+    if (g.contains("object_type")) s.goals.object_type = f.text(g["object_type"], "goals.object_type");
+    if (g.contains("condition")) s.goals.condition = f.text(g["condition"], "goals.condition");
+    if (s.goals.source == GoalSource::Objects) {
+      if (s.goals.object_type.empty()) f.fail("goals.object_type", "missing (needed by source \"objects\")");
+      if (s.goals.condition.find("{}") == std::string::npos)
+        f.fail("goals.condition", "needs a condition template with {} for the object, e.g. \"(has human {})\"");
+    }
+    // Where goals are labelled (goal sets), plans name their goal; otherwise
+    // the completion says which goal it reached.
+    s.goals.true_goal = s.goals.source == GoalSource::GoalSets ? TrueGoalRule::PlanTag : TrueGoalRule::CompletionReaches;
+    if (g.contains("true_goal"))
+      s.goals.true_goal = f.choice<TrueGoalRule>(g["true_goal"], "goals.true_goal",
+                                                 {{"plan-tag", TrueGoalRule::PlanTag},
+                                                  {"completion-reaches", TrueGoalRule::CompletionReaches},
+                                                  {"last-action-object", TrueGoalRule::LastActionObject}});
+  }
+
+  if (doc.contains("cost_profiles")) {
+    const json& c = doc["cost_profiles"];
+    if (!c.is_array() || c.empty()) f.fail("cost_profiles", "expected a non-empty array of {tag, profiles, true_index}");
+    for (size_t i = 0; i < c.size(); ++i) {
+      const std::string path = "cost_profiles[" + std::to_string(i) + "]";
+      f.only(c[i], path, {"tag", "profiles", "true_index", "comment"});
+      ProfileRule rule;
+      if (c[i].contains("tag")) rule.tag = f.text(c[i]["tag"], path + ".tag", true);
+      if (!c[i].contains("profiles") || !c[i]["profiles"].is_array() || c[i]["profiles"].empty())
+        f.fail(path + ".profiles", "expected a non-empty array of profiles");
+      for (size_t k = 0; k < c[i]["profiles"].size(); ++k)
+        rule.profiles.push_back(read_profile(f, c[i]["profiles"][k], path + ".profiles[" + std::to_string(k) + "]"));
+      if (c[i].contains("true_index"))
+        rule.true_index = f.integer(c[i]["true_index"], path + ".true_index", 0,
+                                    static_cast<long long>(rule.profiles.size()) - 1);
+      for (const auto& earlier : s.cost_profiles)
+        if (earlier.tag == rule.tag) f.fail(path + ".tag", "a second rule for tag \"" + rule.tag + "\"");
+      s.cost_profiles.push_back(std::move(rule));
+    }
+  }
+
+  if (doc.contains("default_cost_profile"))
+    s.default_cost_profile = f.text(doc["default_cost_profile"], "default_cost_profile");
+
+  if (doc.contains("inference")) {
+    const json& in = doc["inference"];
+    f.only(in, "inference", {"heuristic", "search", "temperature_prior", "rollout", "comment"});
+    if (in.contains("heuristic")) s.inference.heuristic = f.text(in["heuristic"], "inference.heuristic");
+    if (in.contains("search")) s.inference.search = f.boolean(in["search"], "inference.search");
+    if (in.contains("temperature_prior")) {
+      const json& t = in["temperature_prior"];
+      f.only(t, "inference.temperature_prior", {"shape", "scale", "comment"});
+      if (t.contains("shape"))
+        s.inference.temperature_shape = f.number(t["shape"], "inference.temperature_prior.shape", 0, true);
+      if (t.contains("scale"))
+        s.inference.temperature_scale = f.number(t["scale"], "inference.temperature_prior.scale", 0, true);
+    }
+    if (in.contains("rollout")) {
+      const json& r = in["rollout"];
+      f.only(r, "inference.rollout", {"kind", "speaker_flag", "comment"});
+      if (r.contains("kind"))
+        s.inference.rollout.kind = f.choice<RolloutSettings::Kind>(
+            r["kind"], "inference.rollout.kind",
+            {{"greedy", RolloutSettings::Kind::Greedy}, {"weighted-astar", RolloutSettings::Kind::WeightedAStar}});
+      if (r.contains("speaker_flag"))
+        s.inference.rollout.speaker_flag = f.text(r["speaker_flag"], "inference.rollout.speaker_flag");
+    }
+  }
+
+  // The language block is the command model's own format (language_config.hpp).
+  s.language = commands::LanguageConfig{};
+  s.language.domain = s.name;
+  s.language.speaker = s.roles.principal;
+  s.language.listener = s.roles.assistant;
+  if (doc.contains("language")) {
+    json lang = doc["language"];
+    if (!lang.is_object()) f.fail("language", "expected an object");
+    if (lang.contains("domain")) f.fail("language.domain", "not allowed here (the pack's \"domain\" is used)");
+    lang["domain"] = s.name;
+    if (!lang.contains("speaker")) lang["speaker"] = {{"object", s.roles.principal}, {"pronoun", "me"}};
+    if (!lang.contains("listener")) lang["listener"] = {{"object", s.roles.assistant}, {"pronoun", "you"}};
+    try {
+      s.language = commands::parse_language_config(lang.dump(), source);
+    } catch (const InputError& e) {
+      // Its messages name the key inside the block; say which block.
+      std::string what = e.what();
+      const std::string prefix = source + ": ";
+      if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+      f.fail("language", what);
+    }
+    if (s.language.speaker != s.roles.principal)
+      f.fail("language.speaker.object", "\"" + s.language.speaker + "\" differs from roles.principal \"" +
+                                            s.roles.principal + "\"");
+    if (s.language.listener != s.roles.assistant)
+      f.fail("language.listener.object", "\"" + s.language.listener + "\" differs from roles.assistant \"" +
+                                             s.roles.assistant + "\"");
+  }
+
+  if (doc.contains("fewshot")) {
+    const json& fs = doc["fewshot"];
+    f.only(fs, "fewshot", {"file", "domain", "pragmatic_order", "literal_order", "comment"});
+    if (fs.contains("file")) s.fewshot.file = f.text(fs["file"], "fewshot.file");
+    if (fs.contains("domain")) s.fewshot.domain = f.text(fs["domain"], "fewshot.domain");
+    if (fs.contains("pragmatic_order")) s.fewshot.pragmatic_order = f.indices(fs["pragmatic_order"], "fewshot.pragmatic_order");
+    if (fs.contains("literal_order")) s.fewshot.literal_order = f.indices(fs["literal_order"], "fewshot.literal_order");
+  }
+  if (s.fewshot.domain.empty()) s.fewshot.domain = s.name;
+
+  if (doc.contains("literal_listener")) {
+    const json& l = doc["literal_listener"];
+    f.only(l, "literal_listener", {"enabled", "temperature", "methods", "planning_heuristic", "variable_types", "comment"});
+    if (l.contains("variable_types"))
+      s.literal.variable_types = f.strings(l["variable_types"], "literal_listener.variable_types");
+    if (l.contains("planning_heuristic"))
+      s.literal.planning_heuristic = f.text(l["planning_heuristic"], "literal_listener.planning_heuristic");
+    if (l.contains("enabled")) s.literal.enabled = f.boolean(l["enabled"], "literal_listener.enabled");
+    if (l.contains("temperature"))
+      s.literal.temperature = f.number(l["temperature"], "literal_listener.temperature", 0, true);
+    if (l.contains("methods")) {
+      s.literal.methods = f.strings(l["methods"], "literal_listener.methods");
+      for (size_t i = 0; i < s.literal.methods.size(); ++i) {
+        const auto& m = s.literal.methods[i];
+        if (m != "literal" && m != "literal_efficient" && m != "literal_naive")
+          f.fail("literal_listener.methods[" + std::to_string(i) + "]",
+                 "expected literal, literal_efficient or literal_naive, got \"" + m + "\"");
+      }
+    }
+  }
+
+  if (doc.contains("assistance_options")) {
+    const json& o = doc["assistance_options"];
+    if (!o.is_array()) f.fail("assistance_options", "expected an array of {action, object_arg, object_type, tag}");
+    for (size_t i = 0; i < o.size(); ++i) {
+      const std::string path = "assistance_options[" + std::to_string(i) + "]";
+      f.only(o[i], path, {"action", "object_arg", "object_type", "tag", "comment"});
+      OptionRule r;
+      if (!o[i].contains("action")) f.fail(path + ".action", "missing");
+      r.action = f.text(o[i]["action"], path + ".action");
+      if (!o[i].contains("object_arg")) f.fail(path + ".object_arg", "missing (1-based argument position)");
+      r.object_arg = f.integer(o[i]["object_arg"], path + ".object_arg", 2, 64);
+      if (o[i].contains("object_type")) r.object_type = f.text(o[i]["object_type"], path + ".object_type");
+      if (o[i].contains("tag")) r.tag = f.text(o[i]["tag"], path + ".tag", true);
+      s.options.push_back(r);
+    }
+  }
+  if (doc.contains("max_utterances_per_plan"))
+    s.max_utterances_per_plan = f.integer(doc["max_utterances_per_plan"], "max_utterances_per_plan", 0, 1 << 20);
+  if (doc.contains("plan_tags")) s.plan_tags = f.strings(doc["plan_tags"], "plan_tags");
+  if (doc.contains("scene"))
+    s.scene = f.choice<SceneKind>(doc["scene"], "scene",
+                                  {{"text", SceneKind::Text}, {"grid", SceneKind::Grid}, {"cards", SceneKind::Cards}});
+  if (doc.contains("rules_text")) s.rules_text = f.text(doc["rules_text"], "rules_text");
+  return s;
+}
+
+PackSpec load_pack_spec(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot read the pack file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_pack_spec(ss.str(), path);
+}
+
+std::string to_string(GoalSource s) {
+  switch (s) {
+    case GoalSource::GoalSets: return "goal-sets";
+    case GoalSource::Objects: return "objects";
+    case GoalSource::ProblemGoal: return "problem-goal";
+  }
+  return "?";
+}
+
+std::string to_string(SceneKind s) {
+  switch (s) {
+    case SceneKind::Text: return "text";
+    case SceneKind::Grid: return "grid";
+    case SceneKind::Cards: return "cards";
+  }
+  return "?";
+}
+
+}  // namespace clips::domains

@@ -1,0 +1,212 @@
+#include "eval/methods.hpp"
+
+#include <functional>
+
+#include "assist/literal.hpp"
+#include "eval/experiment.hpp"
+#include "eval/metrics.hpp"
+#include "language/commands/utterance_merge.hpp"
+#include "language/listener.hpp"
+#include "util/error.hpp"
+
+namespace clips::eval {
+
+using inference::Modality;
+
+void score_assistance(const PlanContext& ctx, const assist::AssistResult& a, MethodResult& r) {
+  r.options = a.options;
+  r.precision = assist_precision(a.options, ctx.true_options);
+  r.recall = assist_recall(a.options, ctx.true_options);
+  r.plan_length = a.plan_length;
+  r.human_cost = a.human_cost;
+  r.plan_cost = a.plan_cost;
+  r.goal_success = a.success;
+  r.decision_seconds = a.decision_seconds;
+  r.actions = a.plan;
+  // Printed once, here: the rest of the pipeline keeps action ids.
+  for (auto act : a.plan) r.plan.push_back(ctx.task->action_name(act));
+}
+
+namespace {
+
+// An OnlineBelief over a copy of the inference belief, read in one modality.
+class OnlineAdapter : public assist::OnlineBelief {
+ public:
+  OnlineAdapter(const inference::Belief& b, Modality m) : belief_(b), modality_(m) { rebuild(); }
+  void observe(const pddl::State& pre, pddl::ActionId a) override {
+    // Paper semantics for language-only (spec 13.10): no action evidence online.
+    if (modality_ == Modality::UtteranceOnly) return;
+    belief_.observe(a, pre);
+    rebuild();
+  }
+  std::vector<assist::Hypothesis>& hypotheses() override { return hyps_; }
+
+ private:
+  void rebuild() {
+    auto post = belief_.posterior(modality_);
+    hyps_.clear();
+    for (size_t h = 0; h < post.hypotheses.size(); ++h)
+      hyps_.push_back({post.hypotheses[h], std::shared_ptr<search::Policy>(&belief_.policies()[h], [](auto*) {})});
+  }
+  inference::Belief belief_;
+  Modality modality_;
+  std::vector<assist::Hypothesis> hyps_;
+};
+
+enum class AssistPolicy { QmdpOffline, QmdpOnline, PiBar };
+
+// Goal inference in one modality, then one assistance policy.
+class InferenceMethod : public Method {
+ public:
+  InferenceMethod(std::string name, Modality modality, AssistPolicy policy)
+      : Method(std::move(name)), modality_(modality), policy_(policy) {}
+
+  void run(const PlanContext& ctx, MethodResult& r) const override {
+    const inference::InferenceRun& inf = ctx.inference;
+    const inference::Belief& belief = *inf.belief;
+    const auto& post = inf.final_posterior(modality_);
+    r.p_true_goal = post.goals.at(inf.true_goal);
+    r.goal_posterior = post.goals;
+    for (const auto& st : inf.steps) r.posterior_steps.push_back(st[modality_].goals);
+    std::vector<assist::Hypothesis> hyps;
+    for (size_t h = 0; h < post.hypotheses.size(); ++h)
+      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h])});
+    switch (policy_) {
+      case AssistPolicy::QmdpOffline:
+        score_assistance(ctx, assist::qmdp_offline(ctx.setup, hyps, ctx.true_hypothesis), r);
+        break;
+      case AssistPolicy::PiBar:
+        score_assistance(ctx, assist::pibar_mdp(ctx.setup, hyps, ctx.true_hypothesis), r);
+        break;
+      case AssistPolicy::QmdpOnline: {
+        OnlineAdapter online(belief, modality_);
+        const domains::Pack& pack = ctx.dataset.pack();
+        std::shared_ptr<heuristics::Heuristic> h = pack.make_heuristic(pack.spec().inference.heuristic, *ctx.task);
+        if (!ctx.setup.refine) h->prepare(*ctx.true_spec, ctx.setup.start);
+        score_assistance(ctx, assist::qmdp_online(ctx.setup, online, ctx.true_spec, h), r);
+        break;
+      }
+    }
+  }
+
+ private:
+  Modality modality_;
+  AssistPolicy policy_;
+};
+
+// The literal listener: the most probable readings of the instruction, then
+// planning for them (efficient: as lifted goals; naive: grounded one by one).
+class LiteralMethod : public Method {
+ public:
+  LiteralMethod(std::string name, bool naive) : Method(std::move(name)), naive_(naive) {}
+
+  void run(const PlanContext& ctx, MethodResult& r) const override {
+    const data::PlanRecord& p = ctx.plan;
+    const pddl::Task& task = *ctx.task;
+    const domains::Pack& pack = ctx.dataset.pack();
+    const pddl::State& s_T = ctx.setup.start;
+    auto lsetup = language::literal_listener_setup(ctx.dataset.pack_ptr());
+    std::string utt = p.literal_utterance ? *p.literal_utterance
+                      : p.observed.utterances.empty() ? std::string() : p.observed.utterances.back().text;
+    if (utt.empty()) throw InputError("plan " + p.id + " has no utterance for the literal listener");
+    auto ranked = language::literal_listener(task, s_T, utt, lsetup, ctx.lm);
+    if (p.observed.utterances.size() > 1) {
+      // Several utterances (VH spec 7.3): every one is heard in s_T; rankings
+      // are merged (most probable prefix of the first, then each later one).
+      auto to_cmd = [](const language::ListenerResult& lr) {
+        std::vector<commands::RankedCommand> v;
+        for (auto& c : lr.commands) v.push_back({c.command, c.prob, c.log_likelihood});
+        return v;
+      };
+      auto kept = commands::probable_prefix(
+          to_cmd(language::literal_listener(task, s_T, p.observed.utterances[0].text, lsetup, ctx.lm)));
+      for (size_t u = 1; u < p.observed.utterances.size(); ++u)
+        kept = commands::combine_utterance_rankings(
+            kept, to_cmd(language::literal_listener(task, s_T, p.observed.utterances[u].text, lsetup, ctx.lm)));
+      ranked.commands.clear();
+      for (auto& k : kept) ranked.commands.push_back({k.command, k.score, k.probability});
+    }
+    assist::LiteralSetup ls;
+    ls.world = ctx.setup;
+    ls.truth = ctx.true_spec;
+    ls.config = lsetup.config;
+    auto task_ptr = ctx.task;
+    ls.make_heuristic = [&pack, task_ptr]() -> std::shared_ptr<heuristics::Heuristic> {
+      return pack.make_heuristic(pack.spec().literal.planning_heuristic, *task_ptr);
+    };
+    ls.goal_unsatisfiable = pack.goal_unsatisfiable(task);
+    ls.is_option = [&pack, task_ptr, tag = p.tag](const std::string& o) {
+      return pack.is_option_object(*task_ptr, o, tag);
+    };
+    // Objects per variable type, for grounding lifted commands (naive).
+    std::vector<std::string> var_types = pack.spec().literal.variable_types;
+    if (var_types.empty())
+      for (const auto& t : task.domain().types) var_types.push_back(t.name);
+    for (const auto& type : var_types)
+      for (auto o : task.objects_of_type(type)) ls.objects_by_type[type].push_back(task.object_name(o));
+    // The static qualifier facts the naive grounding checks.
+    for (const std::string& qual : pack.language().qualifiers()) {
+      auto qpred = task.domain().find_predicate(qual);
+      if (!qpred || task.domain().predicates[*qpred].arg_types.size() != 2) continue;
+      const auto& types = task.domain().predicates[*qpred].arg_types;
+      for (pddl::ObjectId a = 0; a < task.num_objects(); ++a) {
+        if (!task.domain().is_subtype(task.problem().objects[a].type, types[0])) continue;
+        for (pddl::ObjectId b = 0; b < task.num_objects(); ++b)
+          if (task.domain().is_subtype(task.problem().objects[b].type, types[1]) && task.atom(*qpred, {a, b}).value)
+            ls.facts.push_back(commands::Term{qual, {task.object_name(a), task.object_name(b)}});
+      }
+    }
+    const uint64_t seed = ctx.options.seed ^ std::hash<std::string>{}(p.id + "/" + name());
+    auto lr = assist::literal_assist(ls, ranked, naive_, seed);
+    score_assistance(ctx, lr.result, r);
+  }
+
+ private:
+  bool naive_;
+};
+
+// A multimodal chat model reads a picture of s_T and the instruction; its
+// failures (endpoint, answer) stay with this method.
+class MultimodalMethod : public Method {
+ public:
+  MultimodalMethod() : Method("multimodal") {}
+  void run(const PlanContext& ctx, MethodResult& r) const override {
+    try {
+      const inference::Belief& belief = *ctx.inference.belief;
+      auto mm = run_multimodal(ctx.dataset, ctx.plan, ctx.setup, ctx.inference.goals,
+                               belief.policies()[ctx.true_hypothesis], ctx.options.multimodal);
+      r.goal_posterior = mm.answer.goal_posterior;
+      r.p_true_goal = r.goal_posterior.at(ctx.inference.true_goal);
+      r.notes = mm.notes;
+      score_assistance(ctx, mm.result, r);
+    } catch (const std::exception& e) {
+      r.error = e.what();
+      r.failure = std::current_exception();
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_method(const std::string& name) {
+  const auto slash = name.find('/');
+  const std::string base = name.substr(0, slash);
+  const std::string how = slash == std::string::npos ? "qmdp_offline" : name.substr(slash + 1);
+  if (base == "clips" || base == "lang_only" || base == "action_only") {
+    const Modality m = base == "clips" ? Modality::Both : base == "lang_only" ? Modality::UtteranceOnly : Modality::ActionOnly;
+    AssistPolicy p;
+    if (how == "qmdp_offline") p = AssistPolicy::QmdpOffline;
+    else if (how == "qmdp_online") p = AssistPolicy::QmdpOnline;
+    else if (how == "pibar") p = AssistPolicy::PiBar;
+    else throw InputError("unknown assistance method '" + how + "' (known: qmdp_offline, qmdp_online, pibar)");
+    return std::make_unique<InferenceMethod>(name, m, p);
+  }
+  if (slash == std::string::npos) {
+    if (base == "literal" || base == "literal_efficient") return std::make_unique<LiteralMethod>(name, false);
+    if (base == "literal_naive") return std::make_unique<LiteralMethod>(name, true);
+    if (base == "multimodal") return std::make_unique<MultimodalMethod>();
+  }
+  throw InputError("unknown method '" + name + "'");
+}
+
+}  // namespace clips::eval

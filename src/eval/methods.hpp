@@ -1,0 +1,61 @@
+#pragma once
+// The methods `clips bench` compares, as objects behind one interface: each
+// takes the plan's shared work (one inference run in three modalities, the
+// assistance set-up, the true specification) and fills in its result row.
+//
+//   clips | lang_only | action_only          inference in one modality, then
+//     [/qmdp_offline | /qmdp_online | /pibar]  an assistance policy (default offline Q_MDP)
+//   literal_efficient | literal_naive | literal   the literal listener (clips-spec 9)
+//   multimodal                                    a multimodal chat model (issue 8)
+//
+// Method names are an interface (results.csv, summary.json): keep them stable.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assist/assist.hpp"
+#include "data/dataset.hpp"
+#include "eval/multimodal.hpp"
+#include "inference/belief.hpp"
+#include "language/lm/language_model.hpp"
+
+namespace clips::eval {
+
+struct MethodResult;
+struct ExperimentOptions;
+
+// What every method of one plan shares: computed once by evaluate_plan.
+struct PlanContext {
+  const data::Dataset& dataset;
+  const data::PlanRecord& plan;
+  lm::LanguageModel& lm;
+  const ExperimentOptions& options;
+  std::shared_ptr<const pddl::Task> task;
+  const inference::InferenceRun& inference;
+  int true_hypothesis = -1;
+  std::shared_ptr<const model::Specification> true_spec;
+  const assist::AssistSetup& setup;  // the assistance episode from s_T
+  const std::vector<std::string>& true_options;  // what the completed plan's assistant did
+};
+
+class Method {
+ public:
+  virtual ~Method() = default;
+  const std::string& name() const { return name_; }
+  // Fills in `r` (goal posterior, assistance run); throws on input errors.
+  virtual void run(const PlanContext& ctx, MethodResult& r) const = 0;
+
+ protected:
+  explicit Method(std::string name) : name_(std::move(name)) {}
+
+ private:
+  std::string name_;
+};
+
+// The method of a name (see above); InputError for an unknown one.
+std::unique_ptr<Method> make_method(const std::string& name);
+
+// The assistance run's metrics and actions into a result row.
+void score_assistance(const PlanContext& ctx, const assist::AssistResult& a, MethodResult& r);
+
+}  // namespace clips::eval

@@ -1,0 +1,245 @@
+// Domain packs: reading pack.json (every error names the field), the
+// compiled-in packs of the paper domains, and what a pack derives from its
+// data (goals, true goals, profiles, options, candidates).
+#include "domains/pack.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "data/dataset.hpp"
+#include "language/commands/term.hpp"
+#include "pddl/parser.hpp"
+#include "util/error.hpp"
+
+namespace clips::domains {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string error_of(const std::string& json) {
+  try {
+    parse_pack_spec(json, "t/pack.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_same(const commands::LanguageConfig& a, const commands::LanguageConfig& b) {
+  EXPECT_EQ(a.domain, b.domain);
+  ASSERT_EQ(a.salient_actions.size(), b.salient_actions.size());
+  for (std::size_t i = 0; i < a.salient_actions.size(); ++i) {
+    EXPECT_EQ(a.salient_actions[i].action, b.salient_actions[i].action);
+    EXPECT_EQ(a.salient_actions[i].agent_arg, b.salient_actions[i].agent_arg);
+    EXPECT_EQ(a.salient_actions[i].focal_arg, b.salient_actions[i].focal_arg);
+  }
+  EXPECT_EQ(a.qualifier, b.qualifier);
+  EXPECT_EQ(a.qualifier_object_arg, b.qualifier_object_arg);
+  EXPECT_EQ(a.speaker, b.speaker);
+  EXPECT_EQ(a.listener, b.listener);
+  EXPECT_EQ(a.speaker_pronoun, b.speaker_pronoun);
+  EXPECT_EQ(a.listener_pronoun, b.listener_pronoun);
+  EXPECT_EQ(a.max_command_actions, b.max_command_actions);
+  EXPECT_EQ(a.max_action_types, b.max_action_types);
+  EXPECT_EQ(a.max_qualifier_values_per_action_type, b.max_qualifier_values_per_action_type);
+  EXPECT_EQ(a.speaker_actions, b.speaker_actions);
+  EXPECT_EQ(a.exclude_chains, b.exclude_chains);
+  EXPECT_EQ(a.paper_speaker_actions, b.paper_speaker_actions);
+  EXPECT_EQ(a.paper_exclude_chains, b.paper_exclude_chains);
+  EXPECT_EQ(a.variable_naming, b.variable_naming);
+  EXPECT_EQ(a.printed_form, b.printed_form);
+  EXPECT_EQ(a.goal_atoms, b.goal_atoms);
+  EXPECT_EQ(a.goal_variables, b.goal_variables);
+}
+
+// The paper packs' language blocks are the command models the paper's
+// numbers were measured with (language_config.cpp keeps them as fixtures).
+TEST(BuiltinPacks, LanguageBlocksEqualThePaperCommandModels) {
+  expect_same(builtin_pack_spec("doors-keys-gems")->language, commands::doors_keys_gems_language());
+  expect_same(builtin_pack_spec("virtual-home")->language, commands::virtual_home_language());
+}
+
+// The compiled-in copy is the shipped file: the shipped file parses to the same spec.
+TEST(BuiltinPacks, CompiledCopiesEqualTheShippedFiles) {
+  for (const auto& name : builtin_pack_names()) {
+    const PackSpec shipped = load_pack_spec(CLIPS_SOURCE_DIR "/data/domains/" + name + "/pack.json");
+    const PackSpec built = *builtin_pack_spec(name);
+    expect_same(shipped.language, built.language);
+    EXPECT_EQ(shipped.roles.assistant, built.roles.assistant);
+    EXPECT_EQ(shipped.inference.heuristic, built.inference.heuristic);
+    EXPECT_EQ(shipped.cost_profiles.size(), built.cost_profiles.size());
+    EXPECT_EQ(shipped.rules_text, built.rules_text);
+  }
+  EXPECT_EQ(builtin_pack_names(), (std::vector<std::string>{"doors-keys-gems", "virtual-home"}));
+}
+
+TEST(BuiltinPacks, PaperSettings) {
+  auto dkg = builtin_pack("doors-keys-gems");
+  EXPECT_EQ(dkg->roles().principal, "human");
+  EXPECT_EQ(dkg->roles().noop_cost, 0.6);
+  EXPECT_EQ(dkg->spec().inference.heuristic, "dkg-mst");
+  EXPECT_EQ(dkg->default_admissible_heuristic(), "dkg-dist");
+  // keys {C3, C4}, doors {C1, C2}, each equal to the paper's profile.
+  auto keys = dkg->profiles_for("keys");
+  ASSERT_EQ(keys.profiles.size(), 2u);
+  EXPECT_EQ(keys.profiles[0].name, "C3");
+  EXPECT_EQ(keys.profiles[0].costs, model::dkg_profile(3).costs);
+  EXPECT_EQ(dkg->profiles_for("doors").profiles[1].costs, model::dkg_profile(2).costs);
+  EXPECT_THROW(dkg->check_plan_tag("gems", "1.1.gems"), InputError);
+  EXPECT_EQ(dkg->cost_profile("2").costs, model::dkg_profile(2).costs);
+  auto vh = builtin_pack("virtual-home");
+  EXPECT_EQ(vh->roles().assistant, "helper");
+  EXPECT_EQ(vh->roles().horizon, 50);
+  EXPECT_FALSE(vh->spec().inference.search);
+  EXPECT_EQ(vh->profiles_for("anything").profiles.size(), 1u);
+  EXPECT_EQ(vh->spec().grounding.schema_order.front(), "grab");
+  EXPECT_THROW(builtin_pack("sokoban"), InputError);
+}
+
+TEST(PackFile, MinimalFileTakesTheDefaults) {
+  const PackSpec s = parse_pack_spec(R"j({"domain": "kitchen"})j", "t/pack.json");
+  EXPECT_EQ(s.name, "kitchen");
+  EXPECT_EQ(s.roles.principal, "human");
+  EXPECT_EQ(s.roles.assistant, "robot");
+  EXPECT_EQ(s.goals.source, GoalSource::ProblemGoal);
+  EXPECT_EQ(s.inference.heuristic, "hff");
+  EXPECT_TRUE(s.cost_profiles.empty());
+  EXPECT_EQ(s.scene, SceneKind::Text);
+  EXPECT_TRUE(s.grounding.keep_dynamic.count("frozen"));
+}
+
+TEST(PackFile, ErrorsNameTheFileAndTheField) {
+  EXPECT_NE(error_of("{").find("t/pack.json"), std::string::npos);
+  EXPECT_NE(error_of("{").find("invalid JSON"), std::string::npos);
+  EXPECT_NE(error_of(R"j({"roles": {}})j").find("domain: missing"), std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "colour": 1})j").find("colour: unknown field"), std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"horizon": 0}})j").find("roles.horizon"), std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"principal": "a", "assistant": "a"}})j").find("roles.assistant"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "goals": {"source": "somewhere"}})j").find("goals.source: expected one of"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "goals": {"source": "objects", "object_type": "gem", "condition": "(has human gem)"}})j")
+                .find("goals.condition"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "cost_profiles": [{"profiles": [{"name": "c", "costs": {"human": {"move": -1}}}]}]})j")
+                .find("cost_profiles[0].profiles[0].costs.human.move"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "language": {"salient_actions": []}})j").find("language: salient_actions"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "language": {"salient_actions": [{"action": "get", "focal_arg": 2}],
+                          "speaker": {"object": "alice", "pronoun": "me"}}})j")
+                .find("language.speaker.object"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "literal_listener": {"methods": ["psychic"]}})j").find("literal_listener.methods[0]"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "assistance_options": [{"action": "get"}]})j").find("assistance_options[0].object_arg"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "inference": {"temperature_prior": {"shape": 0}}})j")
+                .find("inference.temperature_prior.shape"),
+            std::string::npos);
+}
+
+// A small two-agent domain written for this test.
+constexpr const char* kDomain = R"((define (domain pantry)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types agent item - object fruit tool - item)
+  (:predicates (has ?a - agent ?i - item) (at ?i - item) (isripe ?i - item ?v - item) (frozen ?a - agent))
+  (:action take :parameters (?a - agent ?i - item)
+    :precondition (and (at ?i) (not (frozen ?a))) :effect (and (has ?a ?i) (not (at ?i))))
+  (:action give :parameters (?a - agent ?b - agent ?i - item)
+    :precondition (and (has ?a ?i) (not (frozen ?a))) :effect (and (has ?b ?i) (not (has ?a ?i))))
+  (:action wait :parameters (?a - agent) :precondition (and) :effect (and))))";
+constexpr const char* kProblem = R"((define (problem p1) (:domain pantry)
+  (:objects cook helper - agent apple pear - fruit knife - tool)
+  (:init (at apple) (at pear) (at knife))
+  (:goal (has cook apple))))";
+
+struct Pantry {
+  Pantry() {
+    dir = fs::temp_directory_path() / ("clips-pack-test-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "domain.pddl") << kDomain;
+    std::ofstream(dir / "p1.pddl") << kProblem;
+    domain = std::make_shared<pddl::Domain>(pddl::load_domain((dir / "domain.pddl").string()));
+  }
+  ~Pantry() { fs::remove_all(dir); }
+  fs::path dir;
+  std::shared_ptr<pddl::Domain> domain;
+};
+
+constexpr const char* kPantryPack = R"j({
+  "domain": "pantry",
+  "roles": {"principal": "cook", "assistant": "helper"},
+  "goals": {"source": "objects", "object_type": "fruit", "condition": "(has cook {})"},
+  "language": {"salient_actions": [{"action": "take", "focal_arg": 2}, {"action": "give", "focal_arg": 3}],
+               "qualifier": {"predicate": "isripe"}},
+  "assistance_options": [{"action": "take", "object_arg": 2, "object_type": "fruit"}]
+})j";
+
+TEST(PackFile, CheckedAgainstTheDomain) {
+  Pantry p;
+  PackSpec s = parse_pack_spec(kPantryPack, "pantry/pack.json");
+  EXPECT_NO_THROW(check_pack_against(s, *p.domain));
+  s.goals.object_type = "vegetable";
+  try {
+    check_pack_against(s, *p.domain);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("goals.object_type"), std::string::npos) << e.what();
+  }
+  s = parse_pack_spec(kPantryPack, "pantry/pack.json");
+  s.language.salient_actions[1].focal_arg = 4;
+  EXPECT_THROW(check_pack_against(s, *p.domain), InputError);
+  s = parse_pack_spec(kPantryPack, "pantry/pack.json");
+  s.name = "kitchen";
+  EXPECT_THROW(check_pack_against(s, *p.domain), InputError);
+}
+
+TEST(PackFile, AFolderPackIsFoundAndDrivesGoalsOptionsAndCandidates) {
+  Pantry p;
+  std::ofstream(p.dir / "pack.json") << kPantryPack;
+  PackPtr pack = find_pack(*p.domain, p.dir.string());
+  ASSERT_EQ(pack->name(), "pantry");
+  auto task = data::ground_problem(*pack, p.domain, (p.dir / "p1.pddl").string());
+  const auto goals = pack->problem_goals(*task, "p1.pddl");
+  ASSERT_EQ(goals.size(), 2u);
+  EXPECT_EQ(goals[0].label, "apple");
+  EXPECT_EQ(goals[1].condition, "(has cook pear)");
+  // The completion that ends with the cook holding the pear pursued "pear".
+  pddl::PlanFile observed, completed;
+  observed.actions.push_back({"(take helper knife)", SourceLoc{"obs", 1, 1}});
+  completed.actions.push_back({"(take helper pear)", SourceLoc{"comp", 1, 1}});
+  completed.actions.push_back({"(give helper cook pear)", SourceLoc{"comp", 2, 1}});
+  EXPECT_EQ(pack->true_goal_index(*task, goals, "", observed, completed), 1);
+  // Options: fruit the helper takes (the knife is no option).
+  EXPECT_EQ(pack->options_taken(completed, "", task.get()), (std::vector<std::string>{"pear"}));
+  EXPECT_TRUE(pack->is_option_object(*task, "apple", ""));
+  EXPECT_FALSE(pack->is_option_object(*task, "knife", ""));
+  // Literal candidates: every ground salient action of the helper.
+  const auto cands = pack->literal_candidates(*task, task->initial_state());
+  std::vector<std::string> printed;
+  for (const auto& c : cands) printed.push_back(commands::to_pddl(c));
+  EXPECT_NE(std::find(printed.begin(), printed.end(), "(take helper apple)"), printed.end());
+  EXPECT_NE(std::find(printed.begin(), printed.end(), "(give helper cook pear)"), printed.end());
+  for (const auto& c : cands) EXPECT_EQ(c.args[0], "helper");
+  // Unit costs, hmax, the generic text view.
+  EXPECT_EQ(pack->default_profiles().front().name, "unit");
+  EXPECT_EQ(pack->default_admissible_heuristic(), "hmax");
+  EXPECT_NE(pack->describe_state(*task, task->initial_state()).find("(at apple)"), std::string::npos);
+}
+
+TEST(PackFile, WithoutAFileTheGenericPackPlansAnything) {
+  Pantry p;
+  PackPtr pack = find_pack(*p.domain, p.dir.string());
+  EXPECT_EQ(pack->spec().goals.source, GoalSource::ProblemGoal);
+  auto task = data::ground_problem(*pack, p.domain, (p.dir / "p1.pddl").string());
+  const auto goals = pack->problem_goals(*task, "p1.pddl");
+  ASSERT_EQ(goals.size(), 1u);
+  EXPECT_EQ(goals[0].condition, "(has cook apple)");
+}
+
+}  // namespace
+}  // namespace clips::domains
