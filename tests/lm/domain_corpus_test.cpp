@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
@@ -83,6 +84,8 @@ TEST(DomainCorpus, GeneratesParsablePairsForTheWorkshop) {
   std::printf("[workshop 1] %zu generated pairs; e.g. %s <-> %s\n", pairs.size(), pairs.front().command.c_str(),
               pairs.front().utterance.c_str());
   ASSERT_GT(pairs.size(), 200u);
+  if (std::getenv("CLIPS_CORPUS_PRINT") != nullptr)
+    for (const TrainingPair& p : pairs) std::printf("%s\t%s\n", p.command.c_str(), p.utterance.c_str());
   for (const TrainingPair& p : pairs) {
     EXPECT_NO_THROW(parse_command_frame(p.command, p.origin)) << p.command;
     EXPECT_FALSE(p.utterance.empty());

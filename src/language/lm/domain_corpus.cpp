@@ -205,15 +205,22 @@ class Generator {
 
   // ---- utterances ----------------------------------------------------------------
 
-  std::string verb(const PlannedAction& a) {
-    const std::vector<std::string> verbs = phrases_for(a.schema->name, d_.extra_verbs, true);
-    // The name's own phrase a third of the time, else any of the others.
-    if (verbs.size() == 1 || dice_.chance(0.3)) return verbs.front();
-    return verbs[1 + dice_.below(verbs.size() - 1)];
+  // Phrases come most typical first: the name's own phrase a third of the
+  // time, else the others with weights falling as 1 / rank.
+  std::string ranked_pick(const std::vector<std::string>& phrases, double first) {
+    if (phrases.size() == 1 || dice_.chance(first)) return phrases.front();
+    double total = 0;
+    for (size_t i = 1; i < phrases.size(); ++i) total += 1.0 / static_cast<double>(i);
+    double x = static_cast<double>(dice_.below(1u << 20)) / static_cast<double>(1u << 20) * total;
+    for (size_t i = 1; i < phrases.size(); ++i) {
+      x -= 1.0 / static_cast<double>(i);
+      if (x < 0) return phrases[i];
+    }
+    return phrases.back();
   }
+  std::string verb(const PlannedAction& a) { return ranked_pick(phrases_for(a.schema->name, d_.extra_verbs, true), 0.3); }
   std::string noun(const std::string& type, bool plural) {
-    const std::vector<std::string> nouns = phrases_for(type, d_.extra_nouns, false);
-    const std::string n = nouns.size() == 1 || dice_.chance(0.7) ? nouns.front() : nouns[1 + dice_.below(nouns.size() - 1)];
+    const std::string n = ranked_pick(phrases_for(type, d_.extra_nouns, false), 0.7);
     return plural ? WordNetLexicon::instance().plural(n) : n;
   }
   // The adjectives of an object: some, all or none of its stated qualifiers.
@@ -264,7 +271,9 @@ class Generator {
     const std::string np = noun_phrase(a);
     if (hands_over(*a.rule, *a.schema) && dice_.chance(0.15)) {
       static const std::vector<std::string> need = {"I need ", "I want ", "can I have ", "I could use "};
-      return dice_.pick(need) + np + ".";
+      static const std::vector<std::string> end = {".", ".", "?", "."};
+      const size_t k = dice_.below(need.size());
+      return need[k] + np + end[k];
     }
     return request(verb_phrase(a, np));
   }

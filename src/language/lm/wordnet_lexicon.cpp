@@ -456,6 +456,17 @@ std::vector<std::string> name_parts(const std::string& name, int pos) {
   return parts;
 }
 
+// Whether a synonym of `word` means it in one of its own first two senses:
+// "board" (sense 2: a plank) may stand for "plank", but "cock" (a gun's hammer
+// only in a late sense) may not stand for "hammer".
+bool mutual_synonym(const std::string& synonym, const std::string& word, int pos) {
+  std::vector<std::string> syn, hyp;
+  std::string lookup = synonym;
+  std::replace(lookup.begin(), lookup.end(), ' ', '_');
+  wn_related(lookup, pos, 2, 0, syn, hyp);
+  return std::find(syn.begin(), syn.end(), word) != syn.end();
+}
+
 std::string joined(const std::vector<std::string>& parts) {
   std::string out;
   for (const std::string& p : parts) out += (out.empty() ? "" : " ") + p;
@@ -530,11 +541,11 @@ std::vector<std::string> WordNetLexicon::verb_phrases(const std::string& action)
     if (member)
       for (std::string_view v : f.verbs) push_unique(out, std::string(v));
   }
-  // The dominant sense's own synonyms and hypernyms, plain words or two-word phrasal verbs.
+  // The dominant sense's own synonyms (plain words or two-word phrasal verbs)
+  // that mean the action in one of their own first senses; its hypernyms
+  // ("raise" for "pick up") only choose the families above.
   for (const std::string& s : first_syn)
-    if (plain_phrase(spaced(s), 2)) push_unique(out, spaced(s));
-  for (const std::string& s : first_hyp)
-    if (plain_phrase(spaced(s), 2)) push_unique(out, spaced(s));
+    if (plain_phrase(spaced(s), 2) && mutual_synonym(s, lookup, VERB)) push_unique(out, spaced(s));
   memo.emplace(action, out);
   return out;
 }
@@ -557,7 +568,7 @@ std::vector<std::string> WordNetLexicon::noun_phrases(const std::string& type) {
   std::vector<std::string> syn, hyp;
   wn_related(lookup, NOUN, 1, 0, syn, hyp);
   for (const std::string& s : syn)
-    if (plain_phrase(s, 1)) push_unique(out, s);
+    if (plain_phrase(s, 1) && mutual_synonym(s, lookup, NOUN)) push_unique(out, s);
   memo.emplace(type, out);
   return out;
 }
