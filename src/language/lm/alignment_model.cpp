@@ -326,6 +326,17 @@ double AlignmentModel::colour_binding(const Bound& c, size_t g, const EncodedUtt
   return typed ? kMisboundCopy : 1.0;
 }
 
+// The qualifier predicates (bits of attribute_word_) an attribute unit's value
+// belongs to; a value the vocabulary lacks may be of any kind.
+unsigned AlignmentModel::qualifier_kinds(const Bound& c, size_t unit) const {
+  unsigned kinds = 0;
+  for (const Bound::Copy& cp : c.groups[unit].copies) {
+    if (cp.id < 0 || static_cast<size_t>(cp.id) >= attribute_word_.size()) return 0xFFu;
+    kinds |= static_cast<unsigned char>(attribute_word_[static_cast<size_t>(cp.id)]);
+  }
+  return kinds == 0 ? 0xFFu : kinds;
+}
+
 // Contradicted colours (header, item 7): contra[2 * i + t] is the factor on
 // token i in a clause of type t (0: request, groups of "you"; 1: statement,
 // groups of "me").
@@ -339,6 +350,7 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
       const int id = u.ids[i];
       if (id < 0 || static_cast<size_t>(id) >= attribute_word_.size() || !attribute_word_[static_cast<size_t>(id)])
         continue;
+      const unsigned token_kinds = static_cast<unsigned char>(attribute_word_[static_cast<size_t>(id)]);
       for (int t = 0; t < 2; ++t) {
         bool typed = false, contradicted = true;
         for (int j : u.noun_heads[i]) {
@@ -362,10 +374,11 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
             const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
             if (own < kBindRatio * best) continue;
             named = true;
-            bool coloured = false;
+            bool coloured = false;  // the object has a known value of this token's kind
             for (size_t k = 0; k < G; ++k) {
               const Bound::Group& unit = c.groups[k];
               if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
+              if ((qualifier_kinds(c, k) & token_kinds) == 0) continue;  // "wooden" vs a known size
               coloured = true;
               for (const Bound::Copy& cp : unit.copies) consistent = consistent || cp.id == id;
             }

@@ -54,9 +54,12 @@
 //       Q  number words, keyed by the group's action count (only if >= 2);
 //     and through its mentioned optional units, whose weights are added to the
 //     group's and renormalised:
-//       C  attribute (colour): copy the predicate's value with probability alpha,
-//          else a shared residual table R. alpha is ONE parameter shared by all
-//          colours, so a colour seen once in training is as copyable as any;
+//       C  attribute (a qualifier value of any predicate: colour, size,
+//          material, owner, ...): copy the value with probability alpha, else
+//          a shared residual table R (the values, and the words naming each
+//          qualifier's kind: "coloured", "size"; WordNetLexicon::qualifier_words).
+//          alpha is ONE parameter shared by all values, so a value seen once
+//          in training is as copyable as any;
 //       P  recipient: "me", "my way", "here", ... for hand-overs to the speaker.
 //  5. Modifiers. Tokens inside a post-nominal prepositional modifier ("I need a
 //     key [for this yellow door]", "the key [to that door]") are not mentions of
@@ -75,7 +78,8 @@
 //     with the span ("For this yellow door, I need a key."); it then attaches
 //     to the first noun phrase of the next clause.
 //
-//  6. Colour binding. A colour copied from an object's attribute must describe
+//  6. Colour binding (of any qualifier value: "big" and "metal" bind the same
+//     way). A colour copied from an object's attribute must describe
 //     a noun that can name that object's type: in "can you open the red door"
 //     the "red" is not a copy of a red gem's colour. The noun a colour describes
 //     is read from the utterance (encode(): the head of its noun phrase, and in a
@@ -93,11 +97,13 @@
 //     determiner ("two", "both", "some") at full weight only if the noun it
 //     counts can name the group's type, so in "two forks" the number cannot
 //     make a pair of wine glasses in the command count as mentioned.
-//  7. Contradicted colours. A speaker who means the command's blue door does
-//     not call it red, whatever source the word would come from. A colour token
-//     whose typed head nouns (item 6) can each name some object of the
-//     command, all of whose colours are known and differ from the token, is
-//     multiplied by kContradictedColour in every source. Roles count: in a
+//  7. Contradicted colours (any qualifier). A speaker who means the command's
+//     blue door does not call it red, whatever source the word would come
+//     from. A value token whose typed head nouns (item 6) can each name some
+//     object of the command, all of whose values of the token's own qualifier
+//     kind are known and differ from it, is multiplied by kContradictedColour
+//     in every source; a value of another kind ("wooden" for an object whose
+//     size alone is known) contradicts nothing. Roles count: in a
 //     request clause only the listener's ("you") objects are checked, in a
 //     statement only those of its role (item 4), so "I'm going for the red key" says nothing
 //     against a command asking the listener for the yellow key. A colour that
@@ -134,16 +140,9 @@
 #include <vector>
 
 #include "language/lm/command_frame.hpp"
+#include "language/lm/training_pair.hpp"
 
 namespace clips::lm {
-
-// A training pair: a command and one of its utterances, with a weight.
-struct TrainingPair {
-  std::string command;
-  std::string utterance;
-  double weight = 1.0;
-  std::string origin;  // "file:line" or "prompt example N", for error messages
-};
 
 class AlignmentModel;
 
@@ -237,6 +236,7 @@ class AlignmentModel {
   double best_noun_mass(int id, const std::string& w) const;
   double colour_binding(const Bound& c, size_t g, const EncodedUtterance& u, size_t i) const;
   std::vector<double> colour_contradictions(const Bound& c, const EncodedUtterance& u) const;
+  unsigned qualifier_kinds(const Bound& c, size_t unit) const;
   TokenSources token_sources(const Bound& c, const EncodedUtterance& u) const;
   double rescale_tiny_tokens(TokenSources& s, const EncodedUtterance& u) const;
   double length_log_prob(int actions, int n, bool complete) const;
@@ -253,7 +253,9 @@ class AlignmentModel {
   std::unordered_map<std::string, int> word_ids_;
   std::vector<std::string> words_;
   std::vector<uint8_t> word_flags_;  // per vocabulary id
-  std::vector<char> attribute_word_;  // per vocabulary id: an attribute value of some training command
+  // Per vocabulary id: nonzero for a qualifier value of some training command,
+  // one bit per qualifier predicate it is a value of (colour, size, ...).
+  std::vector<char> attribute_word_;
   std::vector<double> char_first_;  // char bigram model: first char
   std::vector<double> char_next_;   // [prev * 37 + next], next 36 = end
   std::vector<double> bg_;          // background probs over the vocabulary

@@ -38,12 +38,16 @@ struct Trainer {
     }
     std::set<std::string> keys = {"A:you", "A:me", "P:me"};
     std::set<std::string> attributes;
+    // The qualifier predicates of the training commands and the values each takes.
+    std::map<std::string, std::set<std::string>> qualifier_values;
     for (const CommandFrame& f : frames) {
       for (const FrameGroup& g : f.groups) {
         keys.insert(verb_key(g));
         if (!g.type.empty()) keys.insert(noun_key(g));
         if (g.count >= 2) keys.insert(number_key(g.count));
         for (const std::string& a : g.attributes) attributes.insert(a);
+        for (size_t k = 0; k < g.attributes.size() && k < g.attribute_predicates.size(); ++k)
+          qualifier_values[g.attribute_predicates[k]].insert(g.attributes[k]);
       }
     }
     std::map<std::string, WordDistribution> bases;
@@ -72,12 +76,17 @@ struct Trainer {
       for (auto& [w, p] : acc) z += p;
       for (auto& [w, p] : acc) gen_base.emplace_back(w, p / z);
     }
+    // R: the values, and the words naming each qualifier's kind ("coloured",
+    // "size", "material"; WordNetLexicon::qualifier_words).
     WordDistribution residual_base;
     for (const std::string& a : attributes) residual_base.emplace_back(a, 1.0);
-    residual_base.emplace_back("colored", 1.0);
-    residual_base.emplace_back("coloured", 1.0);
-    residual_base.emplace_back("color", 1.0);
-    residual_base.emplace_back("colour", 1.0);
+    for (const auto& [predicate, values] : qualifier_values) {
+      for (const std::string& w : WordNetLexicon::instance().qualifier_words(predicate)) {
+        const bool listed = std::any_of(residual_base.begin(), residual_base.end(),
+                                        [&](const auto& entry) { return entry.first == w; });
+        if (!listed) residual_base.emplace_back(w, 1.0);
+      }
+    }
     for (auto& [w, p] : residual_base) {
       M.add_word(w);
       p /= static_cast<double>(residual_base.size());
@@ -134,6 +143,24 @@ struct Trainer {
     // noun fields learn places ("kitchen", "cupboard") beyond their lexical
     // base: from "kitchen knife" the chef's knife table would otherwise take
     // "kitchen", and "the wine is in the kitchen" would ask for a knife.
+    // The head word of each command type names an object whatever WordNet's
+    // sense counts say: "plank" and "saw" have more verb senses, yet in "the big
+    // plank" the plank is the noun the size describes.
+    std::set<std::string> type_heads;
+    for (const std::string& k : keys) {
+      if (k.rfind("N:", 0) != 0) continue;
+      const std::string type = k.substr(2, k.rfind('/') - 2);
+      const std::vector<std::string> names = WordNetLexicon::instance().noun_phrases(type);
+      if (names.empty()) continue;
+      const std::string head = names.front().substr(names.front().rfind(' ') + 1);
+      type_heads.insert(head);
+      type_heads.insert(WordNetLexicon::instance().plural(head));
+    }
+    auto word_class = [&](const std::string& w) {
+      WordNetLexicon::WordClass wc = WordNetLexicon::instance().word_class(w);
+      if (type_heads.count(w) != 0) wc.noun_like = true;
+      return wc;
+    };
     std::vector<int> content_ids, function_ids, noun_ids, verb_ids;
     for (size_t i = 0; i < V2; ++i) {
       const std::string& w = M.words_[i];
@@ -143,7 +170,7 @@ struct Trainer {
       }
       content_ids.push_back(static_cast<int>(i));
       if (is_punctuation_token(w)) continue;
-      const WordNetLexicon::WordClass wc = WordNetLexicon::instance().word_class(w);
+      const WordNetLexicon::WordClass wc = word_class(w);
       if (wc.noun_like && !WordNetLexicon::instance().names_place(w)) noun_ids.push_back(static_cast<int>(i));
       if (wc.verb_like) verb_ids.push_back(static_cast<int>(i));
     }
@@ -153,7 +180,17 @@ struct Trainer {
     for (const auto& [w, p] : residual_base) modifier_words.insert(w);
     M.word_flags_.assign(V2, 0);
     M.attribute_word_.assign(V2, 0);
-    for (const std::string& a : attributes) M.attribute_word_[static_cast<size_t>(M.word_ids_.at(a))] = 1;
+    // attribute_word_ holds a bit per qualifier predicate (in name order, eight
+    // bits, wrapping), so a value contradicts only values of its own kind: "wooden"
+    // says nothing against a plank the command only knows to be big.
+    {
+      size_t bit = 0;
+      for (const auto& [predicate, values] : qualifier_values) {
+        for (const std::string& a : values)
+          M.attribute_word_[static_cast<size_t>(M.word_ids_.at(a))] |= static_cast<char>(1u << (bit % 8));
+        ++bit;
+      }
+    }
     for (size_t i = 0; i < V2; ++i) {
       const std::string& w = M.words_[i];
       uint8_t f = closed_class_flags(w);
@@ -161,7 +198,7 @@ struct Trainer {
         if (modifier_words.count(w) != 0) {
           f |= kWordModifier;
         } else {
-          const WordNetLexicon::WordClass wc = WordNetLexicon::instance().word_class(w);
+          const WordNetLexicon::WordClass wc = word_class(w);
           if (wc.noun_like) f |= kWordNoun;
           if (wc.verb_like) f |= kWordVerb;
           if (wc.adjective_like) f |= kWordModifier;
@@ -173,7 +210,10 @@ struct Trainer {
       std::vector<std::pair<int, double>> out;
       for (const auto& [w, p] : d) out.emplace_back(M.word_ids_.at(w), (1 - eps) * p);
       for (int id : floor_ids) out.emplace_back(id, eps / static_cast<double>(floor_ids.size()));
-      if (floor_ids.empty()) {
+      if (d.empty()) {
+        // No lexical base (R when no command has a qualifier): the floor is all of it.
+        for (auto& [id, p] : out) p /= eps;
+      } else if (floor_ids.empty()) {
         for (auto& [id, p] : out) p /= 1 - eps;
       }
       return out;

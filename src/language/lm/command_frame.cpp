@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <utility>
 
 #include "language/lm/language_model.hpp"
 
@@ -79,13 +80,13 @@ CommandFrame parse_command_frame(std::string_view command, std::string_view what
 
   // Variable types and attributes from the predicates.
   std::map<std::string, std::string> type_override;
-  std::map<std::string, std::vector<std::string>> attributes;
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> attributes;  // value, predicate
   for (const Term& p : predicates) {
     if (p.size() != 3) continue;  // only (pred var value) carries lexical content
     if (p[0] == "itemtype" || p[0] == "type") {
       type_override[p[1]] = lower(p[2]);
     } else {
-      attributes[p[1]].push_back(p[2]);
+      attributes[p[1]].emplace_back(p[2], p[0]);
     }
   }
 
@@ -114,16 +115,17 @@ CommandFrame parse_command_frame(std::string_view command, std::string_view what
       return x.agent == agent && x.action == a[0] && x.type == type && x.to_speaker == to_speaker;
     });
     if (g == frame.groups.end()) {
-      frame.groups.push_back(FrameGroup{agent, a[0], to_speaker, type, 0, {}});
+      frame.groups.push_back(FrameGroup{agent, a[0], to_speaker, type, 0, {}, {}});
       g = frame.groups.end() - 1;
     }
     ++g->count;
     if (!focal.empty()) {
       auto at = attributes.find(focal);
       if (at != attributes.end()) {
-        for (const std::string& v : at->second) {
+        for (const auto& [v, predicate] : at->second) {
           if (std::find(g->attributes.begin(), g->attributes.end(), v) == g->attributes.end()) {
             g->attributes.push_back(v);
+            g->attribute_predicates.push_back(predicate);
           }
         }
       }

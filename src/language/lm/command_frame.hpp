@@ -15,7 +15,8 @@
 // Variable names are lifted (key1, ?gem1, plate2): the type is the name with
 // '?' and trailing digits removed; an (itemtype v T) predicate overrides it.
 // Any other two-argument predicate (p v value) attaches `value` to v as an
-// attribute; colours are the usual case.
+// attribute (a qualifier: colour, size, material, owner, ...), remembering
+// which predicate it came from.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,9 @@ struct FrameGroup {
   std::string type;         // focal object type, "" if none
   int count = 0;            // number of actions in the group
   std::vector<std::string> attributes;  // distinct attribute words, e.g. {"red"}
+  // The qualifier predicate each attribute came from ("iscolor", "issize"),
+  // parallel to `attributes`: a value only contradicts values of its own kind.
+  std::vector<std::string> attribute_predicates;
 };
 
 struct CommandFrame {

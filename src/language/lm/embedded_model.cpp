@@ -255,6 +255,10 @@ EmbeddedLanguageModel::EmbeddedLanguageModel(EmbeddedModelOptions options)
     auto pairs = read_corpus(data_dir_ + "/" + f);
     corpus_.insert(corpus_.end(), pairs.begin(), pairs.end());
   }
+  for (const TrainingPair& p : options_.extra_corpus) {
+    parse_command_frame(p.command, p.origin);  // fail now, naming the pair
+    corpus_.push_back(p);
+  }
   cache_dir_ = resolve_cache_dir(options_.cache_dir);
   if (!cache_dir_.empty()) cache_identity_ = cache_identity();
   if (cache_identity_.empty()) cache_dir_.clear();

@@ -25,11 +25,11 @@
 #include <vector>
 
 #include "language/lm/language_model.hpp"
+#include "language/lm/training_pair.hpp"
 
 namespace clips::lm {
 
 class AlignmentModel;
-struct TrainingPair;
 
 struct EmbeddedModelOptions {
   // Directory holding the corpus files. Empty: the language/ folder of
@@ -37,6 +37,10 @@ struct EmbeddedModelOptions {
   std::string data_dir;
   // Files read from data_dir (each line "command<TAB>utterance"; '#' comments).
   std::vector<std::string> corpus_files = {"corpus-dkg.tsv", "corpus-vh.tsv"};
+  // Pairs trained on after the files' pairs, e.g. a corpus generated from a
+  // domain's command grammar (domain_corpus.hpp) for a domain that ships no
+  // hand-written corpus; such a domain leaves corpus_files empty.
+  std::vector<TrainingPair> extra_corpus;
   // Weight of each few-shot example relative to one corpus pair.
   double fewshot_weight = 4.0;
   int em_iterations = 25;

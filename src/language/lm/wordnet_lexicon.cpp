@@ -372,3 +372,213 @@ WordDistribution WordNetLexicon::verb_base(const std::string& action, bool to_sp
 }
 
 }  // namespace clips::lm
+
+// ---- words for the generated corpus and for qualifier kinds ---------------------------
+
+namespace clips::lm {
+namespace {
+
+// WordNet spells phrases with underscores ("pick_up").
+std::string spaced(std::string w) {
+  std::replace(w.begin(), w.end(), '_', ' ');
+  return w;
+}
+
+bool plain_phrase(const std::string& w, size_t max_words) {
+  if (w.empty() || w.front() == ' ' || w.back() == ' ') return false;
+  size_t words = 1;
+  for (char c : w) {
+    if (c == ' ') ++words;
+    else if (c < 'a' || c > 'z') return false;
+  }
+  return words <= max_words;
+}
+
+// Two spellings of one word ("color", "colour"; "gray", "grey").
+bool spelling_variants(const std::string& a, const std::string& b) {
+  if (a == b || a.size() < 3 || b.size() < 3) return false;
+  if (a.size() == b.size()) {
+    size_t diff = 0;
+    for (size_t i = 0; i < a.size(); ++i) diff += a[i] != b[i];
+    return diff == 1;
+  }
+  const std::string& l = a.size() > b.size() ? a : b;
+  const std::string& s = a.size() > b.size() ? b : a;
+  if (l.size() != s.size() + 1) return false;
+  size_t i = 0;
+  while (i < s.size() && l[i] == s[i]) ++i;
+  return l.compare(i + 1, std::string::npos, s, i, std::string::npos) == 0;
+}
+
+void push_unique(std::vector<std::string>& out, const std::string& w) {
+  if (!w.empty() && std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+}
+
+// Everyday verbs of a few action families. A family's verbs are offered for an
+// action when one of its triggers is the action's own phrase or among the
+// synonyms and direct hypernyms of its first two WordNet senses: WordNet
+// relates "pick up" to "lift" and "hand over" to "give", but not to the
+// colloquial "grab" or "bring" speakers actually use in requests.
+struct VerbFamily {
+  std::vector<std::string_view> triggers;
+  std::vector<std::string_view> verbs;
+};
+
+const std::vector<VerbFamily>& verb_families() {
+  static const std::vector<VerbFamily> families = {
+      {{"get", "acquire", "take", "collect", "lift", "raise", "pick up", "fetch", "grab", "take hold"},
+       {"get", "grab", "fetch", "take"}},
+      {{"give", "pass", "hand", "deliver", "transfer", "hand over", "pass on"}, {"give", "hand", "pass", "bring"}},
+      {{"put", "place", "set", "lay", "put down", "set down", "drop"}, {"put", "place", "set", "leave"}},
+      {{"travel", "go", "move", "locomote", "walk"}, {"go", "move", "walk"}},
+      {{"make", "create", "join", "build", "construct", "assemble"}, {"make", "build", "put together"}},
+      {{"open", "unlock", "unfasten"}, {"open", "unlock"}},
+      {{"close", "lock", "shut", "fasten"}, {"close", "lock", "shut"}},
+      {{"clean", "wash", "wipe"}, {"clean", "wash", "wipe"}},
+  };
+  return families;
+}
+
+// A run-together or separated name as WordNet words ("pickup" -> "pick up").
+std::vector<std::string> name_parts(const std::string& name, int pos) {
+  std::vector<std::string> parts;
+  std::string cur;
+  for (char c : name) {
+    if (c == '-' || c == '_' || c == ' ') {
+      if (!cur.empty()) parts.push_back(cur);
+      cur.clear();
+    } else if (std::isalpha(static_cast<unsigned char>(c))) {
+      cur.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+    }
+  }
+  if (!cur.empty()) parts.push_back(cur);
+  if (parts.size() == 1) return split_name(parts[0], pos);
+  return parts;
+}
+
+// Whether a synonym of `word` means it in one of its own first two senses:
+// "board" (sense 2: a plank) may stand for "plank", but "cock" (a gun's hammer
+// only in a late sense) may not stand for "hammer".
+bool mutual_synonym(const std::string& synonym, const std::string& word, int pos) {
+  std::vector<std::string> syn, hyp;
+  std::string lookup = synonym;
+  std::replace(lookup.begin(), lookup.end(), ' ', '_');
+  wn_related(lookup, pos, 2, 0, syn, hyp);
+  return std::find(syn.begin(), syn.end(), word) != syn.end();
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : " ") + p;
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> WordNetLexicon::qualifier_words(const std::string& predicate) {
+  static std::map<std::string, std::vector<std::string>> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(predicate); it != memo.end()) return it->second;
+  std::vector<std::string> parts;
+  {
+    std::string cur;
+    for (char c : lower_word(predicate) + "-") {
+      if (c == '-' || c == '_' || c == ' ') {
+        if (!cur.empty() && cur != "is" && cur != "has" && cur != "of" && cur != "the") parts.push_back(cur);
+        cur.clear();
+      } else if (c >= 'a' && c <= 'z') {
+        cur.push_back(c);
+      }
+    }
+  }
+  std::vector<std::string> out;
+  if (!parts.empty()) {
+    std::string kind = parts.back();
+    for (std::string_view prefix : {"is", "has"}) {
+      if (kind.size() > prefix.size() + 2 && kind.compare(0, prefix.size(), prefix) == 0 &&
+          !wn_has(kind, NOUN) && wn_has(kind.substr(prefix.size()), NOUN)) {
+        kind = kind.substr(prefix.size());
+      }
+    }
+    if (wn_has(kind, NOUN)) {
+      std::vector<std::string> variants = {kind}, syn, hyp;
+      wn_related(kind, NOUN, 1, 0, syn, hyp);
+      for (const std::string& s : syn)
+        if (spelling_variants(kind, s)) push_unique(variants, s);
+      for (const std::string& v : variants) {
+        const std::string participle = v + (v.back() == 'e' ? "d" : "ed");
+        if (wn_has(participle, ADJ)) push_unique(out, participle);
+      }
+      for (const std::string& v : variants) push_unique(out, v);
+    }
+  }
+  memo.emplace(predicate, out);
+  return out;
+}
+
+std::vector<std::string> WordNetLexicon::verb_phrases(const std::string& action) {
+  static std::map<std::string, std::vector<std::string>> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(action); it != memo.end()) return it->second;
+  const std::vector<std::string> parts = name_parts(action, VERB);
+  const std::string phrase = joined(parts);
+  std::string lookup = phrase;
+  std::replace(lookup.begin(), lookup.end(), ' ', '_');
+  if (parts.size() > 1 && !wn_has(lookup, VERB)) lookup = parts.front();
+  std::vector<std::string> first_syn, first_hyp, related, unused;
+  wn_related(lookup, VERB, 1, 1, first_syn, first_hyp);
+  wn_related(lookup, VERB, 2, 1, related, unused);
+  for (const std::string& h : first_hyp) related.push_back(h);
+  for (const std::string& h : unused) related.push_back(h);
+  for (std::string& r : related) r = spaced(r);
+  related.push_back(phrase);
+
+  std::vector<std::string> out = {phrase};
+  for (const VerbFamily& f : verb_families()) {
+    const bool member = std::any_of(f.triggers.begin(), f.triggers.end(), [&](std::string_view t) {
+      return std::find(related.begin(), related.end(), std::string(t)) != related.end();
+    });
+    if (member)
+      for (std::string_view v : f.verbs) push_unique(out, std::string(v));
+  }
+  // The dominant sense's own synonyms (plain words or two-word phrasal verbs)
+  // that mean the action in one of their own first senses; its hypernyms
+  // ("raise" for "pick up") only choose the families above.
+  for (const std::string& s : first_syn)
+    if (plain_phrase(spaced(s), 2) && mutual_synonym(s, lookup, VERB)) push_unique(out, spaced(s));
+  memo.emplace(action, out);
+  return out;
+}
+
+std::vector<std::string> WordNetLexicon::noun_phrases(const std::string& type) {
+  static std::map<std::string, std::vector<std::string>> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(type); it != memo.end()) return it->second;
+  const std::vector<std::string> parts = name_parts(type, NOUN);
+  std::string lookup = joined(parts);
+  std::replace(lookup.begin(), lookup.end(), ' ', '_');
+  std::vector<std::string> out;
+  if (parts.size() > 1 && !wn_has(lookup, NOUN)) {
+    lookup = parts.back();
+    push_unique(out, parts.back());  // the head: "fork" for "cutleryfork"
+    push_unique(out, joined(parts));
+  } else {
+    push_unique(out, joined(parts));
+  }
+  std::vector<std::string> syn, hyp;
+  wn_related(lookup, NOUN, 1, 0, syn, hyp);
+  for (const std::string& s : syn)
+    if (plain_phrase(s, 1) && mutual_synonym(s, lookup, NOUN)) push_unique(out, s);
+  memo.emplace(type, out);
+  return out;
+}
+
+std::string WordNetLexicon::plural(const std::string& noun) {
+  const size_t space = noun.rfind(' ');
+  const std::string head = space == std::string::npos ? noun : noun.substr(space + 1);
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  const std::vector<std::string> forms = plural_forms(head);
+  return noun.substr(0, noun.size() - head.size()) + (forms.empty() ? head + "s" : forms.front());
+}
+
+}  // namespace clips::lm

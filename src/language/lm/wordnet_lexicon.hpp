@@ -38,6 +38,26 @@ class WordNetLexicon {
   // speech (used to tell a misspelling from a word the corpus never had).
   bool knows(const std::string& word);
 
+  // Words that name the kind of a qualifier predicate, for what an attribute
+  // field says when it does not copy the value: "iscolor" -> colored,
+  // coloured, color, colour; "issize" -> sized, size; "ismaterial" ->
+  // material. The kind is the predicate name without an "is"/"has" prefix
+  // (or "-of" suffix); its spelling variants are the dominant sense's
+  // synonyms one letter apart; participles ("sized") only if WordNet lists
+  // them as adjectives. Empty if WordNet does not know the kind as a noun.
+  std::vector<std::string> qualifier_words(const std::string& predicate);
+
+  // Phrases a speaker may use for an action name ("pickup" -> "pick up",
+  // "get", "grab", ...) and for a type name ("plank" -> "plank", "board"),
+  // most typical first; for the generated corpus (domain_corpus.hpp). The
+  // name is split into WordNet words when it is run together; colloquial
+  // verbs come from a small table of everyday verb families, chosen by the
+  // WordNet synonyms and hypernyms of the action's first senses.
+  std::vector<std::string> verb_phrases(const std::string& action);
+  std::vector<std::string> noun_phrases(const std::string& type);
+  // English plural of a noun phrase's last word, checked by WordNet when it can.
+  std::string plural(const std::string& noun);
+
   // Whether the word's dominant noun sense is a place: an area, region or
   // location ("kitchen", "corner", "cupboard"), not an object one could fetch.
   bool names_place(const std::string& word);
