@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# The main job behind `make run`: validate the bundled examples and the
-# paper's dataset ($CLIPS_DATASET or ../shared/dataset) where present, then
-# reproduce the result tables with `clips bench` (results under out/).
+# The main job behind `make run`: validate the bundled examples, the workshop
+# domain and the paper's dataset ($CLIPS_DATASET or ../shared/dataset) where
+# present, then reproduce the result tables with `clips bench` (results under
+# out/), the workshop's included.
 set -euo pipefail
 BUILD_DIR=${1:-build}
 DATASET=${2:-../shared/dataset}
 CLIPS="$BUILD_DIR/clips"
 status=0
-echo "== validate: bundled examples"
+echo "== validate: bundled examples and the workshop domain"
 "$CLIPS" validate --dataset data/examples/doors-keys-gems --quiet || status=1
+"$CLIPS" validate --dataset data/datasets/workshop --quiet || status=1
 for dom in doors-keys-gems virtual-home; do
   if [ -f "$DATASET/$dom/domain.pddl" ]; then
     echo "== validate: $DATASET/$dom"
@@ -17,6 +19,8 @@ for dom in doors-keys-gems virtual-home; do
 done
 echo "== bench: bundled examples"
 "$CLIPS" bench --dataset data/examples/doors-keys-gems --out out/examples || status=1
+echo "== bench: the workshop domain (a third domain, from its pack)"
+"$CLIPS" bench --dataset data/datasets/workshop --out out/workshop || status=1
 for dom in doors-keys-gems virtual-home; do
   if [ -f "$DATASET/$dom/domain.pddl" ]; then
     echo "== bench: $DATASET/$dom"

@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "data/dataset.hpp"
+#include "language/listener.hpp"
 #include "language/lm/language_model.hpp"
 
 namespace clips::app {
@@ -46,7 +48,11 @@ void add_lm_options(CLI::App* cmd, LmFlags& flags);
 void add_speaker_model_options(CLI::App* cmd, LmFlags& flags);
 // --qa-floor, for the subcommands that run Q_MDP assistance.
 void add_assistance_options(CLI::App* cmd, LmFlags& flags);
+// The options the --lm flags say, for every subcommand alike.
+language::LanguageModelOptions lm_options(const LmFlags& flags);
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);
+// The model for a dataset's domain (language::make_dataset_language_model).
+std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags, const data::Dataset& ds);
 
 void register_validate(CLI::App& app);
 void register_show(CLI::App& app);

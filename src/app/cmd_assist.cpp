@@ -54,7 +54,7 @@ void register_assist(CLI::App& app) {
       throw InputError("--method " + o->method + " does not apply to a " + ds.pack().name() + " dataset");
     if (adhoc) {
       const data::PlanRecord obs = observations_record(ds, o->obs);
-      auto lm = make_lm(o->lm);
+      auto lm = make_lm(o->lm, ds);
       eval::ExperimentOptions eo;
       eo.inference_threads = 0;
       eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
@@ -84,7 +84,7 @@ void register_assist(CLI::App& app) {
       return;
     }
     const auto& p = ds.plan(o->obs.plan);
-    auto lm = make_lm(o->lm);
+    auto lm = make_lm(o->lm, ds);
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
     eo.inference_threads = 0;  // one plan: use every core

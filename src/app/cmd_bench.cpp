@@ -51,7 +51,8 @@ void register_bench(CLI::App& app) {
     if (out_opt->count() > 0 && out->empty()) throw UsageError("--out is empty: give a directory");
     if (report_opt->count() > 0 && report->empty()) throw UsageError("--report is empty: give a directory");
     o->dataset = dataset_dir(o->dataset);
-    o->language_model = make_lm(*lm);  // --lm, --lm-base-url, --lm-model, --lm-timeout, --lm-max-reply-mb
+    o->lm = lm->kind;  // with --lm-base-url, --lm-model, --lm-timeout, --lm-max-reply-mb
+    o->lm_options = lm_options(*lm);
     o->experiment.speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->experiment.utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
     o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);

@@ -132,7 +132,7 @@ void register_infer(CLI::App& app) {
     const bool adhoc = !o->obs.problem.empty();
     const data::PlanRecord plan = adhoc ? observations_record(ds, o->obs) : ds.plan(o->obs.plan);
     const inference::Modality modality = inference::parse_modality(o->modalities);
-    auto lm = make_lm(o->lm);
+    auto lm = make_lm(o->lm, ds);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
     opts.threads = 0;  // one plan: use every core

@@ -71,7 +71,7 @@ void register_listen(CLI::App& app) {
     const std::string utterance = o->utterance ? *o->utterance : default_utterance(o->dataset, p);
 
     const auto setup = language::literal_listener_setup(ds.pack_ptr());
-    auto lm = make_lm(o->lm);
+    auto lm = make_lm(o->lm, ds);
     const auto result = language::literal_listener(*task, s_T, utterance, setup, *lm);
 
     const size_t n_all = result.commands.size();

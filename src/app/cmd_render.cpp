@@ -71,7 +71,7 @@ void register_render(CLI::App& app) {
     const int T = static_cast<int>(p.observed.actions.size());
     if (o->step < -1) throw InputError(fmt::format("render: --step {} is negative", o->step));
     const int step = o->step < 0 ? T : o->step;
-    auto lm = make_lm(o->lm);
+    auto lm = make_lm(o->lm, ds);
     eval::PlanRun run;
     bool need_assist = !o->gif.empty() || step > T;
     if (need_assist) {

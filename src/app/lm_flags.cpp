@@ -39,13 +39,19 @@ void add_assistance_options(CLI::App* cmd, LmFlags& f) {
       ->check(CLI::IsMember({"dead-ends", "horizon"}));
 }
 
-std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) {
+language::LanguageModelOptions lm_options(const LmFlags& f) {
   language::LanguageModelOptions o;
   o.base_url = f.base_url;
   o.model = f.model;
   o.timeout_seconds = f.lm_timeout;
   o.max_reply_mb = f.lm_max_reply_mb;
-  return language::make_language_model(f.kind, o);
+  return o;
+}
+
+std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) { return language::make_language_model(f.kind, lm_options(f)); }
+
+std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f, const data::Dataset& ds) {
+  return language::make_dataset_language_model(f.kind, lm_options(f), ds);
 }
 
 }  // namespace clips::app

@@ -141,6 +141,10 @@ enum class SceneKind { Text, Grid, Cards };
 
 struct PackSpec {
   std::string name;         // the PDDL domain name the pack is for
+  // Hand-written corpora (files in data/language/) the embedded language
+  // model trains on; empty: a corpus generated from the domain's PDDL names
+  // and command language (language/lm/domain_corpus.hpp).
+  std::vector<std::string> embedded_corpus;
   std::string code;         // built-in code behind the pack ("" none)
   std::string source;       // the file it was read from ("" built in)
   pddl::GroundingOptions grounding;

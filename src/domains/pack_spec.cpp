@@ -117,7 +117,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   f.only(doc, "",
          {"domain", "code", "grounding", "roles", "goals", "cost_profiles", "default_cost_profile", "inference", "language", "fewshot",
           "literal_listener", "assistance_options", "max_utterances_per_plan", "plan_tags", "scene", "rules_text",
-          "comment"});
+          "embedded_corpus", "comment"});
   PackSpec s;
   s.source = source;
   if (!doc.contains("domain")) f.fail("domain", "missing (the PDDL domain name the pack is for)");
@@ -309,6 +309,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
     s.scene = f.choice<SceneKind>(doc["scene"], "scene",
                                   {{"text", SceneKind::Text}, {"grid", SceneKind::Grid}, {"cards", SceneKind::Cards}});
   if (doc.contains("rules_text")) s.rules_text = f.text(doc["rules_text"], "rules_text");
+  if (doc.contains("embedded_corpus")) s.embedded_corpus = f.strings(doc["embedded_corpus"], "embedded_corpus");
   return s;
 }
 

@@ -139,7 +139,7 @@ BenchReport run_bench(const BenchOptions& opts) {
     if (wanted) todo.push_back(&p);
   }
   if (todo.empty()) throw InputError("no plans to evaluate in " + opts.dataset);
-  auto lm = opts.language_model ? opts.language_model : language::make_language_model(opts.lm, opts.lm_options);
+  auto lm = opts.language_model ? opts.language_model : language::make_dataset_language_model(opts.lm, opts.lm_options, ds0);
   rep.lm = lm->name();
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);

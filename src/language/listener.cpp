@@ -9,7 +9,10 @@
 #include <numeric>
 #include <stdexcept>
 
+#include <set>
+
 #include "language/commands/enumerate.hpp"
+#include "language/lm_domain.hpp"
 #include "language/lm/cached_model.hpp"
 #include "language/lm/embedded_model.hpp"
 #include "language/lm/openai_model.hpp"
@@ -66,6 +69,43 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
     throw InputError("unknown language model '" + kind + "' (known: embedded, openai)");
   }
   return std::make_shared<lm::CachedLanguageModel>(inner);
+}
+
+std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string& kind, const LanguageModelOptions& options,
+                                                              const domains::Pack& pack, const pddl::Domain& domain,
+                                                              const std::vector<const pddl::Problem*>& problems) {
+  if (!kind.empty() && kind != "embedded") return make_language_model(kind, options);
+  lm::EmbeddedModelOptions o;
+  o.data_dir = options.data_dir;
+  if (!pack.spec().embedded_corpus.empty()) {
+    o.corpus_files = pack.spec().embedded_corpus;
+  } else {
+    o.corpus_files.clear();
+    std::set<std::pair<std::string, std::string>> seen;  // problems share most pairs
+    for (const pddl::Problem* problem : problems) {
+      const auto generated = lm::embedded_options_for_domain(
+          describe_for_language_model(domain, *problem, pack.language(), pack.language().qualifiers()));
+      for (const auto& pair : generated.extra_corpus)
+        if (seen.emplace(pair.command, pair.utterance).second) o.extra_corpus.push_back(pair);
+    }
+  }
+  return std::make_shared<lm::CachedLanguageModel>(std::make_shared<lm::EmbeddedLanguageModel>(o));
+}
+
+std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
+                                                               const LanguageModelOptions& options,
+                                                               const data::Dataset& dataset) {
+  if ((!kind.empty() && kind != "embedded") || !dataset.pack().spec().embedded_corpus.empty())
+    return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), {});
+  std::vector<std::shared_ptr<const pddl::Task>> tasks;
+  std::vector<const pddl::Problem*> problems;
+  std::set<std::string> ids;
+  for (const auto& p : dataset.plans())
+    if (ids.insert(p.problem_id).second) {
+      tasks.push_back(dataset.task(p.problem_id));
+      problems.push_back(&tasks.back()->problem());
+    }
+  return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), problems);
 }
 
 // ---- listener setup ---------------------------------------------------------

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "data/dataset.hpp"
 #include "domains/pack.hpp"
 #include "language/commands/command.hpp"
 #include "language/commands/fewshot.hpp"
@@ -50,6 +51,19 @@ std::vector<std::string> language_model_kinds();
 // pass through.
 std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind,
                                                        const LanguageModelOptions& options = {});
+
+// The model for one domain's utterances. Not embedded: make_language_model.
+// Embedded: trained on the pack's hand-written corpora when it lists them
+// (the paper packs), else on a corpus generated from the domain's PDDL and
+// command language over the given problems (lm/domain_corpus.hpp). The
+// prompts' few-shot examples are trained on in both cases.
+std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string& kind, const LanguageModelOptions& options,
+                                                              const domains::Pack& pack, const pddl::Domain& domain,
+                                                              const std::vector<const pddl::Problem*>& problems);
+// The same over every problem a dataset's plans use.
+std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
+                                                               const LanguageModelOptions& options,
+                                                               const data::Dataset& dataset);
 
 // ---- listener setup ---------------------------------------------------------
 

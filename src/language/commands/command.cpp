@@ -67,7 +67,8 @@ std::string Command::display_form() const {
 std::string Command::llm_form() const {
   const auto bare = [](const std::string& name) { return lowercase_first(name); };
   if (printed_form == PrintedForm::WhereClause)
-    return with_where(render_all(actions, bare, keep_all), render_all(predicates, bare, keep_all));
+    return with_where(render_all(printed_actions.empty() ? actions : printed_actions, bare, keep_all),
+                      render_all(predicates, bare, keep_all));
 
   // VH: the item type is already in the variable name, so the qualifier
   // predicates and the variables they do not mention (fixtures) are dropped.
@@ -164,15 +165,20 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
   };
 
   for (const auto& s : subset) {
-    Term action{s.action.name, {}};
-    for (const auto& arg : s.action.args) {
+    Term action{s.action.name, {}}, printed{s.action.name, {}};
+    const SalientActionRule* rule = config.salient_rule(s.action.name);
+    for (std::size_t i = 0; i < s.action.args.size(); ++i) {
+      const std::string& arg = s.action.args[i];
       const std::string pronoun = config.to_pronoun(arg);
-      if (pronoun != arg || config.is_pronoun(arg) || is_variable(arg))
+      const bool is_agent = pronoun != arg || config.is_pronoun(arg);
+      if (is_agent || is_variable(arg))
         action.args.push_back(pronoun);
       else
         action.args.push_back("?" + variable_for(arg));
+      if (is_agent || (rule && static_cast<int>(i) + 1 == rule->focal_arg)) printed.args.push_back(action.args.back());
     }
     cmd.actions.push_back(std::move(action));
+    if (config.print_agents_and_focal_only) cmd.printed_actions.push_back(std::move(printed));
   }
   for (const auto& s : subset)
     for (const auto& p : s.predicates) {
@@ -196,6 +202,7 @@ Command merge_commands(const Command& first, const Command& second) {
     to = std::move(out);
   };
   append_unique(merged.actions, second.actions);
+  append_unique(merged.printed_actions, second.printed_actions);
   append_unique(merged.predicates, second.predicates);
   for (const auto& v : second.variables) {
     auto it = std::find_if(merged.variables.begin(), merged.variables.end(),

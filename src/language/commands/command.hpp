@@ -36,6 +36,9 @@ struct Command {
   std::vector<Binding> binding;     // variable -> ground object it was lifted from
   PrintedForm printed_form = PrintedForm::WhereClause;
   std::string qualifier;  // predicate name the VH printed form drops, e.g. "itemtype"
+  // The actions as the language model reads them when the config prints
+  // agents and focal objects only; empty: `actions`.
+  std::vector<Term> printed_actions;
 
   // Actions, then " where " and the predicates if any; variables as "?key1".
   std::string display_form() const;

@@ -152,7 +152,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   static const std::set<std::string> known = {
       "domain", "salient_actions", "qualifier", "speaker", "listener", "max_command_actions",
       "max_action_types", "max_qualifier_values_per_action_type", "speaker_actions",
-      "exclude_chains", "paper_speaker_actions", "paper_exclude_chains", "variable_naming", "printed_form", "goal_atoms", "goal_variables",
+      "exclude_chains", "paper_speaker_actions", "paper_exclude_chains", "variable_naming", "printed_form", "printed_args", "goal_atoms", "goal_variables",
       "comment"};
   for (const auto& [key, value] : doc.items())
     if (!known.contains(key)) r.fail(key, "unknown key");
@@ -220,6 +220,9 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
         doc["printed_form"], "printed_form",
         {{"where-clause", PrintedForm::WhereClause},
          {"qualified-args-only", PrintedForm::QualifiedArgsOnly}});
+  if (doc.contains("printed_args"))
+    c.print_agents_and_focal_only =
+        r.choice<bool>(doc["printed_args"], "printed_args", {{"all", false}, {"agents-and-focal", true}});
   if (doc.contains("goal_atoms")) {
     const json& atoms = doc["goal_atoms"];
     if (!atoms.is_object()) r.fail("goal_atoms", "expected an object of action -> [atom templates]");

@@ -81,6 +81,10 @@ struct LanguageConfig {
 
   VariableNaming variable_naming = VariableNaming::ObjectType;
   PrintedForm printed_form = PrintedForm::WhereClause;
+  // Print only the pronouns and the focal object of each action for the
+  // language model ("(pickup you plank1)", not "(pickup you plank1 rack)"):
+  // places and instruments people leave unsaid stay in the goal.
+  bool print_agents_and_focal_only = false;
 
   // Goal atoms per action name; `$i` is replaced by the action's i-th argument
   // after pronouns are mapped back to agent names. E.g. handover ->
