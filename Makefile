@@ -11,8 +11,11 @@ FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 2
 # `make test` also builds the fuzz targets for its short smoke run when
-# clang-14 is installed; FUZZ_SMOKE=0 leaves them out.
+# clang-14 is installed; FUZZ_SMOKE=0 leaves them out. `make fuzz-build`
+# builds those (fuzz_targets); `make fuzz` builds every target
+# (fuzz_targets_all: also serve, which compiles most of the code base).
 FUZZ_SMOKE ?= 1
+FUZZ_BUILD_TARGET ?= fuzz_targets
 
 .PHONY: all deps configure build test run bench clean fuzz-build fuzz test-asan test-tsan
 
@@ -41,9 +44,10 @@ bench: build
 
 fuzz-build: deps
 	@cmake -S . -B $(FUZZ_DIR) -DCLIPS_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Release >/dev/null
-	@cmake --build $(FUZZ_DIR) --target fuzz_targets -j $(FUZZ_JOBS)
+	@cmake --build $(FUZZ_DIR) --target $(FUZZ_BUILD_TARGET) -j $(FUZZ_JOBS)
 
-fuzz: fuzz-build
+fuzz:
+	@$(MAKE) --no-print-directory fuzz-build FUZZ_BUILD_TARGET=fuzz_targets_all
 	@bash fuzz/run.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
 # Sanitizer builds, each in its own folder (the Release build is untouched):
 # ASan + UBSan (any UB aborts the test), and TSan. Both at -O1 -g, built at

@@ -14,8 +14,8 @@ shift $(( $# >= 3 ? 3 : $# ))
 fuzz_dir=$(cd "$(dirname "$0")" && pwd)
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  # The fast targets first.
-  targets=(sexpr chat completions dataset plan utterance pddl)
+  # The fast targets first; serve (built by `make fuzz` only) last.
+  targets=(sexpr chat completions dataset plan utterance pddl serve)
 fi
 mkdir -p "$build/logs"
 status=0
@@ -24,7 +24,10 @@ for t in "${targets[@]}"; do
   args=("$build/corpus/$t" "$fuzz_dir/corpus/$t" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout="${FUZZ_TIMEOUT:-1}"
         -artifact_prefix="$build/artifacts/$t/" -print_final_stats=1)
   [ "$runs" -gt 0 ] && args+=(-runs="$runs")
-  case $t in sexpr|pddl|plan) args+=(-dict="$fuzz_dir/dict/pddl.dict") ;; esac
+  case $t in
+    sexpr|pddl|plan) args+=(-dict="$fuzz_dir/dict/pddl.dict") ;;
+    serve) args+=(-dict="$fuzz_dir/dict/serve.dict") ;;
+  esac
   echo "fuzz: $build/${t}_fuzz ${args[*]}" | tee "$build/logs/$t.log"
   if "$build/${t}_fuzz" "${args[@]}" >>"$build/logs/$t.log" 2>&1; then
     result=ok

@@ -3,14 +3,20 @@
 # FuzzSmoke). Exits 77 (skipped) when clang-14/libFuzzer are not installed or
 # the targets are not built (`make fuzz-build` builds them; `make test` does
 # so when clang-14 is installed). New inputs go to a temporary folder, never
-# into the seeds.
-#   fuzz/smoke.sh BUILD_FUZZ_DIR FUZZ_DIR [SECONDS]
+# into the seeds. TARGET... (default: every fuzz/*_fuzz.cpp) are the targets
+# run; CTest passes the ones `make fuzz-build` builds.
+#   fuzz/smoke.sh BUILD_FUZZ_DIR FUZZ_DIR [SECONDS [TARGET...]]
 set -uo pipefail
 bin_dir=$1 fuzz_dir=$2 seconds=${3:-2}
+shift $(( $# >= 3 ? 3 : $# ))
 if ! command -v clang++-14 >/dev/null || ! ls /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then
   echo "FuzzSmoke: clang-14 / libFuzzer not installed; skipped"; exit 77
 fi
-targets=$(ls "$fuzz_dir"/*_fuzz.cpp | xargs -n1 basename | sed 's/_fuzz\.cpp$//')
+if [ $# -gt 0 ]; then
+  targets="$*"
+else
+  targets=$(ls "$fuzz_dir"/*_fuzz.cpp | xargs -n1 basename | sed 's/_fuzz\.cpp$//')
+fi
 for t in $targets; do
   if [ ! -x "$bin_dir/${t}_fuzz" ]; then
     echo "FuzzSmoke: $bin_dir/${t}_fuzz not built (make fuzz-build); skipped"; exit 77

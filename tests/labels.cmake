@@ -4,21 +4,26 @@
 # (../shared/dataset or $CLIPS_DATASET); CLIPS_SLOW_TESTS_<module> the ones
 # that take half a minute or more without it (label slow), and
 # CLIPS_SLOW_DATASET_TESTS_<module> the slow ones that need it (labels slow and
-# dataset). The lists must not overlap. Every other test is labelled unit and
-# must run in seconds without the dataset or a browser.
+# dataset), and CLIPS_BROWSER_TESTS_<module> the ones that need headless
+# Chromium (label browser). The lists must not overlap. Every other test is
+# labelled unit and must run in seconds without the dataset or a browser:
+# `ctest -L unit` as a whole takes well under half a minute. Value-
+# parameterised tests are named Instance/Suite.Test/Param.
 # A test missing here that needs the dataset would skip under `ctest -L unit`.
 
-set(CLIPS_DATASET_TESTS_app "CliPlan.RunTimeLimitStopsRtaaAndAstar:CliPlan.JsonReportsTheTimeLimitStatus")
+set(CLIPS_DATASET_TESTS_app "CliPlan.RunTimeLimitStopsRtaaAndAstar:CliPlan.JsonReportsTheTimeLimitStatus:BenchFilesTest.PaperColumnBesideThePapersDataset:BenchFilesTest.ACopyWithOtherProblemsIsNotThePapers:CliObservations.OnThePapersDataset")
+set(CLIPS_DATASET_TESTS_api "Session.ReplayMatchesClipsInferOnThePapersDataset")
 set(CLIPS_DATASET_TESTS_commands "FewShotFile.SharedReferenceFileLoadsAndAgrees")
 set(CLIPS_DATASET_TESTS_data "DatasetInput.*Vh*:DatasetInput.SharedDatasetsStillValidate")
 set(CLIPS_DATASET_TESTS_eval "PaperBehaviour.*:Scenes.VirtualHomeSceneIfDatasetPresent")
-set(CLIPS_SLOW_DATASET_TESTS_eval "Paraphrases.*:VirtualHomeRewordings.*")
+set(CLIPS_SLOW_DATASET_TESTS_eval "Paraphrases.*:VirtualHomeRewordings.*:Paraphrases/VirtualHomeRewordings.*")
+set(CLIPS_BROWSER_TESTS_eval "BenchReportTest.RendersInHeadlessChromium")
 set(CLIPS_DATASET_TESTS_inference "DkgDataset.UtteranceRaisesTrueGoalOn2_1Keys:VhDataset.*")
 set(CLIPS_SLOW_DATASET_TESTS_inference "DkgDataset.AllPlansThreeModalities")
 set(CLIPS_DATASET_TESTS_language "ListenCli.JsonShape:ListenCli.AllCommandsSumToOne:ListenCli.BlankUtteranceExitsTwo:ListenCli.TableOutput:DkgListener.*:VhListener.*")
 set(CLIPS_SLOW_DATASET_TESTS_language "ListenerQuality.*")
+set(CLIPS_DATASET_TESTS_render "GridRender.DatasetMaps")
 set(CLIPS_DATASET_TESTS_pddl "Parser.ReadsBothSharedDatasetDomains")
 set(CLIPS_DATASET_TESTS_search "AStar.DefaultHeuristicMatchesUniformCostSearchOnTheDataset:DkgDistanceHeuristic.*OnDataset*:DkgMstHeuristic.MeasureOverestimationOnSmallMaps:DkgMstHeuristic.EstimateSpeedOnDataset:DkgMstHeuristic.BoundedEstimateEqualsTheMinimumOverClauses")
 set(CLIPS_SLOW_DATASET_TESTS_search "StripsExport.SameOptimalCostOnTheDataset")
 set(CLIPS_SLOW_TESTS_search "StripsExport.SameOptimalCostFromMidPlanStates:StripsExport.SameOptimalCostOnExampleProblems:StripsExport.ConjunctiveGoalsAndUnsupportedGoals:AStar.HMaxMatchesUniformCostSearchOnExampleProblems")
-set(CLIPS_SLOW_TESTS_lm "EmbeddedCache.SecondInstanceLoadsWhatTheFirstTrainedAndScoresAlike")

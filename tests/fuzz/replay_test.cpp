@@ -21,6 +21,7 @@ CLIPS_FUZZ_DECLARE(dataset);
 CLIPS_FUZZ_DECLARE(utterance);
 CLIPS_FUZZ_DECLARE(completions);
 CLIPS_FUZZ_DECLARE(chat);
+CLIPS_FUZZ_DECLARE(serve);
 
 namespace fs = std::filesystem;
 
@@ -40,7 +41,7 @@ const Case kTargets[] = {
     {"sexpr", clips_fuzz_sexpr},         {"pddl", clips_fuzz_pddl},
     {"plan", clips_fuzz_plan},           {"dataset", clips_fuzz_dataset},
     {"utterance", clips_fuzz_utterance}, {"completions", clips_fuzz_completions},
-    {"chat", clips_fuzz_chat},
+    {"chat", clips_fuzz_chat},           {"serve", clips_fuzz_serve},
 };
 
 // Runs every file of `dir` (if it exists) through `run`; returns how many.
