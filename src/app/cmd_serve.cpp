@@ -4,6 +4,7 @@
 #include <signal.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -63,8 +64,11 @@ void register_serve(CLI::App& app) {
     if (dirs.empty()) {
       const char* env = std::getenv("CLIPS_DATASET");
       const std::string root = env && *env ? env : "../shared/dataset";
-      for (const char* d : {"doors-keys-gems", "virtual-home"})
-        if (std::filesystem::exists(root + "/" + d + "/domain.pddl")) dirs.push_back(root + "/" + d);
+      // Every dataset folder there (one holding a domain.pddl), by name.
+      std::error_code ec;
+      for (const auto& e : std::filesystem::directory_iterator(root, ec))
+        if (std::filesystem::exists(e.path() / "domain.pddl")) dirs.push_back(e.path().string());
+      std::sort(dirs.begin(), dirs.end());
       if (dirs.empty()) throw InputError("no dataset found under " + root + "; give --dataset DIR");
     }
     auto lm = make_lm(o->lm);

@@ -107,6 +107,11 @@ std::string dataset_fingerprint(const std::string& dir) {
   return fmt::format("{:016x}", h);
 }
 
+bool paper_has_method(const nlohmann::json& paper_all, const std::string& domain, const std::string& method) {
+  return paper_all.is_object() && paper_all.contains(domain) && paper_all[domain].is_object() &&
+         paper_all[domain].contains(method);
+}
+
 const nlohmann::json* paper_results_for(const BenchReport& r, const nlohmann::json& paper_all) {
   if (!paper_all.is_object() || !paper_all.contains(r.domain)) return nullptr;
   const auto fp = paper_all.find("_fingerprints");
@@ -355,8 +360,8 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
     }
     out += "\n";
   }
-  // The paper has a multimodal row for doors-keys-gems only; say why ours has none.
-  if (r.domain == "doors-keys-gems" && !r.summary.empty()) {
+  // Where the paper reports a multimodal row for this domain, say why ours has none.
+  if (paper_has_method(paper, r.domain, "multimodal") && !r.summary.empty()) {
     bool ran = false;
     for (auto& s : r.summary) ran |= s.method == "multimodal";
     if (!ran) out += "multimodal (GPT-4V-style)  | skipped: no chat endpoint configured (see --help)\n";

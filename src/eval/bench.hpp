@@ -72,6 +72,9 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
 // theirs recorded in data/paper/results.json ("_fingerprints"), so a folder
 // of the same layout and name but other problems is not taken for them.
 std::string dataset_fingerprint(const std::string& dir);
+// Whether the paper's results (data/paper/results.json) have a row for this
+// method in this domain.
+bool paper_has_method(const nlohmann::json& paper_all, const std::string& domain, const std::string& method);
 // The paper's numbers for the report's domain (results.json's entry), or
 // nullptr when the report's dataset is not the paper's.
 const nlohmann::json* paper_results_for(const BenchReport& r, const nlohmann::json& paper_all);

@@ -255,7 +255,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
     }
     h += "</tr>\n";
   }
-  if (r.domain == "doors-keys-gems" && !multimodal_ran) {
+  if (paper_has_method(paper_all, r.domain, "multimodal") && !multimodal_ran) {
     h += fmt::format("<tr class=\"skipped\"><td class=\"m\">multimodal</td><td colspan=\"{}\">skipped: no chat endpoint "
                      "configured (--chat-base-url or $CLIPS_CHAT_BASE_URL)</td></tr>\n",
                      kColumns.size() * per_metric);
