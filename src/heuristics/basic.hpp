@@ -46,7 +46,6 @@ class HMaxHeuristic : public Heuristic {
   std::vector<std::vector<int>> achievers_of_pre_;  // atom -> actions needing it
   std::vector<double> atom_cost_, act_cost_;
   std::vector<int> unsat_;
-  bool trivially_unknown_goal_ = false;
 };
 
 class FFHeuristic : public Heuristic {
