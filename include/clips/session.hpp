@@ -57,12 +57,13 @@ struct SessionOptions {
   Assistance assistance = Assistance::QMdp;
   LanguageModelOptions language_model;
   // Candidate goals as PDDL conditions, e.g. "(has human gem1)". Empty: the
-  // domain's (Doors-Keys-Gems: one per gem; VirtualHome: the problem's goal
-  // set; other domains: the problem's :goal).
+  // domain pack's (docs/domains.md: Doors-Keys-Gems one per gem; VirtualHome
+  // and the workshop the problem's goal set; without a pack the problem's :goal).
   std::vector<std::string> goals;
-  // Candidate cost profiles: "1".."4" (Doors-Keys-Gems C1..C4) or "unit".
-  // Empty: from the plan's condition when a session is opened on a dataset
-  // plan; else Doors-Keys-Gems {C3, C4} (the keys condition), other domains unit.
+  // Candidate cost profiles: "unit", "task", or a profile the domain's pack
+  // names ("1".."4" or "C1".."C4" in Doors-Keys-Gems). Empty: from the plan's
+  // tag when a session is opened on a dataset plan; else the pack's default
+  // rule (Doors-Keys-Gems {C3, C4}, the keys condition; without rules unit).
   std::vector<std::string> cost_profiles;
   size_t max_nodes = size_t{1} << 18;  // expansions per lookahead search
   int threads = 1;                     // threads refining the hypotheses (0: all cores)
@@ -149,7 +150,7 @@ class Session {
   int t() const;                          // actions observed so far
   std::string state() const;              // printable (an ASCII map for Doors-Keys-Gems)
   const std::vector<Step>& trace() const;  // trace()[t]: after t actions
-  std::string domain() const;             // "doors-keys-gems", "virtual-home" or "generic"
+  std::string domain() const;             // the PDDL domain's name (its pack's), e.g. "doors-keys-gems"
   std::string active_agent() const;       // who is to move
   bool assistant_turn() const;
   // The actions applicable now (id, PDDL text), the active agent's.
