@@ -1,6 +1,7 @@
 # Writes OUT: a C++ file defining clips::serve::web_assets() with the files
 # given in FILES (semicolon-separated) embedded as raw string literals, so the
 # web page works with no data files and no network.
+include(${CMAKE_CURRENT_LIST_DIR}/raw_string.cmake)
 set(code "// Generated from web/ by cmake/embed_web.cmake: do not edit.\n#include \"serve/service.hpp\"\n\nnamespace clips::serve {\n\nconst std::map<std::string, Asset>& web_assets() {\n  static const std::map<std::string, Asset> assets = {\n")
 string(REPLACE "|" ";" FILES "${FILES}")
 foreach(f IN LISTS FILES)
@@ -16,19 +17,7 @@ foreach(f IN LISTS FILES)
     set(type "application/octet-stream")
   endif()
   file(READ ${f} content)
-  string(FIND "${content}" ")clipsweb\"" clash)
-  if(NOT clash EQUAL -1)
-    message(FATAL_ERROR "${f} contains the raw-string delimiter )clipsweb\"")
-  endif()
-  # Split into chunks: compilers limit the length of one string literal.
-  string(LENGTH "${content}" len)
-  set(pieces "")
-  set(pos 0)
-  while(pos LESS len)
-    string(SUBSTRING "${content}" ${pos} 8000 chunk)
-    string(APPEND pieces "R\"clipsweb(${chunk})clipsweb\"\n")
-    math(EXPR pos "${pos} + 8000")
-  endwhile()
+  clips_raw_string(pieces "${content}" clipsweb ${f})
   string(APPEND code "      {\"/${name}\", {\"${type}\", std::string_view(\n${pieces})}},\n")
 endforeach()
 string(APPEND code "  };\n  return assets;\n}\n\n}  // namespace clips::serve\n")

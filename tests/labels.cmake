@@ -5,9 +5,12 @@
 # that take half a minute or more without it (label slow), and
 # CLIPS_SLOW_DATASET_TESTS_<module> the slow ones that need it (labels slow and
 # dataset), and CLIPS_BROWSER_TESTS_<module> the ones that need headless
-# Chromium (label browser). The lists must not overlap. Every other test is
-# labelled unit and must run in seconds without the dataset or a browser:
-# `ctest -L unit` as a whole takes well under half a minute. Value-
+# Chromium (label browser). CLIPS_INTEGRATION_TESTS_<module> lists the tests
+# that need neither but take a second or more: they start the clips binary or
+# a loopback server, train a language model, or search thousands of states
+# (label integration). The lists must not overlap. Every other test is
+# labelled unit and must run in well under a second without the dataset or a
+# browser: `ctest -L unit` as a whole takes under half a minute. Value-
 # parameterised tests are named Instance/Suite.Test/Param.
 # A test missing here that needs the dataset would skip under `ctest -L unit`.
 
@@ -27,3 +30,13 @@ set(CLIPS_DATASET_TESTS_pddl "Parser.ReadsBothSharedDatasetDomains")
 set(CLIPS_DATASET_TESTS_search "AStar.DefaultHeuristicMatchesUniformCostSearchOnTheDataset:DkgDistanceHeuristic.*OnDataset*:DkgMstHeuristic.MeasureOverestimationOnSmallMaps:DkgMstHeuristic.EstimateSpeedOnDataset:DkgMstHeuristic.BoundedEstimateEqualsTheMinimumOverClauses")
 set(CLIPS_SLOW_DATASET_TESTS_search "StripsExport.SameOptimalCostOnTheDataset")
 set(CLIPS_SLOW_TESTS_search "StripsExport.SameOptimalCostFromMidPlanStates:StripsExport.SameOptimalCostOnExampleProblems:StripsExport.ConjunctiveGoalsAndUnsupportedGoals:AStar.HMaxMatchesUniformCostSearchOnExampleProblems")
+
+set(CLIPS_INTEGRATION_TESTS_api "Session.ReplayMatchesClipsInferOnTheRepoExamples:Session.TwoSessionsOnTwoThreadsAgreeWithOneThread")
+set(CLIPS_INTEGRATION_TESTS_app "BenchFilesTest.PosteriorsResultsAndProvenance:CliNumbers.BadValuesAreRefusedAtParseTime:CliObservations.ErrorsNameTheAction:CliPlanLimits.*:UnreadableUtterance.*:BenchCli.*:CliBrokenPlan.*:CliExitCodes.*:CliStreams.*:CliSmaller.*:CliObservations.ActionsFromAPlanFile:CliObservations.AssistNamesTheAssistantsNextAction:CliObservations.InlineActionsReproduceTheDatasetPlan:CliObservations.TheUtteranceStepMatters:CliPlan.EmptyGoalsAreRejected:CliPlan.HelpSaysBudgetsArePerSearchAndOffersARunLimit:CliPlan.ProblemMustMatchFromPlan")
+set(CLIPS_INTEGRATION_TESTS_eval "BenchLmFlags.*:BenchReportTest.ReportFilesAndHtml:BenchReportTest.ResultsCsvHasOneRowPerPlanAndMethod:BenchReportTest.SummaryJson:MultimodalServer.*:RenderCli.*:InferCli.*")
+set(CLIPS_INTEGRATION_TESTS_inference "ConcurrentInference.*:ParallelRefinement.*")
+set(CLIPS_INTEGRATION_TESTS_language "ListenCli.LmScorePrintsLogProbAndBackend:ListenCli.LmScoreReadsWindowsLineEndingsAndRefusesNonPromptFiles:LmDomain.*")
+set(CLIPS_INTEGRATION_TESTS_lm "AlignmentBehaviour.RareColoursAreCopiedAsReadilyAsFrequentOnes:AlignmentGolden.*:EmbeddedCache.*:EmbeddedSnapshot.*:HttpClientTest.ReturnsNonRetryableStatusesWithoutRetrying:HttpClientTest.StopsReadingAnEndlessReplyAtTheCap:OpenAiCompletionsTest.EndlessReplyStopsAtTheDefaultCap:DomainCorpus.*")
+set(CLIPS_INTEGRATION_TESTS_pddl "ReaderLimit.HugeFileOfRepeatedTokensFailsFast")
+set(CLIPS_INTEGRATION_TESTS_search "AStarWorkspace.ReusedWorkspaceMatchesFreshSearches:DkgDistanceHeuristic.AdmissibleAgainstExactCostOnHandMaps:HMax.AdmissibleAndConsistentOnRandomWalks:Rtaa.PathReuseMakesLaterRefinementsCheaper:StripsExport.FrozenRobotMayOnlyWaitOrHandOver:TimeLimit.*:WorkshopGoals.EveryCandidateGoalIsSolvableFromTheInitialState:HFF.BoundsAndPlansOnTheWorkshop")
+set(CLIPS_INTEGRATION_TESTS_serve "Fixture.PlayHearAssistUndoResetAndSwitchMethod:Fixture.SessionsRunInParallelAndIndependently:ServeLoopback.*")

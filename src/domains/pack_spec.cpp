@@ -110,7 +110,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   json doc;
   try {
     doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
     throw InputError(SourceLoc{source, 0, 0}, std::string("invalid JSON: ") + e.what());
   }
   const Fields f(source);

@@ -53,26 +53,33 @@ std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId
 
 }  // namespace
 
+Relaxation Relaxation::of(const model::Specification& spec) {
+  const pddl::Task& t = spec.task();
+  const int na = t.num_actions(), nb = t.num_atoms();
+  Relaxation r;
+  r.pre.assign(na, {});
+  r.add.assign(na, {});
+  r.cost.assign(na, 0);
+  r.needed_by.assign(nb, {});
+  for (int a = 0; a < na; ++a) {
+    positive_conjuncts(t, t.action(a).pre, r.pre[a]);
+    r.add[a] = t.action(a).eff.add;
+    for (auto& ce : t.action(a).cond_eff) r.add[a].insert(r.add[a].end(), ce.eff.add.begin(), ce.eff.add.end());
+    r.cost[a] = spec.cost(a);
+    for (int p : r.pre[a]) r.needed_by[p].push_back(a);
+  }
+  r.goal_clauses = dnf(spec.goal(), spec.goal().root());
+  return r;
+}
+
 void HMaxHeuristic::prepare(const model::Specification& spec, const pddl::State&) {
   if (spec_ == &spec) return;
   spec_ = &spec;
+  r_ = Relaxation::of(spec);
   const pddl::Task& t = spec.task();
-  int na = t.num_actions(), nb = t.num_atoms();
-  pre_.assign(na, {});
-  add_.assign(na, {});
-  cost_.assign(na, 0);
-  achievers_of_pre_.assign(nb, {});
-  for (int a = 0; a < na; ++a) {
-    positive_conjuncts(t, t.action(a).pre, pre_[a]);
-    add_[a] = t.action(a).eff.add;
-    for (auto& ce : t.action(a).cond_eff) add_[a].insert(add_[a].end(), ce.eff.add.begin(), ce.eff.add.end());
-    cost_[a] = spec.cost(a);
-    for (int p : pre_[a]) achievers_of_pre_[p].push_back(a);
-  }
-  goal_clauses_ = dnf(spec.goal(), spec.goal().root());
-  atom_cost_.assign(nb, kInf);
-  act_cost_.assign(na, kInf);
-  unsat_.assign(na, 0);
+  atom_cost_.assign(t.num_atoms(), kInf);
+  act_cost_.assign(t.num_actions(), kInf);
+  unsat_.assign(t.num_actions(), 0);
 }
 
 double HMaxHeuristic::estimate(const uint64_t* s) {
@@ -90,13 +97,13 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
       q.push({0, b});
     }
   for (int a = 0; a < na; ++a) {
-    unsat_[a] = static_cast<int>(pre_[a].size());
+    unsat_[a] = static_cast<int>(r_.pre[a].size());
     act_cost_[a] = 0;
     if (unsat_[a] == 0)
-      for (int b : add_[a])
-        if (cost_[a] < atom_cost_[b]) {
-          atom_cost_[b] = cost_[a];
-          q.push({cost_[a], b});
+      for (int b : r_.add[a])
+        if (r_.cost[a] < atom_cost_[b]) {
+          atom_cost_[b] = r_.cost[a];
+          q.push({r_.cost[a], b});
         }
   }
   // One estimate is O(actions + atoms); on a large grounding that is long, so
@@ -108,11 +115,11 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
     auto [c, b] = q.top();
     q.pop();
     if (c > atom_cost_[b]) continue;
-    for (int a : achievers_of_pre_[b]) {
+    for (int a : r_.needed_by[b]) {
       act_cost_[a] = std::max(act_cost_[a], c);
       if (--unsat_[a] == 0) {
-        double ac = act_cost_[a] + cost_[a];
-        for (int e : add_[a])
+        double ac = act_cost_[a] + r_.cost[a];
+        for (int e : r_.add[a])
           if (ac < atom_cost_[e]) {
             atom_cost_[e] = ac;
             q.push({ac, e});
@@ -121,7 +128,7 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
     }
   }
   double best = kInf;
-  for (auto& clause : goal_clauses_) {
+  for (auto& clause : r_.goal_clauses) {
     double m = 0;
     for (int b : clause) m = std::max(m, atom_cost_[b]);
     best = std::min(best, m);
@@ -132,20 +139,9 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
 void FFHeuristic::prepare(const model::Specification& spec, const pddl::State&) {
   if (spec_ == &spec) return;
   spec_ = &spec;
+  r_ = Relaxation::of(spec);
   const pddl::Task& t = spec.task();
   const int na = t.num_actions(), nb = t.num_atoms();
-  pre_.assign(na, {});
-  add_.assign(na, {});
-  cost_.assign(na, 0);
-  achievers_of_pre_.assign(nb, {});
-  for (int a = 0; a < na; ++a) {
-    positive_conjuncts(t, t.action(a).pre, pre_[a]);
-    add_[a] = t.action(a).eff.add;
-    for (auto& ce : t.action(a).cond_eff) add_[a].insert(add_[a].end(), ce.eff.add.begin(), ce.eff.add.end());
-    cost_[a] = spec.cost(a);
-    for (int p : pre_[a]) achievers_of_pre_[p].push_back(a);
-  }
-  goal_clauses_ = dnf(spec.goal(), spec.goal().root());
   atom_cost_.assign(nb, kInf);
   act_cost_.assign(na, 0);
   unsat_.assign(na, 0);
@@ -172,8 +168,8 @@ double FFHeuristic::estimate(const uint64_t* s) {
       q.push({0, b});
     }
   auto relax = [&](int a) {
-    const double ac = act_cost_[a] + cost_[a];
-    for (int e : add_[a])
+    const double ac = act_cost_[a] + r_.cost[a];
+    for (int e : r_.add[a])
       if (ac < atom_cost_[e]) {
         atom_cost_[e] = ac;
         supporter_[e] = a;
@@ -181,7 +177,7 @@ double FFHeuristic::estimate(const uint64_t* s) {
       }
   };
   for (int a = 0; a < na; ++a) {
-    unsat_[a] = static_cast<int>(pre_[a].size());
+    unsat_[a] = static_cast<int>(r_.pre[a].size());
     act_cost_[a] = 0;
     if (unsat_[a] == 0) relax(a);
   }
@@ -192,7 +188,7 @@ double FFHeuristic::estimate(const uint64_t* s) {
     auto [c, b] = q.top();
     q.pop();
     if (c > atom_cost_[b]) continue;
-    for (int a : achievers_of_pre_[b]) {
+    for (int a : r_.needed_by[b]) {
       act_cost_[a] += c;
       if (--unsat_[a] == 0) relax(a);
     }
@@ -200,7 +196,7 @@ double FFHeuristic::estimate(const uint64_t* s) {
   // The cheapest goal clause by h_add, then its relaxed plan.
   const std::vector<int>* best = nullptr;
   double best_cost = kInf;
-  for (auto& clause : goal_clauses_) {
+  for (auto& clause : r_.goal_clauses) {
     double sum = 0;
     for (int b : clause) sum += atom_cost_[b];
     if (sum < best_cost) best_cost = sum, best = &clause;
@@ -218,8 +214,8 @@ double FFHeuristic::estimate(const uint64_t* s) {
     const int a = supporter_[b];
     if (a < 0 || in_plan_[a]) continue;  // true in s, or already planned
     in_plan_[a] = 1;
-    h += cost_[a];
-    for (int p : pre_[a]) open.push_back(p);
+    h += r_.cost[a];
+    for (int p : r_.pre[a]) open.push_back(p);
   }
   return h;
 }

@@ -28,6 +28,18 @@ class BlindHeuristic : public Heuristic {
   bool estimates_depend_on_root() const override { return false; }
 };
 
+// The delete relaxation both h_max and h_FF evaluate, built once per
+// specification: per action its positive top-level preconditions, its adds
+// (conditional ones included) and its cost; per atom the actions needing it;
+// the goal as clauses over positive atoms.
+struct Relaxation {
+  std::vector<std::vector<int>> pre, add;
+  std::vector<double> cost;
+  std::vector<std::vector<int>> needed_by;  // atom -> actions with it as a precondition
+  std::vector<std::vector<int>> goal_clauses;
+  static Relaxation of(const model::Specification& spec);
+};
+
 class HMaxHeuristic : public Heuristic {
  public:
   std::string name() const override { return "hmax"; }
@@ -39,11 +51,7 @@ class HMaxHeuristic : public Heuristic {
 
  private:
   const model::Specification* spec_ = nullptr;
-  std::vector<std::vector<int>> pre_;          // per action: positive atom preconditions
-  std::vector<std::vector<int>> add_;          // per action: added atoms
-  std::vector<double> cost_;
-  std::vector<std::vector<int>> goal_clauses_; // DNF over positive atoms
-  std::vector<std::vector<int>> achievers_of_pre_;  // atom -> actions needing it
+  Relaxation r_;
   std::vector<double> atom_cost_, act_cost_;
   std::vector<int> unsat_;
 };
@@ -59,8 +67,8 @@ class FFHeuristic : public Heuristic {
 
  private:
   const model::Specification* spec_ = nullptr;
-  std::vector<std::vector<int>> pre_, add_, achievers_of_pre_, goal_clauses_;
-  std::vector<double> cost_, atom_cost_, act_cost_;
+  Relaxation r_;
+  std::vector<double> atom_cost_, act_cost_;
   std::vector<int> unsat_, supporter_;
   std::vector<char> in_plan_, atom_done_;
 };

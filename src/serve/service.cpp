@@ -38,7 +38,7 @@ json parse_body(const std::string& body, std::initializer_list<const char*> allo
   } else {
     try {
       j = json::parse(body);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
       throw HttpError(400, std::string("malformed JSON body: ") + e.what());
     }
   }

@@ -35,6 +35,7 @@ TEST(LanguageConfig, ErrorsNameFileAndKey) {
                           "printed_form": "fancy"})"),
             "lang.json: printed_form: expected one of: where-clause, qualified-args-only");
   EXPECT_NE(message_of("{").find("lang.json: invalid JSON"), std::string::npos);
+  EXPECT_NE(message_of(R"({"domain": "d", "max_command_actions": 1e999})").find("lang.json: invalid JSON"), std::string::npos);
 }
 
 TEST(LanguageConfig, PronounsMapBothWays) {

@@ -114,6 +114,7 @@ TEST(PackFile, MinimalFileTakesTheDefaults) {
 TEST(PackFile, ErrorsNameTheFileAndTheField) {
   EXPECT_NE(error_of("{").find("t/pack.json"), std::string::npos);
   EXPECT_NE(error_of("{").find("invalid JSON"), std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"horizon": 1e999}})j").find("invalid JSON"), std::string::npos);
   EXPECT_NE(error_of(R"j({"roles": {}})j").find("domain: missing"), std::string::npos);
   EXPECT_NE(error_of(R"j({"domain": "k", "colour": 1})j").find("colour: unknown field"), std::string::npos);
   EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"horizon": 0}})j").find("roles.horizon"), std::string::npos);

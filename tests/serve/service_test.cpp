@@ -87,6 +87,10 @@ TEST_F(Fixture, MalformedJsonAndUnknownFieldsAre400NamingTheField) {
   Reply r = s->handle("POST", "/api/sessions", R"j({"dataset": "doors-keys-gems", )j");
   EXPECT_EQ(r.status, 400);
   EXPECT_NE(body(r)["error"].get<std::string>().find("malformed JSON"), std::string::npos);
+  // A number too large for a double is a JSON error too, not a server fault.
+  r = s->handle("POST", "/api/sessions", R"j({"dataset": "doors-keys-gems", "seed": 1e999})j");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("malformed JSON"), std::string::npos);
   r = s->handle("POST", "/api/sessions", R"j({"dataset":"doors-keys-gems","problem":"e1","colour":"red"})j");
   EXPECT_EQ(r.status, 400);
   EXPECT_NE(body(r)["error"].get<std::string>().find("unknown field 'colour'"), std::string::npos);

@@ -110,7 +110,7 @@ std::map<std::string, PromptOrders> parse_prompt_orders(const std::string& json_
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for a number too large
     fail("(top level)", std::string("invalid JSON: ") + e.what());
   }
   if (!doc.is_object()) fail("(top level)", "expected an object of domain -> orders");

@@ -143,7 +143,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   json doc;
   try {
     doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
     throw InputError(SourceLoc{source_name, 0, 0}, std::string("invalid JSON: ") + e.what());
   }
   const Reader r(source_name);
