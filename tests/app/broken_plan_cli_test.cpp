@@ -11,17 +11,13 @@
 namespace clips::eval {
 namespace {
 
-namespace fs = std::filesystem;
 using testing::clips_binary;
 using testing::contains;
 using testing::run;
 
-struct BrokenCopy {
-  testing::TempDir dir{"broken-plan"};
-  std::string ds = (dir.path / "dkg").string();
-  BrokenCopy() {
-    fs::copy(testing::examples_dkg(), ds, fs::copy_options::recursive);
-    std::ofstream(fs::path(ds) / "plans/observed/e1.2.keys.pddl") << "(up human)\n; Can you help\n(wait robot)\n; me?\n";
+struct BrokenCopy : testing::ExamplesCopy {
+  BrokenCopy() : ExamplesCopy("broken-plan") {
+    std::ofstream(file("plans/observed/e1.2.keys.pddl")) << "(up human)\n; Can you help\n(wait robot)\n; me?\n";
   }
 };
 

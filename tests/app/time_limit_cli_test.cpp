@@ -35,38 +35,30 @@ double timed_run(const std::string& args, testing::RunResult& r) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-TEST(CliPlanLimits, AstarMaxSecondsHoldsOnAWideTask) {
+// Runs `clips plan` on the wide task with `flags` (a 2 s limit) and checks it
+// stopped soon for that limit: exit 5, `status` in the output, `message`
+// saying which limit, never "no plan exists".
+void expect_stopped_by_limit(const std::string& flags, const std::string& status, const std::string& message) {
   WideFiles f;
   testing::RunResult r;
-  const double secs =
-      timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --max-seconds 2", r);
+  const double secs = timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax " + flags, r);
   EXPECT_LT(secs, 30) << r.out;
   EXPECT_EQ(r.status, 5) << r.out;  // a limit stopped the search
-  EXPECT_TRUE(contains(r.out, "status max_time")) << r.out;
-  EXPECT_TRUE(contains(r.out, "--max-seconds limit of 2 s reached")) << r.out;
+  EXPECT_TRUE(contains(r.out, status)) << r.out;
+  EXPECT_TRUE(contains(r.out, message)) << r.out;
   EXPECT_FALSE(contains(r.out, "no plan exists")) << r.out;
 }
 
+TEST(CliPlanLimits, AstarMaxSecondsHoldsOnAWideTask) {
+  expect_stopped_by_limit("--max-seconds 2", "status max_time", "--max-seconds limit of 2 s reached");
+}
+
 TEST(CliPlanLimits, AstarTimeLimitHoldsOnAWideTask) {
-  WideFiles f;
-  testing::RunResult r;
-  const double secs = timed_run(
-      "--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --time-limit 2 --json", r);
-  EXPECT_LT(secs, 30) << r.out;
-  EXPECT_EQ(r.status, 5) << r.out;  // a limit stopped the search
-  EXPECT_TRUE(contains(r.out, "\"status\":\"time_limit\"")) << r.out;
-  EXPECT_TRUE(contains(r.out, "time limit of 2 s reached")) << r.out;
+  expect_stopped_by_limit("--time-limit 2 --json", "\"status\":\"time_limit\"", "time limit of 2 s reached");
 }
 
 TEST(CliPlanLimits, RtaaTimeLimitHoldsOnAWideTask) {
-  WideFiles f;
-  testing::RunResult r;
-  const double secs = timed_run(
-      "--domain " + f.domain + " --problem " + f.problem + " --heuristic hmax --planner rtaa --time-limit 2", r);
-  EXPECT_LT(secs, 30) << r.out;
-  EXPECT_EQ(r.status, 5) << r.out;  // a limit stopped the search
-  EXPECT_TRUE(contains(r.out, "status time_limit")) << r.out;
-  EXPECT_TRUE(contains(r.out, "time limit of 2 s reached")) << r.out;
+  expect_stopped_by_limit("--planner rtaa --time-limit 2", "status time_limit", "time limit of 2 s reached");
 }
 
 // The other side: a goal no action can reach (nothing adds `sealed`) is

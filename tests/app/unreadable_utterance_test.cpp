@@ -25,12 +25,9 @@ using testing::contains;
 using testing::run;
 
 // e1.1.keys of the examples, with its "; <utterance>" line replaced.
-struct PlanWithUtterance {
-  testing::TempDir dir{"utterance"};
-  std::string ds = (dir.path / "dkg").string();
-  explicit PlanWithUtterance(const std::string& utterance) {
-    fs::copy(testing::examples_dkg(), ds, fs::copy_options::recursive);
-    const fs::path plan = fs::path(ds) / "plans/observed/e1.1.keys.pddl";
+struct PlanWithUtterance : testing::ExamplesCopy {
+  explicit PlanWithUtterance(const std::string& utterance) : ExamplesCopy("utterance") {
+    const fs::path plan = file("plans/observed/e1.1.keys.pddl");
     std::string text = testing::read_text(plan), out;
     size_t start = 0;
     while (start < text.size()) {

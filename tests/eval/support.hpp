@@ -35,6 +35,17 @@ struct TempDir {
   std::string str() const { return path.string(); }
 };
 
+// A scratch copy of the Doors-Keys-Gems examples dataset (`ds`), for tests
+// that break or rewrite one of its files.
+struct ExamplesCopy {
+  TempDir dir;
+  std::string ds = (dir.path / "dkg").string();
+  explicit ExamplesCopy(const std::string& tag) : dir(tag) {
+    std::filesystem::copy(examples_dkg(), ds, std::filesystem::copy_options::recursive);
+  }
+  std::filesystem::path file(const std::string& relative) const { return std::filesystem::path(ds) / relative; }
+};
+
 struct RunResult {
   int status = -1;
   std::string out;  // stdout and stderr, interleaved
