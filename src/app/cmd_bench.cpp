@@ -1,18 +1,165 @@
-// `clips bench`: reproduce the paper's result tables on a dataset directory.
+// `clips bench`: reproduce the paper's result tables on a dataset directory;
+// `clips bench --shard K/N` runs one part of such a sweep and `clips bench
+// merge` joins the parts (eval/bench_shards.hpp).
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
-#include <fstream>
+#include <optional>
+#include <string_view>
 #include <system_error>
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "eval/bench.hpp"
+#include "eval/bench_shards.hpp"
 #include "eval/report.hpp"
 #include "util/data_dir.hpp"
 
 namespace clips::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ShardSpec {
+  int k = 1, n = 1;
+};
+
+// "K/N" with 1 <= K <= N; nullopt and a reason otherwise.
+std::optional<ShardSpec> parse_shard(const std::string& text, std::string& why) {
+  const auto slash = text.find('/');
+  const auto number = [](std::string_view digits, int& value) {
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos) return false;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    return ec == std::errc() && end == digits.data() + digits.size();
+  };
+  ShardSpec s;
+  const std::string_view all(text);
+  if (slash == std::string::npos || !number(all.substr(0, slash), s.k) || !number(all.substr(slash + 1), s.n)) {
+    why = text + " is not K/N (e.g. 2/8: the 2nd of 8 parts)";
+    return std::nullopt;
+  }
+  if (s.n < 1) why = text + ": N must be at least 1";
+  else if (s.k < 1 || s.k > s.n) why = fmt::format("{}: K must be from 1 to N ({})", text, s.n);
+  if (!why.empty()) return std::nullopt;
+  return s;
+}
+
+// CLI11 prefixes the message with the flag's name: "--shard: 4/3: K must be ...".
+const CLI::Validator ShardValue(
+    [](std::string& in) -> std::string {
+      std::string why;
+      parse_shard(in, why);
+      return why;
+    },
+    "K/N");
+
+// Output directories are checked (and made) before any long work, not after it.
+void prepare_output_dirs(const std::vector<std::pair<const char*, const std::string*>>& dirs) {
+  for (auto [flag, dir] : dirs) {
+    if (dir->empty()) continue;
+    std::error_code ec;
+    if (fs::exists(*dir, ec) && !fs::is_directory(*dir, ec))
+      throw InputError(fmt::format("{} {} exists and is not a directory", flag, *dir));
+    fs::create_directories(*dir, ec);
+    if (ec) throw InputError(fmt::format("{}: cannot create directory {}: {}", flag, *dir, ec.message()));
+  }
+}
+
+// `--out ""` (an unset variable in a script) would silently write nothing.
+void reject_empty(const CLI::Option* opt, const std::string& value) {
+  if (opt->count() > 0 && value.empty()) throw UsageError(opt->get_name() + " is empty: give a directory");
+}
+
+// What bench and bench merge print and write once they have a report.
+void emit(const eval::BenchReport& rep, const std::string& out, const std::string& report, int jobs) {
+  fmt::print("{}", eval::results_table(rep, util::data_dir() + "/paper/results.json"));
+  if (!out.empty()) {
+    eval::write_bench_files(rep, out);
+    fmt::print(stderr, "wrote {0}/summary.json, {0}/results.csv, {0}/posteriors.csv and {0}/outcomes.json{1}\n", out,
+               rep.failed_plans ? " (failed plans: see the error column)" : "");
+  }
+  if (!report.empty()) {
+    eval::ReportOptions ro;
+    ro.dir = report;
+    ro.paper_json = util::data_dir() + "/paper/results.json";
+    ro.jobs = jobs;
+    fmt::print(stderr, "wrote {}\n", eval::write_report(rep, ro));
+  }
+  g_exit_code = rep.failed_plans == 0 ? kExitOk : kExitSomeFailed;
+}
+
+// On stderr: which part of the sweep a shard ran, and plainly when it has no plan.
+void note_shard(const eval::BenchReport& rep) {
+  if (rep.shards.count == 1) return;
+  const int k = rep.shards.present.front();
+  if (rep.plans.empty())
+    fmt::print(stderr,
+               "bench: shard {}/{} has no plans (the sweep has {}, dealt round-robin); its files have no rows, "
+               "and `clips bench merge` takes it like any other shard\n",
+               k, rep.shards.count, rep.selection.size());
+  else
+    fmt::print(stderr, "bench: shard {}/{}: {} of the sweep's {} plans\n", k, rep.shards.count, rep.plans.size(),
+               rep.selection.size());
+}
+
+// The pictures of a merged report need the dataset the shards ran on.
+void load_dataset_for_report(eval::BenchReport& rep, const std::string& given) {
+  const std::string dir = given.empty() ? rep.dataset : dataset_dir(given);
+  const std::string fingerprint = eval::dataset_fingerprint(dir);
+  if (fingerprint != rep.fingerprint)
+    throw InputError(fmt::format("--report needs the dataset the shards ran on (fingerprint {}), but {} has "
+                                 "fingerprint {}: give its folder with --dataset",
+                                 rep.fingerprint, dir, fingerprint));
+  rep.loaded = std::make_shared<const data::Dataset>(data::Dataset::load(dir));
+}
+
+void register_merge(CLI::App* bench) {
+  auto* cmd = bench->add_subcommand(
+      "merge",
+      "Merge the --out folders of `clips bench --shard K/N` runs into the files of one unsharded run: plans in "
+      "dataset order, means and standard errors over all of them (no plan runs again)");
+  auto out = std::make_shared<std::string>();
+  auto report = std::make_shared<std::string>();
+  auto dataset = std::make_shared<std::string>();
+  auto parts = std::make_shared<std::vector<std::string>>();
+  auto allow_partial = std::make_shared<bool>(false);
+  cmd->add_option("parts", *parts, "The shards' --out folders (each holds outcomes.json)")->required();
+  auto* out_opt = cmd->add_option("--out", *out, "Write the merged summary.json, results.csv, posteriors.csv and "
+                                                 "outcomes.json into this directory")
+                      ->required();
+  auto* report_opt = cmd->add_option("--report", *report, "Also write DIR/report.html, as `clips bench --report`");
+  cmd->add_option("--dataset", *dataset,
+                  "With --report: the dataset folder for the pictures (default: the one the shards recorded; its "
+                  "fingerprint must be theirs)");
+  cmd->add_flag("--allow-partial", *allow_partial,
+                "Merge even when some of the N shards are missing; summary.json's \"shards\" then lists them");
+  cmd->callback([=] {
+    for (const CLI::Option* opt : bench->get_options())
+      if (opt->count() > 0)
+        throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench merge`");
+    reject_empty(out_opt, *out);
+    reject_empty(report_opt, *report);
+    std::vector<eval::BenchPart> read;
+    for (const std::string& dir : *parts) {
+      std::error_code ec;
+      if (fs::exists(*out, ec) && fs::exists(dir, ec) && fs::equivalent(*out, dir, ec))
+        throw UsageError("--out " + *out + " is one of the parts: merging would overwrite it");
+      read.push_back({dir, eval::read_bench_part(dir)});
+    }
+    eval::MergeOptions mo;
+    mo.allow_partial = *allow_partial;
+    auto rep = eval::merge_bench_parts(std::move(read), mo);
+    if (!report->empty()) load_dataset_for_report(rep, *dataset);
+    prepare_output_dirs({{"--out", out.get()}, {"--report", report.get()}});
+    if (rep.shards.partial()) fmt::print(stderr, "bench merge: {}\n", eval::partial_note(rep));
+    emit(rep, *out, *report, 0);
+  });
+}
+
+}  // namespace
 
 void register_bench(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench",
@@ -22,10 +169,12 @@ void register_bench(CLI::App& app) {
   auto out = std::make_shared<std::string>();
   auto assist = std::make_shared<std::string>("default");
   auto methods = std::make_shared<std::vector<std::string>>();
+  auto shard = std::make_shared<std::string>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
   auto* out_opt = cmd->add_option("--out", *out,
-                                  "Write results.csv, posteriors.csv (goal posterior per plan, method, step and goal) "
-                                  "and summary.json into this directory");
+                                  "Write results.csv, posteriors.csv (goal posterior per plan, method, step and goal), "
+                                  "summary.json and outcomes.json (every outcome at full precision, for `clips bench "
+                                  "merge`) into this directory");
   cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)")->check(PositiveInteger);
   cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines, 0..2^64-1 (default 1)")
       ->check(SeedValue);
@@ -38,6 +187,13 @@ void register_bench(CLI::App& app) {
   cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive (or clips,lang_only)")
       ->delimiter(',');
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
+  cmd->add_option("--shard", *shard,
+                  "Run only part K of N (1 <= K <= N), e.g. ${SLURM_ARRAY_TASK_ID}/N in a job array. The plans "
+                  "(evaluated ones or --plans, in dataset order; unloadable ones last) are dealt round-robin: the "
+                  "plan at position i goes to part (i mod N)+1, so parts differ by at most one plan and each mixes "
+                  "easy and hard problems. A part may have no plan. Join the parts' --out folders with "
+                  "`clips bench merge`")
+      ->check(ShardValue);
   // issue 8: HTML report and the multimodal baseline's chat endpoint.
   auto report = std::make_shared<std::string>();
   auto* report_opt = cmd->add_option("--report", *report,
@@ -46,10 +202,11 @@ void register_bench(CLI::App& app) {
                   "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped");
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
+  register_merge(cmd);
   cmd->callback([=] {
-    // `--out ""` (an unset variable in a script) would silently write nothing.
-    if (out_opt->count() > 0 && out->empty()) throw UsageError("--out is empty: give a directory");
-    if (report_opt->count() > 0 && report->empty()) throw UsageError("--report is empty: give a directory");
+    if (cmd->got_subcommand("merge")) return;  // merge has run (CLI11 runs a subcommand's callback first)
+    reject_empty(out_opt, *out);
+    reject_empty(report_opt, *report);
     o->dataset = dataset_dir(o->dataset);
     o->lm = lm->kind;  // with --lm-base-url, --lm-model, --lm-timeout, --lm-max-reply-mb
     o->lm_options = lm_options(*lm);
@@ -58,41 +215,19 @@ void register_bench(CLI::App& app) {
     o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
+    if (!shard->empty()) {
+      std::string why;
+      const ShardSpec s = parse_shard(*shard, why).value();  // checked by ShardValue
+      o->shard = s.k;
+      o->shard_count = s.n;
+    }
     bool wants_mm = std::find(methods->begin(), methods->end(), "multimodal") != methods->end();
     if (wants_mm && !o->experiment.multimodal.configured())
       throw InputError("--methods multimodal needs a chat endpoint: --chat-base-url URL or $CLIPS_CHAT_BASE_URL");
-    // Output directories are checked before the (long) run, not after it.
-    for (auto [flag, dir] : {std::pair{"--out", out.get()}, std::pair{"--report", report.get()}}) {
-      if (dir->empty()) continue;
-      std::error_code ec;
-      if (std::filesystem::exists(*dir, ec) && !std::filesystem::is_directory(*dir, ec))
-        throw InputError(fmt::format("{} {} exists and is not a directory", flag, *dir));
-      std::filesystem::create_directories(*dir, ec);
-      if (ec) throw InputError(fmt::format("{}: cannot create directory {}: {}", flag, *dir, ec.message()));
-    }
+    prepare_output_dirs({{"--out", out.get()}, {"--report", report.get()}});
     auto rep = eval::run_bench(*o);
-    fmt::print("{}", eval::results_table(rep, util::data_dir() + "/paper/results.json"));
-    if (!out->empty()) {
-      std::filesystem::create_directories(*out);
-      auto write = [&](const std::string& name, const std::string& text) {
-        std::string path = *out + "/" + name;
-        std::ofstream f(path);
-        if (!(f << text)) throw InputError("cannot write " + path);
-      };
-      write("summary.json", eval::summary_json(rep));
-      write("results.csv", eval::results_csv(rep));
-      write("posteriors.csv", eval::posteriors_csv(rep));
-      fmt::print(stderr, "wrote {0}/summary.json, {0}/results.csv and {0}/posteriors.csv{1}\n", *out,
-                 rep.failed_plans ? " (failed plans: see the error column)" : "");
-    }
-    if (!report->empty()) {
-      eval::ReportOptions ro;
-      ro.dir = *report;
-      ro.paper_json = util::data_dir() + "/paper/results.json";
-      ro.jobs = o->jobs;
-      fmt::print(stderr, "wrote {}\n", eval::write_report(rep, ro));
-    }
-    g_exit_code = rep.failed_plans == 0 ? kExitOk : kExitSomeFailed;
+    note_shard(rep);
+    emit(rep, *out, *report, o->jobs);
   });
 }
 

@@ -4,8 +4,10 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -124,8 +126,83 @@ const nlohmann::json* paper_results_for(const BenchReport& r, const nlohmann::js
   return ok ? &paper_all[r.domain] : nullptr;
 }
 
+bool ShardSet::holds_position(size_t position) const {
+  return std::binary_search(present.begin(), present.end(), of_position(position, count));
+}
+
+std::vector<int> ShardSet::missing() const {
+  std::vector<int> out;
+  for (int k = 1; k <= count; ++k)
+    if (!std::binary_search(present.begin(), present.end(), k)) out.push_back(k);
+  return out;
+}
+
+std::string partial_note(const BenchReport& r) {
+  if (!r.shards.partial()) return "";
+  const auto join = [](const std::vector<int>& ks) {
+    std::string out;
+    for (int k : ks) out += (out.empty() ? "" : ", ") + std::to_string(k);
+    return out;
+  };
+  return fmt::format("partial: shard{} {} of {} ({} of the sweep's {} plans); missing: {}",
+                     r.shards.present.size() > 1 ? "s" : "", join(r.shards.present), r.shards.count, r.plans.size(),
+                     r.selection.size(), join(r.shards.missing()));
+}
+
+namespace {
+
+// The sweep's plans before sharding: those to evaluate, in dataset order, and
+// the unloadable ones reported after them as failed plans (only without
+// --plans; tutorial plans, demo*, are not evaluated).
+struct Selection {
+  std::vector<const data::PlanRecord*> plans;
+  std::vector<const data::BrokenPlan*> broken;
+  std::vector<std::string> ids() const {
+    std::vector<std::string> out;
+    for (auto* p : plans) out.push_back(p->id);
+    for (auto* b : broken) out.push_back(b->id);
+    return out;
+  }
+};
+
+Selection select_plans(const data::Dataset& ds, const BenchOptions& opts) {
+  Selection s;
+  for (auto& p : ds.plans()) {
+    bool wanted = opts.plans.empty() ? p.evaluated
+                                     : std::find(opts.plans.begin(), opts.plans.end(), p.id) != opts.plans.end();
+    if (wanted) s.plans.push_back(&p);
+  }
+  if (opts.plans.empty())
+    for (auto& b : ds.broken_plans())
+      if (b.id.rfind("demo", 0) != 0) s.broken.push_back(&b);
+  return s;
+}
+
+// The part of the selection that the report's shards hold, positions kept.
+Selection shard_part(const Selection& all, const ShardSet& shards) {
+  Selection mine;
+  for (size_t i = 0; i < all.plans.size(); ++i)
+    if (shards.holds_position(i)) mine.plans.push_back(all.plans[i]);
+  for (size_t j = 0; j < all.broken.size(); ++j)
+    if (shards.holds_position(all.plans.size() + j)) mine.broken.push_back(all.broken[j]);
+  return mine;
+}
+
+// The chat model behind the multimodal baseline when it will run, else "".
+std::string multimodal_model(const ExperimentOptions& e) {
+  const bool requested = std::find(e.methods.begin(), e.methods.end(), "multimodal") != e.methods.end();
+  if (!(requested || (e.methods.empty() && e.multimodal.configured()))) return "";
+  if (!e.multimodal.model.empty()) return e.multimodal.model;
+  const char* env = std::getenv("CLIPS_CHAT_MODEL");
+  return env && *env ? env : "default";
+}
+
+}  // namespace
+
 BenchReport run_bench(const BenchOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
+  if (opts.shard_count < 1 || opts.shard < 1 || opts.shard > opts.shard_count)
+    throw InputError(fmt::format("shard {}/{}: K must be between 1 and N", opts.shard, opts.shard_count));
   BenchReport rep;
   rep.loaded = std::make_shared<const data::Dataset>(data::Dataset::load(opts.dataset));
   const data::Dataset& ds0 = *rep.loaded;
@@ -137,13 +214,16 @@ BenchReport run_bench(const BenchOptions& opts) {
   rep.seed = opts.experiment.seed;
   rep.assistance = opts.experiment.all_assistance ? "all" : "default";
   rep.methods_requested = opts.experiment.methods;
-  std::vector<const data::PlanRecord*> todo;
-  for (auto& p : ds0.plans()) {
-    bool wanted = opts.plans.empty() ? p.evaluated
-                                     : std::find(opts.plans.begin(), opts.plans.end(), p.id) != opts.plans.end();
-    if (wanted) todo.push_back(&p);
-  }
-  if (todo.empty()) throw InputError("no plans to evaluate in " + opts.dataset);
+  rep.chat_model = multimodal_model(opts.experiment);
+  const Selection all = select_plans(ds0, opts);
+  if (all.plans.empty()) throw InputError("no plans to evaluate in " + opts.dataset);
+  rep.selection = all.ids();
+  rep.shards.count = opts.shard_count;
+  rep.shards.present = {opts.shard};
+  // A shard may hold no plan (more shards than plans): its files are then
+  // written with no rows, and merging still accounts for it.
+  const Selection mine = shard_part(all, rep.shards);
+  const std::vector<const data::PlanRecord*>& todo = mine.plans;
   auto lm = opts.language_model ? opts.language_model : language::make_dataset_language_model(opts.lm, opts.lm_options, ds0);
   rep.lm = lm->name();
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
@@ -183,17 +263,25 @@ BenchReport run_bench(const BenchOptions& opts) {
   for (auto& t : pool) t.join();
 
   // Plans whose files did not load are reported as failed plans (with the
-  // file's error), after the others; tutorial plans (demo*) are not evaluated.
-  if (opts.plans.empty())
-    for (auto& b : ds0.broken_plans())
-      if (b.id.rfind("demo", 0) != 0) {
-        PlanOutcome bad;
-        bad.plan_id = b.id;
-        bad.error = "could not be loaded: " + b.error;
-        rep.plans.push_back(std::move(bad));
-      }
+  // file's error), after the others.
+  for (const data::BrokenPlan* b : mine.broken) {
+    PlanOutcome bad;
+    bad.plan_id = b->id;
+    bad.error = "could not be loaded: " + b->error;
+    rep.plans.push_back(std::move(bad));
+  }
+  summarise(rep);
+  rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  rep.max_rss_kb = ru.ru_maxrss;
+  return rep;
+}
 
-  std::vector<std::string> order;
+void summarise(BenchReport& rep) {
+  rep.failed_plans = 0;
+  rep.summary.clear();
+  std::vector<std::string> order;  // methods in order of first appearance
   for (auto& p : rep.plans) {
     if (!p.error.empty()) ++rep.failed_plans;
     for (auto& m : p.methods)
@@ -218,11 +306,6 @@ BenchReport run_bench(const BenchOptions& opts) {
     for (auto& [k, v] : xs) s.metrics[k] = mean_se(v);
     rep.summary.push_back(s);
   }
-  rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  rusage ru{};
-  getrusage(RUSAGE_SELF, &ru);
-  rep.max_rss_kb = ru.ru_maxrss;
-  return rep;
 }
 
 std::string summary_json(const BenchReport& r) {
@@ -230,8 +313,8 @@ std::string summary_json(const BenchReport& r) {
   j["domain"] = r.domain;
   j["dataset"] = r.dataset;
   j["dataset_fingerprint"] = r.fingerprint;
-  j["clips_version"] = util::version();
-  j["git_commit"] = util::git_commit().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(util::git_commit());
+  j["clips_version"] = r.clips_version;
+  j["git_commit"] = r.git_commit.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.git_commit);
   j["date"] = r.started_utc;
   j["seed"] = r.seed;
   j["assistance"] = r.assistance;
@@ -247,6 +330,14 @@ std::string summary_json(const BenchReport& r) {
   j["qa_floor"] = r.qa_floor;
   j["wall_seconds"] = r.wall_seconds;
   j["max_rss_mb"] = static_cast<double>(r.max_rss_kb) / 1024.0;
+  // Sharded runs and merges of them say which part of the sweep they hold;
+  // an unsharded run's summary is as it always was.
+  if (r.shards.count > 1)
+    j["shards"] = {{"count", r.shards.count},
+                   {"present", r.shards.present},
+                   {"missing", r.shards.missing()},
+                   {"partial", r.shards.partial()},
+                   {"selection_plans", r.selection.size()}};
   nlohmann::ordered_json methods = nlohmann::ordered_json::object();
   for (auto& s : r.summary) {
     nlohmann::ordered_json m = nlohmann::ordered_json::object();
@@ -331,6 +422,7 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
                                                            {"rel_human_cost", "rel. human cost"}};
   std::string out = fmt::format("{} — {} plans, LM: {}, {:.1f} s wall, max RSS {:.0f} MiB\n", r.domain, r.plans.size(),
                                 r.lm, r.wall_seconds, r.max_rss_kb / 1024.0);
+  if (const std::string note = partial_note(r); !note.empty()) out += note + "\n";
   out += fmt::format("{:<26}", "method");
   for (auto& [k, label] : cols) out += fmt::format(" | {:^23}", label);
   out += "\n" + fmt::format("{:<26}", "");

@@ -12,8 +12,25 @@
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
 #include "language/listener.hpp"
+#include "util/version.hpp"
 
 namespace clips::eval {
+
+// Which of a sweep's N disjoint parts a report holds (`clips bench --shard
+// K/N`, `clips bench merge`). The sweep's plans (its selection: the evaluated
+// plans, or --plans, in dataset order, then the plans that did not load) are
+// dealt round-robin: the plan at position i goes to shard (i mod N) + 1.
+// Dealing rather than cutting into blocks mixes easy and hard problems into
+// every shard (problems come in dataset order), and shard sizes differ by at
+// most one plan.
+struct ShardSet {
+  int count = 1;                // N; 1: an unsharded run
+  std::vector<int> present{1};  // the shards K the report holds, ascending
+  static int of_position(size_t position, int count) { return static_cast<int>(position % count) + 1; }
+  bool holds_position(size_t position) const;
+  std::vector<int> missing() const;  // the K in 1..N not present, ascending
+  bool partial() const { return !missing().empty(); }
+};
 
 struct BenchOptions {
   std::string dataset;
@@ -26,6 +43,7 @@ struct BenchOptions {
   language::LanguageModelOptions lm_options;
   std::vector<std::string> plans;  // empty: every evaluated plan
   bool progress = true;
+  int shard = 1, shard_count = 1;  // run only shard K = `shard` of N = `shard_count` (see ShardSet)
 };
 
 struct MethodSummary {
@@ -43,6 +61,16 @@ struct BenchReport {
   std::string speaker_rule;      // the CLIPS speaker model's command rule
   std::string utterance_timing;  // before or after the action at the utterance's index
   std::string qa_floor;          // Q_MDP floor: dead-ends or horizon
+  // The chat model of the multimodal baseline when it runs (requested, or in
+  // the default methods because an endpoint is configured); "" when it does not.
+  std::string chat_model;
+  // The build that produced the numbers (a merge keeps its parts').
+  std::string clips_version = util::version();
+  std::string git_commit = util::git_commit();
+  ShardSet shards;
+  // Every plan id of the sweep, in the order shards deal them (ShardSet);
+  // `plans` holds those of shards.present.
+  std::vector<std::string> selection;
   std::vector<PlanOutcome> plans;  // in dataset order
   std::vector<MethodSummary> summary;
   double wall_seconds = 0;
@@ -54,6 +82,12 @@ struct BenchReport {
 };
 
 BenchReport run_bench(const BenchOptions& opts);
+// Recomputes failed_plans and the per-method summary (means and standard
+// errors) from r.plans; run_bench and merging shards both end with it.
+void summarise(BenchReport& r);
+// "" for a report that covers its whole selection; else one line saying which
+// shards it holds and which are missing, for the table and the HTML report.
+std::string partial_note(const BenchReport& r);
 
 // Writers.
 std::string summary_json(const BenchReport& r);

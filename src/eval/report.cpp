@@ -236,6 +236,8 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
                    "{:.1f} s wall \u00b7 max RSS {:.0f} MiB</div>\n",
                    html_escape(r.dataset), r.plans.size(), r.failed_plans, html_escape(r.lm), r.wall_seconds,
                    r.max_rss_kb / 1024.0);
+  if (const std::string note = partial_note(r); !note.empty())
+    h += "<div class=\"meta\"><b>" + html_escape(note) + "</b></div>\n";
 
   // ---- results table
   h += std::string("<h2>Results (mean, standard error in brackets)") + (paper ? ", ours beside the paper's" : "") +

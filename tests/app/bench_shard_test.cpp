@@ -1,0 +1,268 @@
+// `clips bench --shard K/N` and `clips bench merge` on the repo's example
+// dataset (4 plans): three merged shards give the files of one unsharded run,
+// and merge refuses parts that do not belong together.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "eval/support.hpp"
+
+namespace clips::eval {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using testing::clips_binary;
+using testing::contains;
+using testing::examples_dkg;
+using testing::parse_csv;
+using testing::read_text;
+using testing::run;
+
+// Three methods (an inference method, the action-only baseline and a literal
+// listener) keep the four plans under a second or two.
+const std::string kBench = " bench --dataset " + examples_dkg() +
+                           " --methods clips,action_only,literal_naive --no-progress --jobs 1";
+
+std::string merge_command(const std::string& out, const std::vector<fs::path>& parts, const std::string& flags = "") {
+  std::string cmd = clips_binary() + " bench merge --out " + out + " " + flags;
+  for (const auto& p : parts) cmd += " " + p.string();
+  return cmd;
+}
+
+// results.csv without its timing column.
+std::vector<std::vector<std::string>> results_without_seconds(const fs::path& dir) {
+  auto rows = parse_csv(read_text(dir / "results.csv"));
+  if (rows.empty()) return rows;
+  const auto at = std::find(rows[0].begin(), rows[0].end(), "seconds") - rows[0].begin();
+  for (auto& row : rows)
+    if (at < static_cast<long>(row.size())) row.erase(row.begin() + at);
+  return rows;
+}
+
+// summary.json without the fields that tell one run from another in time
+// (wall_seconds, max_rss_mb, date) and the shards' bookkeeping.
+json summary_without_timing(const fs::path& dir) {
+  json j = json::parse(read_text(dir / "summary.json"));
+  for (const char* k : {"wall_seconds", "max_rss_mb", "date", "shards"}) j.erase(k);
+  return j;
+}
+
+// outcomes.json's plans without their timings.
+json plans_without_timing(const fs::path& dir) {
+  json plans = json::parse(read_text(dir / "outcomes.json"))["plans"];
+  for (auto& p : plans) {
+    p.erase("seconds");
+    for (auto& m : p["methods"]) {
+      m.erase("seconds");
+      m.erase("decision_seconds");
+    }
+  }
+  return plans;
+}
+
+// The results table in a command's output: its lines less the timing line
+// ("... s wall ...") and the notes on stderr ("wrote ...").
+std::vector<std::string> table_without_timing(const std::string& out) {
+  std::vector<std::string> lines;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);)
+    if (!contains(line, " s wall") && line.rfind("wrote ", 0) != 0) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> plan_column(const fs::path& dir) {
+  std::vector<std::string> plans;
+  const auto rows = parse_csv(read_text(dir / "results.csv"));
+  for (size_t i = 1; i < rows.size(); ++i)
+    if (plans.empty() || plans.back() != rows[i][0]) plans.push_back(rows[i][0]);
+  return plans;
+}
+
+// One unsharded run, its three shards and their merge, shared by the tests
+// and each made on first use (ctest runs every test in a process of its own,
+// and most tests need the shards only).
+class BenchShardTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { tmp_ = new testing::TempDir("bench-shard"); }
+  static void TearDownTestSuite() {
+    delete tmp_;
+    tmp_ = nullptr;
+    runs_.clear();
+  }
+  static fs::path dir(const std::string& name) { return tmp_->path / name; }
+  // The output of a command, run once per suite.
+  static const testing::RunResult& once(const std::string& name, const std::string& command) {
+    auto it = runs_.find(name);
+    if (it == runs_.end()) it = runs_.emplace(name, run(command)).first;
+    return it->second;
+  }
+  static const testing::RunResult& whole() {
+    return once("whole", clips_binary() + kBench + " --seed 7 --out " + dir("whole").string());
+  }
+  static const testing::RunResult& shard(int k) {
+    return once("shard" + std::to_string(k), clips_binary() + kBench + " --seed 7 --shard " + std::to_string(k) +
+                                                 "/3 --out " + part_dir(k).string());
+  }
+  static fs::path part_dir(int k) { return tmp_->path / "parts" / std::to_string(k); }
+  // Shard k's folder, after running it (a failed run fails the test).
+  static fs::path part(int k) {
+    const auto& r = shard(k);
+    EXPECT_EQ(r.status, 0) << r.out;
+    return part_dir(k);
+  }
+  // A copy of shard k's folder that a test may change.
+  static fs::path copy_of(int k, const std::string& name) {
+    fs::copy(part(k), dir(name), fs::copy_options::recursive);
+    return dir(name);
+  }
+  static inline testing::TempDir* tmp_ = nullptr;
+  static inline std::map<std::string, testing::RunResult> runs_;
+};
+
+TEST_F(BenchShardTest, MergeOfThreeShardsEqualsTheUnshardedRun) {
+  ASSERT_EQ(whole().status, 0) << whole().out;
+  // Folders in another order than the shards': the merge puts the plans back in dataset order.
+  const auto merged = run(merge_command(dir("merged").string(), {part(3), part(1), part(2)}));
+  ASSERT_EQ(merged.status, 0) << merged.out;
+  EXPECT_EQ(read_text(dir("merged") / "posteriors.csv"), read_text(dir("whole") / "posteriors.csv"));
+  const auto rows = results_without_seconds(dir("merged"));
+  EXPECT_EQ(rows.size(), 1u + 4 * 3);  // header, 4 plans x 3 methods
+  EXPECT_EQ(rows, results_without_seconds(dir("whole")));
+  EXPECT_EQ(summary_without_timing(dir("merged")), summary_without_timing(dir("whole")));
+  EXPECT_EQ(plans_without_timing(dir("merged")), plans_without_timing(dir("whole")));
+  // The table on stdout is the unsharded run's, but for its timing line.
+  EXPECT_EQ(table_without_timing(merged.out), table_without_timing(whole().out));
+
+  const json shards = json::parse(read_text(dir("merged") / "summary.json"))["shards"];
+  EXPECT_EQ(shards["count"], 3);
+  EXPECT_EQ(shards["present"], json({1, 2, 3}));
+  EXPECT_EQ(shards["missing"], json::array());
+  EXPECT_EQ(shards["partial"], false);
+  EXPECT_FALSE(json::parse(read_text(dir("whole") / "summary.json")).contains("shards"));
+}
+
+TEST_F(BenchShardTest, PlansAreDealtRoundRobinInDatasetOrder) {
+  ASSERT_EQ(whole().status, 0) << whole().out;
+  EXPECT_EQ(plan_column(dir("whole")), (std::vector<std::string>{"e1.1.keys", "e1.2.keys", "e2.1.doors", "e2.2.keys"}));
+  EXPECT_EQ(plan_column(part(1)), (std::vector<std::string>{"e1.1.keys", "e2.2.keys"}));
+  EXPECT_EQ(plan_column(part(2)), (std::vector<std::string>{"e1.2.keys"}));
+  EXPECT_EQ(plan_column(part(3)), (std::vector<std::string>{"e2.1.doors"}));
+  EXPECT_TRUE(contains(shard(1).out, "shard 1/3: 2 of the sweep's 4 plans")) << shard(1).out;
+  const json s2 = json::parse(read_text(part(2) / "summary.json"));
+  EXPECT_EQ(s2["plans"], 1);
+  EXPECT_EQ(s2["shards"]["present"], json({2}));
+  EXPECT_EQ(s2["shards"]["missing"], json({1, 3}));
+  EXPECT_EQ(s2["shards"]["partial"], true);
+  EXPECT_EQ(s2["shards"]["selection_plans"], 4);
+}
+
+TEST_F(BenchShardTest, MissingShardIsRefusedUnlessAllowPartial) {
+  const auto refused = run(merge_command(dir("no-2").string(), {part(1), part(3)}));
+  EXPECT_EQ(refused.status, 3) << refused.out;
+  EXPECT_TRUE(contains(refused.out, "shard 2 of 3 is missing (the parts hold 1, 3)")) << refused.out;
+  EXPECT_TRUE(contains(refused.out, "--allow-partial")) << refused.out;
+  EXPECT_FALSE(fs::exists(dir("no-2") / "summary.json"));
+
+  const auto partial = run(merge_command(dir("partial").string(), {part(1), part(3)}, "--allow-partial"));
+  ASSERT_EQ(partial.status, 0) << partial.out;
+  EXPECT_TRUE(contains(partial.out, "partial: shards 1, 3 of 3 (3 of the sweep's 4 plans); missing: 2")) << partial.out;
+  const json j = json::parse(read_text(dir("partial") / "summary.json"));
+  EXPECT_EQ(j["plans"], 3);
+  EXPECT_EQ(j["shards"]["partial"], true);
+  EXPECT_EQ(j["shards"]["missing"], json({2}));
+  EXPECT_EQ(plan_column(dir("partial")), (std::vector<std::string>{"e1.1.keys", "e2.1.doors", "e2.2.keys"}));
+}
+
+// Merge checks, in this order: the parts' files, that they are of one run,
+// shards and plans given twice, then missing shards; so each refusal below
+// needs only the parts that provoke it.
+TEST_F(BenchShardTest, DuplicateShardIsRefused) {
+  const fs::path again = copy_of(1, "again");
+  const auto r = run(merge_command(dir("dup").string(), {part(1), again}));
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_TRUE(contains(r.out, "shard 1 of 3 is in both " + part(1).string() + " and " + again.string())) << r.out;
+}
+
+TEST_F(BenchShardTest, SamePlanInTwoPartsIsRefused) {
+  // Shard 3's folder, edited to hold shard 2's plan as well.
+  const fs::path edited = copy_of(3, "edited");
+  json outcomes = json::parse(read_text(edited / "outcomes.json"));
+  outcomes["plans"].push_back(json::parse(read_text(part(2) / "outcomes.json"))["plans"][0]);
+  std::ofstream(edited / "outcomes.json") << outcomes.dump();
+  const auto r = run(merge_command(dir("overlap").string(), {part(2), edited}));
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_TRUE(contains(r.out, "plan e1.2.keys is in both " + part(2).string() + " and " + edited.string())) << r.out;
+}
+
+TEST_F(BenchShardTest, MismatchedSeedIsRefused) {
+  const fs::path other = dir("seed-8");
+  const auto shard = run(clips_binary() + kBench + " --seed 8 --shard 2/3 --out " + other.string());
+  ASSERT_EQ(shard.status, 0) << shard.out;
+  const auto r = run(merge_command(dir("mixed").string(), {part(1), other}));
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_TRUE(contains(r.out, other.string() + "/outcomes.json: seed is 8, but " + part(1).string() +
+                                  "/outcomes.json has 7"))
+      << r.out;
+}
+
+TEST_F(BenchShardTest, MissingFileIsRefused) {
+  const fs::path broken = copy_of(1, "no-posteriors");
+  fs::remove(broken / "posteriors.csv");
+  const auto r = run(merge_command(dir("missing-file").string(), {broken}));
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_TRUE(contains(r.out, broken.string() + ": posteriors.csv is missing")) << r.out;
+}
+
+TEST(BenchShardCli, MergeTakesNoBenchOptions) {
+  testing::TempDir tmp("bench-merge-opts");
+  // Refused before any folder is read.
+  const auto r = run(clips_binary() + " bench --seed 3 merge --out " + tmp.str() + "/out " + tmp.str() + "/none");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_TRUE(contains(r.out, "--seed is an option of `clips bench`, not of `clips bench merge`")) << r.out;
+}
+
+TEST(BenchShardCli, BadShardValuesAreUsageErrors) {
+  testing::TempDir tmp("bench-bad-shard");
+  for (const std::string bad : {"0/3", "4/3", "x", "3", "1/0", "1/", "/3", "-1/3", "1/3/3", "99999999999/3"}) {
+    const auto r = run(clips_binary() + kBench + " --shard " + bad + " --out " + tmp.str());
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.out;
+    EXPECT_TRUE(contains(r.out, "--shard")) << bad << ": " << r.out;
+    EXPECT_FALSE(fs::exists(tmp.path / "results.csv")) << bad;
+  }
+  EXPECT_TRUE(contains(run(clips_binary() + kBench + " --shard 4/3").out, "K must be from 1 to N (3)"));
+  EXPECT_TRUE(contains(run(clips_binary() + kBench + " --shard 1/0").out, "N must be at least 1"));
+}
+
+// More shards than plans: the empty shard writes files with no rows, says so,
+// and merges like any other.
+TEST(BenchShardCli, EmptyShardWritesValidFilesAndMerges) {
+  testing::TempDir tmp("bench-empty-shard");
+  const std::string one_plan = clips_binary() + kBench + " --plans e1.1.keys";
+  const auto first = run(one_plan + " --shard 1/2 --out " + tmp.str() + "/1");
+  ASSERT_EQ(first.status, 0) << first.out;
+  const auto empty = run(one_plan + " --shard 2/2 --out " + tmp.str() + "/2");
+  ASSERT_EQ(empty.status, 0) << empty.out;
+  EXPECT_TRUE(contains(empty.out, "shard 2/2 has no plans")) << empty.out;
+  EXPECT_EQ(parse_csv(read_text(tmp.path / "2" / "results.csv")).size(), 1u);  // the header
+  EXPECT_EQ(read_text(tmp.path / "2" / "posteriors.csv"), "domain,plan,method,t,goal,probability\n");
+  const json summary = json::parse(read_text(tmp.path / "2" / "summary.json"));
+  EXPECT_EQ(summary["plans"], 0);
+  EXPECT_EQ(summary["methods"], json::object());
+  EXPECT_EQ(json::parse(read_text(tmp.path / "2" / "outcomes.json"))["plans"], json::array());
+
+  const auto merged = run(merge_command(tmp.str() + "/merged", {tmp.path / "2", tmp.path / "1"}));
+  ASSERT_EQ(merged.status, 0) << merged.out;
+  EXPECT_EQ(results_without_seconds(tmp.path / "merged"), results_without_seconds(tmp.path / "1"));
+  EXPECT_EQ(read_text(tmp.path / "merged" / "posteriors.csv"), read_text(tmp.path / "1" / "posteriors.csv"));
+  EXPECT_EQ(json::parse(read_text(tmp.path / "merged" / "summary.json"))["shards"]["partial"], false);
+}
+
+}  // namespace
+}  // namespace clips::eval
