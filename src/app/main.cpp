@@ -125,7 +125,11 @@ int main(int argc, char** argv) {
   register_export_strips(app);
   register_render(app);
   register_serve(app);
-  for (CLI::App* sub : app.get_subcommands({})) sub->footer("Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.");
+  const std::string exit_footer = "Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.";
+  for (CLI::App* sub : app.get_subcommands({})) {
+    sub->footer(exit_footer);
+    for (CLI::App* nested : sub->get_subcommands({})) nested->footer(exit_footer);  // e.g. bench merge
+  }
   auto fail = [](int code, const char* what) {
     std::fprintf(stderr, "clips: error: %s\n", what);
     return code;
