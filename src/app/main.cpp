@@ -125,6 +125,7 @@ int main(int argc, char** argv) {
   register_export_strips(app);
   register_render(app);
   register_serve(app);
+  register_generate(app);
   for (CLI::App* sub : app.get_subcommands({})) sub->footer("Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.");
   auto fail = [](int code, const char* what) {
     std::fprintf(stderr, "clips: error: %s\n", what);
