@@ -65,5 +65,6 @@ void register_lm_score(CLI::App& app);
 void register_export_strips(CLI::App& app);
 void register_render(CLI::App& app);
 void register_serve(CLI::App& app);
+void register_generate(CLI::App& app);
 
 }  // namespace clips::app

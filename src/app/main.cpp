@@ -125,6 +125,7 @@ int main(int argc, char** argv) {
   register_export_strips(app);
   register_render(app);
   register_serve(app);
+  register_generate(app);
   const std::string exit_footer = "Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.";
   for (CLI::App* sub : app.get_subcommands({})) {
     sub->footer(exit_footer);

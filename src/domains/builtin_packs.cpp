@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string_view>
 
+#include "domains/dkg_generate.hpp"
 #include "domains/dkg_goals.hpp"
 #include "domains/dkg_heuristic.hpp"
 #include "domains/dkg_strips.hpp"
@@ -125,6 +126,12 @@ class DkgPack : public Pack {
                                             const model::CostProfile& costs) const override {
     return domains::export_strips(task, start, goal, costs);
   }
+
+  // Random maps for `clips generate` (dkg_generate.hpp).
+  std::optional<GeneratedProblem> generate_problem(const GenerateParams& params, util::Rng& rng) const override {
+    return generate_dkg_problem(params, rng);
+  }
+  std::vector<std::string> generated_kinds() const override { return {"gem", "key", "door"}; }
 
   std::string object_list(const pddl::Task& task) const override {
     DkgWorld w(task);

@@ -351,6 +351,11 @@ std::optional<StripsExport> Pack::export_strips(const pddl::Task&, const pddl::S
   return std::nullopt;
 }
 
+std::optional<GeneratedProblem> Pack::generate_problem(const GenerateParams&, util::Rng&) const {
+  throw InputError("pack " + spec_.name + " cannot generate problems (only packs with generator code can: "
+                   "doors-keys-gems)");
+}
+
 // ---- checking a spec against a domain ------------------------------------------------
 
 void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {

@@ -27,6 +27,7 @@
 #include "model/spec.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
+#include "util/rng.hpp"
 
 namespace clips::domains {
 
@@ -175,6 +176,20 @@ struct StripsExport {
   std::string goal;      // the goal as exported, e.g. "(and (has human gem2))"
 };
 
+// What `clips generate` asks a pack for: a random problem of this size with
+// these many objects of each kind the pack knows (mDKG: "gem", "key", "door").
+struct GenerateParams {
+  int width = 9, height = 9;
+  std::map<std::string, int> counts;
+  std::string problem_name;  // the PDDL problem's name (the file stem)
+};
+// One random problem: its PDDL text and its map as text (problems/<P>.txt;
+// empty when the pack draws none).
+struct GeneratedProblem {
+  std::string pddl;
+  std::string picture;
+};
+
 // A literal-listener qualifier lookup: the (predicate object value) term of an object.
 using QualifierOf = commands::QualifierLookup;
 
@@ -251,6 +266,16 @@ class Pack {
   virtual std::string describe_state(const pddl::Task& task, const pddl::State& s) const;
   // Objects worth naming to an LLM, with their qualifier: "key1 (red), door1 (blue)".
   virtual std::string object_list(const pddl::Task& task) const;
+
+  // ---- generating problems (`clips generate`) ----
+  // One random problem. nullopt: this draw gave no acceptable layout (the
+  // caller draws again, a bounded number of times); InputError: the
+  // parameters can never work (naming the flag at fault). The caller checks
+  // that every candidate goal is solvable. Default: InputError, the pack
+  // cannot generate problems.
+  virtual std::optional<GeneratedProblem> generate_problem(const GenerateParams& params, util::Rng& rng) const;
+  // The object kinds generate_problem counts (empty: it cannot generate).
+  virtual std::vector<std::string> generated_kinds() const { return {}; }
 
   // ---- outside planners ----
   // The task from `start` compiled to STRIPS (numeric fluents and bit-matrices
