@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "language/lm/openai_model.hpp"
@@ -262,6 +263,11 @@ TEST_F(OpenAiCompletionsTest, AHungServerIsTriedTwiceNotFiveTimes) {
   OpenAiCompletionsModel m(o);
   const std::string msg = error_of(m, {{kPrompt, kUtterance}});
   EXPECT_NE(msg.find("timed out after 2 attempts"), std::string::npos) << msg;
+  // The client gave up on its second request after 100 ms; a slow server
+  // (e.g. under a sanitizer) may only count it later, so wait for the count.
+  const auto deadline = std::chrono::steady_clock::now() + 5s;
+  while (server.completion_requests() < 2 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(10ms);
   EXPECT_EQ(server.completion_requests(), 2);
 }
 
