@@ -282,8 +282,11 @@ Dataset Dataset::load(const std::string& dir_in) {
   fs::path obs_dir = dir / "plans" / "observed";
   fs::path comp_dir = dir / "plans" / "completed";
   if (!fs::is_directory(obs_dir)) throw InputError("dataset directory '" + dir_in + "' has no plans/observed/");
-  std::regex eval_re(R"(^(\d+)(\w?)\.(\d+)\.(.+)$)");
-  std::regex any_re(R"(^([A-Za-z0-9_]+)\.(\d+)\.(.+)$)");
+  // Compiled once: compiling a std::regex writes libstdc++'s shared
+  // ctype<char>::narrow cache (GCC PR 77704), a race when datasets load on
+  // several threads at once; matching only reads.
+  static const std::regex eval_re(R"(^(\d+)(\w?)\.(\d+)\.(.+)$)");
+  static const std::regex any_re(R"(^([A-Za-z0-9_]+)\.(\d+)\.(.+)$)");
   std::vector<std::pair<PlanKey, PlanRecord>> recs;
   // Plan files in name order, so broken_plans() and the load are deterministic.
   std::vector<fs::path> plan_files;
