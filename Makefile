@@ -58,6 +58,7 @@ SAN_SLOW_TESTS ?= StripsExport\.SameOptimalCostOnTheDataset|DkgDataset\.AllPlans
 SAN_CTEST_ARGS ?= -LE slow -E '$(SAN_SLOW_TESTS)'
 export ASAN_OPTIONS ?= detect_leaks=1:check_initialization_order=1:strict_init_order=1
 export UBSAN_OPTIONS ?= print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS ?= suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0
 export TSAN_OPTIONS ?= second_deadlock_stack=1:suppressions=$(CURDIR)/scripts/tsan.supp
 
 test-asan: deps
