@@ -126,7 +126,9 @@ struct Episode {
   const pddl::Task& task;
   pddl::Task::AtomRef principal_active;
   ActionId assistant_wait = -1, principal_wait = -1;
-  search::StateMap<int> trajectory;  // completed-plan states -> index
+  // Completed-plan states -> their indices j, ascending (a state recurs in
+  // the plan when both agents wait in turn).
+  search::StateMap<std::vector<int>> trajectory;
   std::string assistant, principal;
 
   explicit Episode(const AssistSetup& s)
@@ -139,7 +141,7 @@ struct Episode {
     principal_wait = *pw;
     State cur = setup.start;
     for (size_t j = 0; j < setup.completed.size(); ++j) {
-      trajectory.try_emplace(cur.data(), static_cast<int>(j));
+      trajectory[cur.data()].push_back(static_cast<int>(j));
       if (!task.applicable(setup.completed[j], cur.data())) break;
       cur = task.apply(cur, setup.completed[j]);
     }
@@ -148,14 +150,32 @@ struct Episode {
   bool principal_turn(const State& s) const { return task.test(s, principal_active); }
   ActionId wait_of_active(const State& s) const { return principal_turn(s) ? principal_wait : assistant_wait; }
 
+  // Which completed-plan steps the principal has taken by rule 1, one flag
+  // per step; a fresh one per simulated run.
+  std::vector<bool> fresh_steps() const { return std::vector<bool>(setup.completed.size(), false); }
+
   // clips-spec.md 9.2: follow the completed plan where the state matches,
   // else the true goal's joint policy, else wait.
+  // Rule 1 takes each step j of the completed plan at most once (`taken`):
+  // the smallest untaken j whose state equals s_h. When the assistant does
+  // not do what the recording did next (typically it waits where the
+  // recorded robot moved), the joint state can come back to one where the
+  // principal already took step j — a recorded wait, or a move the policy
+  // then undoes. Taking step j again replays the same turn for ever (both
+  // agents waiting until the horizon, or a back-and-forth); the recording
+  // says nothing more about that state, so the principal plans (rule 2).
   // k: 1-based step of the assistance episode (t - T).
-  ActionId principal_action(const search::Policy& truth, const State& s_h, bool follow_plan, int k = 0) const {
+  ActionId principal_action(const search::Policy& truth, const State& s_h, bool follow_plan, std::vector<bool>& taken,
+                            int k = 0) const {
     if (follow_plan) {
-      if (const int* j = trajectory.find(s_h.data())) {
-        ActionId a = setup.completed[*j];
-        if (task.applicable(a, s_h.data())) return a;
+      if (const std::vector<int>* js = trajectory.find(s_h.data())) {
+        for (int j : *js) {
+          if (taken[static_cast<size_t>(j)]) continue;
+          ActionId a = setup.completed[static_cast<size_t>(j)];
+          if (!task.applicable(a, s_h.data())) break;
+          taken[static_cast<size_t>(j)] = true;
+          return a;
+        }
       }
       if (setup.follow_plan_by_index && k >= 1 && k <= static_cast<int>(setup.completed.size())) {
         ActionId a = setup.completed[k - 1];
@@ -212,6 +232,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   double coop = 0;
   bool solo = false;
   State s = setup.start;
+  std::vector<bool> taken = ep.fresh_steps();
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     State s_h = s;
     if (coop < -kLog10) {
@@ -221,7 +242,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
     if (setup.refine) truth.refine(s_h, setup.refine_options);
     ActionId a;
     if (ep.principal_turn(s) || solo) {
-      a = ep.principal_action(truth, s_h, !solo, t - setup.observed_steps);
+      a = ep.principal_action(truth, s_h, !solo, taken, t - setup.observed_steps);
     } else {
       auto d0 = std::chrono::steady_clock::now();
       a = ep.qmdp_decide(belief, s, t);
@@ -251,6 +272,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
   AssistResult r;
   double coop = 0;
   State s = setup.start;
+  std::vector<bool> taken = ep.fresh_steps();
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     if (setup.refine) truth.refine(s, setup.refine_options);
     ActionId a;
@@ -259,9 +281,9 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
         // Lost trust: plan as if the assistant were frozen, keep acting on own turns only.
         State s_h = model::freeze(task, s, setup.assistant);
         if (setup.refine) truth.refine(s_h, setup.refine_options);
-        a = ep.principal_action(truth, s_h, false);
+        a = ep.principal_action(truth, s_h, false, taken);
       } else {
-        a = ep.principal_action(truth, s, true, t - setup.observed_steps);
+        a = ep.principal_action(truth, s, true, taken, t - setup.observed_steps);
       }
     } else {
       a = ep.qmdp_decide(belief.hypotheses(), s, t);
@@ -307,6 +329,7 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
       double coop = 0;
       bool solo = false;
       State s = setup.start;
+      std::vector<bool> taken = ep.fresh_steps();
       for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
         if (!solo && coop < -kLog10) {
           s = model::freeze(task, s, setup.assistant);
@@ -315,7 +338,7 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
         if (setup.refine) truth.refine(s, setup.refine_options);
         ActionId a;
         if (ep.principal_turn(s) || solo) {
-          a = ep.principal_action(truth, s, !solo, t - setup.observed_steps);
+          a = ep.principal_action(truth, s, !solo, taken, t - setup.observed_steps);
         } else {
           if (setup.refine) mine.refine(s, setup.refine_options);
           auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;

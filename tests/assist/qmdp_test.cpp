@@ -157,3 +157,78 @@ TEST(QmdpOffline, OnlyDeadEndsAreFlooredByDefault) {
   EXPECT_EQ(assist::to_string(assist::parse_qa_floor("dead-ends")), "dead-ends");
   EXPECT_THROW(assist::parse_qa_floor("none"), InputError);
 }
+
+namespace {
+
+// Problem 3, plan 3.2.keys of `clips generate --domain doors-keys-gems
+// --size 8x8 --gems 3 --keys 1 --doors 1 --problems 3 --plans 2 --seed 12`:
+//
+//   x: 1 2 3 4 5 6 7 8
+//   y2 . . m . . W . .    robot m, key1 k (red), human h
+//   y3 . h k . . W . .
+//   y6 W W R W W W W W    red door1 at (3,6)
+//   y7 . g . . . g . g    gem1, gem2 (the true goal), gem3
+//
+// After the handover the recorded human waits while the recorded robot
+// steps down, then unlocks the door. The assistant, which has nothing to do,
+// waits instead; the joint state is again the one where the recording has
+// the human wait.
+const char* kGenerated = R"(
+(define (problem doors-keys-gems-3) (:domain doors-keys-gems)
+  (:objects door1 - door key1 - key gem1 gem2 gem3 - gem red yellow blue green - color robot - robot human - human)
+  (:init (= (walls) (new-bit-matrix false 8 8))
+    (= (walls) (set-index walls true 2 6)) (= (walls) (set-index walls true 3 6))
+    (= (walls) (set-index walls true 4 6)) (= (walls) (set-index walls true 5 6))
+    (= (walls) (set-index walls true 6 1)) (= (walls) (set-index walls true 6 2))
+    (= (walls) (set-index walls true 6 4)) (= (walls) (set-index walls true 6 5))
+    (= (walls) (set-index walls true 6 6)) (= (walls) (set-index walls true 6 7))
+    (= (walls) (set-index walls true 6 8))
+    (= (xloc key1) 3) (= (yloc key1) 3) (iscolor key1 red)
+    (= (xloc door1) 3) (= (yloc door1) 6) (iscolor door1 red) (locked door1)
+    (= (xloc gem1) 2) (= (yloc gem1) 7) (iscolor gem1 red) (forbidden robot gem1)
+    (= (xloc gem2) 6) (= (yloc gem2) 7) (iscolor gem2 yellow) (forbidden robot gem2)
+    (= (xloc gem3) 8) (= (yloc gem3) 7) (iscolor gem3 blue) (forbidden robot gem3)
+    (= (xloc human) 2) (= (yloc human) 3) (= (xloc robot) 3) (= (yloc robot) 2)
+    (active human) (next-turn human robot) (next-turn robot human))
+  (:goal (has human gem3))))";
+
+}  // namespace
+
+TEST(QmdpOffline, RecordedWaitIsNotReplayedWhenTheAssistantWaitsToo) {
+  auto d = std::make_shared<pddl::Domain>(pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
+  auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, kGenerated, "doors-keys-gems-3"));
+  auto task = std::make_shared<pddl::Task>(d, p, pddl::GroundingOptions{{"frozen"}, {}, false, false});
+  auto act = [&](const std::string& name) {
+    auto a = task->find_action(name);
+    EXPECT_TRUE(a.has_value()) << name;
+    return *a;
+  };
+  assist::AssistSetup setup;
+  setup.task = task;
+  setup.start = task->initial_state();
+  for (const char* a : {"(down human)", "(down robot)", "(wait human)", "(pickup robot key1)", "(down human)",
+                        "(down robot)", "(right human)", "(handover robot human key1)"})
+    setup.start = task->apply(setup.start, act(a));
+  setup.observed_steps = 8;
+  for (const char* a : {"(wait human)", "(down robot)", "(unlock human key1 door1)", "(wait robot)", "(down human)",
+                        "(wait robot)", "(down human)", "(up robot)", "(right human)", "(left robot)", "(right human)",
+                        "(right robot)", "(right human)", "(wait robot)", "(pickup human gem2)"})
+    setup.completed.push_back(act(a));
+  std::vector<assist::Hypothesis> belief;
+  for (int gem = 1; gem <= 3; ++gem) {
+    auto spec = std::make_shared<model::Specification>(task, "(has human gem" + std::to_string(gem) + ")",
+                                                       model::dkg_profile(3));
+    belief.push_back({1.0 / 3, std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>())});
+  }
+  auto r = assist::qmdp_offline(setup, belief, 1);
+  EXPECT_TRUE(r.goal_reached);
+  // Before: the human replayed the recorded wait and the robot waited, 92
+  // waits in a row until the horizon.
+  int run = 0, longest = 0;
+  for (auto a : r.plan) {
+    run = task->action_name(a).rfind("(wait ", 0) == 0 ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  EXPECT_LE(longest, 4);
+  EXPECT_LT(r.plan.size(), 30u);
+}
