@@ -26,7 +26,7 @@ double Policy::learned_estimate(int id) {
   Entry& e = entry(id);
   if (e.has_v) return -e.value_or_h;
   if (!e.has_h) {
-    const double h = h_->estimate(graph_->state(id));  // does not touch entries_, so `e` stays valid
+    const double h = h_->estimate(graph_->state(id));  // does not touch the entries, so `e` stays valid
     // An estimate cut short by the deadline (0) is used once, never cached.
     if (h_->timed_out()) return h;
     e.value_or_h = h;
@@ -70,7 +70,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   if (timed) heur_deadline.emplace(*h_, deadline);
   size_t generated = 0;
   if (++epoch_ == 0) {  // wrapped: forget every old search
-    for (Entry& e : entries_) e.epoch = 0;
+    for_each_entry([](Entry& e) { e.epoch = 0; });
     epoch_ = 1;
   }
   const uint32_t epoch = epoch_;
@@ -90,8 +90,8 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   };
   auto add_node = [&](int entry, int parent, pddl::ActionId a, double g) {
     const int id = static_cast<int>(nodes.size());
-    const double h = learned_estimate(entry);  // also sizes entries_ for `entry`
-    Entry& e = entries_[static_cast<size_t>(entry)];
+    const double h = learned_estimate(entry);  // also allocates the chunk of `entry`
+    Entry& e = *peek_entry(entry);
     e.epoch = epoch;
     e.node = id;
     graph_->prefetch(entry);  // most generated nodes are expanded soon after
@@ -144,13 +144,13 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     // The children's entries lie far apart: ask for all of them before the
     // loop needs the first, so their cache misses overlap.
     for (const StateGraph::Successor sc : succ)
-      if (static_cast<size_t>(sc.child) < entries_.size() && (!prune || ws.keep[static_cast<size_t>(sc.action)]))
-        __builtin_prefetch(&entries_[static_cast<size_t>(sc.child)]);
+      if (!prune || ws.keep[static_cast<size_t>(sc.action)])
+        if (const Entry* ce = peek_entry(sc.child)) __builtin_prefetch(ce);
     for (const StateGraph::Successor sc : succ) {
       if (prune && !ws.keep[static_cast<size_t>(sc.action)]) continue;
       const double g = g0 + spec_->cost(sc.action);
-      // A state beyond entries_ is new to this policy, so not in this search.
-      const Entry* ce = static_cast<size_t>(sc.child) < entries_.size() ? &entries_[static_cast<size_t>(sc.child)] : nullptr;
+      // A state without an entry is new to this policy, so not in this search.
+      const Entry* ce = peek_entry(sc.child);
       if (!ce || ce->epoch != epoch) {
         ++counter;
         push(add_node(sc.child, id, sc.action, g), true);
@@ -214,7 +214,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
   if (h_->estimates_depend_on_root())
-    for (Entry& e : entries_) e.has_h = false;  // cached estimates may be stale now
+    for_each_entry([](Entry& e) { e.has_h = false; });  // cached estimates may be stale now
   thread_local ThreadBuffers<Lookahead> tls;
   std::optional<Lookahead> own;
   Lookahead* ws = &tls.buffers;

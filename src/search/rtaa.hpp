@@ -65,8 +65,8 @@ class Policy {
   size_t tree_size() const { return tree_size_; }
 
  private:
-  // Per state id of the graph (ids this policy has not touched yet lie beyond
-  // the end): the learned value V, the cached estimate H, the state's place
+  // Per state id of the graph (an id this policy never touched reads as the
+  // default entry): the learned value V, the cached estimate H, the state's place
   // on the reusable tree and the cached goal test. The lookahead A* works on
   // ids, so it hashes a state only when the graph first generates it.
   struct Entry {
@@ -101,14 +101,37 @@ class Policy {
   size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws, SearchStatus& status);
   double learned_estimate(int id);
   bool is_goal_entry(int id);
-  // The entry of state `id`, growing the per-id arrays to the graph's size.
+  // Entries live in fixed-size chunks indexed by state id. The graph is
+  // shared, so most ids belong to other hypotheses' searches: a flat array
+  // sized to the graph zero-filled (and on growth, copied) all of them, a
+  // third of a belief step's time on the paper's maps. A chunk is allocated
+  // when this policy first touches one of its ids and never moves.
+  static constexpr int kEntryChunkBits = 11;
+  static constexpr size_t kEntryChunk = size_t{1} << kEntryChunkBits;
+  // The entry of state `id`, allocating its chunk.
   Entry& entry(int id) {
-    if (static_cast<size_t>(id) >= entries_.size()) entries_.resize(static_cast<size_t>(graph_->size()));
-    return entries_[static_cast<size_t>(id)];
+    const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
+    if (c >= chunks_.size()) chunks_.resize(c + 1);
+    std::vector<Entry>& chunk = chunks_[c];
+    if (chunk.empty()) chunk.resize(kEntryChunk);
+    return chunk[static_cast<size_t>(id) & (kEntryChunk - 1)];
+  }
+  // The entry of state `id` if its chunk exists (an entry this policy never
+  // wrote reads as the default: no value, no estimate, not in any search).
+  Entry* peek_entry(int id) {
+    const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
+    return c < chunks_.size() && !chunks_[c].empty() ? &chunks_[c][static_cast<size_t>(id) & (kEntryChunk - 1)] : nullptr;
   }
   const Entry* find_entry(const uint64_t* s) const {
     const int id = graph_->find(s);
-    return id >= 0 && static_cast<size_t>(id) < entries_.size() ? &entries_[static_cast<size_t>(id)] : nullptr;
+    if (id < 0) return nullptr;
+    const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
+    return c < chunks_.size() && !chunks_[c].empty() ? &chunks_[c][static_cast<size_t>(id) & (kEntryChunk - 1)] : nullptr;
+  }
+  template <class F>
+  void for_each_entry(F&& f) {
+    for (auto& chunk : chunks_)
+      for (Entry& e : chunk) f(e);
   }
 
   std::shared_ptr<const model::Specification> spec_;
@@ -116,7 +139,7 @@ class Policy {
   std::shared_ptr<StateGraph> graph_;
   // H estimates are kept across refine() calls unless the heuristic says
   // they depend on the root prepare() was given.
-  std::vector<Entry> entries_;
+  std::vector<std::vector<Entry>> chunks_;
   size_t num_values_ = 0;  // entries with has_v
   size_t tree_size_ = 0;   // entries with a tree action
   uint32_t epoch_ = 0;
