@@ -17,7 +17,7 @@ FUZZ_JOBS ?= 2
 FUZZ_SMOKE ?= 1
 FUZZ_BUILD_TARGET ?= fuzz_targets
 
-.PHONY: all deps configure build test run bench clean fuzz-build fuzz test-asan test-tsan
+.PHONY: all deps configure build test run bench bench-scaling clean fuzz-build fuzz test-asan test-tsan
 
 all: build
 
@@ -36,6 +36,10 @@ test: build
 
 run: build
 	@bash scripts/main-job.sh $(BUILD_DIR) "$(DATASET)"
+
+# Scaling curves (docs/scaling/): about 25 min; SCALING_ARGS=--quick for a short run.
+bench-scaling: build
+	@$(BUILD_DIR)/clips bench --scaling --scaling-plans 3 --point-seconds 45 --out docs/scaling $(SCALING_ARGS)
 
 bench: build
 	@$(BUILD_DIR)/clips_bench --benchmark_min_time=0.2

@@ -12,6 +12,7 @@
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
+#include "app/scaling_cli.hpp"
 #include "eval/bench.hpp"
 #include "eval/bench_shards.hpp"
 #include "eval/report.hpp"
@@ -202,9 +203,34 @@ void register_bench(CLI::App& app) {
                   "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped");
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
+  // Scaling curves (eval/scaling.hpp): generated datasets, one point per process.
+  auto sc = std::make_shared<ScalingCli>();
+  cmd->add_flag("--scaling", sc->run,
+                "Scaling curves instead of a dataset: time per belief step and assistance decision, max RSS and "
+                "P(g_true) against map side, number of goals and observed steps, on generated Doors-Keys-Gems sets; "
+                "writes DIR/scaling.csv and DIR/scaling.svg (--out, default docs/scaling)");
+  cmd->add_flag("--quick", sc->quick, "With --scaling: three smaller points per axis");
+  cmd->add_option("--scaling-plans", sc->settings.plans, "With --scaling: plans per point (default 4)")
+      ->check(PositiveInteger);
+  cmd->add_option("--max-nodes", sc->settings.max_nodes,
+                  "With --scaling: node budget of each lookahead search (default 2^18, as inference)")
+      ->check(PositiveInteger);
+  cmd->add_option("--point-seconds", sc->settings.point_seconds,
+                  "With --scaling: no further plan of a point starts after this many seconds (default 300)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--scaling-point", sc->point, "Internal: run one scaling point (AXIS:VALUE), print its CSV line")
+      ->group("");
   register_merge(cmd);
   cmd->callback([=] {
     if (cmd->got_subcommand("merge")) return;  // merge has run (CLI11 runs a subcommand's callback first)
+    if (sc->run || !sc->point.empty()) {
+      reject_empty(out_opt, *out);
+      if (!out->empty()) sc->out = *out;
+      sc->settings.seed = o->experiment.seed;
+      sc->lm_kind = lm->kind;
+      g_exit_code = run_scaling_cli(*sc);
+      return;
+    }
     reject_empty(out_opt, *out);
     reject_empty(report_opt, *report);
     o->dataset = dataset_dir(o->dataset);

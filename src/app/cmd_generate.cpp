@@ -57,8 +57,8 @@ void register_generate(CLI::App& app) {
                   "Domain pack that draws the problems (default doors-keys-gems, the only one that can so far)");
   cmd->add_option("--domain-file", o->domain_file,
                   "PDDL domain copied into the dataset (default: domains/<domain>/domain.pddl in the data folder)");
-  cmd->add_option("--size", o->size, "Grid width x height (default 9x9; 3..30 each)")->check(GridSize);
-  cmd->add_option("--gems", o->gems, "Gems, the candidate goals (default 4; at most 4)")->check(PositiveInteger);
+  cmd->add_option("--size", o->size, "Grid width x height (default 9x9; 3..40 each)")->check(GridSize);
+  cmd->add_option("--gems", o->gems, "Gems, the candidate goals (default 4; at most 64, colours cycling red, yellow, blue, green)")->check(PositiveInteger);
   cmd->add_option("--keys", o->keys, "Keys (default 2)")->check(NonNegativeInteger);
   cmd->add_option("--doors", o->doors, "Locked doors, each on a chokepoint of a wall (default 2)")
       ->check(NonNegativeInteger);

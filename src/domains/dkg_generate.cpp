@@ -7,16 +7,21 @@
 #include <string>
 #include <vector>
 
+#include "domains/dkg_mask.hpp"
 #include "util/error.hpp"
 
 namespace clips::domains {
 
 namespace {
 
-constexpr int kMinSide = 3, kMaxSide = 30;
-// The heuristics index agents, items and doors in 64-bit masks (dkg_map.hpp).
-constexpr int kMaxObjects = 64;
-// Key and door colours of the paper's dataset; gems take theirs by number.
+// The map analysis keeps three num_cells^2 tables of 16-bit distances
+// (dkg_map.hpp): 15 MB at 40x40, 4 MB at 30x30.
+constexpr int kMinSide = 3, kMaxSide = 40;
+constexpr int kMaxGems = 64;
+// The heuristics index agents, items and doors in 128-bit masks (dkg_mask.hpp).
+constexpr int kMaxObjects = kObjMaskBits;
+// Key and door colours of the paper's dataset; gems take theirs by number,
+// cycling through the four gem colours (gem5 is red again, as gem1).
 constexpr std::array<const char*, 3> kDoorColors = {"red", "yellow", "blue"};
 constexpr std::array<const char*, 4> kGemColors = {"red", "yellow", "blue", "green"};
 constexpr int kColorDraws = 10;  // door colourings tried before the layout is given up
@@ -157,7 +162,7 @@ std::string problem_text(const GenerateParams& params, const Layout& map, std::v
       facts << "         " << at(keys.back()) << " (iscolor " << keys.back() << " " << o.color << ")\n";
     } else if (o.kind == 'g') {
       gems.push_back("gem" + std::to_string(gems.size() + 1));
-      facts << "         " << at(gems.back()) << " (iscolor " << gems.back() << " " << kGemColors[gems.size() - 1]
+      facts << "         " << at(gems.back()) << " (iscolor " << gems.back() << " " << kGemColors[(gems.size() - 1) % kGemColors.size()]
             << ") (forbidden robot " << gems.back() << ")\n";
     } else {
       (o.kind == 'h' ? human : robot) = at(o.kind == 'h' ? "human" : "robot");
@@ -219,10 +224,11 @@ void check_dkg_generate_params(const GenerateParams& p) {
   const int gems = count(p, "gem"), keys = count(p, "key"), doors = count(p, "door");
   const std::string size = std::to_string(p.width) + "x" + std::to_string(p.height);
   if (p.width < kMinSide || p.height < kMinSide || p.width > kMaxSide || p.height > kMaxSide)
-    throw InputError("--size " + size + ": a doors-keys-gems map is 3 to 30 cells wide and high");
-  if (gems < 1 || gems > static_cast<int>(kGemColors.size()))
-    throw InputError("--gems " + std::to_string(gems) +
-                     ": a doors-keys-gems map has 1 to 4 gems (one per gem colour: red, yellow, blue, green)");
+    throw InputError("--size " + size + ": a doors-keys-gems map is " + std::to_string(kMinSide) + " to " +
+                     std::to_string(kMaxSide) + " cells wide and high");
+  if (gems < 1 || gems > kMaxGems)
+    throw InputError("--gems " + std::to_string(gems) + ": a doors-keys-gems map has 1 to " +
+                     std::to_string(kMaxGems) + " gems");
   if (keys < 0 || doors < 0) throw InputError("--keys and --doors cannot be negative");
   if (doors > 0 && keys == 0)
     throw InputError("--doors " + std::to_string(doors) +
@@ -279,9 +285,16 @@ std::optional<GeneratedProblem> generate_dkg_problem(const GenerateParams& param
 
   std::vector<Placed> objects;
   std::vector<int> gem_cells;
-  for (int g = 0; g < gems; ++g) {
-    // Round robin over the rooms behind doors, so each gets a gem while there are gems.
-    auto& pool = floor[behind.empty() ? home : behind[static_cast<size_t>(g) % behind.size()]];
+  for (int g = 0, turn = 0; g < gems; ++g) {
+    // Round robin over the rooms behind doors, so each gets a gem while there
+    // are gems; a room that is full is passed over (many gems on a small map).
+    size_t r = home;
+    for (size_t tried = 0; !behind.empty() && tried < behind.size(); ++tried, ++turn) {
+      r = behind[static_cast<size_t>(turn) % behind.size()];
+      if (!floor[r].empty()) break;
+    }
+    ++turn;
+    auto& pool = floor[r];
     std::vector<int> got;
     if (!take_cells(pool, 1, rng, got)) return std::nullopt;
     gem_cells.push_back(got[0]);

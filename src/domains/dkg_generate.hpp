@@ -13,8 +13,8 @@
 // drawn from the paper's key colours (red, yellow, blue) and keys are
 // coloured so that each gem's doors can be opened with the keys there are
 // (keys are used up). Objects are numbered in row-major scan order and gems
-// coloured by number (gem1 red, gem2 yellow, gem3 blue, gem4 green), as in
-// the paper's maps (clips-spec.md 2.4-2.5). Solvability by search is left to
+// coloured by number (gem1 red, gem2 yellow, gem3 blue, gem4 green, gem5 red
+// again, ...), as in the paper's maps (clips-spec.md 2.4-2.5). Solvability by search is left to
 // the caller.
 #include <optional>
 
@@ -24,8 +24,8 @@
 namespace clips::domains {
 
 // Throws InputError when no map can ever have these counts: sizes outside
-// 3..30, no gem or more than 4, locked doors without any key, more objects
-// than cells, or more than the 64 objects the grid heuristics track.
+// 3..40, no gem or more than 64, locked doors without any key, more objects
+// than cells, or more than the 128 objects the grid heuristics track.
 void check_dkg_generate_params(const GenerateParams& params);
 
 // One draw; nullopt when it gave no acceptable layout (the caller draws

@@ -62,7 +62,7 @@ Dnf to_dnf(const DkgMapAnalysis& m, const pddl::CompiledCondition& g, CondId c, 
   }
 }
 
-bool in(uint64_t mask, int i) { return (mask >> i) & 1u; }
+bool in(ObjMask mask, int i) { return mask_has(mask, i); }
 
 }  // namespace
 
@@ -133,8 +133,8 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
       if (std::find(agents.begin(), agents.end(), a.agent) == agents.end()) agents.push_back(a.agent);
       if (std::find(items.begin(), items.end(), a.item) == items.end()) items.push_back(a.item);
     }
-    for (int a : agents) ci.agents |= uint64_t{1} << a;
-    for (int i : items) ci.items |= uint64_t{1} << i;
+    for (int a : agents) ci.agents |= mask_bit(a);
+    for (int i : items) ci.items |= mask_bit(i);
     goal_items_ |= ci.items;
     if (!agents.empty()) {
       ci.agent = agents[0];
@@ -144,16 +144,16 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
       std::vector<int> a_then_i = agents;
       a_then_i.insert(a_then_i.end(), items.begin(), items.end());
       for (const auto& kd : m.recursive(rv, ci.agent, a_then_i, max_iters_)) {
-        for (int k : kd.keys) nec_keys_ |= uint64_t{1} << k;
-        for (int d : kd.doors) nec_doors_ |= uint64_t{1} << d;
+        for (int k : kd.keys) nec_keys_ |= mask_bit(k);
+        for (int d : kd.doors) nec_doors_ |= mask_bit(d);
       }
       std::vector<int> helpers;
       for (int a = 0; a < m.num_agents(); ++a)
         if (!in(ci.agents, a)) helpers.push_back(a);
       for (uint32_t sub = 0; sub < (1u << helpers.size()); ++sub) {
-        uint64_t hs = 0;
+        ObjMask hs = 0;
         for (size_t j = 0; j < helpers.size(); ++j)
-          if ((sub >> j) & 1u) hs |= uint64_t{1} << helpers[j];
+          if ((sub >> j) & 1u) hs |= mask_bit(helpers[j]);
         ci.helper_sets.push_back(hs);
       }
       std::vector<int> sig{ci.agent};
@@ -193,10 +193,10 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
   m.read(root.data(), view_);
 }
 
-const std::vector<uint64_t>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c) {
+const std::vector<ObjMask>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c) {
   const DkgMapAnalysis& m = *map_;
   const int nai = m.num_agents() + m.num_items();
-  key_.resize(sizeof(int) + 2 * nai + sizeof(uint64_t));
+  key_.resize(sizeof(int) + 2 * nai + sizeof(ObjMask));
   char* p = key_.data();
   std::memcpy(p, &c.memo_id, sizeof(int));
   p += sizeof(int);
@@ -206,17 +206,17 @@ const std::vector<uint64_t>& DkgMstHeuristic::key_door_masks(const ClauseInfo& c
     std::memcpy(p, &r, 2);
     p += 2;
   }
-  std::memcpy(p, &view_.locked, sizeof(uint64_t));
+  std::memcpy(p, &view_.locked, sizeof(ObjMask));
   auto it = memo_.find(key_);
   if (it != memo_.end()) return it->second;
 
   if (memo_.size() > (1u << 16)) memo_.clear();  // bound memory on huge searches
-  std::vector<uint64_t> masks;
+  std::vector<ObjMask> masks;
   for (const auto& kd : m.recursive(view_, c.agent, c.targets, max_iters_)) {
-    uint64_t mask = 0;
+    ObjMask mask = 0;
     for (size_t j = 0; j < kd.keys.size(); ++j) {
-      if (m.locked(view_, kd.doors[j])) mask |= uint64_t{1} << kd.keys[j];
-      mask |= uint64_t{1} << kd.doors[j];
+      if (m.locked(view_, kd.doors[j])) mask |= mask_bit(kd.keys[j]);
+      mask |= mask_bit(kd.doors[j]);
     }
     if (std::find(masks.begin(), masks.end(), mask) == masks.end()) masks.push_back(mask);
   }
@@ -239,12 +239,12 @@ inline double DkgMstHeuristic::node_weight(int o) const {
   return 0;
 }
 
-double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
+double DkgMstHeuristic::mst_weight(ObjMask objects, double bound) {
   const DkgMapAnalysis& m = *map_;
   nodes_.clear();
   double total = 0;
-  for (uint64_t rest = objects; rest; rest &= rest - 1) {
-    int o = __builtin_ctzll(rest);
+  for (ObjMask rest = objects; rest; rest &= rest - 1) {
+    int o = mask_ctz(rest);
     const double w = node_weight(o);
     if (w == kInf) return kInf;
     total += w;
@@ -258,7 +258,7 @@ double DkgMstHeuristic::mst_weight(uint64_t objects, double bound) {
   // Per node, in locals the compiler can keep in registers: its cell, the
   // edge_row rows to use towards other nodes and toward doors (both-door
   // edges have their own table), whether it is an agent or a door.
-  constexpr size_t kMax = 64;  // objects are 64-bit mask indices
+  constexpr size_t kMax = kObjMaskBits;  // objects are ObjMask indices
   int cell[kMax];
   const uint16_t* row[kMax];
   const uint16_t* door_row[kMax];
@@ -318,15 +318,15 @@ double DkgMstHeuristic::clause_cost(const ClauseInfo& c, const uint64_t* s, doub
   // their node weights bound the cost from below: a clause that cannot get
   // under `bound` is left before its key/door sets are looked up. The margin
   // keeps "cannot change the caller's minimum" safe from rounding.
-  const uint64_t base = c.agents | c.items;
+  const ObjMask base = c.agents | c.items;
   const double cut = bound + saved + 1e-9;
   double lower = 0;
-  for (uint64_t rest = base; rest; rest &= rest - 1) lower += node_weight(__builtin_ctzll(rest));
+  for (ObjMask rest = base; rest; rest &= rest - 1) lower += node_weight(mask_ctz(rest));
   if (lower >= cut) return std::max(0.0, lower - saved);
   const auto& masks = key_door_masks(c);
   double cost = kInf;
-  for (uint64_t kd : masks)
-    for (uint64_t hs : c.helper_sets) cost = std::min(cost, mst_weight(base | kd | hs, std::min(cost, cut)));
+  for (ObjMask kd : masks)
+    for (ObjMask hs : c.helper_sets) cost = std::min(cost, mst_weight(base | kd | hs, std::min(cost, cut)));
   return std::max(0.0, cost - saved);
 }
 

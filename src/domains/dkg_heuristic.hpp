@@ -71,27 +71,27 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   const std::vector<DkgClause>& clauses() const { return clauses_; }
   const DkgMinCosts& min_costs() const { return costs_; }
   // Object-index masks of the 5.6 pruning sets of the last prepare().
-  uint64_t necessary_keys() const { return nec_keys_; }
-  uint64_t necessary_doors() const { return nec_doors_; }
-  uint64_t goal_items() const { return goal_items_; }
+  ObjMask necessary_keys() const { return nec_keys_; }
+  ObjMask necessary_doors() const { return nec_doors_; }
+  ObjMask goal_items() const { return goal_items_; }
   // CLAUSE_COST of clause `c` of the last prepare() in `state`.
   double clause_cost(size_t c, const uint64_t* state);
   // MSTW(s, set) for an object-index mask, on the last state read. With a
   // finite `bound` it may stop early and return any value >= bound once the
   // weight is known to reach it.
-  double mst_weight(uint64_t objects, double bound = std::numeric_limits<double>::infinity());
+  double mst_weight(ObjMask objects, double bound = std::numeric_limits<double>::infinity());
 
  private:
   struct ClauseInfo {
     std::vector<int> bits;     // all atoms true -> cost 0
     int agent = -1;            // A[1]
-    uint64_t agents = 0;       // A
-    uint64_t items = 0;        // I
+    ObjMask agents = 0;        // A
+    ObjMask items = 0;         // I
     std::vector<int> targets;  // I ++ A, in clause order
-    std::vector<uint64_t> helper_sets;  // every subset of the agents not in A
+    std::vector<ObjMask> helper_sets;  // every subset of the agents not in A
     int memo_id = 0;
   };
-  const std::vector<uint64_t>& key_door_masks(const ClauseInfo& c);
+  const std::vector<ObjMask>& key_door_masks(const ClauseInfo& c);
   // CLAUSE_COST; with a finite `bound` it may return any value >= bound once
   // the clause is known not to get below it (the caller keeps a minimum).
   double clause_cost(const ClauseInfo& c, const uint64_t* state,
@@ -104,7 +104,7 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   DkgMinCosts costs_;
   std::vector<DkgClause> clauses_;
   std::vector<ClauseInfo> info_;
-  uint64_t nec_keys_ = 0, nec_doors_ = 0, goal_items_ = 0;
+  ObjMask nec_keys_ = 0, nec_doors_ = 0, goal_items_ = 0;
   std::vector<uint8_t> keep_;
 
   // Per-state scratch, reused to keep estimate() allocation-free.
@@ -116,7 +116,7 @@ class DkgMstHeuristic : public heuristics::Heuristic {
   // along a search; results (as object masks {K[j] : D[j] locked} ∪ D) are
   // memoised on exactly that, per clause signature.
   std::map<std::vector<int>, int> memo_ids_;
-  std::unordered_map<std::string, std::vector<uint64_t>> memo_;
+  std::unordered_map<std::string, std::vector<ObjMask>> memo_;
   std::string key_;
 };
 

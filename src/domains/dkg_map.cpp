@@ -72,8 +72,9 @@ std::shared_ptr<const DkgMapAnalysis> DkgMapAnalysis::build(std::shared_ptr<cons
   m->objects_ = agents;
   m->objects_.insert(m->objects_.end(), items.begin(), items.end());
   m->objects_.insert(m->objects_.end(), doors.begin(), doors.end());
-  if (m->objects_.size() > 64)
-    throw InputError("Doors-Keys-Gems heuristic: at most 64 agents, items and doors are supported");
+  if (m->objects_.size() > static_cast<size_t>(kObjMaskBits))
+    throw InputError("Doors-Keys-Gems heuristic: the map has " + std::to_string(m->objects_.size()) +
+                     " agents, items and doors; at most " + std::to_string(kObjMaskBits) + " are supported");
   m->index_.assign(t.num_objects(), -1);
   const int n = m->num_objects();
   for (int i = 0; i < n; ++i) {
@@ -256,7 +257,7 @@ void DkgMapAnalysis::read(const uint64_t* s, DkgStateView& out) const {
   }
   out.locked = 0;
   for (int d = 0; d < num_doors_; ++d)
-    if (test(locked_[d])) out.locked |= uint64_t{1} << d;
+    if (test(locked_[d])) out.locked |= mask_bit(d);
   out.active = -1;
   for (int a = 0; a < num_agents_; ++a)
     if (test(active_[a])) {

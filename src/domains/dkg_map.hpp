@@ -9,14 +9,16 @@
 // afterwards, so hypotheses and threads may share it through a shared_ptr.
 //
 // Objects are numbered as the spec orders them: agents sorted by name, then
-// items (keys and gems) sorted by name, then doors sorted by name. All sets
-// of objects below are 64-bit masks over these indices.
+// items (keys and gems) sorted by name, then doors sorted by name. Sets of
+// objects are ObjMask bit masks over these indices (dkg_mask.hpp), so a map
+// holds at most kObjMaskBits (128) objects.
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "domains/dkg_mask.hpp"
 #include "pddl/task.hpp"
 
 namespace clips::domains {
@@ -34,7 +36,7 @@ struct DkgStateView {
   std::vector<int> cell;     // loc*(o): own cell, else the holder's cell, else -1
   std::vector<int> room;     // room/door label of `cell`, 0 when cell is -1
   std::vector<int8_t> holder;  // index of the agent holding the item, -1 if none
-  uint64_t locked = 0;       // bit i: door i (door order) is locked
+  ObjMask locked = 0;        // bit i: door i (door order) is locked
   int active = -1;           // index of the active agent, -1 if none
 };
 
@@ -93,7 +95,7 @@ class DkgMapAnalysis {
     read(s.data(), v);
     return v;
   }
-  bool locked(const DkgStateView& v, int door_index) const { return (v.locked >> (door_index - first_door())) & 1u; }
+  bool locked(const DkgStateView& v, int door_index) const { return mask_has(v.locked, door_index - first_door()); }
 
   // ---- key/door analysis (5.5 (b)); targets are object indices
   KeyDoorSets pathsets(int r0, int g) const;

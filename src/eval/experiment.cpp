@@ -59,7 +59,9 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     io.utterance.speaker_rule = opts.speaker_rule;
     io.threads = opts.inference_threads;
     io.utterance_timing = opts.utterance_timing;
+    if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
+    if (opts.on_inference) opts.on_inference(inf);
     out.goals = inf.goals;
     out.utterance_warnings = inf.utterance_warnings;
     out.true_goal = inf.true_goal;

@@ -3,6 +3,7 @@
 // dataset plan, run inference once (three modalities), assistance for every
 // method, and score each run with the paper's metrics (clips-spec.md 10).
 #include <exception>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -72,6 +73,12 @@ struct ExperimentOptions {
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;
+  // Node budget of each lookahead search of inference and assistance
+  // (InferenceOptions::refine.max_nodes); 0: the default, 2^18.
+  size_t refine_max_nodes = 0;
+  // Called with the inference run before assistance starts (timings, budget
+  // stops: `clips bench --scaling`).
+  std::function<void(const inference::InferenceRun&)> on_inference;
 };
 
 std::vector<std::string> default_methods(const domains::Pack& pack, bool all_assistance);

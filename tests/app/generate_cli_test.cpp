@@ -83,9 +83,12 @@ TEST(GenerateCli, ImpossibleParametersSayWhy) {
   auto r = run(clips_binary() + " generate --size 3x3 --gems 4 --keys 5 --doors 0" + out);
   EXPECT_EQ(r.status, 3) << r.out;
   EXPECT_TRUE(contains(r.out, "need 11 cells, but a 3x3 map has only 9")) << r.out;
-  r = run(clips_binary() + " generate --gems 5" + out);
+  r = run(clips_binary() + " generate --gems 65" + out);
   EXPECT_EQ(r.status, 3) << r.out;
-  EXPECT_TRUE(contains(r.out, "--gems 5")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--gems 65")) << r.out;
+  r = run(clips_binary() + " generate --size 41x41" + out);
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_TRUE(contains(r.out, "3 to 40 cells")) << r.out;
   r = run(clips_binary() + " generate --domain virtual-home" + out);
   EXPECT_EQ(r.status, 3) << r.out;
   EXPECT_TRUE(contains(r.out, "cannot generate problems")) << r.out;

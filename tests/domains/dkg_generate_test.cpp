@@ -136,14 +136,51 @@ TEST(DkgGenerate, ImpossibleCountsAreClearErrors) {
   };
   EXPECT_NE(message(params(3, 3, 4, 5, 0)).find("need 11 cells, but a 3x3 map has only 9"), std::string::npos)
       << message(params(3, 3, 4, 5, 0));
-  EXPECT_NE(message(params(9, 9, 5, 2, 2)).find("--gems 5"), std::string::npos);
+  EXPECT_NE(message(params(30, 30, 65, 2, 2)).find("--gems 65: a doors-keys-gems map has 1 to 64 gems"),
+            std::string::npos)
+      << message(params(30, 30, 65, 2, 2));
+  // 64 gems, 40 keys, 30 doors and the agents: 136 objects, over the heuristics' 128.
+  EXPECT_NE(message(params(40, 40, 64, 40, 30)).find("at most 128"), std::string::npos)
+      << message(params(40, 40, 64, 40, 30));
   EXPECT_NE(message(params(9, 9, 0, 2, 2)).find("--gems 0"), std::string::npos);
   EXPECT_NE(message(params(9, 9, 2, 0, 1)).find("--keys 0"), std::string::npos);
   EXPECT_NE(message(params(2, 9, 2, 1, 1)).find("--size 2x9"), std::string::npos);
-  EXPECT_NE(message(params(31, 9, 2, 1, 1)).find("--size 31x9"), std::string::npos);
+  EXPECT_NE(message(params(41, 9, 2, 1, 1)).find("--size 41x9: a doors-keys-gems map is 3 to 40"), std::string::npos)
+      << message(params(41, 9, 2, 1, 1));
+  EXPECT_EQ(message(params(40, 40, 64, 2, 2)), "");  // the largest counts are accepted
   GenerateParams odd = params(9, 9, 2, 1, 1);
   odd.counts["chair"] = 1;
   EXPECT_NE(message(odd).find("'chair'"), std::string::npos);
+}
+
+TEST(DkgGenerate, SixtyFourGemsOnAFortyByFortyMapCycleTheFourColours) {
+  const auto p = params(40, 40, 64, 2, 2);
+  const GeneratedProblem g = draw(p, 5);
+  EXPECT_EQ(g.pddl, draw(p, 5).pddl);  // the seed decides the map at this size too
+  EXPECT_NE(g.pddl, draw(p, 6).pddl);
+  Grounded gr(g.pddl);
+  const pddl::Task& t = *gr.task;
+  EXPECT_EQ(t.objects_of_type("gem").size(), 64u);
+  const char* colours[] = {"red", "yellow", "blue", "green"};
+  for (int i = 1; i <= 64; ++i) {
+    const std::string gem = "gem" + std::to_string(i);
+    EXPECT_TRUE(t.atom("iscolor", {gem, colours[(i - 1) % 4]}).value) << gem;
+  }
+  // The picture is the 40x40 grid.
+  int rows = 0;
+  for (char c : g.picture) rows += c == '\n';
+  EXPECT_EQ(rows, 40);
+  EXPECT_EQ(g.picture.find('\n'), 40u);
+}
+
+TEST(DkgGenerate, ManyGemsFillTheRoomsBehindDoorsInTurn) {
+  // 30 gems behind two doors on an 11x11 map: when one room behind a door is
+  // full the others take the remaining gems, rather than the draw failing.
+  for (uint64_t seed : {3u, 4u, 5u}) {
+    const GeneratedProblem g = draw(params(11, 11, 30, 2, 2), seed);
+    Grounded gr(g.pddl);
+    EXPECT_EQ(gr.task->objects_of_type("gem").size(), 30u);
+  }
 }
 
 TEST(DkgGenerate, TooManyDoorsForTheGridFindNoLayout) {

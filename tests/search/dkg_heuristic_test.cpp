@@ -376,10 +376,10 @@ TEST(DkgMstHeuristic, PruningKeepsOnlyNecessaryKeysAndDoors) {
   heur.prepare(spec, h.task->initial_state());
   EXPECT_TRUE(heur.prunes());
   const auto& m = *heur.map();
-  auto bit = [&](const char* n) { return uint64_t{1} << h.idx(m, n); };
-  EXPECT_EQ(heur.necessary_keys(), bit("key1") | bit("key2"));
-  EXPECT_EQ(heur.necessary_doors(), bit("door1") | bit("door2"));
-  EXPECT_EQ(heur.goal_items(), bit("gem1"));
+  auto bit = [&](const char* n) { return mask_bit(h.idx(m, n)); };  // ObjMask: no gtest printer
+  EXPECT_TRUE(heur.necessary_keys() == (bit("key1") | bit("key2")));
+  EXPECT_TRUE(heur.necessary_doors() == (bit("door1") | bit("door2")));
+  EXPECT_TRUE(heur.goal_items() == (bit("gem1")));
   auto keep = [&](const std::string& a) {
     auto id = h.task->find_action(a);
     EXPECT_TRUE(id) << a;
@@ -403,8 +403,8 @@ TEST(DkgMstHeuristic, PruningKeepsOnlyNecessaryKeysAndDoors) {
   // item, may be picked up, handed over and used.
   auto spec3 = h.spec("(has human key3)");
   heur.prepare(spec3, h.task->initial_state());
-  EXPECT_EQ(heur.necessary_keys(), bit("key1") | bit("key2") | bit("key3"));
-  EXPECT_EQ(heur.necessary_doors(), bit("door1") | bit("door2") | bit("door3"));
+  EXPECT_TRUE(heur.necessary_keys() == (bit("key1") | bit("key2") | bit("key3")));
+  EXPECT_TRUE(heur.necessary_doors() == (bit("door1") | bit("door2") | bit("door3")));
   EXPECT_TRUE(keep("(pickup human key3)"));
   EXPECT_TRUE(keep("(handover robot human key3)"));
   EXPECT_TRUE(keep("(unlock human key3 door3)"));
