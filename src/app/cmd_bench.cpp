@@ -6,13 +6,17 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string_view>
 #include <system_error>
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
+#include "app/particle_flags.hpp"
 #include "eval/bench.hpp"
+#include "eval/particle_eval.hpp"
 #include "eval/bench_shards.hpp"
 #include "eval/report.hpp"
 #include "util/data_dir.hpp"
@@ -159,6 +163,49 @@ void register_merge(CLI::App* bench) {
   });
 }
 
+void register_particles(CLI::App* bench) {
+  auto* cmd = bench->add_subcommand(
+      "particles",
+      "Compare particle inference with exact inference on every plan: total variation between their goal "
+      "posteriors (CLIPS modality; after the last step and averaged over steps) and the time and refinement "
+      "ratios particle / exact, per particle count. Single-threaded, one plan at a time");
+  auto o = std::make_shared<eval::ParticleEvalOptions>();
+  auto lm = std::make_shared<LmFlags>();
+  auto out = std::make_shared<std::string>();
+  add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
+  cmd->add_option("--particles", o->particles, "Particle counts to compare with exact inference (default 64,128,256)")
+      ->delimiter(',')
+      ->check(PositiveInteger);
+  cmd->add_option("--seeds", o->seeds, "Particle seeds 1..S run per count and plan (default 3)")->check(PositiveInteger);
+  cmd->add_option("--ess-threshold", o->ess_threshold, "As for `clips infer` (default 0.5)")->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--rejuvenation-moves", o->rejuvenation_moves, "As for `clips infer` (default 2)")
+      ->check(NonNegativeInteger);
+  cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
+  auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
+  add_lm_options(cmd, *lm);
+  add_speaker_model_options(cmd, *lm);
+  cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
+  cmd->callback([=] {
+    for (const CLI::Option* opt : bench->get_options())
+      if (opt->count() > 0)
+        throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench particles`");
+    reject_empty(out_opt, *out);
+    if (!(o->ess_threshold >= 0 && o->ess_threshold <= 1)) throw UsageError("--ess-threshold must be between 0 and 1");
+    o->dataset = dataset_dir(o->dataset);
+    const auto ds = data::Dataset::load(o->dataset);
+    o->language_model = make_lm(*lm, ds);
+    o->speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
+    o->utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
+    const eval::ParticleEvalReport rep = eval::run_particle_eval(*o);
+    fmt::print("{}", eval::format_particle_eval(rep));
+    if (!out->empty()) {
+      std::ofstream f(*out, std::ios::binary | std::ios::trunc);
+      f << eval::to_json(rep).dump(2) << "\n";
+      if (!f) throw InputError("cannot write " + *out);
+    }
+  });
+}
+
 }  // namespace
 
 void register_bench(CLI::App& app) {
@@ -202,9 +249,13 @@ void register_bench(CLI::App& app) {
                   "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped");
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
+  auto particles = std::make_shared<ParticleFlags>();
+  add_particle_options(cmd, *particles);
   register_merge(cmd);
+  register_particles(cmd);
   cmd->callback([=] {
-    if (cmd->got_subcommand("merge")) return;  // merge has run (CLI11 runs a subcommand's callback first)
+    // merge or particles has run (CLI11 runs a subcommand's callback first)
+    if (cmd->got_subcommand("merge") || cmd->got_subcommand("particles")) return;
     reject_empty(out_opt, *out);
     reject_empty(report_opt, *report);
     o->dataset = dataset_dir(o->dataset);
@@ -213,6 +264,10 @@ void register_bench(CLI::App& app) {
     o->experiment.speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->experiment.utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
     o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);
+    o->experiment.particles = particles->particles;
+    o->experiment.particle_seed = particles->seed;
+    o->experiment.ess_threshold = particles->ess_threshold;
+    o->experiment.rejuvenation_moves = particles->moves;
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {
