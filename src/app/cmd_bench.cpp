@@ -180,6 +180,9 @@ void register_particles(CLI::App* bench) {
   cmd->add_option("--ess-threshold", o->ess_threshold, "As for `clips infer` (default 0.5)")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--rejuvenation-moves", o->rejuvenation_moves, "As for `clips infer` (default 2)")
       ->check(NonNegativeInteger);
+  auto rejuvenate = std::make_shared<std::string>("evidence");
+  cmd->add_option("--rejuvenate", *rejuvenate, "As for `clips infer`: evidence (default) or resampling")
+      ->check(CLI::IsMember({"evidence", "resampling"}));
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
   add_lm_options(cmd, *lm);
@@ -191,6 +194,7 @@ void register_particles(CLI::App* bench) {
         throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench particles`");
     reject_empty(out_opt, *out);
     if (!(o->ess_threshold >= 0 && o->ess_threshold <= 1)) throw UsageError("--ess-threshold must be between 0 and 1");
+    o->rejuvenate_on_evidence = *rejuvenate == "evidence";
     o->dataset = dataset_dir(o->dataset);
     const auto ds = data::Dataset::load(o->dataset);
     o->language_model = make_lm(*lm, ds);
@@ -268,6 +272,7 @@ void register_bench(CLI::App& app) {
     o->experiment.particle_seed = particles->seed;
     o->experiment.ess_threshold = particles->ess_threshold;
     o->experiment.rejuvenation_moves = particles->moves;
+    o->experiment.rejuvenate_on_evidence = particles->rejuvenate == "evidence";
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {

@@ -51,6 +51,11 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
   cmd->add_option("--rejuvenation-moves", f.moves,
                   "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none)")
       ->check(NonNegativeInteger);
+  cmd->add_option("--rejuvenate", f.rejuvenate,
+                  "When the sweeps run: evidence (after every human action or utterance, and after resampling; "
+                  "default) or resampling (only after resampling: cheaper, but the particles can stay on goals that "
+                  "new evidence turns against)")
+      ->check(CLI::IsMember({"evidence", "resampling"}));
 }
 
 void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o) {
@@ -58,6 +63,7 @@ void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o
   o.particle_seed = f.seed;
   o.ess_threshold = f.ess_threshold;
   o.rejuvenation_moves = f.moves;
+  o.rejuvenate_on_evidence = f.rejuvenate == "evidence";
   inference::check_options(o);
 }
 

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <string>
 
 #include "inference/belief.hpp"
 
@@ -14,9 +15,10 @@ struct ParticleFlags {
   uint64_t seed = 1;
   double ess_threshold = 0.5;
   int moves = 2;
+  std::string rejuvenate = "evidence";  // or "resampling"
 };
 
-// --particles, --particle-seed, --ess-threshold, --rejuvenation-moves.
+// --particles, --particle-seed, --ess-threshold, --rejuvenation-moves, --rejuvenate.
 void add_particle_options(CLI::App* cmd, ParticleFlags& flags);
 // Copies the flags into the inference options.
 void apply_particle_flags(const ParticleFlags& flags, inference::InferenceOptions& options);

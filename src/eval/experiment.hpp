@@ -74,6 +74,7 @@ struct ExperimentOptions {
   uint64_t particle_seed = 1;
   double ess_threshold = 0.5;
   int rejuvenation_moves = 2;
+  bool rejuvenate_on_evidence = true;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

@@ -25,6 +25,7 @@ struct ParticleEvalOptions {
   int seeds = 3;                              // particle seeds 1..seeds for each count
   double ess_threshold = 0.5;
   int rejuvenation_moves = 2;
+  bool rejuvenate_on_evidence = true;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   std::shared_ptr<lm::LanguageModel> language_model;  // required

@@ -95,6 +95,8 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       po.particles = options_.particles;
       po.ess_threshold = options_.ess_threshold;
       po.rejuvenation_moves = options_.rejuvenation_moves;
+      po.rejuvenate_on_evidence = options_.rejuvenate_on_evidence;
+      po.proposal_groups = options_.proposal_groups;
       // One stream per modality: a filter's draws do not depend on the others'.
       po.seed = util::Rng::derive(options_.particle_seed, {static_cast<uint64_t>(m)});
       filters_.emplace_back(static_cast<int>(goals_.size()), static_cast<int>(profiles_.size()), po);
@@ -108,6 +110,8 @@ void check_options(const InferenceOptions& o) {
     throw InputError(fmt::format("the ESS threshold must be between 0 and 1, not {}", o.ess_threshold));
   if (o.rejuvenation_moves < 0)
     throw InputError(fmt::format("rejuvenation moves must be 0 or more, not {}", o.rejuvenation_moves));
+  if (o.proposal_groups < 1)
+    throw InputError(fmt::format("proposal groups must be 1 or more, not {}", o.proposal_groups));
 }
 
 bool Belief::is_speaker_action(pddl::ActionId a) const {

@@ -108,6 +108,10 @@ struct InferenceOptions {
   int particles = 0;
   double ess_threshold = 0.5;    // resample when ESS < ess_threshold × particles, in [0, 1]
   int rejuvenation_moves = 2;    // MH sweeps over goals after each resampling, >= 0
+  // Also run the sweeps after every step with evidence for the modality (a
+  // human action, an utterance), not only after resampling (particle_belief.hpp says why).
+  bool rejuvenate_on_evidence = true;
+  int proposal_groups = 8;       // independent exploring proposals per sweep (particle_belief.hpp), >= 1
   uint64_t particle_seed = 1;    // results are a function of the seed (and not of `threads`)
 };
 

@@ -140,10 +140,21 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
     }
   }
 
+  // Evidence this step: a human action (the Act event sits before the Speak
+  // event) and/or utterances.
+  const bool acted = history_.size() >= 2 && history_[history_.size() - 2].kind == Event::Kind::Act;
   for (Modality m : kModalities) {
     if (m == Modality::UtteranceOnly && !heard_) continue;
-    filters_[static_cast<int>(m)].update([&](int h) { return modality_ll(m, h); },
-                                         [&](const std::vector<int>& hs) { sync(hs, history_.size()); });
+    const bool evidence = m == Modality::Both ? acted || speak : m == Modality::ActionOnly ? acted : speak;
+    auto ll = [&](int h) { return modality_ll(m, h); };
+    auto current = [&] {
+      std::vector<int> out;
+      for (size_t h = 0; h < hyps_.size(); ++h)
+        if (cursor_[h] == history_.size() && ll(static_cast<int>(h)) > kNegInf) out.push_back(static_cast<int>(h));
+      return out;
+    };
+    filters_[static_cast<int>(m)].update(ll, [&](const std::vector<int>& hs) { sync(hs, history_.size()); }, current,
+                                         evidence);
   }
   return out;
 }

@@ -37,6 +37,7 @@ ParticleFilter::ParticleFilter(int goals, int profiles, const ParticleOptions& o
   if (!(options_.ess_threshold >= 0 && options_.ess_threshold <= 1))
     throw InputError("particle filter: the ESS threshold must be between 0 and 1");
   if (options_.rejuvenation_moves < 0) throw InputError("particle filter: rejuvenation moves must be >= 0");
+  if (options_.proposal_groups < 1) throw InputError("particle filter: proposal groups must be >= 1");
   const std::vector<double> uniform(static_cast<size_t>(goals_ * profiles_), 1.0);
   hyp_ = systematic(uniform);
   offset_.assign(hyp_.size(), 0.0);
@@ -97,15 +98,18 @@ double ParticleFilter::ess(const LogLikelihood& ll) const {
   return s * s / s2;
 }
 
-bool ParticleFilter::update(const LogLikelihood& ll, const Sync& sync) {
+bool ParticleFilter::update(const LogLikelihood& ll, const Sync& sync, const Current& current, bool evidence) {
   const std::vector<double> lw = log_weights(ll);
   if (log_sum_exp(lw) == kNegInf) {
     restart(sync);
     return false;
   }
-  if (ess(ll) >= options_.ess_threshold * static_cast<double>(size())) return false;
+  if (ess(ll) >= options_.ess_threshold * static_cast<double>(size())) {
+    if (evidence && options_.rejuvenate_on_evidence) rejuvenate(ll, sync, current);
+    return false;
+  }
   resample(lw);
-  rejuvenate(ll, sync);
+  rejuvenate(ll, sync, current);
   return true;
 }
 
@@ -129,37 +133,82 @@ void ParticleFilter::resample(const std::vector<double>& lw) {
   ++stats_.resamples;
 }
 
-void ParticleFilter::rejuvenate(const LogLikelihood& ll, const Sync& sync) {
+void ParticleFilter::propose(size_t i, int h2, const LogLikelihood& ll) {
+  const int h = hyp_[i];
+  if (h2 == h) return;
+  ++stats_.proposed;
+  const double l = ll(h), l2 = ll(h2);
+  // One uniform draw per proposal, also when the outcome is certain, so the
+  // stream does not depend on the likelihood values.
+  const double u = rng_.uniform01();
+  if (std::isnan(l2) || l2 == kNegInf) return;
+  if (l2 >= l || u < std::exp(l2 - l)) {
+    offset_[i] += l - l2;  // the particle's weight is unchanged by the move
+    hyp_[i] = h2;
+    ++stats_.accepted;
+  }
+}
+
+void ParticleFilter::rejuvenate(const LogLikelihood& ll, const Sync& sync, const Current& current) {
+  const size_t groups = static_cast<size_t>(options_.proposal_groups);
   for (int sweep = 0; sweep < options_.rejuvenation_moves; ++sweep) {
-    // One involution for all particles (see the header): d, e uniform.
-    const int d = static_cast<int>(rng_.index(static_cast<size_t>(goals_)));
-    const int e = static_cast<int>(rng_.index(static_cast<size_t>(profiles_)));
-    auto sigma = [&](int h) {
-      const int g = h / profiles_, c = h % profiles_;
-      const int g2 = ((d - g) % goals_ + goals_) % goals_;
-      const int c2 = ((e - c) % profiles_ + profiles_) % profiles_;
+    // Exploring move: one involution of the grid per group (see the header).
+    std::vector<int> d(groups), e(groups);
+    for (size_t b = 0; b < groups; ++b) {
+      d[b] = static_cast<int>(rng_.index(static_cast<size_t>(goals_)));
+      e[b] = static_cast<int>(rng_.index(static_cast<size_t>(profiles_)));
+    }
+    auto sigma = [&](size_t i) {
+      const size_t b = i % groups;
+      const int g = hyp_[i] / profiles_, c = hyp_[i] % profiles_;
+      const int g2 = ((d[b] - g) % goals_ + goals_) % goals_;
+      const int c2 = ((e[b] - c) % profiles_ + profiles_) % profiles_;
       return g2 * profiles_ + c2;
     };
     std::vector<int> proposals;
-    for (int h : hyp_)
-      if (sigma(h) != h) proposals.push_back(sigma(h));
+    for (size_t i = 0; i < hyp_.size(); ++i)
+      if (sigma(i) != hyp_[i]) proposals.push_back(sigma(i));
     proposals = sorted_unique(std::move(proposals));
-    if (proposals.empty()) continue;
-    sync(proposals);  // the proposed hypotheses' full-history likelihoods
+    if (!proposals.empty()) {
+      sync(proposals);  // the proposed hypotheses' full-history likelihoods
+      std::vector<int> to(hyp_.size());
+      for (size_t i = 0; i < hyp_.size(); ++i) to[i] = sigma(i);  // before any particle moves
+      for (size_t i = 0; i < hyp_.size(); ++i) propose(i, to[i], ll);
+    }
+    // Settling move among the current hypotheses (free: nothing to sync): an
+    // independence MH proposal h' ∝ P(h' | data) over that set, which is
+    // always accepted (the acceptance ratio is 1), so it is a Gibbs draw.
+    const std::vector<int> known = current();
+    if (known.size() < 2) continue;
+    std::vector<double> cdf(known.size());
+    double mx = kNegInf;
+    for (int h : known) mx = std::max(mx, ll(h));
+    double total = 0;
+    for (size_t k = 0; k < known.size(); ++k) cdf[k] = (total += std::exp(ll(known[k]) - mx));
+    // Stratified in weight: particle i takes the point at the middle of its
+    // share of the total weight, shifted by one common uniform u (mod 1), and
+    // the hypothesis whose share of the posterior covers that point. Each
+    // particle's point is uniform, so each draw is exactly from the
+    // posterior over the set; together they cover it like systematic
+    // resampling does, instead of adding multinomial noise at every step.
+    const std::vector<double> lw = log_weights(ll);
+    const double lse = log_sum_exp(lw);
+    const double shift = rng_.uniform01();
+    double below = 0;  // normalised weight of the particles before i
     for (size_t i = 0; i < hyp_.size(); ++i) {
-      const int h = hyp_[i], h2 = sigma(h);
+      const double wi = lse == kNegInf ? 1.0 / static_cast<double>(hyp_.size()) : std::exp(lw[i] - lse);
+      double point = below + wi / 2 + shift;
+      below += wi;
+      point -= std::floor(point);
+      const size_t k = std::min(known.size() - 1,
+                                static_cast<size_t>(std::upper_bound(cdf.begin(), cdf.end(), point * total) - cdf.begin()));
+      const int h = hyp_[i], h2 = known[k];
       if (h2 == h) continue;
-      ++stats_.proposed;
       const double l = ll(h), l2 = ll(h2);
-      if (std::isnan(l2) || l2 == kNegInf) continue;
-      // One uniform draw per proposal, also when the move is sure to be
-      // accepted, so the stream does not depend on the likelihood values.
-      const double u = rng_.uniform01();
-      if (l2 >= l || u < std::exp(l2 - l)) {
-        offset_[i] += l - l2;  // the particle's weight is unchanged by the move
-        hyp_[i] = h2;
-        ++stats_.accepted;
-      }
+      // A particle already ruled out keeps its zero weight (-inf offset).
+      offset_[i] = l == kNegInf ? kNegInf : offset_[i] + (l - l2);
+      hyp_[i] = h2;
+      ++stats_.settled;
     }
   }
 }

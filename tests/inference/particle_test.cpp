@@ -31,6 +31,7 @@ ParticleOptions popts(int n, double ess = 0.5, int moves = 2, uint64_t seed = 1)
 }
 
 const ParticleFilter::Sync kNoSync = [](const std::vector<int>&) {};
+const ParticleFilter::Current kNone = [] { return std::vector<int>{}; };
 
 TEST(ParticleFilter, SystematicInitialisationSpreadsParticlesEvenly) {
   ParticleFilter f(3, 2, popts(20));
@@ -50,7 +51,7 @@ TEST(ParticleFilter, ResamplesExactlyWhenTheEssFallsBelowTheThreshold) {
     ParticleFilter f(4, 1, popts(100, threshold));
     EXPECT_NEAR(f.ess([](int) { return 0.0; }), 100, 1e-9);
     EXPECT_NEAR(f.ess(ll), expected, 1e-9);
-    const bool resampled = f.update(ll, kNoSync);
+    const bool resampled = f.update(ll, kNoSync, kNone, /*evidence=*/false);  // sweeps only after resampling
     EXPECT_EQ(resampled, expected < threshold * 100) << threshold;
     EXPECT_EQ(f.stats().resamples, resampled ? 1 : 0);
     if (resampled) {
@@ -74,7 +75,7 @@ TEST(ParticleFilter, RejuvenationRecoversAGoalNoParticleHeld) {
     ParticleFilter f(8, 1, popts(4, 1.0, moves));
     ASSERT_EQ(f.held(), start);
     std::vector<int> synced;
-    f.update(ll, [&](const std::vector<int>& hs) { synced.insert(synced.end(), hs.begin(), hs.end()); });
+    f.update(ll, [&](const std::vector<int>& hs) { synced.insert(synced.end(), hs.begin(), hs.end()); }, kNone);
     double lm = 0;
     const auto p = f.posterior(ll, lm);
     if (moves == 0) {
@@ -96,14 +97,14 @@ TEST(ParticleFilter, RestartsFromThePriorWhenEveryParticleIsRuledOut) {
   // rule them all out instead: the posterior falls back to the prior.
   auto none = [](int) { return kNegInf; };
   std::vector<int> synced;
-  EXPECT_FALSE(f.update(none, [&](const std::vector<int>& hs) { synced = hs; }));
+  EXPECT_FALSE(f.update(none, [&](const std::vector<int>& hs) { synced = hs; }, kNone));
   EXPECT_EQ(f.stats().restarts, 1);
   EXPECT_EQ(synced.size(), 4u);
   double lm = 0;
   for (double p : f.posterior(none, lm)) EXPECT_DOUBLE_EQ(p, 0.25);
   EXPECT_EQ(lm, kNegInf);
   // Once something explains the data, the restarted particles find it.
-  f.update(ll, kNoSync);
+  f.update(ll, kNoSync, kNone);
   EXPECT_NEAR(f.posterior(ll, lm)[2], 1.0, 1e-12);
 }
 
@@ -111,7 +112,7 @@ TEST(ParticleFilter, SameSeedSameParticles) {
   auto ll = [](int h) { return -0.7 * h; };
   auto run = [&](uint64_t seed) {
     ParticleFilter f(16, 2, popts(10, 1.0, 3, seed));
-    for (int i = 0; i < 5; ++i) f.update(ll, kNoSync);
+    for (int i = 0; i < 5; ++i) f.update(ll, kNoSync, kNone);
     return f.particles();
   };
   EXPECT_EQ(run(7), run(7));
@@ -245,6 +246,7 @@ TEST(ParticleBelief, HypothesesJoiningLateReplayToTheExactNumbers) {
   po.particles = 1;
   po.ess_threshold = 1.0;
   po.rejuvenation_moves = 1;
+  po.proposal_groups = 1;
   Belief b = corridor_belief(task, po);
   corridor_run(exact, *task, lm);
   corridor_run(b, *task, lm);
