@@ -183,6 +183,7 @@ void register_particles(CLI::App* bench) {
   auto rejuvenate = std::make_shared<std::string>("evidence");
   cmd->add_option("--rejuvenate", *rejuvenate, "As for `clips infer`: evidence (default) or resampling")
       ->check(CLI::IsMember({"evidence", "resampling"}));
+  cmd->add_option("--proposal-groups", o->proposal_groups, "As for `clips infer` (default 8)")->check(PositiveInteger);
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
   add_lm_options(cmd, *lm);
@@ -273,6 +274,7 @@ void register_bench(CLI::App& app) {
     o->experiment.ess_threshold = particles->ess_threshold;
     o->experiment.rejuvenation_moves = particles->moves;
     o->experiment.rejuvenate_on_evidence = particles->rejuvenate == "evidence";
+    o->experiment.proposal_groups = particles->groups;
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {

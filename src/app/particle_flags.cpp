@@ -56,6 +56,10 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
                   "default) or resampling (only after resampling: cheaper, but the particles can stay on goals that "
                   "new evidence turns against)")
       ->check(CLI::IsMember({"evidence", "resampling"}));
+  cmd->add_option("--proposal-groups", f.groups,
+                  "Independent exploring proposals per sweep: each sweep may bring in this many new hypotheses per "
+                  "hypothesis held (default 8; fewer: cheaper, slower to find goals no particle holds)")
+      ->check(PositiveInteger);
 }
 
 void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o) {
@@ -64,6 +68,7 @@ void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o
   o.ess_threshold = f.ess_threshold;
   o.rejuvenation_moves = f.moves;
   o.rejuvenate_on_evidence = f.rejuvenate == "evidence";
+  o.proposal_groups = f.groups;
   inference::check_options(o);
 }
 

@@ -16,9 +16,11 @@ struct ParticleFlags {
   double ess_threshold = 0.5;
   int moves = 2;
   std::string rejuvenate = "evidence";  // or "resampling"
+  int groups = 8;
 };
 
-// --particles, --particle-seed, --ess-threshold, --rejuvenation-moves, --rejuvenate.
+// --particles, --particle-seed, --ess-threshold, --rejuvenation-moves, --rejuvenate,
+// --proposal-groups.
 void add_particle_options(CLI::App* cmd, ParticleFlags& flags);
 // Copies the flags into the inference options.
 void apply_particle_flags(const ParticleFlags& flags, inference::InferenceOptions& options);

@@ -64,6 +64,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
   io.ess_threshold = opts.ess_threshold;
   io.rejuvenation_moves = opts.rejuvenation_moves;
   io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
+  io.proposal_groups = opts.proposal_groups;
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
     out.goals = inf.goals;
     out.utterance_warnings = inf.utterance_warnings;
@@ -138,6 +139,7 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   io.ess_threshold = opts.ess_threshold;
   io.rejuvenation_moves = opts.rejuvenation_moves;
   io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
+  io.proposal_groups = opts.proposal_groups;
   LiveDecision out;
   out.inference = inference::run_inference_on_observations(ds, observations, lm, io);
   const Modality mod = method == "clips" ? Modality::Both : method == "lang_only" ? Modality::UtteranceOnly

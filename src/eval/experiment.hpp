@@ -75,6 +75,7 @@ struct ExperimentOptions {
   double ess_threshold = 0.5;
   int rejuvenation_moves = 2;
   bool rejuvenate_on_evidence = true;
+  int proposal_groups = 8;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

@@ -69,6 +69,7 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   base.ess_threshold = o.ess_threshold;
   base.rejuvenation_moves = o.rejuvenation_moves;
   base.rejuvenate_on_evidence = o.rejuvenate_on_evidence;
+  base.proposal_groups = o.proposal_groups;
   inference::check_options(base);
   size_t done = 0;
   for (const data::PlanRecord* p : todo) {

@@ -26,6 +26,7 @@ struct ParticleEvalOptions {
   double ess_threshold = 0.5;
   int rejuvenation_moves = 2;
   bool rejuvenate_on_evidence = true;
+  int proposal_groups = 8;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   std::shared_ptr<lm::LanguageModel> language_model;  // required
