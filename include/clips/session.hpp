@@ -25,6 +25,7 @@
 // threads (they share nothing mutable; the embedded language model is loaded
 // once per process under a lock). One session is not re-entrant: calls on the
 // same session, const ones included, must not overlap.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +68,11 @@ struct SessionOptions {
   std::vector<std::string> cost_profiles;
   size_t max_nodes = size_t{1} << 18;  // expansions per lookahead search
   int threads = 1;                     // threads refining the hypotheses (0: all cores)
+  // Particle inference over goal x cost profile (sequential Monte Carlo with
+  // this many particles; only the hypotheses particles hold are refined).
+  // 0: exact enumeration. Results are a function of particle_seed.
+  int particles = 0;
+  uint64_t particle_seed = 1;
 };
 
 struct HypothesisWeight {

@@ -100,6 +100,8 @@ struct Session::Impl {
     inference::InferenceOptions io;
     io.refine.max_nodes = options.max_nodes;
     io.threads = options.threads;
+    io.particles = options.particles;
+    io.particle_seed = options.particle_seed;
     belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
     roles = pack->roles();
     try {
@@ -268,6 +270,8 @@ Posterior Session::posterior(Method method) const {
 AssistDecision Session::assist() {
   Impl& m = *impl_;
   AssistDecision d;
+  // Particle inference: the weighted hypotheses' policies follow the whole history.
+  m.belief->sync_policies(modality_of(m.options.method));
   const auto post = m.belief->posterior(modality_of(m.options.method));
   d.goals = m.goal_labels;
   d.goal_weights = post.goals;

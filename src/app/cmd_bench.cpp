@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string_view>
 #include <system_error>
@@ -13,7 +15,9 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "app/scaling_cli.hpp"
+#include "app/particle_flags.hpp"
 #include "eval/bench.hpp"
+#include "eval/particle_eval.hpp"
 #include "eval/bench_shards.hpp"
 #include "eval/report.hpp"
 #include "util/data_dir.hpp"
@@ -160,6 +164,54 @@ void register_merge(CLI::App* bench) {
   });
 }
 
+void register_particles(CLI::App* bench) {
+  auto* cmd = bench->add_subcommand(
+      "particles",
+      "Compare particle inference with exact inference on every plan: total variation between their goal "
+      "posteriors (CLIPS modality; after the last step and averaged over steps) and the time and refinement "
+      "ratios particle / exact, per particle count. Single-threaded, one plan at a time");
+  auto o = std::make_shared<eval::ParticleEvalOptions>();
+  auto lm = std::make_shared<LmFlags>();
+  auto out = std::make_shared<std::string>();
+  add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
+  cmd->add_option("--particles", o->particles, "Particle counts to compare with exact inference (default 64,128,256)")
+      ->delimiter(',')
+      ->check(PositiveInteger);
+  cmd->add_option("--seeds", o->seeds, "Particle seeds 1..S run per count and plan (default 3)")->check(PositiveInteger);
+  cmd->add_option("--ess-threshold", o->ess_threshold, "As for `clips infer` (default 0.5)")->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--rejuvenation-moves", o->rejuvenation_moves, "As for `clips infer` (default 2)")
+      ->check(NonNegativeInteger);
+  auto rejuvenate = std::make_shared<std::string>("evidence");
+  cmd->add_option("--rejuvenate", *rejuvenate, "As for `clips infer`: evidence (default) or resampling")
+      ->check(CLI::IsMember({"evidence", "resampling"}));
+  cmd->add_option("--proposal-groups", o->proposal_groups, "As for `clips infer` (default 8)")->check(PositiveInteger);
+  cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
+  auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
+  add_lm_options(cmd, *lm);
+  add_speaker_model_options(cmd, *lm);
+  cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
+  cmd->callback([=] {
+    for (const CLI::Option* opt : bench->get_options())
+      if (opt->count() > 0)
+        throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench particles`");
+    reject_empty(out_opt, *out);
+    if (!(o->ess_threshold >= 0 && o->ess_threshold <= 1)) throw UsageError("--ess-threshold must be between 0 and 1");
+    o->rejuvenate_on_evidence = *rejuvenate == "evidence";
+    o->dataset = dataset_dir(o->dataset);
+    const auto ds = data::Dataset::load(o->dataset);
+    o->language_model = make_lm(*lm, ds);
+    o->speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
+    o->utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
+    const eval::ParticleEvalReport rep = eval::run_particle_eval(*o);
+    fmt::print("{}", eval::format_particle_eval(rep));
+    if (!out->empty()) {
+      std::ofstream f(*out, std::ios::binary | std::ios::trunc);
+      f << eval::to_json(rep).dump(2) << "\n";
+      if (!f) throw InputError("cannot write " + *out);
+    }
+  });
+}
+
 }  // namespace
 
 void register_bench(CLI::App& app) {
@@ -220,9 +272,13 @@ void register_bench(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--scaling-point", sc->point, "Internal: run one scaling point (AXIS:VALUE), print its CSV line")
       ->group("");
+  auto particles = std::make_shared<ParticleFlags>();
+  add_particle_options(cmd, *particles);
   register_merge(cmd);
+  register_particles(cmd);
   cmd->callback([=] {
-    if (cmd->got_subcommand("merge")) return;  // merge has run (CLI11 runs a subcommand's callback first)
+    // merge or particles has run (CLI11 runs a subcommand's callback first)
+    if (cmd->got_subcommand("merge") || cmd->got_subcommand("particles")) return;
     if (sc->run || !sc->point.empty()) {
       reject_empty(out_opt, *out);
       if (!out->empty()) sc->out = *out;
@@ -239,6 +295,12 @@ void register_bench(CLI::App& app) {
     o->experiment.speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->experiment.utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
     o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);
+    o->experiment.particles = particles->particles;
+    o->experiment.particle_seed = particles->seed;
+    o->experiment.ess_threshold = particles->ess_threshold;
+    o->experiment.rejuvenation_moves = particles->moves;
+    o->experiment.rejuvenate_on_evidence = particles->rejuvenate == "evidence";
+    o->experiment.proposal_groups = particles->groups;
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {

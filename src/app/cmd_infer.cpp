@@ -2,12 +2,14 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
 #include "app/observations.hpp"
 #include "data/dataset.hpp"
+#include "app/particle_flags.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
@@ -58,7 +60,8 @@ nlohmann::json explain_json(const inference::InferenceRun& run, const inference:
 
 nlohmann::json rollouts_json(const inference::InferenceRun& run) {
   nlohmann::json out = nlohmann::json::object();
-  for (size_t h = 0; h < run.belief->hypotheses().size(); ++h) out[hypothesis_label(run, h)] = rollout_of(run, h);
+  for (size_t h = 0; h < run.belief->hypotheses().size(); ++h)
+    if (run.belief->current(static_cast<int>(h))) out[hypothesis_label(run, h)] = rollout_of(run, h);
   return out;
 }
 
@@ -69,6 +72,7 @@ void print_explanation(const inference::InferenceRun& run, int top) {
                  u.text, st.t);
       for (size_t h = 0; h < u.hypotheses.size(); ++h) {
         const auto& hu = u.hypotheses[h];
+        if (std::isnan(hu.log_likelihood)) continue;  // particle inference: no particle held h
         fmt::print("  {:<14} {:>9.3f}  ({} command{})\n", hypothesis_label(run, h), hu.log_likelihood,
                    hu.commands.size(), hu.commands.size() == 1 ? "" : "s");
         if (hu.commands.empty()) fmt::print("      (no command: scored with the empty prompt)\n");
@@ -78,6 +82,8 @@ void print_explanation(const inference::InferenceRun& run, int top) {
     }
   fmt::print("\nrolled-out joint plans after the last step:\n");
   for (size_t h = 0; h < run.belief->hypotheses().size(); ++h) {
+    // Particle inference: hypotheses no particle holds have not followed the history.
+    if (!run.belief->current(static_cast<int>(h))) continue;
     auto plan = rollout_of(run, h);
     std::string text;
     for (const auto& a : plan) text += (text.empty() ? "" : " ") + a;
@@ -107,6 +113,7 @@ void register_infer(CLI::App& app) {
     bool json = false, explain = false;
     int top = 3;
     size_t max_nodes = size_t{1} << 18;
+    ParticleFlags particles;
   };
   auto o = std::make_shared<Opts>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl)");
@@ -118,6 +125,7 @@ void register_infer(CLI::App& app) {
   add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)")
       ->check(PositiveInteger);
+  add_particle_options(cmd, o->particles);
   cmd->add_flag("--explain", o->explain,
                 "Also show, per utterance and hypothesis (goal x cost profile), its likelihood and most probable "
                 "commands, and each hypothesis' rolled-out joint plan at the end");
@@ -138,10 +146,13 @@ void register_infer(CLI::App& app) {
     opts.threads = 0;  // one plan: use every core
     opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     opts.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
+    apply_particle_flags(o->particles, opts);
     const inference::InferenceRun run = adhoc ? inference::run_inference_on_observations(ds, plan, *lm, opts)
                                               : inference::run_inference(ds, plan, *lm, opts);
     // Utterances the model could not read (weighted down or ignored): the user must know.
     for (const auto& w : run.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
+    // Particle inference: the rollouts shown are of the modality's weighted hypotheses, brought up to date.
+    if (o->explain) run.belief->sync_policies(modality);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";
     if (o->json) {
       nlohmann::json j;
@@ -159,6 +170,7 @@ void register_infer(CLI::App& app) {
       if (o->explain) j["rollouts"] = rollouts_json(run);
       j["seconds"] = run.seconds;
       j["searches_stopped_by_budget"] = run.searches_stopped_by_budget;
+      j["particles"] = o->particles.particles;
       j["utterance_warnings"] = run.utterance_warnings;
       fmt::print("{}\n", j.dump());
       print_budget_note(run, o->max_nodes);
@@ -182,7 +194,9 @@ void register_infer(CLI::App& app) {
     const auto& fin = run.steps.back()[modality];
     fmt::print("; cost profiles:");
     for (size_t c = 0; c < run.profiles.size(); ++c) fmt::print(" {} {:.4f}", run.profiles[c], fin.profiles[c]);
-    fmt::print("; log marginal likelihood {:.4f}; {:.3f} s ({})\n", fin.log_marginal, run.seconds, lm->name());
+    fmt::print("; log marginal likelihood {:.4f}{}; {:.3f} s ({})\n", fin.log_marginal,
+               o->particles.particles > 0 ? fmt::format(" (estimate, {} particles)", o->particles.particles) : "",
+               run.seconds, lm->name());
     if (o->explain) print_explanation(run, o->top);
     print_budget_note(run, o->max_nodes);
   });

@@ -60,6 +60,12 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     io.threads = opts.inference_threads;
     io.utterance_timing = opts.utterance_timing;
     if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
+    io.particles = opts.particles;
+    io.particle_seed = opts.particle_seed;
+    io.ess_threshold = opts.ess_threshold;
+    io.rejuvenation_moves = opts.rejuvenation_moves;
+    io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
+    io.proposal_groups = opts.proposal_groups;
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
     if (opts.on_inference) opts.on_inference(inf);
     out.goals = inf.goals;
@@ -72,6 +78,11 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
       if (belief.hypotheses()[h].goal == inf.true_goal && belief.hypotheses()[h].profile == inf.true_profile)
         true_h = static_cast<int>(h);
     if (true_h < 0) throw InputError("plan " + p.id + ": the true specification is not among the hypotheses");
+    // Particle inference: the policies the methods read (every modality's
+    // weighted hypotheses, the true one for the multimodal baseline) must have
+    // followed the whole observed history.
+    for (Modality m : inference::kModalities) inf.belief->sync_policies(m);
+    inf.belief->sync_policies({true_h});
     auto true_spec = belief.hypotheses()[true_h].spec;
 
     assist::AssistSetup setup;
@@ -125,11 +136,18 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   io.utterance.speaker_rule = opts.speaker_rule;
   io.threads = opts.inference_threads;
   io.utterance_timing = opts.utterance_timing;
+  io.particles = opts.particles;
+  io.particle_seed = opts.particle_seed;
+  io.ess_threshold = opts.ess_threshold;
+  io.rejuvenation_moves = opts.rejuvenation_moves;
+  io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
+  io.proposal_groups = opts.proposal_groups;
   LiveDecision out;
   out.inference = inference::run_inference_on_observations(ds, observations, lm, io);
-  const inference::Belief& belief = *out.inference.belief;
   const Modality mod = method == "clips" ? Modality::Both : method == "lang_only" ? Modality::UtteranceOnly
                                                                                    : Modality::ActionOnly;
+  out.inference.belief->sync_policies(mod);  // particle inference: bring the weighted policies up to date
+  const inference::Belief& belief = *out.inference.belief;
   const auto& post = out.inference.final_posterior(mod);
   out.goal_posterior = post.goals;
 

@@ -70,6 +70,13 @@ struct ExperimentOptions {
   // Threads per inference (InferenceOptions::threads): 1 when plans already
   // run in parallel (`clips bench`), 0 (all cores) for a single plan.
   int inference_threads = 1;
+  // Particle inference (InferenceOptions::particles etc.); 0: exact.
+  int particles = 0;
+  uint64_t particle_seed = 1;
+  double ess_threshold = 0.5;
+  int rejuvenation_moves = 2;
+  bool rejuvenate_on_evidence = true;
+  int proposal_groups = 8;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

@@ -43,6 +43,7 @@ class OnlineAdapter : public assist::OnlineBelief {
 
  private:
   void rebuild() {
+    belief_.sync_policies(modality_);  // particle inference: weighted policies up to date
     auto post = belief_.posterior(modality_);
     hyps_.clear();
     for (size_t h = 0; h < post.hypotheses.size(); ++h)

@@ -55,6 +55,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       options_(std::move(options)) {
   if (goals_.empty() || profiles_.empty()) throw InputError("inference needs at least one goal and one cost profile");
   if (!pack_) throw InputError("inference needs a domain pack");
+  check_options(options_);
   const domains::InferenceSettings& settings = pack_->spec().inference;
   search_ = options_.search.value_or(settings.search);
   const std::string hname = options_.heuristic.empty() ? settings.heuristic : options_.heuristic;
@@ -87,6 +88,30 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
     auto pool = std::make_shared<util::WorkerPool>(options_.threads);
     if (pool->threads() > 1) pool_ = std::move(pool);
   }
+  if (options_.particles > 0) {
+    cursor_.assign(hyps_.size(), 0);
+    for (Modality m : kModalities) {
+      ParticleOptions po;
+      po.particles = options_.particles;
+      po.ess_threshold = options_.ess_threshold;
+      po.rejuvenation_moves = options_.rejuvenation_moves;
+      po.rejuvenate_on_evidence = options_.rejuvenate_on_evidence;
+      po.proposal_groups = options_.proposal_groups;
+      // One stream per modality: a filter's draws do not depend on the others'.
+      po.seed = util::Rng::derive(options_.particle_seed, {static_cast<uint64_t>(m)});
+      filters_.emplace_back(static_cast<int>(goals_.size()), static_cast<int>(profiles_.size()), po);
+    }
+  }
+}
+
+void check_options(const InferenceOptions& o) {
+  if (o.particles < 0) throw InputError(fmt::format("particles must be 0 (exact) or positive, not {}", o.particles));
+  if (!(o.ess_threshold >= 0 && o.ess_threshold <= 1))
+    throw InputError(fmt::format("the ESS threshold must be between 0 and 1, not {}", o.ess_threshold));
+  if (o.rejuvenation_moves < 0)
+    throw InputError(fmt::format("rejuvenation moves must be 0 or more, not {}", o.rejuvenation_moves));
+  if (o.proposal_groups < 1)
+    throw InputError(fmt::format("proposal groups must be 1 or more, not {}", o.proposal_groups));
 }
 
 bool Belief::is_speaker_action(pddl::ActionId a) const {
@@ -97,7 +122,14 @@ bool Belief::is_speaker_action(pddl::ActionId a) const {
 }
 
 void Belief::refine_all(const pddl::State& s) {
+  std::vector<int> all(policies_.size());
+  for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
+  refine_some(s, all);
+}
+
+void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs) {
   if (!search_) return;  // VH: V = -h_g, nothing to refine
+  refinements_ += hs.size();
   // Each hypothesis owns its policy and heuristic, so the refinements are
   // independent and may run on several threads.
   budget_stops_.resize(policies_.size(), 0);
@@ -110,13 +142,12 @@ void Belief::refine_all(const pddl::State& s) {
       budget_stops_[h] += pi.refine(s, options_.refine).stopped_by_budget;
     }
   };
-  if (pool_) {
+  if (pool_ && hs.size() > 1) {
     // Longest first (by the last step's time): the step ends when the slowest
     // thread does, and a long refinement started last would leave the other
     // threads idle. The order does not change any result.
     refine_seconds_.resize(policies_.size(), 0.0);
-    std::vector<size_t> order(policies_.size());
-    for (size_t h = 0; h < order.size(); ++h) order[h] = h;
+    std::vector<size_t> order(hs.begin(), hs.end());
     std::stable_sort(order.begin(), order.end(),
                      [&](size_t a, size_t b) { return refine_seconds_[a] > refine_seconds_[b]; });
     pool_->run(order.size(), [&](size_t i) {
@@ -126,8 +157,19 @@ void Belief::refine_all(const pddl::State& s) {
       refine_seconds_[h] = seconds_since(t0);
     });
   } else {
-    for (size_t h = 0; h < policies_.size(); ++h) refine_one(h);
+    for (int h : hs) refine_one(static_cast<size_t>(h));
   }
+}
+
+double Belief::score_action(int h, const pddl::State& s, pddl::ActionId action) {
+  std::vector<double> q;
+  int chosen = -1;
+  for (const search::QValue& qv : policies_[h].q_values(s)) {
+    if (qv.action == action) chosen = static_cast<int>(q.size());
+    q.push_back(qv.q);
+  }
+  // An unavailable action has likelihood 0: the hypothesis is eliminated.
+  return std::log(temps_[h].update(q, chosen));
 }
 
 std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
@@ -208,6 +250,12 @@ StepRecord Belief::start(const pddl::State& s0, const std::vector<std::string>& 
   const auto t0 = std::chrono::steady_clock::now();
   state_ = s0;
   t_ = 0;
+  if (particle_mode()) {
+    history_.push_back({.kind = Event::Kind::Refine, .state = s0});
+    history_.push_back(speak_event(s0, utterances, true));
+    auto utts = particle_step(lm);
+    return record("", false, std::move(utts), seconds_since(t0));
+  }
   refine_all(s0);
   auto utts = score_utterances(s0, utterances, lm);
   return record("", false, std::move(utts), seconds_since(t0));
@@ -217,21 +265,20 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
                            lm::LanguageModel* lm) {
   const auto t0 = std::chrono::steady_clock::now();
   const pddl::State s = state;  // `state` may alias state_
+  if (particle_mode()) {
+    const bool evidence = is_speaker_action(action);
+    history_.push_back({.kind = Event::Kind::Refine, .state = s});
+    if (evidence) history_.push_back({.kind = Event::Kind::Act, .state = s, .action = action});
+    history_.push_back(speak_event(s, utterances, true));
+    auto utts = particle_step(lm);
+    state_ = task_->apply(s, action);
+    ++t_;
+    return record(task_->action_name(action), evidence, std::move(utts), seconds_since(t0));
+  }
   refine_all(s);
   const bool evidence = is_speaker_action(action);
-  if (evidence) {
-    std::vector<double> q;
-    for (size_t h = 0; h < hyps_.size(); ++h) {
-      q.clear();
-      int chosen = -1;
-      for (const search::QValue& qv : policies_[h].q_values(s)) {
-        if (qv.action == action) chosen = static_cast<int>(q.size());
-        q.push_back(qv.q);
-      }
-      // An unavailable action has likelihood 0: the hypothesis is eliminated.
-      action_ll_[h] += std::log(temps_[h].update(q, chosen));
-    }
-  }
+  if (evidence)
+    for (size_t h = 0; h < hyps_.size(); ++h) action_ll_[h] += score_action(static_cast<int>(h), s, action);
   // Robot actions: do(a), no evidence and no temperature update.
   auto utts = score_utterances(s, utterances, lm);
   state_ = task_->apply(s, action);
@@ -242,6 +289,15 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
 StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::LanguageModel& lm, StepRecord last) {
   if (utterances.empty()) return last;
   const auto t0 = std::chrono::steady_clock::now();
+  if (particle_mode()) {
+    history_.push_back({.kind = Event::Kind::Refine, .state = state_});
+    history_.push_back(speak_event(state_, utterances, false));
+    auto utts = particle_step(&lm);
+    StepRecord r = record(last.action, last.evidence, std::move(last.utterances), last.seconds);
+    for (auto& u : utts) r.utterances.push_back(std::move(u));
+    r.seconds += seconds_since(t0);
+    return r;
+  }
   refine_all(state_);
   auto utts = score_utterances(state_, utterances, &lm, /*speak_factor=*/false);
   if (options_.speak_factors) {
@@ -262,6 +318,7 @@ size_t Belief::searches_stopped_by_budget() const {
 }
 
 Posterior Belief::posterior(Modality m) const {
+  if (particle_mode()) return particle_posterior(m);
   Posterior p;
   const size_t n = hyps_.size();
   std::vector<double> lw(n);

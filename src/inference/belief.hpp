@@ -26,6 +26,21 @@
 //   utterance   ∝ prior × utterance part                 (language-only IP)
 // In the language-only model the policies and scoring states still follow the
 // observed actions; only the action likelihoods are left out.
+//
+// Particles (InferenceOptions::particles = N > 0): for hypothesis spaces too
+// large to refine every policy each step, each modality keeps N particles
+// over hypotheses (particle_belief.hpp: systematic resampling when the ESS
+// falls below a threshold, MH rejuvenation over goals). Only hypotheses some
+// particle holds (or a rejuvenation move proposes) are brought up to date.
+// The belief records the observed history as a list of events (refine at s,
+// score a human action at s, score utterances at s); a hypothesis remembers
+// how many events it has processed and replays the rest, in order, when its
+// likelihood is next needed. Its numbers are then exactly those the exact
+// belief would have: the same refinements in the same states, the same
+// temperature updates, the same utterance scores (so a hypothesis joining
+// late through rejuvenation gets its correct full-history likelihood, and
+// each refinement is done at most once per hypothesis). Hypotheses no
+// particle holds keep stale policies; see sync_policies for assistance.
 #include <array>
 #include <memory>
 #include <optional>
@@ -33,6 +48,7 @@
 #include <vector>
 
 #include "data/dataset.hpp"
+#include "inference/particle_belief.hpp"
 #include "inference/temperature.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
@@ -87,7 +103,21 @@ struct InferenceOptions {
   // independent, so results do not depend on it). 1: sequential (callers that
   // already run several inferences at once, like `clips bench`); 0: all cores.
   int threads = 1;
+  // Particle approximation (see the top of this file and particle_belief.hpp).
+  // 0: exact enumeration of every hypothesis (default).
+  int particles = 0;
+  double ess_threshold = 0.5;    // resample when ESS < ess_threshold × particles, in [0, 1]
+  int rejuvenation_moves = 2;    // MH sweeps over goals after each resampling, >= 0
+  // Also run the sweeps after every step with evidence for the modality (a
+  // human action, an utterance), not only after resampling (particle_belief.hpp says why).
+  bool rejuvenate_on_evidence = true;
+  int proposal_groups = 8;       // independent exploring proposals per sweep (particle_belief.hpp), >= 1
+  uint64_t particle_seed = 1;    // results are a function of the seed (and not of `threads`)
 };
+
+// Throws InputError for option values no belief can run with (negative
+// particle count, ESS threshold outside [0, 1], negative moves).
+void check_options(const InferenceOptions& options);
 
 struct Hypothesis {
   int goal = 0;     // index into Belief::goals()
@@ -174,8 +204,54 @@ class Belief {
   const UtteranceModel& utterance_model() const { return *utterance_model_; }
   bool searches() const { return search_; }
 
+  // Particle mode (InferenceOptions::particles > 0).
+  bool particle_mode() const { return !filters_.empty(); }
+  // The modality's filter counters; null in exact mode or for the utterance
+  // modality before the first utterance (its posterior is the prior until
+  // then, so it has no particles yet).
+  const ParticleStats* particle_stats(Modality m) const;
+  // Hypotheses with non-zero weight in the modality (all, in exact mode).
+  std::vector<int> support(Modality m) const;
+  // Whether hypothesis h has processed the whole history (always in exact mode).
+  bool current(int h) const { return !particle_mode() || cursor_[h] == history_.size(); }
+  // Brings the policies of every hypothesis with non-zero weight in `m` up to
+  // the present (a no-op in exact mode, and for all modalities but the
+  // utterance one before its first utterance: there every hypothesis has the
+  // prior weight and only some are current). Callers that read policies()
+  // under such a posterior call it first.
+  void sync_policies(Modality m);
+  // The same for the given hypotheses.
+  void sync_policies(const std::vector<int>& hs);
+  // Refinements of single hypotheses so far (the cost that particles save).
+  size_t refinements() const { return refinements_; }
+
  private:
+  // One recorded observation, replayed by hypotheses that join late.
+  struct Event {
+    enum class Kind { Refine, Act, Speak } kind = Kind::Refine;
+    pddl::State state;
+    pddl::ActionId action = -1;             // Act
+    std::vector<std::string> texts{};       // Speak
+    std::vector<double> weights{};          // Speak: each text's evidence weight (set when first scored)
+    double before = 0, after = 0;           // Speak: goal-independent log factors around the texts
+  };
   void refine_all(const pddl::State& s);
+  void refine_some(const pddl::State& s, const std::vector<int>& hs);
+  // log P(a | s, h) with h's policy as refined at s; updates h's temperatures.
+  double score_action(int h, const pddl::State& s, pddl::ActionId action);
+  // Particle mode: the Speak event of a step with these utterances; `step`:
+  // the step's speak/no-speak factor (false for hear(), which corrects the
+  // step's factor afterwards instead).
+  Event speak_event(const pddl::State& s, const std::vector<std::string>& texts, bool step) const;
+  // Particle mode: process events [cursor_[h], until) for every h in hs.
+  void sync(const std::vector<int>& hs, size_t until);
+  void apply_event(const Event& e, const std::vector<int>& hs);
+  // Particle mode: the step's events are appended; bring the needed
+  // hypotheses up to date, score the new utterances (the last event, if
+  // `speak`), update the filters. Returns the utterance records.
+  std::vector<UtteranceRecord> particle_step(lm::LanguageModel* lm);
+  double modality_ll(Modality m, int h) const;
+  Posterior particle_posterior(Modality m) const;
   // Scores `utterances` in s and adds them to the utterance part; with
   // speak_factor, also this step's goal-independent speak/no-speak factor.
   std::vector<UtteranceRecord> score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
@@ -204,6 +280,17 @@ class Belief {
   std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
   std::vector<double> refine_seconds_;      // per hypothesis, its last refinement (scheduling only)
   std::vector<size_t> budget_stops_;        // per hypothesis (one writer each, also when threaded)
+  size_t refinements_ = 0;
+  // Particle mode only.
+  std::vector<Event> history_;
+  std::vector<size_t> cursor_;               // per hypothesis: events processed
+  std::vector<ParticleFilter> filters_;      // indexed by Modality; [UtteranceOnly] unused until `heard_`
+  bool heard_ = false;                       // an utterance has been observed
+  double speak_ll_ = 0;                      // goal-independent factors so far (the utterance modality's prior-only marginal)
+  // The language model of the last utterance, kept to replay utterance
+  // events for hypotheses that join later (it must outlive the belief's
+  // updates; callers keep one per run).
+  lm::LanguageModel* lm_ = nullptr;
 };
 
 // Inference over one dataset plan: INIT at s_0, then one step per observed

@@ -1,0 +1,75 @@
+#include "app/particle_flags.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "app/cli.hpp"
+
+namespace clips::app {
+
+namespace {
+
+// More particles than this is a typo, not a setting: each particle costs a
+// weight per step and the hypothesis spaces are far smaller.
+constexpr long kMaxParticles = 1'000'000;
+
+const CLI::Validator ParticleCount(
+    [](std::string& in) -> std::string {
+      char* end = nullptr;
+      const long v = in.empty() || in.find_first_not_of("0123456789") != std::string::npos
+                         ? -1
+                         : std::strtol(in.c_str(), &end, 10);
+      if (v >= 0 && v <= kMaxParticles && end == in.c_str() + in.size()) return {};
+      return in + " is not a particle count (0 for exact inference, or 1 to " + std::to_string(kMaxParticles) + ")";
+    },
+    "N>=0");
+
+const CLI::Validator UnitInterval(
+    [](std::string& in) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(in.c_str(), &end);
+      if (!in.empty() && end == in.c_str() + in.size() && v >= 0 && v <= 1) return {};  // false for NaN
+      return in + " is not a number between 0 and 1";
+    },
+    "0..1");
+
+}  // namespace
+
+void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
+  cmd->add_option("--particles", f.particles,
+                  "Particle inference with N particles per modality (sequential Monte Carlo over goal x cost "
+                  "profile; only the hypotheses particles hold are refined). 0: exact enumeration (default)")
+      ->check(ParticleCount);
+  cmd->add_option("--particle-seed", f.seed, "Seed of the particle filters, 0..2^64-1 (default 1); results are a "
+                                             "function of it")
+      ->check(SeedValue);
+  cmd->add_option("--ess-threshold", f.ess_threshold,
+                  "Resample when the effective sample size falls below this share of the particles (0..1, "
+                  "default 0.5; 1: every step)")
+      ->check(UnitInterval);
+  cmd->add_option("--rejuvenation-moves", f.moves,
+                  "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none)")
+      ->check(NonNegativeInteger);
+  cmd->add_option("--rejuvenate", f.rejuvenate,
+                  "When the sweeps run: evidence (after every human action or utterance, and after resampling; "
+                  "default) or resampling (only after resampling: cheaper, but the particles can stay on goals that "
+                  "new evidence turns against)")
+      ->check(CLI::IsMember({"evidence", "resampling"}));
+  cmd->add_option("--proposal-groups", f.groups,
+                  "Independent exploring proposals per sweep: each sweep may bring in this many new hypotheses per "
+                  "hypothesis held (default 8; fewer: cheaper, slower to find goals no particle holds)")
+      ->check(PositiveInteger);
+}
+
+void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o) {
+  o.particles = f.particles;
+  o.particle_seed = f.seed;
+  o.ess_threshold = f.ess_threshold;
+  o.rejuvenation_moves = f.moves;
+  o.rejuvenate_on_evidence = f.rejuvenate == "evidence";
+  o.proposal_groups = f.groups;
+  inference::check_options(o);
+}
+
+}  // namespace clips::app

@@ -1,0 +1,340 @@
+// Particle (SMC) inference: the filter's bookkeeping on made-up likelihoods,
+// then Belief's particle mode against exact enumeration on the hand-made
+// corridor and on the repo's example plans.
+#include "inference/particle_belief.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <memory>
+
+#include "inference/belief.hpp"
+#include "language/listener.hpp"
+#include "pddl/parser.hpp"
+#include "test_paths.hpp"
+
+namespace clips::inference {
+namespace {
+
+constexpr double kNegInf = -std::numeric_limits<double>::infinity();
+
+ParticleOptions popts(int n, double ess = 0.5, int moves = 2, uint64_t seed = 1) {
+  ParticleOptions o;
+  o.particles = n;
+  o.ess_threshold = ess;
+  o.rejuvenation_moves = moves;
+  o.seed = seed;
+  return o;
+}
+
+const ParticleFilter::Sync kNoSync = [](const std::vector<int>&) {};
+const ParticleFilter::Current kNone = [] { return std::vector<int>{}; };
+
+TEST(ParticleFilter, SystematicInitialisationSpreadsParticlesEvenly) {
+  ParticleFilter f(3, 2, popts(20));
+  std::map<int, int> count;
+  for (int h : f.particles()) ++count[h];
+  ASSERT_EQ(count.size(), 6u);
+  for (auto [h, c] : count) EXPECT_TRUE(c == 3 || c == 4) << "hypothesis " << h << ": " << c;
+}
+
+TEST(ParticleFilter, ResamplesExactlyWhenTheEssFallsBelowTheThreshold) {
+  // 4 hypotheses × 25 particles; h0 has likelihood 1, the others e^-2.
+  // ESS = (25 + 75 e^-2)^2 / (25 + 75 e^-4) ≈ 41.9 of 100.
+  auto ll = [](int h) { return h == 0 ? 0.0 : -2.0; };
+  const double w = std::exp(-2.0);
+  const double expected = std::pow(25 + 75 * w, 2) / (25 + 75 * w * w);
+  for (double threshold : {0.0, 0.40, 0.43, 1.0}) {
+    ParticleFilter f(4, 1, popts(100, threshold));
+    EXPECT_NEAR(f.ess([](int) { return 0.0; }), 100, 1e-9);
+    EXPECT_NEAR(f.ess(ll), expected, 1e-9);
+    const bool resampled = f.update(ll, kNoSync, kNone, /*evidence=*/false);  // sweeps only after resampling
+    EXPECT_EQ(resampled, expected < threshold * 100) << threshold;
+    EXPECT_EQ(f.stats().resamples, resampled ? 1 : 0);
+    if (resampled) {
+      EXPECT_NEAR(f.ess(ll), 100, 1e-9);  // equal weights after resampling (and MH moves)
+    }
+    double lm = 0;
+    const auto p = f.posterior(ll, lm);
+    EXPECT_NEAR(p[0], 1 / (1 + 3 * w), resampled ? 0.1 : 1e-12) << threshold;
+    // The evidence estimate log mean w survives resampling.
+    EXPECT_NEAR(lm, std::log((25 + 75 * w) / 100), 1e-9);
+  }
+}
+
+TEST(ParticleFilter, RejuvenationRecoversAGoalNoParticleHeld) {
+  // 8 goals, 4 particles: systematic sampling holds every other goal.
+  const std::vector<int> start = ParticleFilter(8, 1, popts(4)).held();
+  ASSERT_EQ(start.size(), 4u);
+  const int target = start[0] == 0 ? 1 : 0;  // not held
+  auto ll = [&](int h) { return h == target ? 0.0 : -30.0 - h; };
+  for (int moves : {0, 40}) {
+    ParticleFilter f(8, 1, popts(4, 1.0, moves));
+    ASSERT_EQ(f.held(), start);
+    std::vector<int> synced;
+    f.update(ll, [&](const std::vector<int>& hs) { synced.insert(synced.end(), hs.begin(), hs.end()); }, kNone);
+    double lm = 0;
+    const auto p = f.posterior(ll, lm);
+    if (moves == 0) {
+      EXPECT_EQ(p[target], 0.0);
+      EXPECT_TRUE(synced.empty());
+    } else {
+      EXPECT_GT(p[target], 0.99);
+      EXPECT_GT(f.stats().accepted, 0);
+      // The proposals were brought up to date before being read.
+      EXPECT_NE(std::find(synced.begin(), synced.end(), target), synced.end());
+    }
+  }
+}
+
+TEST(ParticleFilter, RestartsFromThePriorWhenEveryParticleIsRuledOut) {
+  ParticleFilter f(4, 1, popts(4));
+  auto ll = [](int h) { return h == 2 ? 0.0 : kNegInf; };
+  // Kill every held hypothesis but keep h2 unheld? With N = K all are held;
+  // rule them all out instead: the posterior falls back to the prior.
+  auto none = [](int) { return kNegInf; };
+  std::vector<int> synced;
+  EXPECT_FALSE(f.update(none, [&](const std::vector<int>& hs) { synced = hs; }, kNone));
+  EXPECT_EQ(f.stats().restarts, 1);
+  EXPECT_EQ(synced.size(), 4u);
+  double lm = 0;
+  for (double p : f.posterior(none, lm)) EXPECT_DOUBLE_EQ(p, 0.25);
+  EXPECT_EQ(lm, kNegInf);
+  // Once something explains the data, the restarted particles find it.
+  f.update(ll, kNoSync, kNone);
+  EXPECT_NEAR(f.posterior(ll, lm)[2], 1.0, 1e-12);
+}
+
+TEST(ParticleFilter, SameSeedSameParticles) {
+  auto ll = [](int h) { return -0.7 * h; };
+  auto run = [&](uint64_t seed) {
+    ParticleFilter f(16, 2, popts(10, 1.0, 3, seed));
+    for (int i = 0; i < 5; ++i) f.update(ll, kNoSync, kNone);
+    return f.particles();
+  };
+  EXPECT_EQ(run(7), run(7));
+  bool differs = false;
+  for (uint64_t s = 8; s < 12; ++s) differs = differs || run(s) != run(7);
+  EXPECT_TRUE(differs);
+}
+
+TEST(ParticleFilter, BadOptionsAreRefused) {
+  EXPECT_THROW(ParticleFilter(4, 1, popts(0)), InputError);
+  EXPECT_THROW(ParticleFilter(4, 1, popts(-3)), InputError);
+  EXPECT_THROW(ParticleFilter(4, 1, popts(8, 1.5)), InputError);
+  EXPECT_THROW(ParticleFilter(4, 1, popts(8, std::nan(""))), InputError);
+  EXPECT_THROW(ParticleFilter(4, 1, popts(8, 0.5, -1)), InputError);
+  InferenceOptions o;
+  o.particles = -1;
+  EXPECT_THROW(check_options(o), InputError);
+  o.particles = 10;
+  o.ess_threshold = -0.1;
+  EXPECT_THROW(check_options(o), InputError);
+  o.ess_threshold = 0.5;
+  o.rejuvenation_moves = -2;
+  EXPECT_THROW(check_options(o), InputError);
+  o.rejuvenation_moves = 0;
+  EXPECT_NO_THROW(check_options(o));
+}
+
+// ---------------------------------------------------------------------------
+// Belief in particle mode on the corridor of belief_test.cpp: gem1 (red) at
+// x = 1, gem2 (yellow) at x = 5, both agents at x = 3.
+
+const char* kCorridor = R"(
+(define (problem corridor) (:domain doors-keys-gems)
+  (:objects gem1 gem2 - gem red yellow - color robot - robot human - human)
+  (:init (= (walls) (new-bit-matrix false 1 5))
+         (= (xloc gem1) 1) (= (yloc gem1) 1) (iscolor gem1 red)
+         (= (xloc gem2) 5) (= (yloc gem2) 1) (iscolor gem2 yellow)
+         (= (xloc human) 3) (= (yloc human) 1)
+         (= (xloc robot) 3) (= (yloc robot) 1)
+         (active human) (next-turn human robot) (next-turn robot human)
+         (forbidden robot gem1) (forbidden robot gem2))
+  (:goal (has human gem1)))
+)";
+
+std::shared_ptr<const pddl::Task> corridor_task() {
+  auto d = std::make_shared<pddl::Domain>(pddl::load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl"));
+  auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, kCorridor, "corridor.pddl"));
+  return std::make_shared<pddl::Task>(d, p, domains::builtin_pack("doors-keys-gems")->spec().grounding);
+}
+
+Belief corridor_belief(const std::shared_ptr<const pddl::Task>& task, InferenceOptions opts) {
+  std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)", ""}, {"gem2", "(has human gem2)", ""}};
+  opts.heuristic = "hmax";
+  return Belief(task, domains::builtin_pack("doors-keys-gems"), goals, {model::dkg_profile(3), model::dkg_profile(4)},
+                opts);
+}
+
+// Prefers prompts whose command has the colour the utterance names.
+class ColourLm : public lm::LanguageModel {
+ public:
+  std::string name() const override { return "colour"; }
+  std::vector<double> score(const std::vector<lm::ScoreRequest>& batch) override {
+    std::vector<double> out;
+    for (const auto& r : batch) {
+      const auto q = r.prompt.rfind("Input:");
+      const std::string cmd = q == std::string::npos ? "" : r.prompt.substr(q);
+      const bool red = r.continuation.find("red") != std::string::npos;
+      out.push_back(cmd.find(red ? "red" : "yellow") != std::string::npos ? -1.0 : -6.0);
+    }
+    return out;
+  }
+};
+
+double tv(const std::vector<double>& p, const std::vector<double>& q) {
+  double s = 0;
+  for (size_t i = 0; i < p.size(); ++i) s += std::abs(p[i] - q[i]);
+  return s / 2;
+}
+
+// A fixed observation sequence with actions of both agents and utterances
+// in the middle and at the end; returns every step's record.
+std::vector<StepRecord> corridor_run(Belief& b, const pddl::Task& task, ColourLm& lm) {
+  auto act = [&](const char* a) { return *task.find_action(a); };
+  std::vector<StepRecord> steps;
+  steps.push_back(b.start(task.initial_state()));
+  steps.push_back(b.observe(act("(right human)"), b.state()));
+  steps.push_back(b.observe(act("(wait robot)"), b.state(), {"Can you get the yellow one?"}, &lm));
+  steps.push_back(b.observe(act("(left human)"), b.state()));
+  steps.push_back(b.observe(act("(wait robot)"), b.state()));
+  steps.push_back(b.observe(act("(left human)"), b.state()));
+  steps.back() = b.hear({"I want the red gem"}, lm, steps.back());
+  return steps;
+}
+
+TEST(ParticleBelief, ManyParticlesMatchExactOnTheCorridor) {
+  auto task = corridor_task();
+  ColourLm lm;
+  Belief exact = corridor_belief(task, {});
+  InferenceOptions po;
+  po.particles = 400;  // 100 per hypothesis
+  Belief particles = corridor_belief(task, po);
+  ASSERT_TRUE(particles.particle_mode());
+  ASSERT_FALSE(exact.particle_mode());
+  const auto e = corridor_run(exact, *task, lm);
+  const auto p = corridor_run(particles, *task, lm);
+  ASSERT_EQ(e.size(), p.size());
+  for (size_t t = 0; t < e.size(); ++t)
+    for (Modality m : kModalities) {
+      const double d = tv(e[t][m].goals, p[t][m].goals);
+      EXPECT_LT(d, 0.05) << "step " << t << " " << to_string(m);
+      EXPECT_LT(tv(e[t][m].profiles, p[t][m].profiles), 0.05) << "step " << t << " " << to_string(m);
+      EXPECT_NEAR(e[t][m].log_marginal, p[t][m].log_marginal, 0.1) << "step " << t << " " << to_string(m);
+    }
+  // The same trace records: utterances with one entry per hypothesis.
+  ASSERT_EQ(p[2].utterances.size(), 1u);
+  EXPECT_EQ(p[2].utterances[0].hypotheses.size(), 4u);
+  EXPECT_EQ(p.back().utterances.size(), 1u);
+  // The utterance modality had no particles before the first utterance.
+  EXPECT_EQ(p[1][Modality::UtteranceOnly].goals, e[1][Modality::UtteranceOnly].goals);
+}
+
+TEST(ParticleBelief, HypothesesJoiningLateReplayToTheExactNumbers) {
+  // One particle, resampled every step: it holds one hypothesis at a time
+  // and rejuvenation brings in the others late. Once synced, every
+  // hypothesis' likelihoods, temperatures and policy values must be exactly
+  // those of exact enumeration.
+  auto task = corridor_task();
+  ColourLm lm;
+  Belief exact = corridor_belief(task, {});
+  InferenceOptions po;
+  po.particles = 1;
+  po.ess_threshold = 1.0;
+  po.rejuvenation_moves = 1;
+  po.proposal_groups = 1;
+  Belief b = corridor_belief(task, po);
+  corridor_run(exact, *task, lm);
+  corridor_run(b, *task, lm);
+  EXPECT_LT(b.refinements(), exact.refinements());
+  std::vector<int> all = {0, 1, 2, 3};
+  b.sync_policies(all);
+  for (int h : all) {
+    EXPECT_TRUE(b.current(h));
+    EXPECT_EQ(b.action_log_likelihood(h), exact.action_log_likelihood(h)) << h;
+    EXPECT_EQ(b.utterance_log_likelihood(h), exact.utterance_log_likelihood(h)) << h;
+    EXPECT_EQ(b.temperature(h).weights(), exact.temperature(h).weights()) << h;
+    const auto qa = b.policies()[h].q_values(b.state()), qb = exact.policies()[h].q_values(exact.state());
+    ASSERT_EQ(qa.size(), qb.size());
+    for (size_t i = 0; i < qa.size(); ++i) EXPECT_EQ(qa[i].q, qb[i].q) << h;
+  }
+  EXPECT_EQ(b.refinements(), exact.refinements());  // each refinement once, never twice
+}
+
+TEST(ParticleBelief, FixedSeedGivesTheSameRunAlsoOnTwoThreads) {
+  auto task = corridor_task();
+  ColourLm lm;
+  auto run = [&](uint64_t seed, int threads) {
+    InferenceOptions po;
+    po.particles = 3;
+    po.ess_threshold = 0.9;
+    po.particle_seed = seed;
+    po.threads = threads;
+    Belief b = corridor_belief(task, po);
+    std::vector<std::vector<double>> out;
+    for (const auto& st : corridor_run(b, *task, lm))
+      for (Modality m : kModalities) out.push_back(st[m].hypotheses);
+    return out;
+  };
+  const auto a = run(5, 1);
+  EXPECT_EQ(a, run(5, 1));
+  EXPECT_EQ(a, run(5, 2));
+}
+
+TEST(ParticleBelief, AssistanceCopiesKeepFiltering) {
+  // The online assistance adapter copies the belief and keeps observing.
+  auto task = corridor_task();
+  ColourLm lm;
+  InferenceOptions po;
+  po.particles = 8;
+  Belief b = corridor_belief(task, po);
+  corridor_run(b, *task, lm);
+  Belief copy = b;
+  copy.observe(*task->find_action("(wait robot)"));
+  const StepRecord r = copy.observe(*task->find_action("(left human)"));
+  double s = 0;
+  for (double p : r[Modality::Both].goals) s += p;
+  EXPECT_NEAR(s, 1.0, 1e-12);
+  copy.sync_policies(Modality::Both);
+  for (int h : copy.support(Modality::Both)) EXPECT_TRUE(copy.current(h));
+  EXPECT_EQ(b.t() + 2, copy.t());
+}
+
+// ---------------------------------------------------------------------------
+// The repo's example plans with the embedded language model (integration).
+
+TEST(ParticleExamples, MatchExactOnTheRepoExamples) {
+  std::shared_ptr<lm::LanguageModel> lm;
+  try {
+    lm = language::make_language_model("embedded");
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "embedded LM unavailable: " << e.what();
+  }
+  const auto ds = data::Dataset::load(paths::examples_dir() + "/doors-keys-gems");
+  for (const auto& plan : ds.plans()) {
+    const InferenceRun exact = run_inference(ds, plan, *lm);
+    InferenceOptions po;
+    po.particles = 256;  // 32 per hypothesis
+    const InferenceRun run = run_inference(ds, plan, *lm, po);
+    ASSERT_EQ(run.steps.size(), exact.steps.size());
+    double worst = 0;
+    for (size_t t = 0; t < exact.steps.size(); ++t)
+      for (Modality m : kModalities) worst = std::max(worst, tv(exact.steps[t][m].goals, run.steps[t][m].goals));
+    std::printf("%s: worst step TV %.4f, final CLIPS TV %.4f, refinements %zu / %zu\n", plan.id.c_str(), worst,
+                tv(exact.final_posterior(Modality::Both).goals, run.final_posterior(Modality::Both).goals),
+                run.belief->refinements(), exact.belief->refinements());
+    EXPECT_LT(worst, 0.1) << plan.id;
+    // The true goal is the particle posterior's most likely one when it is the exact one's.
+    const auto& pe = exact.final_posterior(Modality::Both).goals;
+    const auto& pp = run.final_posterior(Modality::Both).goals;
+    EXPECT_EQ(std::max_element(pe.begin(), pe.end()) - pe.begin(), std::max_element(pp.begin(), pp.end()) - pp.begin())
+        << plan.id;
+  }
+}
+
+}  // namespace
+}  // namespace clips::inference
