@@ -249,7 +249,7 @@ std::string scaling_svg(const std::vector<ScalingRow>& rows) {
       if (r.plans > 0 && r.*s.field > 0) lo = std::min(lo, r.*s.field), hi = std::max(hi, r.*s.field);
   if (hi <= 0) lo = 0.1, hi = 1;
   const double dlo = std::floor(std::log10(lo)), dhi = std::max(dlo + 1, std::ceil(std::log10(hi)));
-  const int pw = 230, ph = 190, left = 56, gap = 34, top = 34, bottom = 44, legend = 24;
+  const int pw = 230, ph = 190, left = 72, gap = 34, top = 34, bottom = 44, legend = 24;
   const int w = left + 3 * pw + 2 * gap + 16, h = top + ph + bottom + legend;
   std::string svg = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" role=\"img\" "
@@ -293,13 +293,24 @@ std::string scaling_svg(const std::vector<ScalingRow>& rows) {
       svg += fmt::format("<text x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", X(r->point.value),
                          top + ph + 14, r->point.value);
     for (const auto& s : series) {
+      // A time of 0 means the point has no such measurement (e.g. no
+      // assistance decision after the horizon): no dot, and the line breaks.
       std::string d;
+      bool pen_down = false;
+      for (const auto* r : pts) {
+        if (!(r->*s.field > 0)) {
+          pen_down = false;
+          continue;
+        }
+        d += fmt::format("{}{:.1f} {:.1f}", pen_down ? " L" : (d.empty() ? "M" : " M"), X(r->point.value), Y(r->*s.field));
+        pen_down = true;
+      }
+      if (!d.empty())
+        svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.8\"{}/>\n", d, s.color,
+                           s.dashed ? " stroke-dasharray=\"4 3\"" : "");
       for (const auto* r : pts)
-        d += fmt::format("{}{:.1f} {:.1f}", d.empty() ? "M" : " L", X(r->point.value), Y(r->*s.field));
-      svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.8\"{}/>\n", d, s.color,
-                         s.dashed ? " stroke-dasharray=\"4 3\"" : "");
-      for (const auto* r : pts)
-        svg += fmt::format(
+        if (r->*s.field > 0)
+          svg += fmt::format(
             "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"2.5\" fill=\"{}\"><title>{} = {}: {} {:.3g} ms</title></circle>\n",
             X(r->point.value), Y(r->*s.field), s.color, axes[a].first, r->point.value, s.name, r->*s.field);
     }

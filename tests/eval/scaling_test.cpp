@@ -117,6 +117,19 @@ TEST(Scaling, SvgHasThreePanelsAndAPointPerValue) {
   EXPECT_EQ(svg.find("inf"), std::string::npos);
 }
 
+TEST(Scaling, SvgLeavesOutTimesThatWereNotMeasured) {
+  std::vector<ScalingRow> rows;
+  for (int t : {10, 25, 50}) rows.push_back(sample_row("steps", t, 5.0));
+  // Past the horizon no assistance decision is made: its times read 0.
+  rows.back().decisions = 0;
+  rows.back().decision_median_ms = 0;
+  rows.back().decision_p95_ms = 0;
+  const std::string svg = scaling_svg(rows);
+  EXPECT_EQ(count(svg, "<circle"), 4 * 3 - 2);  // no decision dots at 50 steps
+  EXPECT_EQ(count(svg, "<path"), 4);
+  EXPECT_EQ(svg.find("decision, median 0 ms"), std::string::npos);
+}
+
 TEST(ScalingRun, TinyPointRunsEndToEnd) {
   ScalingPoint p;
   p.axis = "side";
