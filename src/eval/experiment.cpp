@@ -36,6 +36,23 @@ std::vector<std::string> known_methods(const domains::Pack& pack) {
 
 namespace {
 
+// The inference settings an experiment asks for, the same for dataset plans
+// and for ad-hoc observations.
+inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
+  inference::InferenceOptions io;
+  io.utterance.speaker_rule = opts.speaker_rule;
+  io.threads = opts.inference_threads;
+  io.utterance_timing = opts.utterance_timing;
+  if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
+  io.particles = opts.particles;
+  io.particle_seed = opts.particle_seed;
+  io.ess_threshold = opts.ess_threshold;
+  io.rejuvenation_moves = opts.rejuvenation_moves;
+  io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
+  io.proposal_groups = opts.proposal_groups;
+  return io;
+}
+
 std::vector<pddl::ActionId> resolve_all(const pddl::Task& task, const pddl::State& start, const pddl::PlanFile& pf) {
   return pddl::simulate(task, start, pf).actions;
 }
@@ -55,17 +72,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     auto methods = opts.methods.empty() ? default_methods(pack, opts.all_assistance) : opts.methods;
     if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back("multimodal");  // issue 8
 
-    inference::InferenceOptions io;
-    io.utterance.speaker_rule = opts.speaker_rule;
-    io.threads = opts.inference_threads;
-    io.utterance_timing = opts.utterance_timing;
-    if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
-    io.particles = opts.particles;
-    io.particle_seed = opts.particle_seed;
-    io.ess_threshold = opts.ess_threshold;
-    io.rejuvenation_moves = opts.rejuvenation_moves;
-    io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
-    io.proposal_groups = opts.proposal_groups;
+    const inference::InferenceOptions io = inference_options(opts);
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
     if (opts.on_inference) opts.on_inference(inf);
     out.goals = inf.goals;
@@ -132,16 +139,7 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
     throw InputError("--method " + method + " cannot assist from ad-hoc observations (clips, lang_only or action_only)");
   auto task = ds.task(observations.problem_id);
   const domains::Roles& df = ds.pack().roles();
-  inference::InferenceOptions io;
-  io.utterance.speaker_rule = opts.speaker_rule;
-  io.threads = opts.inference_threads;
-  io.utterance_timing = opts.utterance_timing;
-  io.particles = opts.particles;
-  io.particle_seed = opts.particle_seed;
-  io.ess_threshold = opts.ess_threshold;
-  io.rejuvenation_moves = opts.rejuvenation_moves;
-  io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
-  io.proposal_groups = opts.proposal_groups;
+  const inference::InferenceOptions io = inference_options(opts);
   LiveDecision out;
   out.inference = inference::run_inference_on_observations(ds, observations, lm, io);
   const Modality mod = method == "clips" ? Modality::Both : method == "lang_only" ? Modality::UtteranceOnly
