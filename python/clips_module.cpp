@@ -35,7 +35,8 @@ clips::Assistance parse_assistance(const std::string& a) {
 clips::SessionOptions session_options(const std::string& method, const std::string& assistance, const std::string& lm,
                                       const std::string& lm_base_url, const std::string& lm_model, double lm_timeout,
                                       std::vector<std::string> goals, std::vector<std::string> cost_profiles,
-                                      size_t max_nodes, int threads) {
+                                      size_t max_nodes, int threads, int particles = 0,
+                                      uint64_t particle_seed = 1) {
   clips::SessionOptions o;
   o.method = parse_method(method);
   o.assistance = parse_assistance(assistance);
@@ -47,6 +48,9 @@ clips::SessionOptions session_options(const std::string& method, const std::stri
   o.cost_profiles = std::move(cost_profiles);
   o.max_nodes = max_nodes;
   o.threads = threads;
+  if (particles < 0) throw clips::InputError("particles must be >= 0 (0: exact inference)");
+  o.particles = particles;
+  o.particle_seed = particle_seed;
   return o;
 }
 
@@ -237,9 +241,10 @@ PYBIND11_MODULE(clips, m) {
           [](const std::string& dataset, const std::string& problem, const std::string& method,
              const std::string& assistance, const std::string& lm, const std::string& lm_base_url,
              const std::string& lm_model, double lm_timeout, std::vector<std::string> goals,
-             std::vector<std::string> cost_profiles, size_t max_nodes, int threads) {
+             std::vector<std::string> cost_profiles, size_t max_nodes, int threads, int particles,
+             uint64_t particle_seed) {
             auto o = session_options(method, assistance, lm, lm_base_url, lm_model, lm_timeout, std::move(goals),
-                                     std::move(cost_profiles), max_nodes, threads);
+                                     std::move(cost_profiles), max_nodes, threads, particles, particle_seed);
             py::gil_scoped_release unlocked;
             return clips::Session::open_dataset(dataset, problem, std::move(o));
           },
@@ -247,8 +252,9 @@ PYBIND11_MODULE(clips, m) {
           py::arg("assistance") = "qmdp", py::arg("lm") = "embedded", py::arg("lm_base_url") = "",
           py::arg("lm_model") = "", py::arg("lm_timeout") = 120.0, py::arg("goals") = std::vector<std::string>{},
           py::arg("cost_profiles") = std::vector<std::string>{}, py::arg("max_nodes") = size_t{1} << 18,
-          py::arg("threads") = 1,
-          "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state)")
+          py::arg("threads") = 1, py::arg("particles") = 0, py::arg("particle_seed") = uint64_t{1},
+          "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state); "
+          "particles > 0: particle inference with that many particles instead of exact enumeration")
       .def_static(
           "open_domain",
           [](const std::string& domain_dir, const std::string& problem_file, const std::string& method,

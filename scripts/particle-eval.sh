@@ -8,7 +8,9 @@
 #
 # Environment: BUILD_DIR (build), SIZE (grid; default from GEMS), PROBLEMS (6),
 # PLANS (2 per problem), SEED (21), KEYS, DOORS, PARTICLES (64,128,256),
-# SEEDS (particle seeds per count, 3). Writes OUT_DIR/dataset, OUT_DIR/eval.json
+# SEEDS (particle seeds per count, 3), EXTRA (more `clips bench particles`
+# options, e.g. "--particle-filters clips --rejuvenate utterances").
+# Writes OUT_DIR/dataset, OUT_DIR/eval.json
 # and OUT_DIR/eval.txt.
 #
 # Up to 4 gems the maps are the paper's kind (2 keys, 2 doors). With more,
@@ -37,4 +39,4 @@ mkdir -p "$OUT"
 "$BUILD_DIR/clips" generate --size "$SIZE" --gems "$GEMS" --keys "$KEYS" --doors "$DOORS" \
   --problems "${PROBLEMS:-6}" --plans "${PLANS:-2}" --seed "${SEED:-21}" --out "$OUT/dataset" --force -q
 "$BUILD_DIR/clips" bench particles --dataset "$OUT/dataset" --particles "${PARTICLES:-64,128,256}" \
-  --seeds "${SEEDS:-3}" --out "$OUT/eval.json" | tee "$OUT/eval.txt"
+  --seeds "${SEEDS:-3}" --out "$OUT/eval.json" ${EXTRA:-} | tee "$OUT/eval.txt"

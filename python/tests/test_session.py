@@ -115,6 +115,25 @@ def test_errors_map_to_python_exceptions_with_the_same_messages():
         clips.Session.open_dataset(str(EXAMPLES), "zz")
 
 
+def test_particle_sessions_are_seeded_and_close_to_exact():
+    def run(**kw):
+        s = clips.Session.open_dataset(str(EXAMPLES), "e1", **kw)
+        s.observe("(left human)")
+        s.observe("(wait robot)")
+        s.hear("Can you get me the yellow key?")
+        return s.posterior()["goals"]
+
+    exact = run()
+    many = run(particles=2000, particle_seed=3)
+    assert sum(many.values()) == pytest.approx(1.0)
+    assert sum(abs(many[g] - exact[g]) for g in exact) / 2 < 0.05
+    assert run(particles=2000, particle_seed=3) == many  # a function of the seed
+    one = run(particles=1)
+    assert sorted(one.values())[-1] == pytest.approx(1.0)  # a single particle sits on one goal
+    with pytest.raises(clips.InputError, match="particles"):
+        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=-1)
+
+
 def test_inference_releases_the_gil():
     # Two sessions on two Python threads: with the GIL released during
     # inference they run concurrently and still agree with one thread.

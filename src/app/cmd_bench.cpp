@@ -182,9 +182,12 @@ void register_particles(CLI::App* bench) {
   cmd->add_option("--rejuvenation-moves", o->rejuvenation_moves, "As for `clips infer` (default 2)")
       ->check(NonNegativeInteger);
   auto rejuvenate = std::make_shared<std::string>("evidence");
-  cmd->add_option("--rejuvenate", *rejuvenate, "As for `clips infer`: evidence (default) or resampling")
-      ->check(CLI::IsMember({"evidence", "resampling"}));
+  cmd->add_option("--rejuvenate", *rejuvenate, "As for `clips infer`: evidence (default), utterances or resampling")
+      ->check(CLI::IsMember({"evidence", "utterances", "resampling"}));
   cmd->add_option("--proposal-groups", o->proposal_groups, "As for `clips infer` (default 8)")->check(PositiveInteger);
+  auto filters = std::make_shared<std::string>("all");
+  cmd->add_option("--particle-filters", *filters, "As for `clips infer`: all (default) or clips")
+      ->check(CLI::IsMember({"all", "clips"}));
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
   add_lm_options(cmd, *lm);
@@ -196,7 +199,8 @@ void register_particles(CLI::App* bench) {
         throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench particles`");
     reject_empty(out_opt, *out);
     if (!(o->ess_threshold >= 0 && o->ess_threshold <= 1)) throw UsageError("--ess-threshold must be between 0 and 1");
-    o->rejuvenate_on_evidence = *rejuvenate == "evidence";
+    o->rejuvenate = inference::parse_rejuvenation(*rejuvenate);
+    o->particle_filters = inference::parse_particle_filters(*filters);
     o->dataset = dataset_dir(o->dataset);
     const auto ds = data::Dataset::load(o->dataset);
     o->language_model = make_lm(*lm, ds);
@@ -299,8 +303,9 @@ void register_bench(CLI::App& app) {
     o->experiment.particle_seed = particles->seed;
     o->experiment.ess_threshold = particles->ess_threshold;
     o->experiment.rejuvenation_moves = particles->moves;
-    o->experiment.rejuvenate_on_evidence = particles->rejuvenate == "evidence";
+    o->experiment.rejuvenate = inference::parse_rejuvenation(particles->rejuvenate);
     o->experiment.proposal_groups = particles->groups;
+    o->experiment.particle_filters = inference::parse_particle_filters(particles->filters);
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {

@@ -49,6 +49,7 @@ void register_generate(CLI::App& app) {
     std::string domain = "doors-keys-gems", domain_file, size = "9x9", out, temperature = "0.5";
     int gems = 4, keys = 2, doors = 2, problems = 1, plans = 2, max_steps = 0;
     uint64_t seed = 0;
+    size_t max_nodes = size_t{1} << 18;
     bool force = false, quiet = false;
     LmFlags lm;
   };
@@ -72,6 +73,10 @@ void register_generate(CLI::App& app) {
       ->check(TemperatureValue);
   cmd->add_option("--max-steps", o->max_steps, "Longest sampled plan (default: the pack's horizon, 100 for mDKG)")
       ->check(PositiveInteger);
+  cmd->add_option("--max-nodes", o->max_nodes,
+                  "Expansion budget per A* search of the simulated human's refinements (default 2^18); infer and "
+                  "bench with the same --max-nodes to score the data with the model that drew it")
+      ->check(PositiveInteger);
   cmd->add_option("--out", o->out, "Dataset folder to write")->required();
   cmd->add_flag("--force", o->force, "Replace the dataset in a non-empty --out folder");
   cmd->add_flag("-q,--quiet", o->quiet, "Print only the final line");
@@ -87,6 +92,7 @@ void register_generate(CLI::App& app) {
     g.plans_per_problem = o->plans;
     g.seed = o->seed;
     g.max_steps = o->max_steps;
+    g.refine_nodes = o->max_nodes;
     g.temperature = o->temperature == "prior" ? std::nullopt : std::optional<double>(std::stod(o->temperature));
     g.lm = o->lm.kind;
     g.lm_options = lm_options(o->lm);

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/cli.hpp"
+#include "app/particle_flags.hpp"
 #include "serve/frontends.hpp"
 #include "serve/service.hpp"
 #include "util/error.hpp"
@@ -24,6 +25,7 @@ void register_serve(CLI::App& app) {
     bool stdio = false;
     int threads = 8;
     LmFlags lm;
+    ParticleFlags particles;
     serve::ServiceLimits limits;
   };
   auto o = std::make_shared<Opts>();
@@ -51,8 +53,10 @@ void register_serve(CLI::App& app) {
       ->check(PositiveSeconds);
   cmd->add_option("--max-steps", o->limits.play.max_steps, "Actions per session at most (default 300)")
       ->check(PositiveInteger);
+  add_particle_options(cmd, o->particles);
   add_lm_options(cmd, o->lm);
   cmd->callback([o] {
+    apply_particle_flags(o->particles, o->limits.play.belief);
     // Block the stop signals before any thread exists, so that only the
     // server's signal thread ever sees them.
     sigset_t stop;

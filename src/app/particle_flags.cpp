@@ -52,14 +52,20 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
                   "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none)")
       ->check(NonNegativeInteger);
   cmd->add_option("--rejuvenate", f.rejuvenate,
-                  "When the sweeps run: evidence (after every human action or utterance, and after resampling; "
-                  "default) or resampling (only after resampling: cheaper, but the particles can stay on goals that "
-                  "new evidence turns against)")
-      ->check(CLI::IsMember({"evidence", "resampling"}));
+                  "When the sweeps run besides after resampling: evidence (after every human action or utterance; "
+                  "default), utterances (after steps with an utterance: cheaper, and enough for instructions that "
+                  "point away from the goals the actions favoured) or resampling (never else: cheapest, but the "
+                  "particles can stay on goals that new evidence turns against)")
+      ->check(CLI::IsMember({"evidence", "utterances", "resampling"}));
   cmd->add_option("--proposal-groups", f.groups,
                   "Independent exploring proposals per sweep: each sweep may bring in this many new hypotheses per "
                   "hypothesis held (default 8; fewer: cheaper, slower to find goals no particle holds)")
       ->check(PositiveInteger);
+  cmd->add_option("--particle-filters", f.filters,
+                  "Which posteriors get particles of their own: all (one filter per modality, default) or clips "
+                  "(only the CLIPS posterior; the action-only and language-only ones are reweighted from its "
+                  "particles: much cheaper, but rough where they disagree with CLIPS)")
+      ->check(CLI::IsMember({"all", "clips"}));
 }
 
 void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o) {
@@ -67,8 +73,9 @@ void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o
   o.particle_seed = f.seed;
   o.ess_threshold = f.ess_threshold;
   o.rejuvenation_moves = f.moves;
-  o.rejuvenate_on_evidence = f.rejuvenate == "evidence";
+  o.rejuvenate = inference::parse_rejuvenation(f.rejuvenate);
   o.proposal_groups = f.groups;
+  o.particle_filters = inference::parse_particle_filters(f.filters);
   inference::check_options(o);
 }
 

@@ -48,6 +48,19 @@ namespace {
 
 const double kLog10 = std::log(10.0);
 
+// The weight below which a hypothesis is ignored. The spec's cut-off (0.02)
+// skips hypotheses too unlikely to matter among the paper's 8; with many
+// candidates a flat posterior puts all of them below it, and the assistant
+// would decide on none (Q_MDP's first applicable action). So the cut-off is
+// at most half the largest weight: the same as the spec's whenever some
+// hypothesis weighs 0.04 or more, as one always does with up to 25
+// hypotheses (the paper's 8, VirtualHome's up to 12).
+double live_threshold(const std::vector<Hypothesis>& belief, double threshold) {
+  double top = 0;
+  for (const Hypothesis& h : belief) top = std::max(top, h.weight);
+  return std::min(threshold, top / 2);
+}
+
 // The Q_MDP choice at timestep t (spec 9.3): the common best action when
 // every hypothesis above the threshold agrees, else the argmax of the
 // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
@@ -58,8 +71,9 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
                      const State& s, int t, bool values_always) {
   const pddl::Task& task = *setup.task;
   std::vector<const Hypothesis*> live;
+  const double cut = live_threshold(belief, setup.weight_threshold);
   for (auto& h : belief)
-    if (h.weight >= setup.weight_threshold) live.push_back(&h);
+    if (h.weight >= cut) live.push_back(&h);
   std::optional<ActionId> common;
   bool all_same = true;
   std::vector<std::vector<search::QValue>> qvals;  // per live hypothesis, computed once
@@ -317,10 +331,11 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
     for (ActionId a : roll) ep.collect_option(a, seen);
     for (auto& [o, v] : seen) mean.options[o] += h.weight * v;
   }
+  const double cut = live_threshold(belief, setup.weight_threshold);
   for (size_t hi = 0; hi < belief.size(); ++hi) {
     const Hypothesis& h = belief[hi];
     AssistResult run;
-    if (h.weight < setup.weight_threshold) {
+    if (h.weight < cut) {
       run.noops = remaining;  // the reference's no-op plan for ignored hypotheses
       finish(setup, tspec, run);
     } else {
@@ -380,8 +395,9 @@ Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>&
   std::optional<ActionId> common;
   bool all_same = true;
   double total = 0;
+  const double cut = live_threshold(belief, setup.weight_threshold);
   for (const Hypothesis& h : belief) {
-    if (h.weight < setup.weight_threshold) continue;
+    if (h.weight < cut) continue;
     if (setup.refine) h.policy->refine(s, setup.refine_options);
     // As in pibar_mdp: a hypothesis with no way to its goal waits.
     auto b = h.policy->value(s) > -kInf ? h.policy->best_action(s) : std::nullopt;

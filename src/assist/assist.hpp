@@ -49,7 +49,10 @@ struct AssistSetup {
   std::string principal = "human";   // the simulated human
   std::string assistant = "robot";
   double noop_cost = 0.6;            // padding step cost (mean wait cost)
-  double weight_threshold = 0.02;    // hypotheses below are ignored by Q_MDP
+  // Hypotheses below are ignored by Q_MDP and pi-bar; the cut-off used is at
+  // most half the largest weight, so a flat posterior over many goals still
+  // has hypotheses to decide on.
+  double weight_threshold = 0.02;
   QaFloor qa_floor = QaFloor::DeadEnds;
   std::vector<pddl::ActionId> completed;  // the ground-truth continuation from s_T
   // The assistance option an action realises, if any (e.g. a key the robot

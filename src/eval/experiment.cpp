@@ -48,8 +48,9 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   io.particle_seed = opts.particle_seed;
   io.ess_threshold = opts.ess_threshold;
   io.rejuvenation_moves = opts.rejuvenation_moves;
-  io.rejuvenate_on_evidence = opts.rejuvenate_on_evidence;
+  io.rejuvenate = opts.rejuvenate;
   io.proposal_groups = opts.proposal_groups;
+  io.particle_filters = opts.particle_filters;
   return io;
 }
 

@@ -75,8 +75,9 @@ struct ExperimentOptions {
   uint64_t particle_seed = 1;
   double ess_threshold = 0.5;
   int rejuvenation_moves = 2;
-  bool rejuvenate_on_evidence = true;
+  inference::Rejuvenation rejuvenate = inference::Rejuvenation::Evidence;
   int proposal_groups = 8;
+  inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

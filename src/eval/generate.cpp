@@ -104,10 +104,10 @@ struct Trajectory {
 // it was refused. In the first `passive_steps` steps the assistant does its
 // no-op (`noop`, the assistant's wait) instead.
 std::optional<Trajectory> sample_trajectory(const pddl::Task& task, search::Policy& policy, bool refine,
+                                            const search::SearchOptions& budget,
                                             const std::vector<pddl::CompiledCondition>& other_goals, double temperature,
                                             int max_steps, size_t passive_steps, std::optional<pddl::ActionId> noop,
                                             util::Rng& rng, std::string& why) {
-  const search::SearchOptions budget = inference::InferenceOptions{}.refine;
   Trajectory t;
   t.states.push_back(task.initial_state());
   std::vector<double> q, logp, weight;
@@ -117,12 +117,15 @@ std::optional<Trajectory> sample_trajectory(const pddl::Task& task, search::Poli
       return std::nullopt;
     }
     const pddl::State& s = t.states.back();
+    // Refined at every state, the assistant's passive turns too: the
+    // observer's model does (spec 5.4), so the human acts on the policy
+    // inference will hold at that step.
+    if (refine) policy.refine_step(s, budget);
     if (noop && t.actions.size() < passive_steps && task.applicable(*noop, s.data())) {
       t.actions.push_back(*noop);
       t.states.push_back(task.apply(s, *noop));
       continue;
     }
-    if (refine) policy.refine(s, budget);
     const auto qs = policy.q_values(s);
     q.clear();
     for (const auto& qv : qs) q.push_back(qv.q);
@@ -246,12 +249,20 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       for (size_t g = 0; g < prob.goals.size(); ++g)
         if (g != goal) others.push_back(task.compile_text(prob.goals[g].condition, prob.goals[g].label));
 
+      // The policy as the observer's model holds it at the start (refined once
+      // at s_0). Every attempt and the speaker start from a copy of it, so
+      // nothing learned on a rejected attempt or later in the sequence
+      // shapes an earlier decision.
+      search::SearchOptions budget = inference::InferenceOptions{}.refine;
+      budget.max_nodes = options.refine_nodes;
+      const pddl::State s0 = task.initial_state();
+      if (search) policy.refine_step(s0, budget);
+      const search::Policy at_start = policy;
+
       // The observed part: the assistant waits (as in the paper's observed
       // plans, it is passive until the instruction) for k steps, k uniform in
       // 0..2m, m the principal's moves before the first salient action on the
       // policy's greedy joint plan (so the prefix covers about its walk).
-      const pddl::State s0 = task.initial_state();
-      if (search) policy.refine(s0, inference::InferenceOptions{}.refine);
       int moves = 0;
       for (pddl::ActionId a : policy.rollout(s0, max_steps)) {
         const auto& ga = task.action(a);
@@ -274,7 +285,8 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       std::optional<Trajectory> traj, fallback;
       std::string why;
       for (int attempt = 0; attempt < options.plan_attempts && !traj; ++attempt) {
-        traj = sample_trajectory(task, policy, search, others, plan.temperature, max_steps, passive, noop, rng, why);
+        policy = at_start;
+        traj = sample_trajectory(task, policy, search, budget, others, plan.temperature, max_steps, passive, noop, rng, why);
         if (traj && !helps(*traj)) {
           fallback = std::move(traj);
           traj.reset();
@@ -293,8 +305,14 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       const size_t k = std::min(passive, L - 1);
       const size_t u = static_cast<size_t>(rng.uniform_int(0, static_cast<int64_t>(k)));
       const pddl::State& s_u = traj->states[u];
-      if (search) policy.refine(s_u, inference::InferenceOptions{}.refine);
-      const auto commands = speaker.commands_at(policy, s_u);
+      // The speaker's plan is the one inference scores the instruction with
+      // (utterance timing "after"): refined at s_0 at the start, then once
+      // per step at s_0 .. s_u (the step of a_{k+1} refines at s_k; an
+      // instruction after the last observed action is heard in s_k itself).
+      search::Policy speaker_policy = at_start;
+      if (search && u > 0)
+        for (size_t i = 0; i <= u; ++i) speaker_policy.refine_step(traj->states[i], budget);
+      const auto commands = speaker.commands_at(speaker_policy, s_u);
       const commands::Command* command = commands.empty() ? nullptr : &commands[rng.index(commands.size())];
       std::optional<commands::Command> part;
       if (command) {
@@ -355,6 +373,7 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       {"seed", options.seed},
       {"temperature", options.temperature ? nlohmann::json(*options.temperature) : nlohmann::json("prior")},
       {"max_steps", max_steps},
+      {"max_nodes", options.refine_nodes},  // infer with the same --max-nodes
       {"lm", lm.name()},
       {"plans", records},
   };

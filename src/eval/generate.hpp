@@ -24,6 +24,11 @@
 //      greedy rollout of the policy, salient actions, lifted commands, paper
 //      speaker rule), and its text from language::UtteranceSampler. The
 //      literal utterance phrases only the part addressed to the assistant.
+//      The speaker's policy is the one inference holds when it hears the
+//      instruction (refined along s_0 .. s_u only, with the same budget), so
+//      the instruction is a draw from the model inference assumes; with
+//      partial lookahead searches a policy that had learned from the rest of
+//      the sequence could ask for things the observer's model never would.
 // Every draw comes from util::Rng streams derived from the seed and the
 // problem and plan numbers, and the files hold no time or path, so the same
 // options give byte-identical files.
@@ -53,6 +58,9 @@ struct GenerateOptions {
   int problem_attempts = 200;       // draws per problem before giving up
   int plan_attempts = 20;           // trajectories per plan before giving up
   size_t solvable_nodes = size_t{1} << 20;  // A* budget of each solvability check
+  // Expansions per lookahead search of the simulated human's refinements;
+  // give inference the same (--max-nodes) for a dataset drawn from its model.
+  size_t refine_nodes = size_t{1} << 18;
   std::string lm = "embedded";
   language::LanguageModelOptions lm_options;
 };

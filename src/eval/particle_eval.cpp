@@ -68,8 +68,9 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   base.utterance_timing = o.utterance_timing;
   base.ess_threshold = o.ess_threshold;
   base.rejuvenation_moves = o.rejuvenation_moves;
-  base.rejuvenate_on_evidence = o.rejuvenate_on_evidence;
+  base.rejuvenate = o.rejuvenate;
   base.proposal_groups = o.proposal_groups;
+  base.particle_filters = o.particle_filters;
   inference::check_options(base);
   size_t done = 0;
   for (const data::PlanRecord* p : todo) {

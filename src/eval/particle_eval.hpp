@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "inference/particle_belief.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
 
@@ -25,8 +26,9 @@ struct ParticleEvalOptions {
   int seeds = 3;                              // particle seeds 1..seeds for each count
   double ess_threshold = 0.5;
   int rejuvenation_moves = 2;
-  bool rejuvenate_on_evidence = true;
+  inference::Rejuvenation rejuvenate = inference::Rejuvenation::Evidence;
   int proposal_groups = 8;
+  inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   std::shared_ptr<lm::LanguageModel> language_model;  // required

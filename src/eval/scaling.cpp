@@ -103,6 +103,7 @@ ScalingRow run_scaling_point(const ScalingPoint& point, const ScalingSettings& s
     g.seed = settings.seed;
     g.temperature = point.temperature;
     g.max_steps = point.max_steps;
+    g.refine_nodes = settings.max_nodes;  // drawn from the model inference below assumes
     const GeneratedDataset ds_files = generate_dataset(g, &lm);
     dir = fs::temp_directory_path() / fmt::format("clips-scaling-{}-{}-{}", ::getpid(), point.axis, point.value);
     write_dataset(ds_files, dir.string(), true);

@@ -74,8 +74,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       // Without search, V = -h is read directly, so bind h to the goal now.
       if (!search_) h->prepare(*spec, s0);
       hyps_.push_back({g, c, spec});
-      policies_.emplace_back(spec, h, graph_);
-      heuristics_.push_back(std::move(h));
+      policies_.emplace_back(spec, std::move(h), graph_);
       temps_.emplace_back(prior);
     }
   const double n = static_cast<double>(hyps_.size());
@@ -95,7 +94,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       po.particles = options_.particles;
       po.ess_threshold = options_.ess_threshold;
       po.rejuvenation_moves = options_.rejuvenation_moves;
-      po.rejuvenate_on_evidence = options_.rejuvenate_on_evidence;
+      po.rejuvenate_on_evidence = options_.rejuvenate != Rejuvenation::Resampling;
       po.proposal_groups = options_.proposal_groups;
       // One stream per modality: a filter's draws do not depend on the others'.
       po.seed = util::Rng::derive(options_.particle_seed, {static_cast<uint64_t>(m)});
@@ -134,13 +133,7 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs) {
   // independent and may run on several threads.
   budget_stops_.resize(policies_.size(), 0);
   auto refine_one = [&](size_t h) {
-    search::Policy& pi = policies_[h];
-    budget_stops_[h] += pi.refine(s, options_.refine).stopped_by_budget;
-    if (!pi.best_action(s)) {
-      // Spec 5.4: a policy with no usable action here is recomputed from scratch.
-      pi = search::Policy(hyps_[h].spec, heuristics_[h], graph_);
-      budget_stops_[h] += pi.refine(s, options_.refine).stopped_by_budget;
-    }
+    budget_stops_[h] += policies_[h].refine_step(s, options_.refine).stopped_by_budget;
   };
   if (pool_ && hs.size() > 1) {
     // Longest first (by the last step's time): the step ends when the slowest

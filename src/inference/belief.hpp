@@ -108,10 +108,16 @@ struct InferenceOptions {
   int particles = 0;
   double ess_threshold = 0.5;    // resample when ESS < ess_threshold × particles, in [0, 1]
   int rejuvenation_moves = 2;    // MH sweeps over goals after each resampling, >= 0
-  // Also run the sweeps after every step with evidence for the modality (a
-  // human action, an utterance), not only after resampling (particle_belief.hpp says why).
-  bool rejuvenate_on_evidence = true;
+  // When else the sweeps run (particle_belief.hpp says why not only after resampling).
+  Rejuvenation rejuvenate = Rejuvenation::Evidence;
   int proposal_groups = 8;       // independent exploring proposals per sweep (particle_belief.hpp), >= 1
+  // Which modalities keep a filter of their own. All: one per modality (the
+  // baselines' posteriors are as good as CLIPS's, but the hypotheses any of
+  // them holds are refined). Clips: only the CLIPS (Both) modality; the
+  // action-only and utterance-only posteriors are importance-reweighted from
+  // its particles (weight × their likelihood / CLIPS's), which costs nothing
+  // but misses hypotheses the CLIPS particles left.
+  ParticleFilters particle_filters = ParticleFilters::All;
   uint64_t particle_seed = 1;    // results are a function of the seed (and not of `threads`)
 };
 
@@ -206,9 +212,10 @@ class Belief {
 
   // Particle mode (InferenceOptions::particles > 0).
   bool particle_mode() const { return !filters_.empty(); }
-  // The modality's filter counters; null in exact mode or for the utterance
-  // modality before the first utterance (its posterior is the prior until
-  // then, so it has no particles yet).
+  // The modality's filter counters; null in exact mode, for a modality
+  // without a filter of its own (ParticleFilters::Clips), or for the
+  // utterance modality before the first utterance (its posterior is the prior
+  // until then, so it has no particles yet).
   const ParticleStats* particle_stats(Modality m) const;
   // Hypotheses with non-zero weight in the modality (all, in exact mode).
   std::vector<int> support(Modality m) const;
@@ -251,6 +258,13 @@ class Belief {
   // `speak`), update the filters. Returns the utterance records.
   std::vector<UtteranceRecord> particle_step(lm::LanguageModel* lm);
   double modality_ll(Modality m, int h) const;
+  // Whether m has a filter of its own (else its weights come from Both's particles).
+  bool tracked(Modality m) const {
+    return m == Modality::Both || options_.particle_filters == ParticleFilters::All;
+  }
+  // The log-likelihood that weighs m's particles: m's own, or for a modality
+  // read off the CLIPS filter, m's likelihood where CLIPS's is not zero.
+  double particle_ll(Modality m, int h) const;
   Posterior particle_posterior(Modality m) const;
   // Scores `utterances` in s and adds them to the utterance part; with
   // speak_factor, also this step's goal-independent speak/no-speak factor.
@@ -271,7 +285,6 @@ class Belief {
   std::vector<Hypothesis> hyps_;
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)
   std::vector<search::Policy> policies_;
-  std::vector<std::shared_ptr<heuristics::Heuristic>> heuristics_;
   std::vector<TemperatureBelief> temps_;
   std::vector<double> log_prior_, action_ll_, utterance_ll_;
   pddl::State state_;

@@ -39,6 +39,15 @@ double Belief::modality_ll(Modality m, int h) const {
   return kNegInf;
 }
 
+double Belief::particle_ll(Modality m, int h) const {
+  if (tracked(m)) return modality_ll(m, h);
+  // Importance weights from the CLIPS filter: a particle of weight w on h
+  // targets P(h | actions, utterances); w × L_m(h) / L_both(h) targets
+  // P(h | m's data). The offset form does that by reading L_m in place of
+  // L_both. Hypotheses CLIPS ruled out are not kept current: weight 0.
+  return modality_ll(Modality::Both, h) == kNegInf ? kNegInf : modality_ll(m, h);
+}
+
 void Belief::apply_event(const Event& e, const std::vector<int>& hs) {
   switch (e.kind) {
     case Event::Kind::Refine: refine_some(e.state, hs); return;
@@ -97,7 +106,7 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
   // holds and has not ruled out (a likelihood of 0 stays 0).
   std::vector<int> need;
   for (Modality m : kModalities) {
-    if (m == Modality::UtteranceOnly && !heard_) continue;
+    if ((m == Modality::UtteranceOnly && !heard_) || !tracked(m)) continue;
     for (int h : filters_[static_cast<int>(m)].held())
       if (modality_ll(m, h) > kNegInf) need.push_back(h);
   }
@@ -144,8 +153,11 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
   // event) and/or utterances.
   const bool acted = history_.size() >= 2 && history_[history_.size() - 2].kind == Event::Kind::Act;
   for (Modality m : kModalities) {
-    if (m == Modality::UtteranceOnly && !heard_) continue;
-    const bool evidence = m == Modality::Both ? acted || speak : m == Modality::ActionOnly ? acted : speak;
+    if ((m == Modality::UtteranceOnly && !heard_) || !tracked(m)) continue;
+    const bool actions = options_.rejuvenate == Rejuvenation::Evidence;
+    const bool evidence = m == Modality::Both ? (acted && actions) || speak
+                          : m == Modality::ActionOnly ? acted && actions
+                                                      : speak;
     auto ll = [&](int h) { return modality_ll(m, h); };
     auto current = [&] {
       std::vector<int> out;
@@ -168,7 +180,8 @@ Posterior Belief::particle_posterior(Modality m) const {
     for (size_t h = 0; h < hyps_.size(); ++h) p.hypotheses[h] = std::exp(log_prior_[h]);
     p.log_marginal = speak_ll_;
   } else {
-    p.hypotheses = filters_[static_cast<int>(m)].posterior([&](int h) { return modality_ll(m, h); }, p.log_marginal);
+    const Modality own = tracked(m) ? m : Modality::Both;
+    p.hypotheses = filters_[static_cast<int>(own)].posterior([&](int h) { return particle_ll(m, h); }, p.log_marginal);
   }
   p.goals.assign(goals_.size(), 0.0);
   p.profiles.assign(profiles_.size(), 0.0);
@@ -180,7 +193,7 @@ Posterior Belief::particle_posterior(Modality m) const {
 }
 
 const ParticleStats* Belief::particle_stats(Modality m) const {
-  if (!particle_mode() || (m == Modality::UtteranceOnly && !heard_)) return nullptr;
+  if (!particle_mode() || (m == Modality::UtteranceOnly && !heard_) || !tracked(m)) return nullptr;
   return &filters_[static_cast<int>(m)].stats();
 }
 
@@ -188,7 +201,8 @@ std::vector<int> Belief::support(Modality m) const {
   std::vector<int> all(hyps_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
   if (!particle_mode() || (m == Modality::UtteranceOnly && !heard_)) return all;
-  return filters_[static_cast<int>(m)].support([&](int h) { return modality_ll(m, h); });
+  const Modality own = tracked(m) ? m : Modality::Both;
+  return filters_[static_cast<int>(own)].support([&](int h) { return particle_ll(m, h); });
 }
 
 void Belief::sync_policies(Modality m) {

@@ -30,6 +30,30 @@ std::vector<int> sorted_unique(std::vector<int> v) {
 
 }  // namespace
 
+std::string to_string(ParticleFilters f) { return f == ParticleFilters::All ? "all" : "clips"; }
+
+ParticleFilters parse_particle_filters(const std::string& text) {
+  if (text == "all") return ParticleFilters::All;
+  if (text == "clips") return ParticleFilters::Clips;
+  throw InputError("unknown particle filters '" + text + "' (expected all or clips)");
+}
+
+std::string to_string(Rejuvenation r) {
+  switch (r) {
+    case Rejuvenation::Evidence: return "evidence";
+    case Rejuvenation::Utterances: return "utterances";
+    case Rejuvenation::Resampling: return "resampling";
+  }
+  return "?";
+}
+
+Rejuvenation parse_rejuvenation(const std::string& text) {
+  if (text == "evidence") return Rejuvenation::Evidence;
+  if (text == "utterances") return Rejuvenation::Utterances;
+  if (text == "resampling") return Rejuvenation::Resampling;
+  throw InputError("unknown rejuvenation schedule '" + text + "' (expected evidence, utterances or resampling)");
+}
+
 ParticleFilter::ParticleFilter(int goals, int profiles, const ParticleOptions& options)
     : goals_(goals), profiles_(profiles), options_(options), rng_(options.seed) {
   if (goals_ < 1 || profiles_ < 1) throw InputError("particle filter: no hypotheses");

@@ -72,11 +72,27 @@
 //     P(h) ≈ Σ_i w_i [h_i = h] / Σ_i w_i, and log marginal ≈ log mean w_i.
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "util/rng.hpp"
 
 namespace clips::inference {
+
+// Which of Belief's three modalities keep a filter of their own
+// (InferenceOptions::particle_filters).
+enum class ParticleFilters { All, Clips };
+std::string to_string(ParticleFilters f);                         // "all", "clips"
+ParticleFilters parse_particle_filters(const std::string& text);  // throws InputError
+
+// When Belief runs the rejuvenation sweeps besides after each resampling:
+// after every step with evidence for the modality (a human action or an
+// utterance), only after steps with an utterance (instructions are what
+// can point away from every goal the actions favoured, without lowering the
+// ESS), or never.
+enum class Rejuvenation { Evidence, Utterances, Resampling };
+std::string to_string(Rejuvenation r);                    // "evidence", "utterances", "resampling"
+Rejuvenation parse_rejuvenation(const std::string& text);  // throws InputError
 
 struct ParticleOptions {
   int particles = 0;            // N > 0

@@ -262,6 +262,18 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   return st;
 }
 
+RefineStats Policy::refine_step(const pddl::State& s, const SearchOptions& opts) {
+  RefineStats st = refine(s, opts);
+  if (!best_action(s)) {
+    *this = Policy(spec_, h_, graph_);
+    const RefineStats again = refine(s, opts);
+    st.searches += again.searches;
+    st.expanded += again.expanded;
+    st.stopped_by_budget += again.stopped_by_budget;
+  }
+  return st;
+}
+
 std::vector<QValue> Policy::q_values(const pddl::State& s) const {
   const pddl::Task& task = spec_->task();
   std::vector<QValue> out;

@@ -49,6 +49,11 @@ class Policy {
 
   // One RTAA* policy update at s (spec REFINE). `opts` holds the budgets.
   RefineStats refine(const pddl::State& s, const SearchOptions& opts);
+  // One timestep of the policy lifecycle (spec 5.4): refine at s, and if no
+  // action is usable there afterwards, forget everything learned and refine
+  // again from an empty policy. Inference and the generator's simulated
+  // human both follow it, so a generated speaker plans as the observer's model does.
+  RefineStats refine_step(const pddl::State& s, const SearchOptions& opts);
 
   // Q-values of every applicable action of the active agent in s (unfiltered,
   // in enumeration order). Reads V (or -H) of the successors; no search.

@@ -74,6 +74,7 @@ PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::stri
   horizon_ = pack_->roles().horizon;
   if (pack_->spec().scene == domains::SceneKind::Cards) vh_.emplace(*task_);
   else dkg_.emplace(*task_);
+  options_ = limits_.belief;
   options_.refine.max_nodes = limits_.inference_nodes;
   options_.refine.max_seconds = limits_.search_seconds;
   options_.threads = 1;  // sessions already run in parallel
@@ -214,6 +215,7 @@ json PlaySession::assist(bool apply) {
     setup.refine = belief_->searches();
     setup.refine_options.max_nodes = limits_.assist_nodes;
     setup.refine_options.max_seconds = limits_.search_seconds;
+    belief_->sync_policies(modality());  // particle inference: the weighted policies up to date
     const auto post = belief_->posterior(modality());
     std::vector<assist::Hypothesis> hyps;
     for (size_t h = 0; h < post.hypotheses.size(); ++h)
@@ -396,6 +398,9 @@ json PlaySession::state() const {
   j["observed_utterances"] = json::array();
   for (const auto& u : plan_->observed.utterances) j["observed_utterances"].push_back(u.text);
   j["searches_stopped_by_budget"] = belief_->searches_stopped_by_budget();
+  // Exact or particle inference, and the policy refinements done so far
+  // (hypotheses × steps when exact; fewer where particles leave some out).
+  j["inference"] = {{"particles", options_.particles}, {"refinements", belief_->refinements()}};
   return j;
 }
 

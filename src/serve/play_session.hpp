@@ -37,6 +37,10 @@ struct PlayLimits {
   double search_seconds = 5;                 // per A* search
   int max_steps = 300;                       // actions per session (undo frees them)
   size_t max_utterance_bytes = 500;
+  // Every other belief option (particle inference and its settings; exact
+  // enumeration by default). Its budgets and thread count are replaced by
+  // the ones above and one thread per session.
+  inference::InferenceOptions belief;
 };
 
 // The methods a player may switch between (names as in `clips assist`).

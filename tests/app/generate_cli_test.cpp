@@ -50,6 +50,7 @@ TEST(GenerateCli, WritesADatasetTheOtherCommandsReadTheSameEveryTime) {
   EXPECT_TRUE(first.count("problems/1.txt") && first.count("generation.json") && first.count("domain.pddl"));
   ASSERT_EQ(run(clips_binary() + kSmall + " --seed 4 --out " + c).status, 0);
   EXPECT_NE(first, files_of(c));
+  EXPECT_TRUE(contains(first.at("generation.json"), "\"max_nodes\": 262144")) << "the budget inference should use";
 
   // A second run over a dataset needs --force.
   r = run(clips_binary() + kSmall + " --seed 3 --out " + a);
@@ -66,6 +67,7 @@ TEST(GenerateCli, BadValuesAreUsageErrorsNamingTheFlag) {
       {" --gems 0", "--gems"},        {" --keys -1", "--keys"},           {" --doors x", "--doors"},
       {" --plans 0", "--plans"},      {" --problems -2", "--problems"},   {" --seed -1", "--seed"},
       {" --temperature 0", "--temperature"}, {" --temperature hot", "--temperature"}, {" --max-steps 0", "--max-steps"},
+      {" --max-nodes 0", "--max-nodes"}, {" --max-nodes many", "--max-nodes"},
   };
   for (const auto& [args, flag] : cases) {
     auto r = run(clips_binary() + " generate" + args + out);

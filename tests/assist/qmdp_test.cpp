@@ -89,6 +89,31 @@ TEST(QmdpOffline, IgnoresHypothesesBelowTheThreshold) {
   EXPECT_EQ(r.options, (std::map<std::string, double>{{"key1", 1.0}}));
 }
 
+TEST(QmdpOffline, AFlatBeliefOverManyHypothesesStillDecides) {
+  // 60 hypotheses of weight 1/60 each, below the 0.02 cut-off: 45 for gem1,
+  // 15 for gem2. Ignoring all of them would leave the robot nothing to
+  // decide on; the cut-off drops to half the largest weight, so the robot
+  // acts as on the same belief in two hypotheses (0.75 / 0.25).
+  World w;
+  std::vector<assist::Hypothesis> flat;
+  for (int i = 0; i < 60; ++i) flat.push_back({1.0 / 60, w.policy(i < 45 ? 1 : 2)});
+  const auto many = assist::qmdp_offline(w.setup(), flat, 0);
+  const auto two = assist::qmdp_offline(w.setup(), {{0.75, w.policy(1)}, {0.25, w.policy(2)}}, 0);
+  EXPECT_TRUE(many.goal_reached);
+  EXPECT_EQ(many.options, (std::map<std::string, double>{{"key1", 1.0}}));
+  // The same help at about the same cost: equal Q-values summed in another
+  // order break the last ties (a wait or a step once the key is handed over)
+  // differently.
+  EXPECT_EQ(many.plan.size(), two.plan.size());
+  EXPECT_NEAR(many.plan_cost, two.plan_cost, 1.0);
+  EXPECT_NEAR(many.human_cost, two.human_cost, 1.0);
+  // One heavy hypothesis keeps the spec's cut-off: the others stay ignored.
+  std::vector<assist::Hypothesis> one_sure = {{0.99, w.policy(1)}};
+  for (int i = 0; i < 10; ++i) one_sure.push_back({0.001, w.policy(2)});
+  EXPECT_EQ(assist::qmdp_offline(w.setup(), one_sure, 0).plan,
+            assist::qmdp_offline(w.setup(), {{0.99, w.policy(1)}}, 0).plan);
+}
+
 TEST(QmdpOffline, WrongBeliefMakesThePrincipalGiveUpOnTheAssistant) {
   World w;
   // The assistant is sure of gem2 while the human wants gem1: the robot's

@@ -5,8 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "data/dataset.hpp"
 #include "data/validate.hpp"
+#include "inference/belief.hpp"
+#include "inference/utterance_model.hpp"
 #include "eval/support.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
@@ -97,6 +101,54 @@ TEST(GenerateDataset, SmallSetLoadsAndEveryPlanChecks) {
   }
   EXPECT_TRUE(gen.files.count("problems/1.txt"));
   EXPECT_TRUE(gen.files.count("generation.json"));
+}
+
+TEST(GenerateDataset, TheSpeakerPlansAsInferenceDoes) {
+  // The instruction's command is drawn from the commands the CLIPS speaker
+  // model lists for the true hypothesis with the policy inference holds when
+  // it hears the instruction, not one that has also learned from the rest
+  // of the sampled sequence. Inference on the prefix up to the instruction
+  // ends in that state with that policy, so its commands must hold the one
+  // drawn (or be empty when the speaker had nothing to ask).
+  GenerateOptions o = small(3);
+  o.map.width = o.map.height = 8;
+  o.map.counts = {{"gem", 3}, {"key", 2}, {"door", 2}};
+  o.problems = 2;
+  o.plans_per_problem = 3;
+  // Small lookahead budgets: partial searches, so a policy's commands
+  // depend on what it has been refined on.
+  o.refine_nodes = 40;
+  inference::InferenceOptions io;
+  io.refine.max_nodes = o.refine_nodes;
+  const GeneratedDataset gen = generate_dataset(o, &shared_lm());
+  TempDir dir("generate-speaker");
+  write_dataset(gen, dir.str(), false);
+  const auto ds = data::Dataset::load(dir.str());
+  int with_actions_before = 0;
+  for (const GeneratedPlan& g : gen.plans) {
+    SCOPED_TRACE(g.id + " (instruction after " + std::to_string(g.utterance_step) + " actions)");
+    data::PlanRecord prefix = ds.plan(g.id);
+    ASSERT_EQ(prefix.observed.utterances.size(), 1u);
+    prefix.observed.actions.resize(static_cast<size_t>(g.utterance_step));
+    with_actions_before += g.utterance_step > 0;
+    const auto run = inference::run_inference(ds, prefix, shared_lm(), io);
+    const auto& b = *run.belief;
+    int truth = -1;
+    for (size_t h = 0; h < b.hypotheses().size(); ++h)
+      if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile)
+        truth = static_cast<int>(h);
+    ASSERT_GE(truth, 0);
+    const inference::UtteranceModel speaker(ds.task(prefix.problem_id), ds.pack_ptr());
+    std::vector<std::string> listed;
+    for (const auto& c : speaker.commands_at(b.policies()[static_cast<size_t>(truth)], b.state()))
+      listed.push_back(c.llm_form());
+    if (g.command.empty()) {
+      EXPECT_TRUE(listed.empty());
+    } else {
+      EXPECT_NE(std::find(listed.begin(), listed.end(), g.command), listed.end()) << g.command;
+    }
+  }
+  EXPECT_GT(with_actions_before, 0) << "no plan checks a speaker who has acted first";
 }
 
 TEST(GenerateDataset, TheSeedDecidesEveryByte) {

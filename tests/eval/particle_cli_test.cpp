@@ -26,6 +26,9 @@ TEST(ParticleCli, BadValuesAreRefused) {
       {infer + "--ess-threshold nan", "--ess-threshold"},
       {infer + "--rejuvenation-moves -2", "--rejuvenation-moves"},
       {infer + "--particle-seed -1", "--particle-seed"},
+      {infer + "--particle-filters some", "--particle-filters"},
+      {infer + "--rejuvenate sometimes", "--rejuvenate"},
+      {bench + "--particle-filters none", "--particle-filters"},
       {bench + "--particles 0", "--particles"},
       {bench + "--seeds 0", "--seeds"},
       {bench + "--ess-threshold nan", "--ess-threshold"},
@@ -57,7 +60,8 @@ TEST(ParticleCli, InferWithParticlesReportsAProperPosterior) {
                             " --plan e1.1.keys --particles 64 --particle-seed 3 --json 2>/dev/null");
   EXPECT_EQ(nlohmann::json::parse(again.out)["steps"], j["steps"]);
   auto help = testing::run(clips_binary() + " infer --help");
-  for (const char* o : {"--particles", "--particle-seed", "--ess-threshold", "--rejuvenation-moves"})
+  for (const char* o : {"--particles", "--particle-seed", "--ess-threshold", "--rejuvenation-moves",
+                        "--particle-filters", "--rejuvenate"})
     EXPECT_TRUE(contains(help.out, o)) << o;
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -302,6 +303,76 @@ TEST(ParticleBelief, AssistanceCopiesKeepFiltering) {
   copy.sync_policies(Modality::Both);
   for (int h : copy.support(Modality::Both)) EXPECT_TRUE(copy.current(h));
   EXPECT_EQ(b.t() + 2, copy.t());
+}
+
+TEST(ParticleBelief, ClipsFilterAloneReweightsTheBaselinesFromItsParticles) {
+  auto task = corridor_task();
+  ColourLm lm;
+  Belief exact = corridor_belief(task, {});
+  const auto e = corridor_run(exact, *task, lm);
+  InferenceOptions po;
+  po.particles = 400;
+  po.particle_filters = ParticleFilters::Clips;
+  Belief one = corridor_belief(task, po);
+  const auto p = corridor_run(one, *task, lm);
+  // With every hypothesis held by ~100 particles, reweighting the CLIPS
+  // particles gives every modality's posterior and evidence.
+  for (size_t t = 0; t < e.size(); ++t)
+    for (Modality m : kModalities) {
+      EXPECT_LT(tv(e[t][m].goals, p[t][m].goals), 0.05) << "step " << t << " " << to_string(m);
+      EXPECT_NEAR(e[t][m].log_marginal, p[t][m].log_marginal, 0.1) << "step " << t << " " << to_string(m);
+    }
+  EXPECT_NE(one.particle_stats(Modality::Both), nullptr);
+  EXPECT_EQ(one.particle_stats(Modality::ActionOnly), nullptr);  // no filter of its own
+  EXPECT_EQ(one.particle_stats(Modality::UtteranceOnly), nullptr);
+
+  // With few particles the baselines can only weigh what CLIPS holds, and
+  // only the CLIPS filter's hypotheses are refined.
+  InferenceOptions few;
+  few.particles = 1;
+  few.ess_threshold = 1.0;
+  few.rejuvenation_moves = 0;
+  Belief all = corridor_belief(task, few);
+  few.particle_filters = ParticleFilters::Clips;
+  Belief clips_only = corridor_belief(task, few);
+  corridor_run(all, *task, lm);
+  const auto q = corridor_run(clips_only, *task, lm);
+  EXPECT_LT(clips_only.refinements(), all.refinements());
+  const auto both = clips_only.support(Modality::Both);
+  for (Modality m : {Modality::ActionOnly, Modality::UtteranceOnly}) {
+    for (int h : clips_only.support(m)) EXPECT_TRUE(std::binary_search(both.begin(), both.end(), h)) << h;
+    double s = 0;
+    for (double x : q.back()[m].goals) s += x;
+    EXPECT_NEAR(s, 1.0, 1e-12) << to_string(m);
+  }
+  EXPECT_EQ(parse_particle_filters("clips"), ParticleFilters::Clips);
+  EXPECT_EQ(to_string(parse_rejuvenation("utterances")), "utterances");
+  EXPECT_THROW(parse_rejuvenation("always"), InputError);
+  EXPECT_EQ(to_string(parse_particle_filters("all")), "all");
+  EXPECT_THROW(parse_particle_filters("some"), InputError);
+}
+
+TEST(ParticleBelief, RejuvenationScheduleDecidesWhichStepsExplore) {
+  // Never resampling (threshold 0), the sweeps run only where the schedule
+  // says: never, after the two steps with utterances, or after every step
+  // with a human action or an utterance.
+  auto task = corridor_task();
+  ColourLm lm;
+  auto proposed = [&](Rejuvenation r) {
+    InferenceOptions po;
+    po.particles = 4;
+    po.ess_threshold = 0;
+    po.rejuvenate = r;
+    po.particle_filters = ParticleFilters::Clips;
+    Belief b = corridor_belief(task, po);
+    corridor_run(b, *task, lm);
+    return b.particle_stats(Modality::Both)->proposed;
+  };
+  const long never = proposed(Rejuvenation::Resampling), utterances = proposed(Rejuvenation::Utterances),
+             evidence = proposed(Rejuvenation::Evidence);
+  EXPECT_EQ(never, 0);
+  EXPECT_GT(utterances, 0);
+  EXPECT_GT(evidence, utterances);
 }
 
 // ---------------------------------------------------------------------------

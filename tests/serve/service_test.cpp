@@ -275,6 +275,42 @@ TEST_F(Fixture, PlayHearAssistUndoResetAndSwitchMethod) {
   EXPECT_EQ(s->handle("POST", url + "/method", R"j({"method":"oracle"})j").status, 400);
 }
 
+TEST_F(Fixture, ParticleSessionsRefineOnlyWhatTheParticlesHold) {
+  // The same moves and instruction with exact inference and with 2 particles
+  // over the 8 hypotheses: the particle session reports a proper posterior,
+  // decides, and refines fewer policies.
+  auto play = [&](Service& s) {
+    const std::string url = "/api/sessions/" + create(s);
+    EXPECT_EQ(s.handle("POST", url + "/act", R"j({"action":"(left human)"})j").status, 200);
+    EXPECT_EQ(s.handle("POST", url + "/hear", R"j({"utterance":"Can you get me the yellow key?"})j").status, 200);
+    Reply r = s.handle("POST", url + "/assist", R"j({"apply":true})j");
+    EXPECT_EQ(r.status, 200) << r.body;
+    EXPECT_FALSE(body(r)["decision"]["candidates"].empty());
+    return body(s.handle("GET", url, ""));
+  };
+  auto exact = make();
+  const json e = play(*exact);
+  ServiceLimits lim;
+  lim.play.belief.particles = 2;
+  lim.play.belief.ess_threshold = 1.0;  // resample every step: the particles drop hypotheses
+  lim.play.belief.rejuvenation_moves = 0;
+  lim.play.belief.particle_filters = inference::ParticleFilters::Clips;
+  auto few = make(lim);
+  const json p = play(*few);
+  EXPECT_EQ(e["inference"]["particles"], 0);
+  EXPECT_EQ(p["inference"]["particles"], 2);
+  EXPECT_EQ(e["t"], p["t"]);
+  EXPECT_LT(p["inference"]["refinements"].get<int>(), e["inference"]["refinements"].get<int>());
+  double sum = 0;
+  int held = 0;
+  for (auto& h : p["posterior"]["hypotheses"]) {
+    sum += h["p"].get<double>();
+    held += h["p"].get<double>() > 0;
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  EXPECT_LE(held, 2);
+}
+
 TEST_F(Fixture, SessionsRunInParallelAndIndependently) {
   auto s = make();
   auto play = [&](const std::string& id, std::string& out) {
