@@ -54,7 +54,7 @@ const double kLog10 = std::log(10.0);
 // would decide on none (Q_MDP's first applicable action). So the cut-off is
 // at most half the largest weight: the same as the spec's whenever some
 // hypothesis weighs 0.04 or more, as one always does with up to 25
-// hypotheses (the paper's 8, VirtualHome's up to 12).
+// hypotheses (the paper's 8, the example domains' goal sets).
 double live_threshold(const std::vector<Hypothesis>& belief, double threshold) {
   double top = 0;
   for (const Hypothesis& h : belief) top = std::max(top, h.weight);

@@ -309,6 +309,8 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       // (utterance timing "after"): refined at s_0 at the start, then once
       // per step at s_0 .. s_u (the step of a_{k+1} refines at s_k; an
       // instruction after the last observed action is heard in s_k itself).
+      // Replayed from the start policy: u is drawn only once the sequence
+      // is known, and the refinements are few next to the sequence's.
       search::Policy speaker_policy = at_start;
       if (search && u > 0)
         for (size_t i = 0; i <= u; ++i) speaker_policy.refine_step(traj->states[i], budget);

@@ -262,6 +262,10 @@ class Belief {
   bool tracked(Modality m) const {
     return m == Modality::Both || options_.particle_filters == ParticleFilters::All;
   }
+  // The filter whose particles carry m's posterior: m's own, or the CLIPS one.
+  const ParticleFilter& filter_for(Modality m) const {
+    return filters_[static_cast<int>(tracked(m) ? m : Modality::Both)];
+  }
   // The log-likelihood that weighs m's particles: m's own, or for a modality
   // read off the CLIPS filter, m's likelihood where CLIPS's is not zero.
   double particle_ll(Modality m, int h) const;

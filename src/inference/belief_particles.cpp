@@ -180,8 +180,7 @@ Posterior Belief::particle_posterior(Modality m) const {
     for (size_t h = 0; h < hyps_.size(); ++h) p.hypotheses[h] = std::exp(log_prior_[h]);
     p.log_marginal = speak_ll_;
   } else {
-    const Modality own = tracked(m) ? m : Modality::Both;
-    p.hypotheses = filters_[static_cast<int>(own)].posterior([&](int h) { return particle_ll(m, h); }, p.log_marginal);
+    p.hypotheses = filter_for(m).posterior([&](int h) { return particle_ll(m, h); }, p.log_marginal);
   }
   p.goals.assign(goals_.size(), 0.0);
   p.profiles.assign(profiles_.size(), 0.0);
@@ -201,8 +200,7 @@ std::vector<int> Belief::support(Modality m) const {
   std::vector<int> all(hyps_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
   if (!particle_mode() || (m == Modality::UtteranceOnly && !heard_)) return all;
-  const Modality own = tracked(m) ? m : Modality::Both;
-  return filters_[static_cast<int>(own)].support([&](int h) { return particle_ll(m, h); });
+  return filter_for(m).support([&](int h) { return particle_ll(m, h); });
 }
 
 void Belief::sync_policies(Modality m) {
