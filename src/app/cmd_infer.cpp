@@ -113,6 +113,7 @@ void register_infer(CLI::App& app) {
     bool json = false, explain = false;
     int top = 3;
     size_t max_nodes = size_t{1} << 18;
+    std::string heuristic;
     ParticleFlags particles;
   };
   auto o = std::make_shared<Opts>();
@@ -125,6 +126,9 @@ void register_infer(CLI::App& app) {
   add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)")
       ->check(PositiveInteger);
+  cmd->add_option("--heuristic", o->heuristic,
+                  "Heuristic of the refinements (default: the domain pack's; doors-keys-gems: dkg-mst, or "
+                  "dkg-mst-reference for the reference's pruning, which also expands moves of gems no goal needs)");
   add_particle_options(cmd, o->particles);
   cmd->add_flag("--explain", o->explain,
                 "Also show, per utterance and hypothesis (goal x cost profile), its likelihood and most probable "
@@ -143,6 +147,7 @@ void register_infer(CLI::App& app) {
     auto lm = make_lm(o->lm, ds);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
+    opts.heuristic = o->heuristic;
     opts.threads = 0;  // one plan: use every core
     opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
     opts.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);

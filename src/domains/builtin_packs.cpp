@@ -71,9 +71,11 @@ class DkgPack : public Pack {
     throw InputError("--costs must be 1..4 (C1..C4), 'unit' or 'task' for doors-keys-gems, got '" + which + "'");
   }
 
-  std::vector<std::string> heuristic_names() const override { return {"dkg-dist", "dkg-mst", "hmax", "blind", "hff"}; }
+  std::vector<std::string> heuristic_names() const override { return {"dkg-dist", "dkg-mst", "dkg-mst-reference", "hmax", "blind", "hff"}; }
   std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task) const override {
     if (name == "dkg-mst") return std::make_unique<DkgMstHeuristic>();
+    if (name == "dkg-mst-reference")
+      return std::make_unique<DkgMstHeuristic>(nullptr, 5, ItemPruning::Reference);
     if (name == "dkg-dist") return std::make_unique<DkgDistanceHeuristic>();
     return Pack::make_heuristic(name, task);
   }

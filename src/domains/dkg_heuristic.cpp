@@ -19,8 +19,9 @@ namespace {
 // nullopt = the subformula was dropped (not a has/unlocked-by structure).
 using Dnf = std::optional<std::vector<DkgClause>>;
 
+// `dropped` is set when any part of the goal is left out.
 Dnf to_dnf(const DkgMapAnalysis& m, const pddl::CompiledCondition& g, CondId c, std::optional<pddl::PredId> has,
-           std::optional<pddl::PredId> ub) {
+           std::optional<pddl::PredId> ub, bool& dropped) {
   const pddl::Task& t = m.task();
   const CNode& n = g.cnode(c);
   switch (n.op) {
@@ -28,15 +29,21 @@ Dnf to_dnf(const DkgMapAnalysis& m, const pddl::CompiledCondition& g, CondId c, 
     case CNode::False: return std::vector<DkgClause>{};
     case CNode::Atom: {
       const auto& [pred, args] = t.atom_info(n.a);
-      if (args.size() != 2 || !((has && pred == *has) || (ub && pred == *ub))) return std::nullopt;
+      if (args.size() != 2 || !((has && pred == *has) || (ub && pred == *ub))) {
+        dropped = true;
+        return std::nullopt;
+      }
       DkgGoalAtom a{n.a, m.index_of(args[0]), m.index_of(args[1])};
-      if (a.agent < 0 || a.item < 0) return std::nullopt;
+      if (a.agent < 0 || a.item < 0) {
+        dropped = true;
+        return std::nullopt;
+      }
       return std::vector<DkgClause>{DkgClause{a}};
     }
     case CNode::And: {
       std::vector<DkgClause> acc{DkgClause{}};  // empty conjunction = true
       for (int i = 0; i < n.b; ++i) {
-        Dnf kid = to_dnf(m, g, g.ckids()[n.a + i], has, ub);
+        Dnf kid = to_dnf(m, g, g.ckids()[n.a + i], has, ub, dropped);
         if (!kid) continue;
         std::vector<DkgClause> prod;
         for (const auto& x : acc)
@@ -53,12 +60,14 @@ Dnf to_dnf(const DkgMapAnalysis& m, const pddl::CompiledCondition& g, CondId c, 
     case CNode::Or: {
       std::vector<DkgClause> acc;  // empty disjunction = false
       for (int i = 0; i < n.b; ++i) {
-        Dnf kid = to_dnf(m, g, g.ckids()[n.a + i], has, ub);
+        Dnf kid = to_dnf(m, g, g.ckids()[n.a + i], has, ub, dropped);
         if (kid) acc.insert(acc.end(), kid->begin(), kid->end());
       }
       return acc;
     }
-    default: return std::nullopt;  // NotAtom, Not, comparisons
+    default:  // NotAtom, Not, comparisons
+      dropped = true;
+      return std::nullopt;
   }
 }
 
@@ -66,11 +75,14 @@ bool in(ObjMask mask, int i) { return mask_has(mask, i); }
 
 }  // namespace
 
-std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, const pddl::CompiledCondition& goal) {
+std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, const pddl::CompiledCondition& goal,
+                                        bool* complete) {
   const auto& d = map.task().domain();
   // The goal is a conjunction of goal terms in the reference, so a goal that
   // is dropped entirely leaves an empty conjunction: one empty clause.
-  Dnf r = to_dnf(map, goal, goal.root(), d.find_predicate("has"), d.find_predicate("unlocked-by"));
+  bool dropped = false;
+  Dnf r = to_dnf(map, goal, goal.root(), d.find_predicate("has"), d.find_predicate("unlocked-by"), dropped);
+  if (complete) *complete = !dropped;
   std::vector<DkgClause> out = r ? *r : std::vector<DkgClause>{DkgClause{}};
   // Drop repeated clauses (the reference's unique! on goal terms).
   std::vector<DkgClause> uniq;
@@ -107,8 +119,24 @@ DkgMinCosts dkg_min_costs(const model::Specification& spec, const DkgMapAnalysis
 
 // ============================================================== MST heuristic
 
-DkgMstHeuristic::DkgMstHeuristic(std::shared_ptr<const DkgMapAnalysis> map, int max_recurse_iters)
-    : map_(std::move(map)), max_iters_(max_recurse_iters) {}
+DkgMstHeuristic::DkgMstHeuristic(std::shared_ptr<const DkgMapAnalysis> map, int max_recurse_iters, ItemPruning items)
+    : map_(std::move(map)), max_iters_(max_recurse_iters), items_(items) {}
+
+ObjMask dkg_idle_items(const DkgMapAnalysis& m) {
+  const pddl::Task& t = m.task();
+  ObjMask idle = 0;
+  for (int i = m.num_agents(); i < m.first_door(); ++i)
+    if (m.kind(i) == DkgMapAnalysis::Kind::Gem) idle |= mask_bit(i);
+  const auto& schemas = t.domain().actions;
+  for (pddl::ActionId a = 0; a < t.num_actions(); ++a) {
+    const auto& ga = t.action(a);
+    const std::string& nm = schemas[ga.schema].name;
+    if (nm == "pickup" || nm == "handover") continue;
+    for (pddl::ObjectId o : ga.args)
+      if (const int i = m.index_of(o); i >= 0) idle &= ~mask_bit(i);
+  }
+  return idle;
+}
 
 void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::State& root) {
   // A map of another problem cannot be reused; build this problem's from the
@@ -120,7 +148,12 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
   const DkgMapAnalysis& m = *map_;
   const int n = m.num_objects();
   costs_ = dkg_min_costs(spec, m);
-  clauses_ = dkg_goal_clauses(m, spec.goal());
+  bool goal_complete = false;
+  clauses_ = dkg_goal_clauses(m, spec.goal(), &goal_complete);
+  if (idle_task_ != &m.task()) {
+    idle_items_ = dkg_idle_items(m);
+    idle_task_ = &m.task();
+  }
 
   DkgStateView rv = m.read(root);
   info_.clear();
@@ -168,18 +201,34 @@ void DkgMstHeuristic::prepare(const model::Specification& spec, const pddl::Stat
   const pddl::Task& t = m.task();
   const auto& schemas = t.domain().actions;
   keep_.assign(t.num_actions(), 1);
-  auto key_ok = [&](pddl::ObjectId o) {
-    int i = m.index_of(o);
-    if (i < 0 || m.kind(i) != DkgMapAnalysis::Kind::Key) return true;
-    return in(nec_keys_, i) || in(goal_items_, i);
+  // Each agent's wait cost under this specification (+inf: it cannot wait).
+  std::vector<double> wait_cost(static_cast<size_t>(m.num_agents()), kInf);
+  if (const int wait = t.domain().find_action("wait"); wait >= 0)
+    for (int ag = 0; ag < m.num_agents(); ++ag)
+      if (auto id = t.find_action(wait, {m.object(ag)})) wait_cost[static_cast<size_t>(ag)] = spec.cost(*id);
+  // The item moved by pickup/handover `a`, done by `agent`.
+  auto item_ok = [&](pddl::ActionId a, pddl::ObjectId agent, pddl::ObjectId o) {
+    const int i = m.index_of(o);
+    if (i < 0) return true;
+    if (m.kind(i) == DkgMapAnalysis::Kind::Key) return in(nec_keys_, i) || in(goal_items_, i);
+    // Clause 5.6 keeps every non-key item. One that the goal does not name
+    // and that no other action uses (idle_items) changes nothing but its
+    // own place, so a plan that takes or passes it costs no less with a wait
+    // in its place whenever waiting is no dearer; searches need not try it.
+    // On maps with many gems those moves multiply the states an A* search
+    // walks through. A goal the clauses do not capture whole may name the
+    // item elsewhere, so then every item is kept.
+    if (items_ == ItemPruning::Reference || !goal_complete || in(goal_items_, i) || !in(idle_items_, i)) return true;
+    const int ag = m.index_of(agent);
+    return ag < 0 || ag >= m.num_agents() || spec.cost(a) < wait_cost[static_cast<size_t>(ag)];
   };
   for (pddl::ActionId a = 0; a < t.num_actions(); ++a) {
     const auto& ga = t.action(a);
     const std::string& nm = schemas[ga.schema].name;
     if (nm == "pickup" && ga.args.size() >= 2) {
-      keep_[a] = key_ok(ga.args[1]);
+      keep_[a] = item_ok(a, ga.args[0], ga.args[1]);
     } else if (nm == "handover" && ga.args.size() >= 3) {
-      keep_[a] = key_ok(ga.args[2]);
+      keep_[a] = item_ok(a, ga.args[0], ga.args[2]);
     } else if (nm == "unlock" && ga.args.size() >= 3) {
       int k = m.index_of(ga.args[1]), d = m.index_of(ga.args[2]);
       bool door_ok = d < 0 || in(nec_doors_, d);

@@ -42,7 +42,9 @@ using DkgClause = std::vector<DkgGoalAtom>;
 // their parent (as the reference's transform_goals does); a conjunction left
 // empty is true (one empty clause), a disjunction left empty is false (no
 // clauses). Static parts are already folded by the Task's compiler.
-std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, const pddl::CompiledCondition& goal);
+// `complete`, if given, tells whether nothing was dropped.
+std::vector<DkgClause> dkg_goal_clauses(const DkgMapAnalysis& map, const pddl::CompiledCondition& goal,
+                                        bool* complete = nullptr);
 
 // Minimum action costs over both agents (5.5 (c)).
 struct DkgMinCosts {
@@ -50,11 +52,25 @@ struct DkgMinCosts {
 };
 DkgMinCosts dkg_min_costs(const model::Specification& spec, const DkgMapAnalysis& map);
 
+// Non-key items that only pickup and handover actions name (gems, in the
+// paper's domain): taking or passing one changes nothing but its own place.
+// Like the key rules of 5.6, this reads the action names and arguments of the
+// Doors-Keys-Gems domain, not their preconditions.
+ObjMask dkg_idle_items(const DkgMapAnalysis& map);
+
+// Which pickups and handovers of non-key items A* expands.
+//   Reference  all of them (clips-spec.md 5.6).
+//   Idle       not those of an item the goal does not name and no other
+//              action uses, by an agent for whom waiting costs no more
+//              (prepare() explains why no plan's cost is lost).
+enum class ItemPruning { Reference, Idle };
+
 class DkgMstHeuristic : public heuristics::Heuristic {
  public:
-  explicit DkgMstHeuristic(std::shared_ptr<const DkgMapAnalysis> map = nullptr, int max_recurse_iters = 5);
+  explicit DkgMstHeuristic(std::shared_ptr<const DkgMapAnalysis> map = nullptr, int max_recurse_iters = 5,
+                           ItemPruning items = ItemPruning::Idle);
 
-  std::string name() const override { return "dkg-mst"; }
+  std::string name() const override { return items_ == ItemPruning::Reference ? "dkg-mst-reference" : "dkg-mst"; }
   bool admissible() const override { return false; }
   bool consistent() const override { return false; }
   // The root shapes only the pruning sets (keep()); the map analysis is fixed
@@ -101,6 +117,9 @@ class DkgMstHeuristic : public heuristics::Heuristic {
 
   std::shared_ptr<const DkgMapAnalysis> map_;
   int max_iters_;
+  ItemPruning items_;
+  ObjMask idle_items_ = 0;
+  const pddl::Task* idle_task_ = nullptr;  // the task idle_items_ was read from
   DkgMinCosts costs_;
   std::vector<DkgClause> clauses_;
   std::vector<ClauseInfo> info_;

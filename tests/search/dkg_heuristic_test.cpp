@@ -20,6 +20,7 @@
 #include "domains/dkg_heuristic.hpp"
 #include "domains/dkg_map.hpp"
 #include "pddl/parser.hpp"
+#include "search/rtaa.hpp"
 #include "test_paths.hpp"
 
 using namespace clips;
@@ -408,6 +409,46 @@ TEST(DkgMstHeuristic, PruningKeepsOnlyNecessaryKeysAndDoors) {
   EXPECT_TRUE(keep("(pickup human key3)"));
   EXPECT_TRUE(keep("(handover robot human key3)"));
   EXPECT_TRUE(keep("(unlock human key3 door3)"));
+}
+
+TEST(DkgMstHeuristic, IdleGemsAreNotPickedUpInsideSearches) {
+  // Map A with a second gem beside the human: for (has human gem1), taking
+  // gem2 (pickup 5, wait 0.6 in profile 1) only costs, so A* skips it; the
+  // reference rule and goals that name gem2 keep it.
+  Hand h({"..W..", ".....", "..W.."},
+         {{"human", "human", "", 1, 2}, {"robot", "robot", "", 1, 3}, {"key1", "key", "red", 1, 1},
+          {"door1", "door", "red", 3, 2, true}, {"gem1", "gem", "red", 5, 2}, {"gem2", "gem", "blue", 2, 2}});
+  auto keeps = [&](DkgMstHeuristic& heur, const std::string& goal, const std::string& action) {
+    auto spec = h.spec(goal);
+    heur.prepare(spec, h.task->initial_state());
+    auto id = h.task->find_action(action);
+    EXPECT_TRUE(id) << action;
+    return id && heur.keep(*id);
+  };
+  DkgMstHeuristic idle, reference(nullptr, 5, ItemPruning::Reference);
+  EXPECT_TRUE(dkg_idle_items(*DkgMapAnalysis::build(h.task, h.task->initial_state())) != 0);
+  EXPECT_FALSE(keeps(idle, "(has human gem1)", "(pickup human gem2)"));
+  EXPECT_TRUE(keeps(idle, "(has human gem1)", "(pickup human gem1)"));
+  EXPECT_TRUE(keeps(idle, "(has human gem1)", "(pickup human key1)"));
+  EXPECT_TRUE(keeps(reference, "(has human gem1)", "(pickup human gem2)"));
+  EXPECT_TRUE(keeps(idle, "(or (has human gem1) (has human gem2))", "(pickup human gem2)"));
+  // gem2 named by an atom the clauses drop: kept.
+  EXPECT_TRUE(keeps(idle, "(and (has human gem1) (not (offgrid gem2)))", "(pickup human gem2)"));
+  // With pickups cheaper than waiting a pickup may be the cheapest way to
+  // pass a turn, so it stays.
+  model::CostProfile cheap = model::dkg_profile(1);
+  for (auto& [key, c] : cheap.costs)
+    if (key.second == "pickup") c = 0.1;
+  model::Specification spec(h.task, "(has human gem1)", cheap);
+  idle.prepare(spec, h.task->initial_state());
+  EXPECT_TRUE(idle.keep(*h.task->find_action("(pickup human gem2)")));
+  // The values searches learn are unchanged here: RTAA* refinements with both rules agree.
+  auto pspec = std::make_shared<const model::Specification>(h.spec("(has human gem1)"));
+  search::Policy a(pspec, std::make_shared<DkgMstHeuristic>()),
+      b(pspec, std::make_shared<DkgMstHeuristic>(nullptr, 5, ItemPruning::Reference));
+  a.refine(h.task->initial_state(), {});
+  b.refine(h.task->initial_state(), {});
+  EXPECT_EQ(a.value(h.task->initial_state()), b.value(h.task->initial_state()));
 }
 
 TEST(DkgMstHeuristic, SharedMapAnalysisAndMemoGiveFreshValues) {
