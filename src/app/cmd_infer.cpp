@@ -127,8 +127,8 @@ void register_infer(CLI::App& app) {
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)")
       ->check(PositiveInteger);
   cmd->add_option("--heuristic", o->heuristic,
-                  "Heuristic of the refinements (default: the domain pack's; doors-keys-gems: dkg-mst, or "
-                  "dkg-mst-reference for the reference's pruning, which also expands moves of gems no goal needs)");
+                  "Heuristic of the refinements (default: the domain pack's inference heuristic; an unknown name "
+                  "lists the pack's heuristics)");
   add_particle_options(cmd, o->particles);
   cmd->add_flag("--explain", o->explain,
                 "Also show, per utterance and hypothesis (goal x cost profile), its likelihood and most probable "
