@@ -120,6 +120,13 @@ bool Belief::is_speaker_action(pddl::ActionId a) const {
   return speaker_ < 0 || (!args.empty() && args[0] == speaker_);
 }
 
+pddl::ObjectId Belief::acting_agent(const pddl::State& s) const {
+  const auto acts = task_->applicable_actions(s);
+  if (acts.empty()) return -1;
+  const auto& args = task_->action(acts.front()).args;
+  return args.empty() ? -1 : args[0];
+}
+
 void Belief::refine_all(const pddl::State& s) {
   std::vector<int> all(policies_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
@@ -136,18 +143,22 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs) {
     budget_stops_[h] += policies_[h].refine_step(s, options_.refine).stopped_by_budget;
   };
   if (pool_ && hs.size() > 1) {
-    // Longest first (by the last step's time): the step ends when the slowest
-    // thread does, and a long refinement started last would leave the other
-    // threads idle. The order does not change any result.
-    refine_seconds_.resize(policies_.size(), 0.0);
+    // Longest first: the step ends when the slowest thread does, and a long
+    // refinement started last would leave the other threads idle. Each
+    // hypothesis' time is predicted by its last refinement at a state where
+    // the same agent acts: with turns, the agents' steps differ (on the
+    // paper's maps the assistant's turns take about seven times the human's,
+    // per hypothesis unevenly), so the step just before is a poor guide. The
+    // order does not change any result.
+    std::vector<double>& last = refine_seconds_[acting_agent(s)];
+    last.resize(policies_.size(), 0.0);
     std::vector<size_t> order(hs.begin(), hs.end());
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return refine_seconds_[a] > refine_seconds_[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return last[a] > last[b]; });
     pool_->run(order.size(), [&](size_t i) {
       const size_t h = order[i];
       const auto t0 = std::chrono::steady_clock::now();
       refine_one(h);
-      refine_seconds_[h] = seconds_since(t0);
+      last[h] = seconds_since(t0);
     });
   } else {
     for (int h : hs) refine_one(static_cast<size_t>(h));

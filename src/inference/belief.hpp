@@ -42,6 +42,7 @@
 // each refinement is done at most once per hypothesis). Hypotheses no
 // particle holds keep stale policies; see sync_policies for assistance.
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -278,6 +279,7 @@ class Belief {
   // Sets the record's readable share, evidence weight and warning.
   void weigh_utterance(UtteranceRecord& rec) const;
   bool is_speaker_action(pddl::ActionId a) const;
+  pddl::ObjectId acting_agent(const pddl::State& s) const;  // see refine_seconds_
 
   std::shared_ptr<const pddl::Task> task_;
   domains::PackPtr pack_;
@@ -295,7 +297,9 @@ class Belief {
   int t_ = 0;
   pddl::ObjectId speaker_ = -1;
   std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
-  std::vector<double> refine_seconds_;      // per hypothesis, its last refinement (scheduling only)
+  // Scheduling only: per acting agent (the first argument of the state's
+  // first applicable action, -1 if none), each hypothesis' last refinement time.
+  std::map<pddl::ObjectId, std::vector<double>> refine_seconds_;
   std::vector<size_t> budget_stops_;        // per hypothesis (one writer each, also when threaded)
   size_t refinements_ = 0;
   // Particle mode only.

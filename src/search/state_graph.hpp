@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "pddl/task.hpp"
+#include "util/spin_mutex.hpp"
 
 namespace clips::search {
 
@@ -89,7 +90,7 @@ class StateGraph {
   std::unique_ptr<std::atomic<Successor*>[]> succ_chunks_;
   size_t succ_size_ = 0;  // successors stored (index of the next free slot)
 
-  mutable std::mutex mutex_;            // guards everything below and all writes
+  mutable util::SpinMutex mutex_;       // guards everything below and all writes
   std::vector<uint64_t> table_;         // open addressing: 0 = empty, else tag | (id + 1)
   std::vector<uint64_t> hashes_;        // per id
 };
