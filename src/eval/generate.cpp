@@ -303,18 +303,30 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
 
       // The goal is reached in the completion (its last action), so the split is before it.
       const size_t k = std::min(passive, L - 1);
-      const size_t u = static_cast<size_t>(rng.uniform_int(0, static_cast<int64_t>(k)));
-      const pddl::State& s_u = traj->states[u];
-      // The speaker's plan is the one inference scores the instruction with
-      // (utterance timing "after"): refined at s_0 at the start, then once
-      // per step at s_0 .. s_u (the step of a_{k+1} refines at s_k; an
-      // instruction after the last observed action is heard in s_k itself).
-      // Replayed from the start policy: u is drawn only once the sequence
-      // is known, and the refinements are few next to the sequence's.
+      // The speaker's plan at step j is the one inference scores an
+      // instruction there with (utterance timing "after"): refined at s_0 at
+      // the start, then once per step at s_0 .. s_j (the step of a_{k+1}
+      // refines at s_k; an instruction after the last observed action is
+      // heard in s_k itself). Replayed from the start policy once the
+      // sequence is known; the refinements are few next to the sequence's.
+      // The instruction's step is drawn among the steps where the joint plan
+      // gives the speaker something to ask (a non-empty command set): a
+      // speaker with nothing to ask would not speak, and an instruction drawn
+      // for no command says nothing of the goal (docs/decisions.md). Only
+      // when no step has a command is it drawn among all, with no command.
+      std::vector<std::vector<commands::Command>> asks(k + 1);
+      std::vector<size_t> can_ask;
       search::Policy speaker_policy = at_start;
-      if (search && u > 0)
-        for (size_t i = 0; i <= u; ++i) speaker_policy.refine_step(traj->states[i], budget);
-      const auto commands = speaker.commands_at(speaker_policy, s_u);
+      for (size_t j = 0; j <= k; ++j) {
+        if (search && j == 1) speaker_policy.refine_step(traj->states[0], budget);
+        if (search && j >= 1) speaker_policy.refine_step(traj->states[j], budget);
+        asks[j] = speaker.commands_at(speaker_policy, traj->states[j]);
+        if (!asks[j].empty()) can_ask.push_back(j);
+      }
+      const size_t u = can_ask.empty() ? static_cast<size_t>(rng.uniform_int(0, static_cast<int64_t>(k)))
+                                       : can_ask[rng.index(can_ask.size())];
+      const pddl::State& s_u = traj->states[u];
+      const auto& commands = asks[u];
       const commands::Command* command = commands.empty() ? nullptr : &commands[rng.index(commands.size())];
       std::optional<commands::Command> part;
       if (command) {

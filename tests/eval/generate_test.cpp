@@ -151,6 +151,51 @@ TEST(GenerateDataset, TheSpeakerPlansAsInferenceDoes) {
   EXPECT_GT(with_actions_before, 0) << "no plan checks a speaker who has acted first";
 }
 
+TEST(GenerateDataset, TheInstructionComesWhereTheSpeakerHasSomethingToAsk) {
+  // The instruction's step is drawn among the observed steps at which the
+  // speaker model lists commands for the true hypothesis; an instruction
+  // for no command is left only to plans where no step has one. Checked by
+  // replaying inference on every prefix of a plan that came out without a
+  // command. (On this seed, drawing the step among all steps gave plan
+  // 2.1.keys an instruction at a step with nothing to ask, though earlier
+  // steps had commands.)
+  GenerateOptions o = small(5);
+  o.map.width = o.map.height = 9;
+  o.map.counts = {{"gem", 4}, {"key", 2}, {"door", 2}};
+  o.problems = 2;
+  o.plans_per_problem = 3;
+  const GeneratedDataset gen = generate_dataset(o, &shared_lm());
+  TempDir dir("generate-asks");
+  write_dataset(gen, dir.str(), false);
+  const auto ds = data::Dataset::load(dir.str());
+  auto asks_at = [&](const GeneratedPlan& g, int j) {
+    data::PlanRecord prefix = ds.plan(g.id);
+    prefix.observed.actions.resize(static_cast<size_t>(j));
+    // Heard after j actions: inference then refines at s_j, as the speaker's plan is.
+    prefix.observed.utterances.at(0).index = j;
+    const auto run = inference::run_inference(ds, prefix, shared_lm());
+    const auto& b = *run.belief;
+    for (size_t h = 0; h < b.hypotheses().size(); ++h)
+      if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile) {
+        const inference::UtteranceModel speaker(ds.task(prefix.problem_id), ds.pack_ptr());
+        return !speaker.commands_at(b.policies()[h], b.state()).empty();
+      }
+    ADD_FAILURE() << "no true hypothesis";
+    return false;
+  };
+  int with_command = 0;
+  for (const GeneratedPlan& g : gen.plans) {
+    SCOPED_TRACE(g.id);
+    if (!g.command.empty()) {
+      ++with_command;
+      EXPECT_TRUE(asks_at(g, g.utterance_step));
+      continue;
+    }
+    for (int j = 0; j <= g.observed_steps; ++j) EXPECT_FALSE(asks_at(g, j)) << "the speaker could ask after " << j;
+  }
+  EXPECT_GT(with_command, 0);
+}
+
 TEST(GenerateDataset, TheSeedDecidesEveryByte) {
   GenerateOptions o = small(5);
   o.plans_per_problem = 1;
