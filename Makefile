@@ -37,7 +37,7 @@ test: build
 run: build
 	@bash scripts/main-job.sh $(BUILD_DIR) "$(DATASET)"
 
-# Scaling curves (docs/scaling/): about 25 min; SCALING_ARGS=--quick for a short run.
+# Scaling curves (docs/scaling/): about 20 min; SCALING_ARGS=--quick for a short run.
 bench-scaling: build
 	@$(BUILD_DIR)/clips bench --scaling --scaling-plans 3 --point-seconds 45 --out docs/scaling $(SCALING_ARGS)
 

@@ -36,7 +36,7 @@ clips::SessionOptions session_options(const std::string& method, const std::stri
                                       const std::string& lm_base_url, const std::string& lm_model, double lm_timeout,
                                       std::vector<std::string> goals, std::vector<std::string> cost_profiles,
                                       size_t max_nodes, int threads, int particles = 0,
-                                      uint64_t particle_seed = 1) {
+                                      uint64_t particle_seed = 1, const clips::SessionOptions& tuning = {}) {
   clips::SessionOptions o;
   o.method = parse_method(method);
   o.assistance = parse_assistance(assistance);
@@ -51,6 +51,11 @@ clips::SessionOptions session_options(const std::string& method, const std::stri
   if (particles < 0) throw clips::InputError("particles must be >= 0 (0: exact inference)");
   o.particles = particles;
   o.particle_seed = particle_seed;
+  o.ess_threshold = tuning.ess_threshold;
+  o.rejuvenation_moves = tuning.rejuvenation_moves;
+  o.rejuvenate = tuning.rejuvenate;
+  o.proposal_groups = tuning.proposal_groups;
+  o.particle_filters = tuning.particle_filters;
   return o;
 }
 
@@ -242,9 +247,16 @@ PYBIND11_MODULE(clips, m) {
              const std::string& assistance, const std::string& lm, const std::string& lm_base_url,
              const std::string& lm_model, double lm_timeout, std::vector<std::string> goals,
              std::vector<std::string> cost_profiles, size_t max_nodes, int threads, int particles,
-             uint64_t particle_seed) {
+             uint64_t particle_seed, double ess_threshold, int rejuvenation_moves, const std::string& rejuvenate,
+             int proposal_groups, const std::string& particle_filters) {
+            clips::SessionOptions tuning;
+            tuning.ess_threshold = ess_threshold;
+            tuning.rejuvenation_moves = rejuvenation_moves;
+            tuning.rejuvenate = rejuvenate;
+            tuning.proposal_groups = proposal_groups;
+            tuning.particle_filters = particle_filters;
             auto o = session_options(method, assistance, lm, lm_base_url, lm_model, lm_timeout, std::move(goals),
-                                     std::move(cost_profiles), max_nodes, threads, particles, particle_seed);
+                                     std::move(cost_profiles), max_nodes, threads, particles, particle_seed, tuning);
             py::gil_scoped_release unlocked;
             return clips::Session::open_dataset(dataset, problem, std::move(o));
           },
@@ -253,8 +265,11 @@ PYBIND11_MODULE(clips, m) {
           py::arg("lm_model") = "", py::arg("lm_timeout") = 120.0, py::arg("goals") = std::vector<std::string>{},
           py::arg("cost_profiles") = std::vector<std::string>{}, py::arg("max_nodes") = size_t{1} << 18,
           py::arg("threads") = 1, py::arg("particles") = 0, py::arg("particle_seed") = uint64_t{1},
+          py::arg("ess_threshold") = 0.5, py::arg("rejuvenation_moves") = 2, py::arg("rejuvenate") = "evidence",
+          py::arg("proposal_groups") = 8, py::arg("particle_filters") = "all",
           "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state); "
-          "particles > 0: particle inference with that many particles instead of exact enumeration")
+          "particles > 0: particle inference with that many particles instead of exact enumeration, tuned as "
+          "clips infer's options of the same names")
       .def_static(
           "open_domain",
           [](const std::string& domain_dir, const std::string& problem_file, const std::string& method,

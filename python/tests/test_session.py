@@ -132,6 +132,16 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
     assert sorted(one.values())[-1] == pytest.approx(1.0)  # a single particle sits on one goal
     with pytest.raises(clips.InputError, match="particles"):
         clips.Session.open_dataset(str(EXAMPLES), "e1", particles=-1)
+    # The tuning options reach the filter: one CLIPS filter resampling every
+    # step is another particle system than the default, still close to exact.
+    tuned = run(particles=2000, particle_seed=3, ess_threshold=1.0, particle_filters="clips",
+                rejuvenate="utterances")
+    assert tuned != many
+    assert sum(abs(tuned[g] - exact[g]) for g in exact) / 2 < 0.05
+    with pytest.raises(clips.InputError, match="particle filters 'some'"):
+        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_filters="some")
+    with pytest.raises(clips.InputError, match="ESS threshold"):
+        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, ess_threshold=2.0)
 
 
 def test_inference_releases_the_gil():

@@ -102,6 +102,12 @@ struct Session::Impl {
     io.threads = options.threads;
     io.particles = options.particles;
     io.particle_seed = options.particle_seed;
+    io.ess_threshold = options.ess_threshold;
+    io.rejuvenation_moves = options.rejuvenation_moves;
+    io.rejuvenate = inference::parse_rejuvenation(options.rejuvenate);
+    io.proposal_groups = options.proposal_groups;
+    io.particle_filters = inference::parse_particle_filters(options.particle_filters);
+    inference::check_options(io);
     belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
     roles = pack->roles();
     try {
