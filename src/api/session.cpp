@@ -100,14 +100,14 @@ struct Session::Impl {
     inference::InferenceOptions io;
     io.refine.max_nodes = options.max_nodes;
     io.threads = options.threads;
-    io.particles = options.particles;
-    io.particle_seed = options.particle_seed;
-    io.ess_threshold = options.ess_threshold;
-    io.rejuvenation_moves = options.rejuvenation_moves;
-    io.rejuvenate = inference::parse_rejuvenation(options.rejuvenate);
-    io.proposal_groups = options.proposal_groups;
-    io.particle_filters = inference::parse_particle_filters(options.particle_filters);
-    inference::check_options(io);
+    inference::apply_particle_settings({.particles = options.particles,
+                                        .seed = options.particle_seed,
+                                        .ess_threshold = options.ess_threshold,
+                                        .moves = options.rejuvenation_moves,
+                                        .rejuvenate = options.rejuvenate,
+                                        .groups = options.proposal_groups,
+                                        .filters = options.particle_filters},
+                                       io);
     belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
     roles = pack->roles();
     try {

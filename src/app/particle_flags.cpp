@@ -68,15 +68,4 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
       ->check(CLI::IsMember({"all", "clips"}));
 }
 
-void apply_particle_flags(const ParticleFlags& f, inference::InferenceOptions& o) {
-  o.particles = f.particles;
-  o.particle_seed = f.seed;
-  o.ess_threshold = f.ess_threshold;
-  o.rejuvenation_moves = f.moves;
-  o.rejuvenate = inference::parse_rejuvenation(f.rejuvenate);
-  o.proposal_groups = f.groups;
-  o.particle_filters = inference::parse_particle_filters(f.filters);
-  inference::check_options(o);
-}
-
 }  // namespace clips::app

@@ -60,6 +60,21 @@ std::string error_of(const GenerateOptions& o) {
   return "";
 }
 
+// What the CLIPS speaker model lists for the true hypothesis after inference
+// on `prefix` (the state and the policy the observer holds then).
+std::vector<commands::Command> true_speaker_commands(const data::Dataset& ds, const data::PlanRecord& prefix,
+                                                     const inference::InferenceOptions& io = {}) {
+  const auto run = inference::run_inference(ds, prefix, shared_lm(), io);
+  const auto& b = *run.belief;
+  for (size_t h = 0; h < b.hypotheses().size(); ++h)
+    if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile) {
+      const inference::UtteranceModel speaker(ds.task(prefix.problem_id), ds.pack_ptr());
+      return speaker.commands_at(b.policies()[h], b.state());
+    }
+  ADD_FAILURE() << prefix.id << ": no hypothesis is the true one";
+  return {};
+}
+
 TEST(GenerateDataset, SmallSetLoadsAndEveryPlanChecks) {
   const GeneratedDataset gen = generate_dataset(small(1), &shared_lm());
   ASSERT_EQ(gen.plans.size(), 3u);
@@ -131,17 +146,8 @@ TEST(GenerateDataset, TheSpeakerPlansAsInferenceDoes) {
     ASSERT_EQ(prefix.observed.utterances.size(), 1u);
     prefix.observed.actions.resize(static_cast<size_t>(g.utterance_step));
     with_actions_before += g.utterance_step > 0;
-    const auto run = inference::run_inference(ds, prefix, shared_lm(), io);
-    const auto& b = *run.belief;
-    int truth = -1;
-    for (size_t h = 0; h < b.hypotheses().size(); ++h)
-      if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile)
-        truth = static_cast<int>(h);
-    ASSERT_GE(truth, 0);
-    const inference::UtteranceModel speaker(ds.task(prefix.problem_id), ds.pack_ptr());
     std::vector<std::string> listed;
-    for (const auto& c : speaker.commands_at(b.policies()[static_cast<size_t>(truth)], b.state()))
-      listed.push_back(c.llm_form());
+    for (const auto& c : true_speaker_commands(ds, prefix, io)) listed.push_back(c.llm_form());
     if (g.command.empty()) {
       EXPECT_TRUE(listed.empty());
     } else {
@@ -173,15 +179,7 @@ TEST(GenerateDataset, TheInstructionComesWhereTheSpeakerHasSomethingToAsk) {
     prefix.observed.actions.resize(static_cast<size_t>(j));
     // Heard after j actions: inference then refines at s_j, as the speaker's plan is.
     prefix.observed.utterances.at(0).index = j;
-    const auto run = inference::run_inference(ds, prefix, shared_lm());
-    const auto& b = *run.belief;
-    for (size_t h = 0; h < b.hypotheses().size(); ++h)
-      if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile) {
-        const inference::UtteranceModel speaker(ds.task(prefix.problem_id), ds.pack_ptr());
-        return !speaker.commands_at(b.policies()[h], b.state()).empty();
-      }
-    ADD_FAILURE() << "no true hypothesis";
-    return false;
+    return !true_speaker_commands(ds, prefix).empty();
   };
   int with_command = 0;
   for (const GeneratedPlan& g : gen.plans) {
