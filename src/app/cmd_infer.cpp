@@ -168,7 +168,9 @@ void register_infer(CLI::App& app) {
       if (adhoc) j["problem"] = plan.problem_id;
       j["steps"] = nlohmann::json::array();
       for (const auto& st : run.steps) {
-        nlohmann::json step = {{"t", st.t}, {"posterior", st[modality].goals}};
+        // seconds: this step's wall time (refinements, scoring), to find the slow ones.
+        nlohmann::json step = {
+            {"t", st.t}, {"action", st.action}, {"seconds", st.seconds}, {"posterior", st[modality].goals}};
         if (o->explain && !st.utterances.empty()) step["utterances"] = explain_json(run, st, o->top);
         j["steps"].push_back(std::move(step));
       }
