@@ -59,10 +59,10 @@ struct AssistSetup {
   // picks up in a keys plan).
   std::function<std::optional<std::string>(pddl::ActionId)> option_of;
   search::SearchOptions refine_options;   // 2^16 nodes, 10 s per search by default
-  // False where the model's values are the heuristic itself (VirtualHome:
-  // V = -h_g, no search), so policies are read but never refined.
+  // False where the pack's model reads values off the heuristic itself
+  // (V = -h_g, no search), so policies are read but never refined.
   bool refine = true;
-  // VirtualHome's principal also takes the k-th completed-plan action when it
+  // A pack rule: the principal also takes the k-th completed-plan action when it
   // is legal in the current state, even off the completed trajectory
   // (clips-spec-virtual-home.md 8.3).
   bool follow_plan_by_index = false;

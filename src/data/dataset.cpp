@@ -33,10 +33,9 @@ void check_utterance_text(const std::string& text, const SourceLoc& loc) {
 }
 
 // utterances/{pragmatic,literal}/<plan>.txt hold exactly one utterance: one
-// non-blank line (surrounding whitespace stripped). Only Doors-Keys-Gems has
-// these files (VirtualHome's several utterances per plan live in the observed
-// plan as `;` lines), so a second non-blank line is an error, not a
-// continuation to drop silently.
+// non-blank line (surrounding whitespace stripped). Datasets with several
+// utterances per plan keep them in the observed plan as `;` lines instead,
+// so a second non-blank line is an error, not a continuation to drop silently.
 std::string utterance_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
@@ -371,7 +370,7 @@ const PlanRecord& Dataset::plan(const std::string& id) const {
     if (p.id == id) return p;
   for (auto& b : broken_)
     if (b.id == id) throw InputError("plan " + id + " could not be loaded: " + b.error);
-  // Accept a unique prefix such as "1.1" for VirtualHome's "1.1.stew_chicken".
+  // Accept a unique prefix such as "1.1" for a plan "1.1.<tag>".
   const PlanRecord* found = nullptr;
   for (auto& p : plans_)
     if (p.id.rfind(id + ".", 0) == 0) {

@@ -37,7 +37,7 @@ namespace {
 
 std::string hex(render::Rgb c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
 
-// Distinct line colours for goals without a colour of their own (VirtualHome).
+// Distinct line colours for goals without a colour of their own.
 const std::vector<std::string> kPalette = {"#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#b07aa1",
                                            "#76b7b2", "#edc948", "#9c755f", "#ff9da7", "#bab0ac"};
 

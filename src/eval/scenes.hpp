@@ -23,7 +23,7 @@ struct SceneExtras {
 // mDKG: walls, agents, keys (on the grid or held), doors (locked or open),
 // gems, the active agent.
 render::GridScene dkg_scene(const domains::DkgWorld& world, const pddl::State& s, const SceneExtras& extras = {});
-// VirtualHome: fixtures with their piles, where each agent is and what it holds.
+// Card scenes: fixtures with their piles, where each agent is and what it holds.
 render::HomeScene vh_scene(const domains::VhWorld& world, const pddl::State& s, const SceneExtras& extras = {});
 
 // Bars for a goal posterior; goals named after an object whose qualifier is a
@@ -47,7 +47,7 @@ struct PlanRun {
 struct PlanFrames {
   domains::SceneKind scene = domains::SceneKind::Grid;
   std::vector<render::GridScene> grid;  // grid scenes (mDKG)
-  std::vector<render::HomeScene> home;  // cards scenes (VirtualHome)
+  std::vector<render::HomeScene> home;  // card scenes
   int observed_steps = 0;               // T
   int assisted_steps = 0;               // A; frames = T + 1 + A
   size_t size() const { return grid.empty() ? home.size() : grid.size(); }

@@ -35,16 +35,6 @@ TemperatureWeights inverse_gamma_prior(double shape, double scale) {
   return w;
 }
 
-const TemperatureWeights& dkg_temperature_prior() {
-  static const TemperatureWeights w = inverse_gamma_prior(0.5, 1.0);
-  return w;
-}
-
-const TemperatureWeights& vh_temperature_prior() {
-  static const TemperatureWeights w = inverse_gamma_prior(1.0, 2.0);
-  return w;
-}
-
 void boltzmann_log_probs(std::span<const double> q, double temperature, std::vector<double>& out) {
   out.assign(q.size(), kNegInf);
   double m = kNegInf;

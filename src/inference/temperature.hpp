@@ -21,9 +21,7 @@ const TemperatureWeights& temperature_grid();
 // normalised: w_k ∝ T_k^(-shape-1) exp(-scale / T_k). This is the reference's
 // discretisation (no Jacobian; spec 13 item 4), not a Gamma prior on β.
 TemperatureWeights inverse_gamma_prior(double shape, double scale);
-// mDKG: shape 0.5, scale 1 (spec 6). VirtualHome: shape 1, scale 2 (VH spec 5).
-const TemperatureWeights& dkg_temperature_prior();
-const TemperatureWeights& vh_temperature_prior();
+// Each domain pack names its shape and scale (PackSpec inference settings).
 
 // log P_T(a | s) for every action, from the Q-values of all available actions:
 // log softmax(Q / T) with the maximum subtracted first, so very negative Q are

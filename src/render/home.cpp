@@ -1,4 +1,4 @@
-// VirtualHome scenes: one card per fixture with its piles of items, the
+// Card scenes: one card per fixture with its piles of items, the
 // agents standing at it, an agent panel, caption and posterior chart.
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-// Cairo renderings of mDKG grid scenes and VirtualHome scenes.
+// Cairo renderings of grid scenes and card scenes (fixtures with their items).
 #pragma once
 
 #include <filesystem>

@@ -63,7 +63,7 @@ struct GridScene {
   }
 };
 
-// ---- VirtualHome ---------------------------------------------------------------
+// ---- card scenes: fixtures with piles of items ----------------------------------
 
 struct HomeFixture {
   std::string name{};  // "table1", "cabinet3", "fridge1"

@@ -27,8 +27,10 @@ constexpr std::array<Rgb, 12> kPastels{{{255, 196, 160}, {255, 226, 150}, {196, 
                                         {245, 180, 210}, {230, 205, 170}, {200, 210, 220},
                                         {250, 170, 160}, {215, 225, 140}, {180, 180, 235}}};
 
-// The VirtualHome item types, assigned so that the types of one problem
-// never share a colour; other types fall back to a hash.
+// Item types of the bundled household pack (data/domains/virtual-home),
+// assigned so that the types of one problem never share a colour; other
+// types fall back to a hash. (Domain data outside its pack: a pack field
+// for item colours would be its place.)
 constexpr std::array<std::pair<std::string_view, int>, 19> kItemTypes{{
     {"onion", 0}, {"tomato", 9}, {"potato", 7}, {"carrot", 1}, {"wine", 5}, {"chicken", 6},
     {"salmon", 4}, {"cucumber", 2}, {"cuttingboard", 10}, {"chefknife", 8}, {"cutleryknife", 3},

@@ -42,7 +42,7 @@ Rgb tint(Rgb c, double amount);    // mixes towards white, amount in [0,1]
 // their shades, pastel item colours), without duplicates.
 std::vector<Rgb> theme_colours();
 
-// Pastel colour of a VirtualHome item type, e.g. "plate" (stable across runs).
+// Pastel colour of an item type on a card scene, e.g. "plate" (stable across runs).
 Rgb item_colour(std::string_view item_type);
 
 }  // namespace clips::render

@@ -95,8 +95,9 @@ TEST(Belief, CorridorPosteriorAfterOneStepMatchesHandComputation) {
     EXPECT_EQ(task->action_name(qs[2].action), "(wait human)");
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(qs[i].q, c.q[i], 1e-9) << "h=" << c.h << " i=" << i;
     L[c.h] = 0;
+    const TemperatureWeights prior = inverse_gamma_prior(0.5, 1.0);  // mDKG's (spec 6)
     for (int k = 0; k < kNumTemperatures; ++k)
-      L[c.h] += dkg_temperature_prior()[k] * std::exp(boltzmann_log_probs(c.q, temperature_grid()[k])[0]);
+      L[c.h] += prior[k] * std::exp(boltzmann_log_probs(c.q, temperature_grid()[k])[0]);
   }
   const StepRecord r = b.observe(act(*task, "(left human)"), s0);
   const double p_gem1 = (L[0] + L[1]) / (L[0] + L[1] + L[2] + L[3]);

@@ -11,6 +11,16 @@ namespace {
 
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 
+// The priors the two paper domains' packs name (clips-spec.md 6, VH spec 5).
+const TemperatureWeights& dkg_temperature_prior() {
+  static const TemperatureWeights w = inverse_gamma_prior(0.5, 1.0);
+  return w;
+}
+const TemperatureWeights& vh_temperature_prior() {
+  static const TemperatureWeights w = inverse_gamma_prior(1.0, 2.0);
+  return w;
+}
+
 TEST(TemperatureGrid, ThirtyThreePointsFromOneEighthTo32) {
   const auto& g = temperature_grid();
   EXPECT_DOUBLE_EQ(g.front(), 0.125);
