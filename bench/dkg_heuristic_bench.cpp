@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "data/dataset.hpp"
+#include "domains/pack.hpp"
 #include "domains/dkg_heuristic.hpp"
 #include "pddl/plan.hpp"
 
@@ -45,7 +46,7 @@ struct Corpus {
       // The completion ends with (pickup human gemN): the true goal.
       const auto& last = ps.task->action(comp.actions.back());
       std::string goal = "(has human " + ps.task->object_name(last.args[1]) + ")";
-      ps.spec = std::make_shared<model::Specification>(ps.task, goal, model::dkg_profile(p.tag == "doors" ? 1 : 3));
+      ps.spec = std::make_shared<model::Specification>(ps.task, goal, domains::builtin_pack("doors-keys-gems")->cost_profile(p.tag == "doors" ? "C1" : "C3"));
       ps.states = obs.states;
       ps.states.insert(ps.states.end(), comp.states.begin() + 1, comp.states.end());
       total += ps.states.size();

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "data/dataset.hpp"
+#include "domains/pack.hpp"
 #include "heuristics/basic.hpp"
 #include "search/astar.hpp"
 
@@ -67,7 +68,7 @@ static void BM_AStarBlindExpansions(benchmark::State& st) {
   std::set<std::string> seen;
   for (auto& p : c.ds.plans())
     if (seen.insert(p.problem_id).second)
-      specs.emplace_back(c.ds.task(p.problem_id), "(has human gem1)", model::dkg_profile(1));
+      specs.emplace_back(c.ds.task(p.problem_id), "(has human gem1)", domains::builtin_pack("doors-keys-gems")->cost_profile("C1"));
   heuristics::BlindHeuristic blind;
   search::SearchOptions o;
   o.max_nodes = 20000;

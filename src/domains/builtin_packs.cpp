@@ -62,12 +62,13 @@ class DkgPack : public Pack {
       }
   }
 
-  // "1".."4" and "C1".."C4" name the paper's profiles.
+  // The paper's profiles C1..C4 are the pack's data (pack.json); "1".."4"
+  // and "c1".."c4" name them too.
   model::CostProfile cost_profile(const std::string& which) const override {
     if (which == "unit" || which == "task") return Pack::cost_profile(which);
     std::string w = which;
     if (!w.empty() && (w[0] == 'C' || w[0] == 'c')) w = w.substr(1);
-    if (w == "1" || w == "2" || w == "3" || w == "4") return model::dkg_profile(std::stoi(w));
+    if (w == "1" || w == "2" || w == "3" || w == "4") return Pack::cost_profile("C" + w);
     throw InputError("--costs must be 1..4 (C1..C4), 'unit' or 'task' for doors-keys-gems, got '" + which + "'");
   }
 

@@ -165,6 +165,10 @@ struct PackSpec {
   // The plan tags a plan may have, when they mean something (mDKG: keys, doors).
   std::vector<std::string> plan_tags;
   SceneKind scene = SceneKind::Text;
+  // Fills of a cards scene by type (an object's name without its trailing
+  // digits: "plate" for "plate3") as "#rrggbb"; types not listed get a
+  // pastel from a hash of the type (items) or grey (fixtures).
+  std::map<std::string, std::string> scene_colours;
   std::string rules_text;  // the world's rules in English, for the multimodal LLM baseline
 };
 

@@ -1,5 +1,7 @@
 // Reading pack.json into a PackSpec. Every field is optional except "domain";
 // unknown fields and bad values are errors naming the file and the field.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -116,7 +118,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   const Fields f(source);
   f.only(doc, "",
          {"domain", "code", "grounding", "roles", "goals", "cost_profiles", "default_cost_profile", "inference", "language", "fewshot",
-          "literal_listener", "assistance_options", "max_utterances_per_plan", "plan_tags", "scene", "rules_text",
+          "literal_listener", "assistance_options", "max_utterances_per_plan", "plan_tags", "scene", "scene_colours", "rules_text",
           "embedded_corpus", "comment"});
   PackSpec s;
   s.source = source;
@@ -308,6 +310,21 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   if (doc.contains("scene"))
     s.scene = f.choice<SceneKind>(doc["scene"], "scene",
                                   {{"text", SceneKind::Text}, {"grid", SceneKind::Grid}, {"cards", SceneKind::Cards}});
+  if (doc.contains("scene_colours")) {
+    const json& c = doc["scene_colours"];
+    if (!c.is_object()) f.fail("scene_colours", "expected an object {\"<type>\": \"#rrggbb\"}");
+    for (const auto& [type, value] : c.items()) {
+      const std::string path = "scene_colours." + type;
+      if (type == "comment") continue;
+      const std::string hex = f.text(value, path);
+      const bool ok = hex.size() == 7 && hex[0] == '#' &&
+                      std::all_of(hex.begin() + 1, hex.end(), [](char ch) { return std::isxdigit(static_cast<unsigned char>(ch)); });
+      if (!ok) f.fail(path, "expected a colour \"#rrggbb\", got \"" + hex + "\"");
+      if (type.empty() || std::isdigit(static_cast<unsigned char>(type.back())))
+        f.fail(path, "a type is a name without trailing digits (\"plate\" colours plate1, plate2, ...)");
+      s.scene_colours[type] = hex;
+    }
+  }
   if (doc.contains("rules_text")) s.rules_text = f.text(doc["rules_text"], "rules_text");
   if (doc.contains("embedded_corpus")) s.embedded_corpus = f.strings(doc["embedded_corpus"], "embedded_corpus");
   return s;

@@ -1,5 +1,6 @@
 #include "eval/scenes.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 
@@ -45,8 +46,20 @@ render::GridScene dkg_scene(const domains::DkgWorld& w, const pddl::State& s, co
   return scene;
 }
 
-render::HomeScene vh_scene(const domains::VhWorld& w, const pddl::State& s, const SceneExtras& extras) {
+std::map<std::string, render::Rgb> scene_colours(const domains::Pack& pack) {
+  std::map<std::string, render::Rgb> out;
+  for (const auto& [type, hex] : pack.spec().scene_colours) {
+    // The pack reader checked the "#rrggbb" form.
+    const unsigned long v = std::stoul(hex.substr(1), nullptr, 16);
+    out[type] = {static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>(v >> 8), static_cast<std::uint8_t>(v)};
+  }
+  return out;
+}
+
+render::HomeScene vh_scene(const domains::Pack& pack, const domains::VhWorld& w, const pddl::State& s,
+                           const SceneExtras& extras) {
   render::HomeScene scene;
+  scene.type_colours = scene_colours(pack);
   for (ObjectId f : w.fixtures()) {
     render::HomeFixture fx;
     fx.name = w.name(f);
@@ -157,7 +170,7 @@ PlanFrames plan_frames(const data::Dataset& ds, const data::PlanRecord& plan, co
     domains::VhWorld world(*task);
     for (size_t t = 0; t < states.size(); ++t) {
       SceneExtras ex{caption_at(plan, static_cast<int>(t)), title(static_cast<int>(t)), bars_at(static_cast<int>(t)), {}};
-      out.home.push_back(vh_scene(world, states[t], ex));
+      out.home.push_back(vh_scene(ds.pack(), world, states[t], ex));
     }
   } else {
     domains::DkgWorld world(*task);

@@ -2,6 +2,7 @@
 // Engine states -> render scenes (render/scene.hpp), and the frame sequence of
 // one plan: the observed prefix followed by an assisted continuation, with the
 // goal posterior beside every frame.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,12 @@ struct SceneExtras {
 // mDKG: walls, agents, keys (on the grid or held), doors (locked or open),
 // gems, the active agent.
 render::GridScene dkg_scene(const domains::DkgWorld& world, const pddl::State& s, const SceneExtras& extras = {});
-// Card scenes: fixtures with their piles, where each agent is and what it holds.
-render::HomeScene vh_scene(const domains::VhWorld& world, const pddl::State& s, const SceneExtras& extras = {});
+// Card scenes: fixtures with their piles, where each agent is and what it
+// holds, filled with the pack's scene colours.
+render::HomeScene vh_scene(const domains::Pack& pack, const domains::VhWorld& world, const pddl::State& s,
+                           const SceneExtras& extras = {});
+// A pack's scene colours ("#rrggbb" by type) as render colours.
+std::map<std::string, render::Rgb> scene_colours(const domains::Pack& pack);
 
 // Bars for a goal posterior; goals named after an object whose qualifier is a
 // colour (mDKG gems) get that colour.

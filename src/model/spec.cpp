@@ -9,22 +9,6 @@ double CostProfile::cost(const std::string& agent, const std::string& action) co
   return it == costs.end() ? default_cost : it->second;
 }
 
-CostProfile dkg_profile(int index) {
-  if (index < 1 || index > 4) throw InputError("cost profile must be 1..4 (C1..C4), got " + std::to_string(index));
-  CostProfile p;
-  p.name = "C" + std::to_string(index);
-  bool human_twice = index == 2 || index == 4;   // C2, C4: other human actions cost 2
-  bool robot_unlock5 = index == 3 || index == 4; // C3, C4: robot unlocking costs 5
-  double h = human_twice ? 2.0 : 1.0;
-  for (const char* a : {"up", "down", "left", "right", "unlock", "handover"}) p.costs[{"human", a}] = h;
-  p.costs[{"human", "pickup"}] = 5.0;
-  p.costs[{"human", "wait"}] = 0.6;
-  for (const char* a : {"up", "down", "left", "right", "pickup", "handover"}) p.costs[{"robot", a}] = 1.0;
-  p.costs[{"robot", "unlock"}] = robot_unlock5 ? 5.0 : 1.0;
-  p.costs[{"robot", "wait"}] = 0.6;
-  return p;
-}
-
 CostProfile unit_profile() {
   CostProfile p;
   p.name = "unit";

@@ -28,8 +28,6 @@ struct CostProfile {
   double cost(const std::string& agent, const std::string& action) const;
 };
 
-// The four mDKG profiles C1..C4 of clips-spec.md 4.2 (index 1..4).
-CostProfile dkg_profile(int index);
 // Unit costs for every action (domains whose pack names no cost rules).
 CostProfile unit_profile();
 // Costs from the task itself ((increase (total-cost) n) effects), for :action-costs domains.

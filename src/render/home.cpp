@@ -21,12 +21,15 @@ std::string item_type(const std::string& item) {
   return item.substr(0, end);
 }
 
-Rgb fixture_colour(const std::string& name) {
-  const std::string t = item_type(name);
-  if (t == "table") return theme::table;
-  if (t == "fridge") return theme::fridge;
-  if (t == "cabinet") return theme::cabinet;
-  return theme::neutral;
+Rgb fixture_colour(const HomeScene& s, const std::string& name) {
+  const auto it = s.type_colours.find(item_type(name));
+  return it == s.type_colours.end() ? theme::neutral : it->second;
+}
+
+Rgb item_fill(const HomeScene& s, const std::string& item) {
+  const std::string t = item_type(item);
+  const auto it = s.type_colours.find(t);
+  return it == s.type_colours.end() ? hashed_pastel(t) : it->second;
 }
 
 struct Metrics {
@@ -71,9 +74,8 @@ int items_height(const HomeFixture& f, const Metrics& m) {
   return h;
 }
 
-void draw_pill(cairo_t* cr, const std::string& item, double x, double y, double w, double h,
+void draw_pill(cairo_t* cr, Rgb c, const std::string& item, double x, double y, double w, double h,
                int font) {
-  const Rgb c = item_colour(item_type(item));
   set_rgb(cr, c);
   rounded_rect(cr, x + 0.5, y + 0.5, w - 1, h - 1, h * 0.3);
   cairo_fill_preserve(cr);
@@ -141,7 +143,7 @@ Image render_png(const HomeScene& s, const RenderOptions& o) {
   for (std::size_t i = 0; i < s.fixtures.size(); ++i) {
     const HomeFixture& f = s.fixtures[i];
     const Rect& b = L.fixture_boxes[i];
-    const Rgb head = fixture_colour(f.name);
+    const Rgb head = fixture_colour(s, f.name);
     // Card body, then the coloured header with the fixture name.
     set_rgb(cr, theme::panel);
     rounded_rect(cr, b.x + 0.5, b.y + 0.5, b.w - 1, b.h - 1, m.pad);
@@ -175,7 +177,7 @@ Image render_png(const HomeScene& s, const RenderOptions& o) {
       if (pile.empty()) continue;
       const double top = y;
       for (const auto& it : pile) {
-        draw_pill(cr, it, px, y, pw, m.pill, m.font);
+        draw_pill(cr, item_fill(s, it), it, px, y, pw, m.pill, m.font);
         y += m.pill + m.pill_gap;
       }
       if (pile.size() > 1) {
@@ -218,7 +220,7 @@ Image render_png(const HomeScene& s, const RenderOptions& o) {
           draw_text(cr, x, baseline, "\u2026", theme::muted);
           break;
         }
-        draw_pill(cr, it, x, y + (m.agent_row - m.pill) / 2.0, w, m.pill, m.font);
+        draw_pill(cr, item_fill(s, it), it, x, y + (m.agent_row - m.pill) / 2.0, w, m.pill, m.font);
         x += w + m.pad;
       }
     }

@@ -2,9 +2,12 @@
 // the caller (eval/app) converts engine states into these.
 #pragma once
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "render/image.hpp"
 
 namespace clips::render {
 
@@ -86,6 +89,10 @@ struct HomeScene {
   std::string caption{};
   std::string title{};
   std::vector<PosteriorBar> bars;  // labels like "set_table2"
+  // Fills by type, the name without its trailing digits ("plate" for
+  // "plate3"), from the domain's pack. A fixture of another type is grey, an
+  // item of another type gets a pastel picked by a hash of its type.
+  std::map<std::string, Rgb> type_colours;
 };
 
 // ---- Options -------------------------------------------------------------------

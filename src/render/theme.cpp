@@ -22,20 +22,10 @@ constexpr std::array<Named, 5> kNamed{{{"red", {214, 46, 46}},
                                       {"green", {38, 158, 70}},
                                       {"pink", {236, 108, 178}}}};
 
-constexpr std::array<Rgb, 12> kPastels{{{255, 196, 160}, {255, 226, 150}, {196, 230, 160},
-                                        {160, 220, 210}, {168, 200, 245}, {206, 186, 240},
-                                        {245, 180, 210}, {230, 205, 170}, {200, 210, 220},
-                                        {250, 170, 160}, {215, 225, 140}, {180, 180, 235}}};
-
-// Item types of the bundled household pack (data/domains/virtual-home),
-// assigned so that the types of one problem never share a colour; other
-// types fall back to a hash. (Domain data outside its pack: a pack field
-// for item colours would be its place.)
-constexpr std::array<std::pair<std::string_view, int>, 19> kItemTypes{{
-    {"onion", 0}, {"tomato", 9}, {"potato", 7}, {"carrot", 1}, {"wine", 5}, {"chicken", 6},
-    {"salmon", 4}, {"cucumber", 2}, {"cuttingboard", 10}, {"chefknife", 8}, {"cutleryknife", 3},
-    {"cutleryfork", 11}, {"plate", 4}, {"bowl", 1}, {"juice", 1}, {"cupcake", 6},
-    {"cheese", 10}, {"wineglass", 3}, {"waterglass", 8}}};
+const std::vector<Rgb> kPastels{{255, 196, 160}, {255, 226, 150}, {196, 230, 160}, {160, 220, 210},
+                                 {168, 200, 245}, {206, 186, 240}, {245, 180, 210}, {230, 205, 170},
+                                 {200, 210, 220}, {250, 170, 160}, {215, 225, 140}, {180, 180, 235}};
+const std::vector<Rgb> kCardHeaders{{205, 160, 110}, {168, 206, 232}, {206, 196, 180}};
 
 std::uint8_t clamp_byte(double v) {
   return static_cast<std::uint8_t>(std::clamp(v + 0.5, 0.0, 255.0));
@@ -60,18 +50,18 @@ Rgb tint(Rgb c, double a) {
           clamp_byte(c.b + (255 - c.b) * a)};
 }
 
-Rgb item_colour(std::string_view type) {
-  for (const auto& [name, i] : kItemTypes)
-    if (name == type) return kPastels[i];
-  return kPastels[util::fnv1a32(type) % kPastels.size()];
-}
+const std::vector<Rgb>& pastel_colours() { return kPastels; }
+const std::vector<Rgb>& card_header_colours() { return kCardHeaders; }
+
+Rgb hashed_pastel(std::string_view type) { return kPastels[util::fnv1a32(type) % kPastels.size()]; }
 
 std::vector<Rgb> theme_colours() {
   using namespace theme;
   std::vector<Rgb> out{background, floor, gridline, wall, wall_edge, text, muted, human,
                        shade(human, 0.6), robot, shade(robot, 0.6), robot_eye, marker,
-                       track, panel, panel_edge, neutral, shade(neutral, 0.6), table, fridge, cabinet,
-                       tint(marker, 0.8)};
+                       track, panel, panel_edge, neutral, shade(neutral, 0.6)};
+  for (const auto& c : kCardHeaders) out.push_back(c);
+  out.push_back(tint(marker, 0.8));
   for (const auto& n : kNamed) {
     out.push_back(n.rgb);
     out.push_back(shade(n.rgb, 0.6));

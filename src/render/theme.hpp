@@ -25,10 +25,13 @@ inline constexpr Rgb track{230, 230, 236};
 inline constexpr Rgb panel{250, 248, 242};
 inline constexpr Rgb panel_edge{205, 200, 188};
 inline constexpr Rgb neutral{150, 150, 160};
-inline constexpr Rgb table{205, 160, 110};
-inline constexpr Rgb fridge{168, 206, 232};
-inline constexpr Rgb cabinet{206, 196, 180};
 }  // namespace theme
+
+// Fills that quantise exactly in GIFs (with the named colours and the theme):
+// the pastels that items of unlisted types get, and a few card-header tints.
+// A pack's scene colours may be any colour; these stay exact in animations.
+const std::vector<Rgb>& pastel_colours();
+const std::vector<Rgb>& card_header_colours();
 
 // "red", "yellow", "blue", "green", "pink" (case-insensitive); anything else,
 // including "", gives theme::neutral.
@@ -42,7 +45,8 @@ Rgb tint(Rgb c, double amount);    // mixes towards white, amount in [0,1]
 // their shades, pastel item colours), without duplicates.
 std::vector<Rgb> theme_colours();
 
-// Pastel colour of an item type on a card scene, e.g. "plate" (stable across runs).
-Rgb item_colour(std::string_view item_type);
+// The pastel an item type without a colour of its own gets on a card scene
+// (a hash of the type: stable across runs).
+Rgb hashed_pastel(std::string_view item_type);
 
 }  // namespace clips::render

@@ -318,7 +318,7 @@ json PlaySession::scene() const {
     j["objects"] = std::move(objs);
     j["active"] = g.active_agent;
   } else {
-    const auto h = eval::vh_scene(*vh_, s);
+    const auto h = eval::vh_scene(*pack_, *vh_, s);
     j["kind"] = "home";
     json fixtures = json::array();
     for (const auto& f : h.fixtures) fixtures.push_back({{"name", f.name}, {"piles", f.piles}});

@@ -14,6 +14,7 @@
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"
 #include "util/error.hpp"
+#include "dkg_profiles.hpp"
 
 using namespace clips;
 
@@ -43,7 +44,7 @@ struct World {
 
   std::shared_ptr<search::Policy> policy(int gem) {
     auto spec = std::make_shared<model::Specification>(task, "(has human gem" + std::to_string(gem) + ")",
-                                                       model::dkg_profile(3));
+                                                       fixtures::dkg_profile(3));
     return std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
   }
   assist::AssistSetup setup() {
@@ -242,7 +243,7 @@ TEST(QmdpOffline, RecordedWaitIsNotReplayedWhenTheAssistantWaitsToo) {
   std::vector<assist::Hypothesis> belief;
   for (int gem = 1; gem <= 3; ++gem) {
     auto spec = std::make_shared<model::Specification>(task, "(has human gem" + std::to_string(gem) + ")",
-                                                       model::dkg_profile(3));
+                                                       fixtures::dkg_profile(3));
     belief.push_back({1.0 / 3, std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>())});
   }
   auto r = assist::qmdp_offline(setup, belief, 1);

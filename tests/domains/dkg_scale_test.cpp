@@ -15,6 +15,7 @@
 #include "search/astar.hpp"
 #include "test_paths.hpp"
 #include "util/rng.hpp"
+#include "dkg_profiles.hpp"
 
 namespace clips::domains {
 namespace {
@@ -71,7 +72,7 @@ TEST(DkgScale, FortyByFortyMapWithSixtyFourGems) {
   const auto view = map->read(t.initial_state());
   EXPECT_TRUE(map->locked(view, door2));  // door bits live in the 128-bit locked mask too
 
-  model::Specification spec(big.task, "(has human gem9)", model::dkg_profile(3));
+  model::Specification spec(big.task, "(has human gem9)", fixtures::dkg_profile(3));
   DkgMstHeuristic mst(map);
   mst.prepare(spec, t.initial_state());
   EXPECT_TRUE(mst.goal_items() == mask_bit(g64));

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <unistd.h>
 
@@ -72,8 +73,25 @@ TEST(BuiltinPacks, CompiledCopiesEqualTheShippedFiles) {
     EXPECT_EQ(shipped.inference.heuristic, built.inference.heuristic);
     EXPECT_EQ(shipped.cost_profiles.size(), built.cost_profiles.size());
     EXPECT_EQ(shipped.rules_text, built.rules_text);
+    EXPECT_EQ(shipped.scene_colours, built.scene_colours);
   }
   EXPECT_EQ(builtin_pack_names(), (std::vector<std::string>{"doors-keys-gems", "virtual-home"}));
+}
+
+// clips-spec.md 4.2, written out here so the test does not read the pack to
+// check the pack: the human's pickup 5 and wait 0.6 everywhere, its other
+// actions 2 under C2/C4; the robot's unlock 5 under C3/C4, its other
+// actions 1, wait 0.6.
+model::CostProfile paper_profile(int index) {
+  model::CostProfile p;
+  const double human = index == 2 || index == 4 ? 2.0 : 1.0;
+  for (const char* a : {"up", "down", "left", "right", "unlock", "handover"}) p.costs[{"human", a}] = human;
+  p.costs[{"human", "pickup"}] = 5.0;
+  p.costs[{"human", "wait"}] = 0.6;
+  for (const char* a : {"up", "down", "left", "right", "pickup", "handover"}) p.costs[{"robot", a}] = 1.0;
+  p.costs[{"robot", "unlock"}] = index >= 3 ? 5.0 : 1.0;
+  p.costs[{"robot", "wait"}] = 0.6;
+  return p;
 }
 
 TEST(BuiltinPacks, PaperSettings) {
@@ -82,14 +100,25 @@ TEST(BuiltinPacks, PaperSettings) {
   EXPECT_EQ(dkg->roles().noop_cost, 0.6);
   EXPECT_EQ(dkg->spec().inference.heuristic, "dkg-mst");
   EXPECT_EQ(dkg->default_admissible_heuristic(), "dkg-dist");
-  // keys {C3, C4}, doors {C1, C2}, each equal to the paper's profile.
+  // keys {C3, C4}, doors {C1, C2}, each equal to the paper's table.
   auto keys = dkg->profiles_for("keys");
   ASSERT_EQ(keys.profiles.size(), 2u);
   EXPECT_EQ(keys.profiles[0].name, "C3");
-  EXPECT_EQ(keys.profiles[0].costs, model::dkg_profile(3).costs);
-  EXPECT_EQ(dkg->profiles_for("doors").profiles[1].costs, model::dkg_profile(2).costs);
+  EXPECT_EQ(keys.profiles[0].costs, paper_profile(3).costs);
+  EXPECT_EQ(keys.profiles[1].costs, paper_profile(4).costs);
+  auto doors = dkg->profiles_for("doors");
+  ASSERT_EQ(doors.profiles.size(), 2u);
+  EXPECT_EQ(doors.profiles[0].costs, paper_profile(1).costs);
+  EXPECT_EQ(doors.profiles[1].costs, paper_profile(2).costs);
   EXPECT_THROW(dkg->check_plan_tag("gems", "1.1.gems"), InputError);
-  EXPECT_EQ(dkg->cost_profile("2").costs, model::dkg_profile(2).costs);
+  // "C2", "c2" and "2" all name C2; anything else is an error naming the choices.
+  for (const char* name : {"C2", "c2", "2"}) {
+    const model::CostProfile c2 = dkg->cost_profile(name);
+    EXPECT_EQ(c2.name, "C2") << name;
+    EXPECT_EQ(c2.costs, paper_profile(2).costs) << name;
+    EXPECT_EQ(c2.default_cost, 1.0) << name;
+  }
+  for (const char* bad : {"5", "C0", "C12", ""}) EXPECT_THROW(dkg->cost_profile(bad), InputError) << bad;
   auto vh = builtin_pack("virtual-home");
   EXPECT_EQ(vh->roles().assistant, "helper");
   EXPECT_EQ(vh->roles().horizon, 50);
@@ -179,6 +208,23 @@ constexpr const char* kPantryPack = R"j({
                "qualifier": {"predicate": "isripe"}},
   "assistance_options": [{"action": "take", "object_arg": 2, "object_type": "fruit"}]
 })j";
+
+TEST(PackFile, SceneColoursAreHexByType) {
+  const PackSpec s = parse_pack_spec(
+      R"j({"domain": "k", "scene": "cards", "scene_colours": {"comment": "x", "plate": "#A8c8f5", "shelf": "#000000"}})j",
+      "t/pack.json");
+  EXPECT_EQ(s.scene_colours, (std::map<std::string, std::string>{{"plate", "#A8c8f5"}, {"shelf", "#000000"}}));
+  for (const char* bad : {R"j("#12345")j", R"j("12345678")j", R"j("#12345g")j", "7"}) {
+    const std::string e = error_of(std::string(R"j({"domain": "k", "scene_colours": {"plate": )j") + bad + "}}");
+    EXPECT_NE(e.find("scene_colours.plate"), std::string::npos) << bad << ": " << e;
+  }
+  EXPECT_NE(error_of(R"j({"domain": "k", "scene_colours": {"plate2": "#000000"}})j").find("trailing digits"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "scene_colours": ["#000000"]})j").find("scene_colours"), std::string::npos);
+  // The bundled card pack colours every fixture type of its problems.
+  const auto vh = builtin_pack_spec("virtual-home");
+  for (const char* type : {"table", "cabinet", "fridge", "plate"}) EXPECT_TRUE(vh->scene_colours.count(type)) << type;
+}
 
 TEST(PackFile, CheckedAgainstTheDomain) {
   Pantry p;

@@ -117,8 +117,12 @@ TEST(Scenes, VirtualHomeSceneIfDatasetPresent) {
   auto task = ds.task(p.problem_id);
   domains::VhWorld w(*task);
   auto s = task->initial_state();
-  auto scene = vh_scene(w, s);
+  auto scene = vh_scene(ds.pack(), w, s);
   EXPECT_EQ(scene.fixtures.size(), w.fixtures().size());
+  // The pack's colours, read from its "#rrggbb" strings.
+  ASSERT_TRUE(scene.type_colours.count("plate"));
+  EXPECT_EQ(scene.type_colours.at("plate"), (render::Rgb{168, 200, 245}));
+  EXPECT_EQ(scene.type_colours.size(), ds.pack().spec().scene_colours.size());
   size_t items = 0;
   for (auto& f : scene.fixtures)
     for (auto& pile : f.piles) items += pile.size();

@@ -9,6 +9,7 @@
 
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 namespace clips::inference {
 namespace {
@@ -38,7 +39,7 @@ Belief corridor_belief(const std::shared_ptr<const pddl::Task>& task) {
   std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)", ""}, {"gem2", "(has human gem2)", ""}};
   InferenceOptions opts;
   opts.heuristic = "hmax";  // admissible, so the refined values are exact here
-  return Belief(task, domains::builtin_pack("doors-keys-gems"), goals, {model::dkg_profile(3), model::dkg_profile(4)}, opts);
+  return Belief(task, domains::builtin_pack("doors-keys-gems"), goals, {fixtures::dkg_profile(3), fixtures::dkg_profile(4)}, opts);
 }
 
 pddl::ActionId act(const pddl::Task& task, const std::string& text) { return *task.find_action(text); }

@@ -16,6 +16,7 @@
 #include "language/listener.hpp"
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 namespace clips::inference {
 namespace {
@@ -167,7 +168,7 @@ std::shared_ptr<const pddl::Task> corridor_task() {
 Belief corridor_belief(const std::shared_ptr<const pddl::Task>& task, InferenceOptions opts) {
   std::vector<data::GoalSpec> goals = {{"gem1", "(has human gem1)", ""}, {"gem2", "(has human gem2)", ""}};
   opts.heuristic = "hmax";
-  return Belief(task, domains::builtin_pack("doors-keys-gems"), goals, {model::dkg_profile(3), model::dkg_profile(4)},
+  return Belief(task, domains::builtin_pack("doors-keys-gems"), goals, {fixtures::dkg_profile(3), fixtures::dkg_profile(4)},
                 opts);
 }
 

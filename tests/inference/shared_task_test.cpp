@@ -10,6 +10,7 @@
 #include "inference/belief.hpp"
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 namespace clips::inference {
 namespace {
@@ -39,7 +40,7 @@ struct InferenceRun {
 std::vector<double> infer(const std::shared_ptr<const pddl::Task>& task, const InferenceRun& run) {
   InferenceOptions opts;
   opts.heuristic = "hmax";
-  Belief b(task, domains::builtin_pack("doors-keys-gems"), run.goals, {model::dkg_profile(1), model::dkg_profile(2)}, opts);
+  Belief b(task, domains::builtin_pack("doors-keys-gems"), run.goals, {fixtures::dkg_profile(1), fixtures::dkg_profile(2)}, opts);
   std::vector<double> out;
   auto keep = [&](const StepRecord& r) {
     const auto& g = r[Modality::Both].goals;

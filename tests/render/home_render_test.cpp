@@ -22,6 +22,9 @@ HomeScene table_setting() {
   s.agents = {{"actor", ObjectKind::Human, "cabinet2", {"plate2"}},
               {"helper", ObjectKind::Robot, "cabinet4", {}}};
   s.active_agent = "helper";
+  // Tables and plates have colours of their own; cabinets, bowls, forks and
+  // knives do not.
+  s.type_colours = {{"table", card_header_colours()[0]}, {"plate", pastel_colours()[4]}};
   s.caption = "Could you get the forks and knives?";
   s.title = "VirtualHome 2.1";
   const char* labels[] = {"set_table1", "set_table2", "set_table3", "set_table4",
@@ -42,9 +45,13 @@ TEST(HomeRender, LayoutAndPixels) {
     EXPECT_EQ(img.width, L.width);
     EXPECT_EQ(img.height, L.height);
     ASSERT_EQ(L.fixture_boxes.size(), 6u);
-    // The table card has its wooden header and the plate's colour.
-    EXPECT_GT(count_colour(img, L.fixture_boxes[0], theme::table), 100);
-    EXPECT_GT(count_colour(img, L.fixture_boxes[0], item_colour("plate")), 100);
+    // The table card has its own header colour and the plate's; a cabinet's
+    // header is grey, and bowls get their hashed pastel.
+    EXPECT_GT(count_colour(img, L.fixture_boxes[0], card_header_colours()[0]), 100);
+    EXPECT_GT(count_colour(img, L.fixture_boxes[0], pastel_colours()[4]), 100);
+    EXPECT_EQ(count_colour(img, L.fixture_boxes[3], card_header_colours()[0]), 0);
+    EXPECT_GT(count_colour(img, L.fixture_boxes[3], theme::neutral), 100);
+    EXPECT_GT(count_colour(img, L.fixture_boxes[1], hashed_pastel("bowl")), 100);
     // The helper (active) stands at cabinet4 with the marker; the actor does not have one.
     EXPECT_GT(count_colour(img, L.fixture_boxes[4], theme::robot), 20);
     EXPECT_GT(count_colour(img, L.fixture_boxes[4], theme::marker), 10);

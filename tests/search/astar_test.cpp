@@ -13,6 +13,7 @@
 #include "heuristics/basic.hpp"
 #include "search/rtaa.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 using namespace clips;
 
@@ -20,7 +21,7 @@ namespace {
 
 std::shared_ptr<model::Specification> spec_for(const data::Dataset& ds, const std::string& problem, int gem, int costs) {
   return std::make_shared<model::Specification>(ds.task(problem), "(has human gem" + std::to_string(gem) + ")",
-                                                model::dkg_profile(costs));
+                                                fixtures::dkg_profile(costs));
 }
 
 // Exact cost-to-go by Dijkstra backwards is awkward with conditional
@@ -182,7 +183,7 @@ TEST(AStar, UnreachableGoalFailsFast) {
   auto ds = data::Dataset::load(paths::examples_dir() + "/doors-keys-gems");
   auto task = ds.task("e1");
   // The robot may never hold a gem.
-  model::Specification spec(task, "(has robot gem1)", model::dkg_profile(1));
+  model::Specification spec(task, "(has robot gem1)", fixtures::dkg_profile(1));
   heuristics::HMaxHeuristic h;
   auto r = search::plan(spec, h, task->initial_state());
   EXPECT_EQ(r.status, search::SearchStatus::Failure);

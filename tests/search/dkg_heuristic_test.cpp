@@ -22,6 +22,7 @@
 #include "pddl/parser.hpp"
 #include "search/rtaa.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 using namespace clips;
 using namespace clips::domains;
@@ -70,7 +71,7 @@ struct Hand {
     task = std::make_shared<pddl::Task>(d, p, pddl::GroundingOptions{{"frozen"}, {}, false, false});
   }
   model::Specification spec(const std::string& goal, int profile = 1) const {
-    return model::Specification(task, goal, model::dkg_profile(profile));
+    return model::Specification(task, goal, fixtures::dkg_profile(profile));
   }
   State run(const std::vector<std::string>& steps) const {
     State s = task->initial_state();
@@ -436,7 +437,7 @@ TEST(DkgMstHeuristic, IdleGemsAreNotPickedUpInsideSearches) {
   EXPECT_TRUE(keeps(idle, "(and (has human gem1) (not (offgrid gem2)))", "(pickup human gem2)"));
   // With pickups cheaper than waiting a pickup may be the cheapest way to
   // pass a turn, so it stays.
-  model::CostProfile cheap = model::dkg_profile(1);
+  model::CostProfile cheap = fixtures::dkg_profile(1);
   for (auto& [key, c] : cheap.costs)
     if (key.second == "pickup") c = 0.1;
   model::Specification spec(h.task, "(has human gem1)", cheap);
@@ -576,7 +577,7 @@ TEST(DkgDistanceHeuristic, ConsistentOnDatasetRandomWalks) {
     for (const auto& goal : goals)
       for (int profile = 1; profile <= 4; ++profile) {
         const std::string& gem = goal;
-        model::Specification spec(task, goal, model::dkg_profile(profile));
+        model::Specification spec(task, goal, fixtures::dkg_profile(profile));
         DkgDistanceHeuristic d;
         d.prepare(spec, task->initial_state());
         State s = task->initial_state();
@@ -611,7 +612,7 @@ TEST(DkgDistanceHeuristic, AdmissibleOnDatasetStates) {
     for (int profile : {1, 3}) {
       for (const char* gem : {"gem1", "gem2", "gem3", "gem4"}) {
         if (!task->find_object(gem)) continue;
-        model::Specification spec(task, std::string("(has human ") + gem + ")", model::dkg_profile(profile));
+        model::Specification spec(task, std::string("(has human ") + gem + ")", fixtures::dkg_profile(profile));
         DkgDistanceHeuristic d;
         d.prepare(spec, task->initial_state());
         State s = random_walk(*task, task->initial_state(), std::uniform_int_distribution<int>(0, 20)(rng), rng);
@@ -660,7 +661,7 @@ TEST(DkgMstHeuristic, MeasureOverestimationOnSmallMaps) {
     double max_excess = 0, sum_excess = 0, max_ratio = 0;
     std::string worst;
     for (auto& c : cases) {
-      model::Specification spec(c.task, c.goal, model::dkg_profile(profile));
+      model::Specification spec(c.task, c.goal, fixtures::dkg_profile(profile));
       DkgMstHeuristic h;
       h.prepare(spec, c.task->initial_state());
       for (int i = 0; i < 10; ++i) {
@@ -706,7 +707,7 @@ TEST(DkgMstHeuristic, EstimateSpeedOnDataset) {
   auto ds = data::Dataset::load(dir);
   for (const char* pid : {"1", "8", "11", "13"}) {
     auto task = ds.task(pid);
-    model::Specification spec(task, "(has human gem2)", model::dkg_profile(3));
+    model::Specification spec(task, "(has human gem2)", fixtures::dkg_profile(3));
     DkgMstHeuristic h;
     h.prepare(spec, task->initial_state());
     std::mt19937 rng(1);
@@ -739,7 +740,7 @@ TEST(DkgMstHeuristic, BoundedEstimateEqualsTheMinimumOverClauses) {
     auto task = ds.task(pid);
     for (const auto& g : goals) {
       for (int profile : {1, 4}) {
-        model::Specification spec(task, g, model::dkg_profile(profile));
+        model::Specification spec(task, g, fixtures::dkg_profile(profile));
         DkgMstHeuristic h;
         h.prepare(spec, task->initial_state());
         if (h.clauses().size() > 1) ++multi;

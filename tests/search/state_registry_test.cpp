@@ -11,6 +11,7 @@
 #include "search/astar.hpp"
 #include "search/state_registry.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 using namespace clips;
 
@@ -63,7 +64,7 @@ TEST(AStarWorkspace, ReusedWorkspaceMatchesFreshSearches) {
   for (const char* p : {"e1", "e2"})
     for (int g = 1; g <= 4; ++g)
       for (size_t budget : {size_t{5}, size_t{1} << 20}) {
-        model::Specification spec(ds.task(p), "(has human gem" + std::to_string(g) + ")", model::dkg_profile(1));
+        model::Specification spec(ds.task(p), "(has human gem" + std::to_string(g) + ")", fixtures::dkg_profile(1));
         search::SearchOptions o;
         o.max_nodes = budget;
         auto fresh = search::plan(spec, h, spec.task().initial_state(), o);

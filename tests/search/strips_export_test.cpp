@@ -18,6 +18,7 @@
 #include "pddl/plan.hpp"
 #include "search/astar.hpp"
 #include "test_paths.hpp"
+#include "dkg_profiles.hpp"
 
 using namespace clips;
 
@@ -36,14 +37,14 @@ bool check_equivalent(const std::shared_ptr<const pddl::Task>& task, const pddl:
                       const std::string& label, size_t budget = std::numeric_limits<size_t>::max()) {
   std::string goal = "(has human gem" + std::to_string(gem) + ")";
   SCOPED_TRACE(label + " " + goal + " C" + std::to_string(profile));
-  model::Specification orig(task, goal, model::dkg_profile(profile));
+  model::Specification orig(task, goal, fixtures::dkg_profile(profile));
   heuristics::HMaxHeuristic h1;
   search::SearchOptions so;
   so.max_nodes = budget;
   auto r1 = search::plan(orig, h1, start, so);
   if (r1.status == search::SearchStatus::MaxNodes) return false;
 
-  auto ex = domains::export_strips(*task, start, goal, model::dkg_profile(profile));
+  auto ex = domains::export_strips(*task, start, goal, fixtures::dkg_profile(profile));
   EXPECT_EQ(ex.cost_scale, 5);
   auto d = std::make_shared<pddl::Domain>(pddl::parse_domain(ex.domain, "<exported domain>"));
   auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, ex.problem, "<exported problem>"));
@@ -103,7 +104,7 @@ TEST(StripsExport, SameOptimalCostFromMidPlanStates) {
   for (const char* p : {"e1", "e2"})
     for (int g = 1; g <= 4; ++g) {
       auto task = ds.task(p);
-      model::Specification spec(task, "(has human gem" + std::to_string(g) + ")", model::dkg_profile(3));
+      model::Specification spec(task, "(has human gem" + std::to_string(g) + ")", fixtures::dkg_profile(3));
       heuristics::HMaxHeuristic h;
       auto r = search::plan(spec, h, task->initial_state());
       // Every gem of the examples is reachable: a failed search is a bug, not a case to skip.
@@ -121,7 +122,7 @@ TEST(StripsExport, FrozenRobotMayOnlyWaitOrHandOver) {
   for (const char* p : {"e1", "e2"}) {
     auto task = ds.task(p);
     auto frozen = model::freeze(*task, task->initial_state(), "robot");
-    auto ex = domains::export_strips(*task, frozen, "(has human gem1)", model::dkg_profile(1));
+    auto ex = domains::export_strips(*task, frozen, "(has human gem1)", fixtures::dkg_profile(1));
     EXPECT_EQ(ex.problem.find("(unfrozen robot)"), std::string::npos);
     EXPECT_NE(ex.problem.find("(unfrozen human)"), std::string::npos);
     for (int g = 1; g <= 4; ++g)
@@ -157,7 +158,7 @@ TEST(StripsExport, SameOptimalCostOnTheDataset) {
 TEST(StripsExport, CostScale) {
   for (int c = 1; c <= 4; ++c) {
     std::vector<double> costs;
-    auto prof = model::dkg_profile(c);
+    auto prof = fixtures::dkg_profile(c);
     for (auto& [k, v] : prof.costs) costs.push_back(v);
     EXPECT_EQ(domains::integer_cost_scale(costs), 5) << "C" << c;
   }
@@ -170,7 +171,7 @@ TEST(StripsExport, CostScale) {
   EXPECT_EQ(domains::export_strips(*task, task->initial_state(), "(has human gem2)", model::unit_profile()).cost_scale,
             1);
   // The scaled costs appear in the domain: human wait 0.6 -> 3, human pickup 5 -> 25.
-  auto ex = domains::export_strips(*task, task->initial_state(), "(has human gem2)", model::dkg_profile(1));
+  auto ex = domains::export_strips(*task, task->initial_state(), "(has human gem2)", fixtures::dkg_profile(1));
   EXPECT_NE(ex.domain.find("(:action wait-human"), std::string::npos);
   EXPECT_NE(ex.domain.find("(increase (total-cost) 3)"), std::string::npos);
   EXPECT_NE(ex.domain.find("(increase (total-cost) 25)"), std::string::npos);
@@ -184,9 +185,9 @@ TEST(StripsExport, ConjunctiveGoalsAndUnsupportedGoals) {
   auto s0 = task->initial_state();
   // A conjunction of has atoms is exported and stays equivalent.
   std::string goal = "(and (has human gem1) (has human gem2))";
-  auto ex = domains::export_strips(*task, s0, goal, model::dkg_profile(1));
+  auto ex = domains::export_strips(*task, s0, goal, fixtures::dkg_profile(1));
   EXPECT_EQ(ex.goal, "(and (has human gem1) (has human gem2))");
-  model::Specification orig(task, goal, model::dkg_profile(1));
+  model::Specification orig(task, goal, fixtures::dkg_profile(1));
   heuristics::HMaxHeuristic h1, h2;
   auto r1 = search::plan(orig, h1, s0);
   auto d = std::make_shared<pddl::Domain>(pddl::parse_domain(ex.domain, "d"));
@@ -198,7 +199,7 @@ TEST(StripsExport, ConjunctiveGoalsAndUnsupportedGoals) {
   ASSERT_EQ(r2.status, search::SearchStatus::Success);
   EXPECT_NEAR(r2.cost / ex.cost_scale, r1.cost, 1e-9);
 
-  auto prof = model::dkg_profile(1);
+  auto prof = fixtures::dkg_profile(1);
   for (const char* bad : {"(or (has human gem1) (has human gem2))", "(not (has human gem1))", "(locked door1)",
                           "(has human)", "(has human door1)", "(has nobody gem1)", "(and)"}) {
     try {
