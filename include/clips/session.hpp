@@ -80,6 +80,7 @@ struct SessionOptions {
   std::string rejuvenate = "evidence";     // when else they run: "evidence", "utterances" or "resampling"
   int proposal_groups = 8;                 // exploring proposals per sweep, >= 1
   std::string particle_filters = "all";    // "all" (one filter per modality) or "clips" (the CLIPS one only)
+  std::string particle_estimate = "support";  // "support" (exact weights on the held hypotheses) or "weights"
 };
 
 struct HypothesisWeight {

@@ -133,11 +133,14 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
     with pytest.raises(clips.InputError, match="particles"):
         clips.Session.open_dataset(str(EXAMPLES), "e1", particles=-1)
     # The tuning options reach the filter: one CLIPS filter resampling every
-    # step is another particle system than the default, still close to exact.
+    # step, read by its weighted counts, is another estimate than the default
+    # (which weighs the hypotheses the particles hold exactly), still close.
     tuned = run(particles=2000, particle_seed=3, ess_threshold=1.0, particle_filters="clips",
-                rejuvenate="utterances")
+                rejuvenate="utterances", particle_estimate="weights")
     assert tuned != many
     assert sum(abs(tuned[g] - exact[g]) for g in exact) / 2 < 0.05
+    with pytest.raises(clips.InputError, match="particle estimate 'counts'"):
+        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_estimate="counts")
     with pytest.raises(clips.InputError, match="particle filters 'some'"):
         clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_filters="some")
     with pytest.raises(clips.InputError, match="ESS threshold"):

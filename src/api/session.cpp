@@ -106,7 +106,8 @@ struct Session::Impl {
                                         .moves = options.rejuvenation_moves,
                                         .rejuvenate = options.rejuvenate,
                                         .groups = options.proposal_groups,
-                                        .filters = options.particle_filters},
+                                        .filters = options.particle_filters,
+                                        .estimate = options.particle_estimate},
                                        io);
     belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
     roles = pack->roles();

@@ -188,6 +188,9 @@ void register_particles(CLI::App* bench) {
   auto filters = std::make_shared<std::string>("all");
   cmd->add_option("--particle-filters", *filters, "As for `clips infer`: all (default) or clips")
       ->check(CLI::IsMember({"all", "clips"}));
+  auto estimate = std::make_shared<std::string>("support");
+  cmd->add_option("--particle-estimate", *estimate, "As for `clips infer`: support (default) or weights")
+      ->check(CLI::IsMember({"support", "weights"}));
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
   add_lm_options(cmd, *lm);
@@ -201,6 +204,7 @@ void register_particles(CLI::App* bench) {
     if (!(o->ess_threshold >= 0 && o->ess_threshold <= 1)) throw UsageError("--ess-threshold must be between 0 and 1");
     o->rejuvenate = inference::parse_rejuvenation(*rejuvenate);
     o->particle_filters = inference::parse_particle_filters(*filters);
+    o->particle_estimate = inference::parse_particle_estimate(*estimate);
     o->dataset = dataset_dir(o->dataset);
     const auto ds = data::Dataset::load(o->dataset);
     o->language_model = make_lm(*lm, ds);
@@ -306,6 +310,7 @@ void register_bench(CLI::App& app) {
     o->experiment.rejuvenate = inference::parse_rejuvenation(particles->rejuvenate);
     o->experiment.proposal_groups = particles->groups;
     o->experiment.particle_filters = inference::parse_particle_filters(particles->filters);
+    o->experiment.particle_estimate = inference::parse_particle_estimate(particles->estimate);
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {

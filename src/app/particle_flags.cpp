@@ -66,6 +66,10 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
                   "(only the CLIPS posterior; the action-only and language-only ones are reweighted from its "
                   "particles: much cheaper, but rough where they disagree with CLIPS)")
       ->check(CLI::IsMember({"all", "clips"}));
+  cmd->add_option("--particle-estimate", f.estimate,
+                  "How particles give the posterior: support (the exact posterior over the hypotheses the particles "
+                  "hold, default: no counting noise) or weights (the weighted particle counts)")
+      ->check(CLI::IsMember({"support", "weights"}));
 }
 
 }  // namespace clips::app

@@ -13,7 +13,7 @@ namespace clips::app {
 using ParticleFlags = inference::ParticleSettings;
 
 // --particles, --particle-seed, --ess-threshold, --rejuvenation-moves, --rejuvenate,
-// --proposal-groups, --particle-filters.
+// --proposal-groups, --particle-filters, --particle-estimate.
 void add_particle_options(CLI::App* cmd, ParticleFlags& flags);
 // Copies the flags into the inference options (inference::apply_particle_settings).
 inline void apply_particle_flags(const ParticleFlags& flags, inference::InferenceOptions& options) {

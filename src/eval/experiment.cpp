@@ -51,6 +51,7 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   io.rejuvenate = opts.rejuvenate;
   io.proposal_groups = opts.proposal_groups;
   io.particle_filters = opts.particle_filters;
+  io.particle_estimate = opts.particle_estimate;
   return io;
 }
 

@@ -78,6 +78,7 @@ struct ExperimentOptions {
   inference::Rejuvenation rejuvenate = inference::Rejuvenation::Evidence;
   int proposal_groups = 8;
   inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
+  inference::ParticleEstimate particle_estimate = inference::ParticleEstimate::Support;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

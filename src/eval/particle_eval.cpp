@@ -72,6 +72,7 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   base.rejuvenate = o.rejuvenate;
   base.proposal_groups = o.proposal_groups;
   base.particle_filters = o.particle_filters;
+  base.particle_estimate = o.particle_estimate;
   inference::check_options(base);
   // Every timed run starts with an empty score cache: otherwise the runs
   // after the first would find the exact run's language-model scores there

@@ -29,6 +29,7 @@ struct ParticleEvalOptions {
   inference::Rejuvenation rejuvenate = inference::Rejuvenation::Evidence;
   int proposal_groups = 8;
   inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
+  inference::ParticleEstimate particle_estimate = inference::ParticleEstimate::Support;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   std::shared_ptr<lm::LanguageModel> language_model;  // required

@@ -96,6 +96,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       po.rejuvenation_moves = options_.rejuvenation_moves;
       po.rejuvenate_on_evidence = options_.rejuvenate != Rejuvenation::Resampling;
       po.proposal_groups = options_.proposal_groups;
+      po.estimate = options_.particle_estimate;
       // One stream per modality: a filter's draws do not depend on the others'.
       po.seed = util::Rng::derive(options_.particle_seed, {static_cast<uint64_t>(m)});
       filters_.emplace_back(static_cast<int>(goals_.size()), static_cast<int>(profiles_.size()), po);
@@ -121,6 +122,7 @@ void apply_particle_settings(const ParticleSettings& f, InferenceOptions& o) {
   o.rejuvenate = parse_rejuvenation(f.rejuvenate);
   o.proposal_groups = f.groups;
   o.particle_filters = parse_particle_filters(f.filters);
+  o.particle_estimate = parse_particle_estimate(f.estimate);
   check_options(o);
 }
 

@@ -119,6 +119,9 @@ struct InferenceOptions {
   // its particles (weight × their likelihood / CLIPS's), which costs nothing
   // but misses hypotheses the CLIPS particles left.
   ParticleFilters particle_filters = ParticleFilters::All;
+  // Reported posterior: exact weights on the hypotheses the particles hold
+  // (Support) or the weighted particle counts (Weights); particle_belief.hpp.
+  ParticleEstimate particle_estimate = ParticleEstimate::Support;
   uint64_t particle_seed = 1;    // results are a function of the seed (and not of `threads`)
 };
 
@@ -136,6 +139,7 @@ struct ParticleSettings {
   std::string rejuvenate = "evidence";  // or "utterances", "resampling"
   int groups = 8;
   std::string filters = "all";  // or "clips"
+  std::string estimate = "support";  // or "weights"
 };
 // Copies them into `options` and checks them (InputError names a bad value).
 void apply_particle_settings(const ParticleSettings& settings, InferenceOptions& options);

@@ -38,6 +38,14 @@ ParticleFilters parse_particle_filters(const std::string& text) {
   throw InputError("unknown particle filters '" + text + "' (expected all or clips)");
 }
 
+std::string to_string(ParticleEstimate e) { return e == ParticleEstimate::Support ? "support" : "weights"; }
+
+ParticleEstimate parse_particle_estimate(const std::string& text) {
+  if (text == "support") return ParticleEstimate::Support;
+  if (text == "weights") return ParticleEstimate::Weights;
+  throw InputError("unknown particle estimate '" + text + "' (expected support or weights)");
+}
+
 std::string to_string(Rejuvenation r) {
   switch (r) {
     case Rejuvenation::Evidence: return "evidence";
@@ -256,8 +264,18 @@ std::vector<double> ParticleFilter::posterior(const LogLikelihood& ll, double& l
     std::fill(p.begin(), p.end(), 1.0 / static_cast<double>(k));
     return p;
   }
-  for (size_t i = 0; i < lw.size(); ++i) p[static_cast<size_t>(hyp_[i])] += std::exp(lw[i] - lse);
   log_marginal = lse - std::log(static_cast<double>(lw.size()));
+  if (options_.estimate == ParticleEstimate::Weights) {
+    for (size_t i = 0; i < lw.size(); ++i) p[static_cast<size_t>(hyp_[i])] += std::exp(lw[i] - lse);
+    return p;
+  }
+  // Exact weights on the held set: ll of every held hypothesis is current.
+  const std::vector<int> held = support(ll);
+  double mx = kNegInf;
+  for (int h : held) mx = std::max(mx, ll(h));
+  double total = 0;
+  for (int h : held) total += (p[static_cast<size_t>(h)] = std::exp(ll(h) - mx));
+  for (int h : held) p[static_cast<size_t>(h)] /= total;
   return p;
 }
 

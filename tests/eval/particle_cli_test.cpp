@@ -28,6 +28,8 @@ TEST(ParticleCli, BadValuesAreRefused) {
       {infer + "--particle-seed -1", "--particle-seed"},
       {infer + "--particle-filters some", "--particle-filters"},
       {infer + "--rejuvenate sometimes", "--rejuvenate"},
+      {infer + "--particle-estimate counts", "--particle-estimate"},
+      {bench + "--particle-estimate counts", "--particle-estimate"},
       {bench + "--particle-filters none", "--particle-filters"},
       {bench + "--particles 0", "--particles"},
       {bench + "--seeds 0", "--seeds"},
@@ -66,7 +68,7 @@ TEST(ParticleCli, InferWithParticlesReportsAProperPosterior) {
   EXPECT_EQ(untimed(nlohmann::json::parse(again.out)["steps"]), untimed(j["steps"]));
   auto help = testing::run(clips_binary() + " infer --help");
   for (const char* o : {"--particles", "--particle-seed", "--ess-threshold", "--rejuvenation-moves",
-                        "--particle-filters", "--rejuvenate"})
+                        "--particle-filters", "--rejuvenate", "--particle-estimate"})
     EXPECT_TRUE(contains(help.out, o)) << o;
 }
 

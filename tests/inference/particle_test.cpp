@@ -110,6 +110,41 @@ TEST(ParticleFilter, RestartsFromThePriorWhenEveryParticleIsRuledOut) {
   EXPECT_NEAR(f.posterior(ll, lm)[2], 1.0, 1e-12);
 }
 
+TEST(ParticleFilter, SupportEstimateWeighsTheHeldHypothesesExactly) {
+  // 8 hypotheses, 4 particles resampled every step: the held set carries the
+  // exact relative weights; the weighted counts come in quarters.
+  auto ll = [](int h) { return -0.3 * h; };
+  for (ParticleEstimate e : {ParticleEstimate::Support, ParticleEstimate::Weights}) {
+    ParticleOptions o = popts(4, 1.0, 0);
+    o.estimate = e;
+    ParticleFilter f(8, 1, o);
+    f.update(ll, kNoSync, kNone);
+    EXPECT_EQ(f.stats().resamples, 1);
+    const std::vector<int> held = f.support(ll);
+    double z = 0;
+    for (int h : held) z += std::exp(ll(h));
+    double lm = 0;
+    const auto p = f.posterior(ll, lm);
+    double total = 0;
+    for (int h = 0; h < 8; ++h) {
+      total += p[h];
+      const bool in = std::find(held.begin(), held.end(), h) != held.end();
+      if (!in) {
+        EXPECT_EQ(p[h], 0.0) << h;
+      } else if (e == ParticleEstimate::Support) {
+        EXPECT_NEAR(p[h], std::exp(ll(h)) / z, 1e-12) << h;
+      }
+      if (e == ParticleEstimate::Weights) {
+        EXPECT_NEAR(p[h] * 4, std::round(p[h] * 4), 1e-12) << h;
+      }
+    }
+    EXPECT_NEAR(total, 1.0, 1e-12);
+  }
+  EXPECT_EQ(parse_particle_estimate("weights"), ParticleEstimate::Weights);
+  EXPECT_EQ(to_string(parse_particle_estimate("support")), "support");
+  EXPECT_THROW(parse_particle_estimate("counts"), InputError);
+}
+
 TEST(ParticleFilter, SameSeedSameParticles) {
   auto ll = [](int h) { return -0.7 * h; };
   auto run = [&](uint64_t seed) {
@@ -234,6 +269,44 @@ TEST(ParticleBelief, ManyParticlesMatchExactOnTheCorridor) {
   EXPECT_EQ(p.back().utterances.size(), 1u);
   // The utterance modality had no particles before the first utterance.
   EXPECT_EQ(p[1][Modality::UtteranceOnly].goals, e[1][Modality::UtteranceOnly].goals);
+}
+
+TEST(ParticleBelief, SupportEstimateIsTheExactPosteriorOnTheHeldHypotheses) {
+  // Few particles, resampled every step: whatever set they hold, the default
+  // estimate is the exact posterior renormalised on it; the weighted counts
+  // are not.
+  auto task = corridor_task();
+  ColourLm lm;
+  Belief exact = corridor_belief(task, {});
+  const auto e = corridor_run(exact, *task, lm);
+  double worst_weights = 0;
+  for (ParticleEstimate est : {ParticleEstimate::Support, ParticleEstimate::Weights}) {
+    InferenceOptions po;
+    po.particles = 6;
+    po.ess_threshold = 1;
+    po.rejuvenation_moves = 0;
+    po.particle_estimate = est;
+    Belief particles = corridor_belief(task, po);
+    const auto p = corridor_run(particles, *task, lm);
+    ASSERT_EQ(e.size(), p.size());
+    for (size_t t = 0; t < e.size(); ++t)
+      for (Modality m : kModalities) {
+        const auto& ph = p[t][m].hypotheses;
+        const auto& eh = e[t][m].hypotheses;
+        double z = 0;
+        for (size_t h = 0; h < ph.size(); ++h)
+          if (ph[h] > 0) z += eh[h];
+        ASSERT_GT(z, 0) << "step " << t << " " << to_string(m);
+        for (size_t h = 0; h < ph.size(); ++h) {
+          const double want = ph[h] > 0 ? eh[h] / z : 0.0;
+          if (est == ParticleEstimate::Support)
+            EXPECT_NEAR(ph[h], want, 1e-9) << "step " << t << " " << to_string(m) << " h" << h;
+          else
+            worst_weights = std::max(worst_weights, std::abs(ph[h] - want));
+        }
+      }
+  }
+  EXPECT_GT(worst_weights, 1e-3);  // the counts carry sampling noise
 }
 
 TEST(ParticleBelief, HypothesesJoiningLateReplayToTheExactNumbers) {
