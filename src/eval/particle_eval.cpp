@@ -54,6 +54,12 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   ParticleEvalReport rep;
   rep.dataset = o.dataset;
   rep.lm = o.language_model->name();
+  rep.settings = {{"ess_threshold", fmt::format("{}", o.ess_threshold)},
+                  {"rejuvenation_moves", std::to_string(o.rejuvenation_moves)},
+                  {"rejuvenate", inference::to_string(o.rejuvenate)},
+                  {"proposal_groups", std::to_string(o.proposal_groups)},
+                  {"particle_filters", inference::to_string(o.particle_filters)},
+                  {"particle_estimate", inference::to_string(o.particle_estimate)}};
   std::vector<const data::PlanRecord*> todo;
   for (const auto& p : ds.plans()) {
     const bool wanted = o.plans.empty() ? p.evaluated : std::find(o.plans.begin(), o.plans.end(), p.id) != o.plans.end();
@@ -155,6 +161,9 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
 std::string format_particle_eval(const ParticleEvalReport& rep) {
   std::string out = fmt::format("particle vs exact inference on {} ({} plans, {}; CLIPS goal posterior)\n",
                                 rep.dataset, rep.plans, rep.lm);
+  std::string settings;
+  for (const auto& [k, v] : rep.settings) settings += (settings.empty() ? "" : ", ") + k + " " + v;
+  if (!settings.empty()) out += "settings: " + settings + "\n";
   out += fmt::format("{:>6} {:>5}  {:>33}  {:>6}  {:>7} {:>7} {:>7}\n", "N", "runs",
                      "TV final: mean min med p90 max", "TV/step", "time", "t med", "refine");
   for (const auto& s : rep.summary)
@@ -175,6 +184,8 @@ nlohmann::json to_json(const ParticleEvalReport& rep) {
   j["dataset"] = rep.dataset;
   j["lm"] = rep.lm;
   j["plans"] = rep.plans;
+  j["settings"] = nlohmann::json::object();
+  for (const auto& [k, v] : rep.settings) j["settings"][k] = v;
   j["failed"] = rep.failed;
   j["summary"] = nlohmann::json::array();
   for (const auto& s : rep.summary)

@@ -11,6 +11,7 @@
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "inference/particle_belief.hpp"
@@ -67,6 +68,9 @@ struct ParticleEvalSummary {
 
 struct ParticleEvalReport {
   std::string dataset, lm;
+  // The filter settings of every particle run, as option name and value
+  // ("ess_threshold", "0.5"), so that a saved report says how it was made.
+  std::vector<std::pair<std::string, std::string>> settings;
   int plans = 0;
   std::vector<std::string> failed;  // "plan: error"
   std::vector<ParticleEvalRow> rows;

@@ -76,13 +76,19 @@ TEST(ParticleCli, BenchParticlesWritesTheComparison) {
   testing::TempDir dir("bench-particles");
   const std::string out = dir.str() + "/eval.json";
   auto r = testing::run(clips_binary() + " bench particles --dataset " + examples_dkg() +
-                        " --plans e1.1.keys,e2.1.doors --particles 8,32 --seeds 2 --no-progress --out " + out);
+                        " --plans e1.1.keys,e2.1.doors --particles 8,32 --seeds 2 --particle-estimate weights --no-progress --out " +
+                        out);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_TRUE(contains(r.out, "TV final")) << r.out;
   std::ifstream f(out);
   const auto j = nlohmann::json::parse(f);
   ASSERT_EQ(j["summary"].size(), 2u);
   EXPECT_EQ(j["plans"], 2);
+  // The report names the settings it was made with.
+  EXPECT_EQ(j["settings"]["particle_estimate"], "weights");
+  EXPECT_EQ(j["settings"]["ess_threshold"], "0.5");
+  EXPECT_EQ(j["settings"]["particle_filters"], "all");
+  EXPECT_TRUE(contains(r.out, "particle_estimate weights")) << r.out;
   EXPECT_EQ(j["runs"].size(), 2u * 2u * 2u);  // plans x counts x seeds
   for (const auto& s : j["summary"]) {
     EXPECT_EQ(s["runs"], 4);
