@@ -57,6 +57,7 @@ clips::SessionOptions session_options(const std::string& method, const std::stri
   o.proposal_groups = tuning.proposal_groups;
   o.particle_filters = tuning.particle_filters;
   o.particle_estimate = tuning.particle_estimate;
+  o.assistant_turns = tuning.assistant_turns;
   return o;
 }
 
@@ -249,7 +250,8 @@ PYBIND11_MODULE(clips, m) {
              const std::string& lm_model, double lm_timeout, std::vector<std::string> goals,
              std::vector<std::string> cost_profiles, size_t max_nodes, int threads, int particles,
              uint64_t particle_seed, double ess_threshold, int rejuvenation_moves, const std::string& rejuvenate,
-             int proposal_groups, const std::string& particle_filters, const std::string& particle_estimate) {
+             int proposal_groups, const std::string& particle_filters, const std::string& particle_estimate,
+             const std::string& assistant_turns) {
             clips::SessionOptions tuning;
             tuning.ess_threshold = ess_threshold;
             tuning.rejuvenation_moves = rejuvenation_moves;
@@ -257,6 +259,7 @@ PYBIND11_MODULE(clips, m) {
             tuning.proposal_groups = proposal_groups;
             tuning.particle_filters = particle_filters;
             tuning.particle_estimate = particle_estimate;
+            tuning.assistant_turns = assistant_turns;
             auto o = session_options(method, assistance, lm, lm_base_url, lm_model, lm_timeout, std::move(goals),
                                      std::move(cost_profiles), max_nodes, threads, particles, particle_seed, tuning);
             py::gil_scoped_release unlocked;
@@ -269,9 +272,10 @@ PYBIND11_MODULE(clips, m) {
           py::arg("threads") = 1, py::arg("particles") = 0, py::arg("particle_seed") = uint64_t{1},
           py::arg("ess_threshold") = 0.5, py::arg("rejuvenation_moves") = 2, py::arg("rejuvenate") = "evidence",
           py::arg("proposal_groups") = 8, py::arg("particle_filters") = "all", py::arg("particle_estimate") = "support",
+          py::arg("assistant_turns") = "taken",
           "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state); "
           "particles > 0: particle inference with that many particles instead of exact enumeration, tuned as "
-          "clips infer's options of the same names")
+          "clips infer's options of the same names (assistant_turns: 'taken' or 'all', as --assistant-turns)")
       .def_static(
           "open_domain",
           [](const std::string& domain_dir, const std::string& problem_file, const std::string& method,

@@ -81,6 +81,10 @@ struct SessionOptions {
   int proposal_groups = 8;                 // exploring proposals per sweep, >= 1
   std::string particle_filters = "all";    // "all" (one filter per modality) or "clips" (the CLIPS one only)
   std::string particle_estimate = "support";  // "support" (exact weights on the held hypotheses) or "weights"
+  // What is refined at the assistant's turns: "taken" (one lookahead, from
+  // the state its action led to) or "all" (the spec's REFINE, every
+  // successor); as `clips infer --assistant-turns`.
+  std::string assistant_turns = "taken";
 };
 
 struct HypothesisWeight {

@@ -147,6 +147,24 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
         clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, ess_threshold=2.0)
 
 
+def test_assistant_turns_option():
+    """Refining only toward the assistant's action leaves the posterior as the
+    spec's refinement of every successor gives it; a bad value is refused."""
+    def run(**kw):
+        s = clips.Session.open_dataset(str(EXAMPLES), "e1", **kw)
+        for action in ("(left human)", "(left robot)", "(left human)", "(right robot)"):
+            s.observe(action)
+        s.hear("Can you get me the yellow key?")
+        return s.posterior()["goals"]
+
+    taken, every = run(), run(assistant_turns="all")
+    assert taken.keys() == every.keys()
+    for g in taken:
+        assert taken[g] == pytest.approx(every[g], abs=1e-9)
+    with pytest.raises(clips.InputError, match="assistant-turn refinement 'some'"):
+        clips.Session.open_dataset(str(EXAMPLES), "e1", assistant_turns="some")
+
+
 def test_inference_releases_the_gil():
     # Two sessions on two Python threads: with the GIL released during
     # inference they run concurrently and still agree with one thread.

@@ -100,6 +100,7 @@ struct Session::Impl {
     inference::InferenceOptions io;
     io.refine.max_nodes = options.max_nodes;
     io.threads = options.threads;
+    io.assistant_turns = inference::parse_assistant_turns(options.assistant_turns);
     inference::apply_particle_settings({.particles = options.particles,
                                         .seed = options.particle_seed,
                                         .ess_threshold = options.ess_threshold,

@@ -210,6 +210,7 @@ void register_particles(CLI::App* bench) {
     o->language_model = make_lm(*lm, ds);
     o->speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
+    o->assistant_turns = inference::parse_assistant_turns(lm->assistant_turns);
     const eval::ParticleEvalReport rep = eval::run_particle_eval(*o);
     fmt::print("{}", eval::format_particle_eval(rep));
     if (!out->empty()) {
@@ -303,6 +304,7 @@ void register_bench(CLI::App& app) {
     o->experiment.speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->experiment.utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
     o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);
+    o->experiment.assistant_turns = inference::parse_assistant_turns(lm->assistant_turns);
     o->experiment.particles = particles->particles;
     o->experiment.particle_seed = particles->seed;
     o->experiment.ess_threshold = particles->ess_threshold;

@@ -81,6 +81,7 @@ void register_render(CLI::App& app) {
       eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
       eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
       eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
+      eo.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
       auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
       if (outcome.failure) std::rethrow_exception(outcome.failure);
       if (!outcome.error.empty()) throw InputError(outcome.error);
@@ -94,6 +95,7 @@ void register_render(CLI::App& app) {
       inference::InferenceOptions io;
       io.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
       io.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
+      io.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
       io.threads = 0;
       auto inf = inference::run_inference(ds, p, *lm, io);
       run.goals = inf.goals;

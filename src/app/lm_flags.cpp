@@ -30,6 +30,11 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
                   "Which of the human's own actions the CLIPS speaker model's commands keep: paper (default; joint "
                   "commands keep them) or code (the reference code drops them all)")
       ->check(CLI::IsMember({"paper", "code"}));
+  cmd->add_option("--assistant-turns", f.assistant_turns,
+                  "Refinement at the assistant's turns without an utterance: taken (default; one lookahead, from "
+                  "the state its action led to) or all (the spec's REFINE, from every successor). The same "
+                  "posteriors unless a search hits its node budget; taken searches less")
+      ->check(CLI::IsMember({"taken", "all"}));
 }
 
 void add_assistance_options(CLI::App* cmd, LmFlags& f) {

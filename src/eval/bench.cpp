@@ -229,6 +229,7 @@ BenchReport run_bench(const BenchOptions& opts) {
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);
   rep.qa_floor = assist::to_string(opts.experiment.qa_floor);
+  rep.assistant_turns = inference::to_string(opts.experiment.assistant_turns);
   rep.plans.resize(todo.size());
   int jobs = opts.jobs > 0 ? opts.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   jobs = std::max(1, std::min<int>(jobs, static_cast<int>(todo.size())));
@@ -328,6 +329,7 @@ std::string summary_json(const BenchReport& r) {
   j["speaker_rule"] = r.speaker_rule;
   j["utterance_timing"] = r.utterance_timing;
   j["qa_floor"] = r.qa_floor;
+  j["assistant_turns"] = r.assistant_turns;
   j["wall_seconds"] = r.wall_seconds;
   j["max_rss_mb"] = static_cast<double>(r.max_rss_kb) / 1024.0;
   // Sharded runs and merges of them say which part of the sweep they hold;

@@ -61,6 +61,7 @@ struct BenchReport {
   std::string speaker_rule;      // the CLIPS speaker model's command rule
   std::string utterance_timing;  // before or after the action at the utterance's index
   std::string qa_floor;          // Q_MDP floor: dead-ends or horizon
+  std::string assistant_turns;   // refinement at the assistant's turns: taken or all
   // The chat model of the multimodal baseline when it runs (requested, or in
   // the default methods because an endpoint is configured); "" when it does not.
   std::string chat_model;

@@ -230,6 +230,7 @@ void read_identity(const FieldReader& in, const json& run, BenchReport& r) {
   r.speaker_rule = in.text(run, "speaker_rule", at);
   r.utterance_timing = in.text(run, "utterance_timing", at);
   r.qa_floor = in.text(run, "qa_floor", at);
+  r.assistant_turns = in.text(run, "assistant_turns", at);
   r.chat_model = in.text(run, "chat_model", at);
   const long long count = in.integer(run, "shard_count", at);
   if (count < 1) in.fail("run.shard_count", fmt::format("must be at least 1, got {}", count));
@@ -392,6 +393,7 @@ ojson run_identity(const BenchReport& r) {
           {"speaker_rule", r.speaker_rule},
           {"utterance_timing", r.utterance_timing},
           {"qa_floor", r.qa_floor},
+          {"assistant_turns", r.assistant_turns},
           {"chat_model", r.chat_model},
           {"shard_count", r.shards.count},
           {"selection", r.selection}};

@@ -43,6 +43,7 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   io.utterance.speaker_rule = opts.speaker_rule;
   io.threads = opts.inference_threads;
   io.utterance_timing = opts.utterance_timing;
+  io.assistant_turns = opts.assistant_turns;
   if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
   io.particles = opts.particles;
   io.particle_seed = opts.particle_seed;

@@ -65,6 +65,7 @@ struct ExperimentOptions {
   // The CLIPS speaker model's command rule (spec 13 item 2).
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
+  inference::AssistantTurns assistant_turns = inference::AssistantTurns::Taken;
   // Which Q-values Q_MDP floors at the cost of waiting to the horizon.
   assist::QaFloor qa_floor = assist::QaFloor::DeadEnds;
   // Threads per inference (InferenceOptions::threads): 1 when plans already

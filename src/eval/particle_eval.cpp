@@ -59,7 +59,8 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
                   {"rejuvenate", inference::to_string(o.rejuvenate)},
                   {"proposal_groups", std::to_string(o.proposal_groups)},
                   {"particle_filters", inference::to_string(o.particle_filters)},
-                  {"particle_estimate", inference::to_string(o.particle_estimate)}};
+                  {"particle_estimate", inference::to_string(o.particle_estimate)},
+                  {"assistant_turns", inference::to_string(o.assistant_turns)}};
   std::vector<const data::PlanRecord*> todo;
   for (const auto& p : ds.plans()) {
     const bool wanted = o.plans.empty() ? p.evaluated : std::find(o.plans.begin(), o.plans.end(), p.id) != o.plans.end();
@@ -73,6 +74,7 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   base.threads = 1;  // comparable single-core times
   base.utterance.speaker_rule = o.speaker_rule;
   base.utterance_timing = o.utterance_timing;
+  base.assistant_turns = o.assistant_turns;
   base.ess_threshold = o.ess_threshold;
   base.rejuvenation_moves = o.rejuvenation_moves;
   base.rejuvenate = o.rejuvenate;

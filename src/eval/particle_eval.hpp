@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "inference/belief.hpp"
 #include "inference/particle_belief.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
@@ -33,6 +34,7 @@ struct ParticleEvalOptions {
   inference::ParticleEstimate particle_estimate = inference::ParticleEstimate::Support;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
+  inference::AssistantTurns assistant_turns = inference::AssistantTurns::Taken;
   std::shared_ptr<lm::LanguageModel> language_model;  // required
   bool progress = true;
 };

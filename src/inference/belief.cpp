@@ -39,6 +39,14 @@ Modality parse_modality(const std::string& text) {
   throw InputError("unknown modality '" + text + "' (expected both, utterance or action)");
 }
 
+std::string to_string(AssistantTurns a) { return a == AssistantTurns::Taken ? "taken" : "all"; }
+
+AssistantTurns parse_assistant_turns(const std::string& text) {
+  if (text == "taken") return AssistantTurns::Taken;
+  if (text == "all") return AssistantTurns::All;
+  throw InputError("unknown assistant-turn refinement '" + text + "' (expected taken or all)");
+}
+
 ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord& plan) {
   pack.check_plan_tag(plan.tag, plan.id);
   return pack.profiles_for(plan.tag);
@@ -140,20 +148,29 @@ pddl::ObjectId Belief::acting_agent(const pddl::State& s) const {
   return args.empty() ? -1 : args[0];
 }
 
-void Belief::refine_all(const pddl::State& s) {
+void Belief::refine_all(const pddl::State& s, pddl::ActionId toward) {
   std::vector<int> all(policies_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
-  refine_some(s, all);
+  refine_some(s, all, toward);
 }
 
-void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs) {
+pddl::ActionId Belief::refine_target(pddl::ActionId action, bool evidence,
+                                     const std::vector<std::string>& utterances) const {
+  // An utterance is explained by the plans from s, so s needs every Q-value.
+  if (evidence || !utterances.empty() || options_.assistant_turns == AssistantTurns::All) return -1;
+  return action;
+}
+
+void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, pddl::ActionId toward) {
   if (!search_) return;  // VH: V = -h_g, nothing to refine
   refinements_ += hs.size();
   // Each hypothesis owns its policy and heuristic, so the refinements are
   // independent and may run on several threads.
   budget_stops_.resize(policies_.size(), 0);
   auto refine_one = [&](size_t h) {
-    budget_stops_[h] += policies_[h].refine_step(s, options_.refine).stopped_by_budget;
+    budget_stops_[h] += (toward >= 0 ? policies_[h].refine_toward(s, toward, options_.refine)
+                                     : policies_[h].refine_step(s, options_.refine))
+                            .stopped_by_budget;
   };
   if (pool_ && hs.size() > 1) {
     // Longest first: the step ends when the slowest thread does, and a long
@@ -284,7 +301,7 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
   const pddl::State s = state;  // `state` may alias state_
   if (particle_mode()) {
     const bool evidence = is_speaker_action(action);
-    history_.push_back({.kind = Event::Kind::Refine, .state = s});
+    history_.push_back({.kind = Event::Kind::Refine, .state = s, .action = refine_target(action, evidence, utterances)});
     if (evidence) history_.push_back({.kind = Event::Kind::Act, .state = s, .action = action});
     history_.push_back(speak_event(s, utterances, true));
     auto utts = particle_step(lm);
@@ -292,8 +309,8 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
     ++t_;
     return record(task_->action_name(action), evidence, std::move(utts), seconds_since(t0));
   }
-  refine_all(s);
   const bool evidence = is_speaker_action(action);
+  refine_all(s, refine_target(action, evidence, utterances));
   if (evidence)
     for (size_t h = 0; h < hyps_.size(); ++h) action_ll_[h] += score_action(static_cast<int>(h), s, action);
   // Robot actions: do(a), no evidence and no temperature update.

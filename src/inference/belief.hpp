@@ -70,6 +70,17 @@ Modality parse_modality(const std::string& text);  // throws InputError
 using domains::ProfileSet;
 ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord& plan);
 
+// What a belief step refines at the assistant's turns, where no action is
+// scored, so the refinement only learns values for the steps after it.
+// Taken: one lookahead, from the state the assistant's action led to (the
+// state the next step refines at). All: the spec's REFINE at every step, a
+// lookahead from every successor. With no search stopped by its budget the
+// later Q-values are the same optimal costs either way (docs/decisions.md,
+// "Refining the assistant's turns").
+enum class AssistantTurns { Taken, All };
+std::string to_string(AssistantTurns a);               // "taken", "all"
+AssistantTurns parse_assistant_turns(const std::string& text);  // throws InputError
+
 struct InferenceOptions {
   // Budgets of each A* search inside a refinement (spec 5.1: 2^18, no time limit).
   search::SearchOptions refine = [] {
@@ -91,6 +102,8 @@ struct InferenceOptions {
   // with the policies refined at s_k (the paper's model; default); Before =
   // s_{k-1}, the reference code's alignment. docs/decisions.md has the numbers.
   UtteranceTiming utterance_timing = UtteranceTiming::After;
+  // Refinement at the assistant's turns without an utterance (see AssistantTurns).
+  AssistantTurns assistant_turns = AssistantTurns::Taken;
   // Utterances the model cannot read carry little evidence (docs/decisions.md,
   // "Unreadable utterances"): the utterance log-likelihoods are multiplied by
   // a weight from the share of readable words (1 at or above
@@ -256,13 +269,16 @@ class Belief {
   struct Event {
     enum class Kind { Refine, Act, Speak } kind = Kind::Refine;
     pddl::State state;
-    pddl::ActionId action = -1;             // Act
+    pddl::ActionId action = -1;             // Act; Refine: >= 0 refines toward this action only
     std::vector<std::string> texts{};       // Speak
     std::vector<double> weights{};          // Speak: each text's evidence weight (set when first scored)
     double before = 0, after = 0;           // Speak: goal-independent log factors around the texts
   };
-  void refine_all(const pddl::State& s);
-  void refine_some(const pddl::State& s, const std::vector<int>& hs);
+  void refine_all(const pddl::State& s, pddl::ActionId toward = -1);
+  // toward >= 0: Policy::refine_toward(s, toward) instead of refine_step(s).
+  void refine_some(const pddl::State& s, const std::vector<int>& hs, pddl::ActionId toward = -1);
+  // The action a Refine event at s refines toward before `action` is taken (-1: all).
+  pddl::ActionId refine_target(pddl::ActionId action, bool evidence, const std::vector<std::string>& utterances) const;
   // log P(a | s, h) with h's policy as refined at s; updates h's temperatures.
   double score_action(int h, const pddl::State& s, pddl::ActionId action);
   // Particle mode: the Speak event of a step with these utterances; `step`:

@@ -209,7 +209,14 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   return expanded;
 }
 
-RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
+RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) { return refine_successors(s, opts, -1); }
+
+RefineStats Policy::refine_toward(const pddl::State& s, pddl::ActionId taken, const SearchOptions& opts) {
+  if (taken < 0) throw std::invalid_argument("refine_toward: no action");
+  return refine_successors(s, opts, taken);
+}
+
+RefineStats Policy::refine_successors(const pddl::State& s, const SearchOptions& opts, pddl::ActionId only) {
   RefineStats st;
   const pddl::Task& task = spec_->task();
   h_->prepare(*spec_, s);  // pruning sets from this call's starting state
@@ -237,6 +244,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
   double best = -kInf;
   bool cut = false;
   for (pddl::ActionId a : task.applicable_actions(s)) {
+    if (only >= 0 && a != only) continue;
     if (opts.deadline != std::chrono::steady_clock::time_point::max() &&
         std::chrono::steady_clock::now() >= opts.deadline) {
       // The run's deadline has passed: the remaining successors keep their
@@ -258,7 +266,7 @@ RefineStats Policy::refine(const pddl::State& s, const SearchOptions& opts) {
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }
-  if (!cut) set_value(graph_->insert(s.data()), best);  // a partial maximum is no value
+  if (!cut && only < 0) set_value(graph_->insert(s.data()), best);  // a partial maximum is no value
   return st;
 }
 

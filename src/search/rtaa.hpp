@@ -54,6 +54,12 @@ class Policy {
   // again from an empty policy. Inference and the generator's simulated
   // human both follow it, so a generated speaker plans as the observer's model does.
   RefineStats refine_step(const pddl::State& s, const SearchOptions& opts);
+  // The one lookahead of refine(s) that starts at the successor of s by
+  // `taken`: it learns the values along the way the agents went on, but the
+  // Q-values of s's other actions stay as they were and V(s) is not set (a
+  // maximum over some actions is no value). For steps whose Q-values nobody
+  // reads; no reset as in refine_step (the next refine_step does that).
+  RefineStats refine_toward(const pddl::State& s, pddl::ActionId taken, const SearchOptions& opts);
 
   // Q-values of every applicable action of the active agent in s (unfiltered,
   // in enumeration order). Reads V (or -H) of the successors; no search.
@@ -103,6 +109,8 @@ class Policy {
   // A* from state `root` with the learned estimates, stopping at a goal or
   // tree state (spec REFINE); then the RTAA* update of the values and tree.
   // Returns the expansions; `status` tells how the search ended.
+  // refine(s), or with only >= 0 refine_toward(s, only).
+  RefineStats refine_successors(const pddl::State& s, const SearchOptions& opts, pddl::ActionId only);
   size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws, SearchStatus& status);
   double learned_estimate(int id);
   bool is_goal_entry(int id);

@@ -177,6 +177,45 @@ TEST(VhDataset, InferenceOnPlan2_1) {
   EXPECT_GT(both, utterance);
 }
 
+// At the assistant's turns nothing is scored, so one lookahead from the state
+// the assistant's action led to (the default) must give the spec's posteriors
+// (a lookahead from every successor) on every plan, with less search.
+void expect_assistant_turns_do_not_move_posteriors(const std::string& dir, int min_plans) {
+  auto lm = embedded_lm();
+  if (!lm) GTEST_SKIP() << "no embedded LM";
+  auto ds = data::Dataset::load(dir);
+  int compared = 0;
+  size_t taken_values = 0, all_values = 0;
+  for (const auto& plan : ds.plans()) {
+    InferenceOptions taken, all;
+    all.assistant_turns = AssistantTurns::All;
+    const InferenceRun a = run_inference(ds, plan, *lm, all);
+    const InferenceRun b = run_inference(ds, plan, *lm, taken);
+    ASSERT_EQ(a.searches_stopped_by_budget, 0u) << plan.id;
+    ASSERT_EQ(a.steps.size(), b.steps.size());
+    for (size_t t = 0; t < a.steps.size(); ++t)
+      for (Modality m : kModalities)
+        for (size_t h = 0; h < a.steps[t][m].hypotheses.size(); ++h)
+          EXPECT_NEAR(a.steps[t][m].hypotheses[h], b.steps[t][m].hypotheses[h], 1e-9) << plan.id << " step " << t;
+    for (size_t h = 0; h < a.policies().size(); ++h) {
+      all_values += a.policies()[h].table_size();
+      taken_values += b.policies()[h].table_size();
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, min_plans);
+  EXPECT_LT(taken_values, all_values);  // it learned less: it searched less
+}
+
+TEST(AssistantTurns, TakenLeavesTheExamplePosteriorsUnchanged) {
+  expect_assistant_turns_do_not_move_posteriors(paths::examples_dir() + "/doors-keys-gems", 4);
+}
+
+TEST(AssistantTurns, TakenLeavesThePaperPosteriorsUnchanged) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
+  expect_assistant_turns_do_not_move_posteriors(paths::dkg_dataset(), 27);
+}
+
 TEST(ParallelRefinement, SameBeliefOnAnyNumberOfThreads) {
   // The project's own examples (always present): every step's posterior and
   // every policy's tables must not depend on how many threads refine them.
