@@ -60,7 +60,6 @@ void register_assist(CLI::App& app) {
       eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
       eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
       eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
-    eo.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
       eo.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
       const eval::LiveDecision d = eval::decide_next_action(ds, obs, *lm, eo, o->method);
       const auto& goals = d.inference.goals;

@@ -106,11 +106,11 @@ class Policy {
   };
   struct Lookahead;  // per-thread buffers (rtaa.cpp)
 
+  // refine(s), or with only >= 0 refine_toward(s, only).
+  RefineStats refine_successors(const pddl::State& s, const SearchOptions& opts, pddl::ActionId only);
   // A* from state `root` with the learned estimates, stopping at a goal or
   // tree state (spec REFINE); then the RTAA* update of the values and tree.
   // Returns the expansions; `status` tells how the search ended.
-  // refine(s), or with only >= 0 refine_toward(s, only).
-  RefineStats refine_successors(const pddl::State& s, const SearchOptions& opts, pddl::ActionId only);
   size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws, SearchStatus& status);
   double learned_estimate(int id);
   bool is_goal_entry(int id);
