@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "paper_languages.hpp"
 #include "util/error.hpp"
 
 namespace clips::commands {

@@ -1,6 +1,7 @@
 // Command enumeration and lifting in Doors, Keys & Gems (spec 7.3-7.6, 9.7).
 #include <gtest/gtest.h>
 
+#include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
 #include "language/commands/enumerate.hpp"
 

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
 #include "language/commands/enumerate.hpp"
 #include "language/commands/fewshot.hpp"

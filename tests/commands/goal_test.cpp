@@ -1,6 +1,7 @@
 // Commands as goal formulas (spec 9.9, VH spec 7.4).
 #include <gtest/gtest.h>
 
+#include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
 #include "language/commands/enumerate.hpp"
 

@@ -1,6 +1,7 @@
 // Naive groundings and focal objects (spec 9.11).
 #include <gtest/gtest.h>
 
+#include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
 #include "language/commands/grounding.hpp"
 

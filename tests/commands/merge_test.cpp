@@ -1,6 +1,7 @@
 // Merging commands across two utterances (VH spec 7.3).
 #include <gtest/gtest.h>
 
+#include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
 #include "language/commands/enumerate.hpp"
 #include "language/commands/utterance_merge.hpp"

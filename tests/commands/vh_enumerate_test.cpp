@@ -1,6 +1,7 @@
 // Command enumeration, lifting and printing in VirtualHome (VH spec 6.2-6.7, 7.1).
 #include <gtest/gtest.h>
 
+#include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
 #include "language/commands/enumerate.hpp"
 

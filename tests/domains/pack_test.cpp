@@ -10,6 +10,7 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "paper_languages.hpp"
 #include "data/dataset.hpp"
 #include "language/commands/term.hpp"
 #include "pddl/parser.hpp"
@@ -57,7 +58,7 @@ void expect_same(const commands::LanguageConfig& a, const commands::LanguageConf
 }
 
 // The paper packs' language blocks are the command models the paper's
-// numbers were measured with (language_config.cpp keeps them as fixtures).
+// numbers were measured with (tests/paper_languages.hpp writes them out).
 TEST(BuiltinPacks, LanguageBlocksEqualThePaperCommandModels) {
   expect_same(builtin_pack_spec("doors-keys-gems")->language, commands::doors_keys_gems_language());
   expect_same(builtin_pack_spec("virtual-home")->language, commands::virtual_home_language());

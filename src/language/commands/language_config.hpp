@@ -104,10 +104,6 @@ struct LanguageConfig {
   }
 };
 
-// Built-in settings equal to the shipped data/domains/<domain>/language.json.
-LanguageConfig doors_keys_gems_language();
-LanguageConfig virtual_home_language();
-
 // Loads a language.json file (format: data/domains/<domain>/language.json;
 // enum values are kebab-case, e.g. "exclude-speaker-only-commands"). Missing keys keep the defaults above; unknown
 // keys and bad values raise clips::InputError naming the file and the key.
