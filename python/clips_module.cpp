@@ -269,7 +269,7 @@ PYBIND11_MODULE(clips, m) {
           py::arg("assistance") = "qmdp", py::arg("lm") = "embedded", py::arg("lm_base_url") = "",
           py::arg("lm_model") = "", py::arg("lm_timeout") = 120.0, py::arg("goals") = std::vector<std::string>{},
           py::arg("cost_profiles") = std::vector<std::string>{}, py::arg("max_nodes") = size_t{1} << 18,
-          py::arg("threads") = 1, py::arg("particles") = 0, py::arg("particle_seed") = uint64_t{1},
+          py::arg("threads") = 0, py::arg("particles") = 0, py::arg("particle_seed") = uint64_t{1},
           py::arg("ess_threshold") = 0.5, py::arg("rejuvenation_moves") = 2, py::arg("rejuvenate") = "evidence",
           py::arg("proposal_groups") = 8, py::arg("particle_filters") = "all", py::arg("particle_estimate") = "support",
           py::arg("assistant_turns") = "taken",
@@ -282,7 +282,7 @@ PYBIND11_MODULE(clips, m) {
              const std::string& assistance, const std::string& lm, std::vector<std::string> goals,
              std::vector<std::string> cost_profiles) {
             auto o = session_options(method, assistance, lm, "", "", 120.0, std::move(goals), std::move(cost_profiles),
-                                     size_t{1} << 18, 1);
+                                     size_t{1} << 18, 0);
             py::gil_scoped_release unlocked;
             return clips::Session::open_domain(domain_dir, problem_file, std::move(o));
           },

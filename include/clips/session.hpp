@@ -67,7 +67,9 @@ struct SessionOptions {
   // rule (Doors-Keys-Gems {C3, C4}, the keys condition; without rules unit).
   std::vector<std::string> cost_profiles;
   size_t max_nodes = size_t{1} << 18;  // expansions per lookahead search
-  int threads = 1;                     // threads refining the hypotheses (0: all cores)
+  // Threads refining the hypotheses of one step. 0: all cores (results do
+  // not depend on it); 1 when many sessions run at once (`clips serve` does).
+  int threads = 0;
   // Particle inference over goal x cost profile (sequential Monte Carlo with
   // this many particles; only the hypotheses particles hold are refined).
   // 0: exact enumeration. Results are a function of particle_seed.

@@ -31,9 +31,11 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
                   "commands keep them) or code (the reference code drops them all)")
       ->check(CLI::IsMember({"paper", "code"}));
   cmd->add_option("--assistant-turns", f.assistant_turns,
-                  "Refinement at the assistant's turns without an utterance: taken (default; one lookahead, from "
-                  "the state its action led to) or all (the spec's REFINE, from every successor). The same "
-                  "posteriors unless a search hits its node budget; taken searches less")
+                  "Refinement at the assistant's turns, where no action is scored: taken (default; one lookahead, "
+                  "from the state its action led to; with an utterance there or after the last action, hypotheses "
+                  "whose plan from the state is stored are not searched further, since that plan explains it) or "
+                  "all (the spec's REFINE, from every successor). The same posteriors unless a search hits its "
+                  "node budget; taken searches less")
       ->check(CLI::IsMember({"taken", "all"}));
 }
 

@@ -148,31 +148,48 @@ pddl::ObjectId Belief::acting_agent(const pddl::State& s) const {
   return args.empty() ? -1 : args[0];
 }
 
-void Belief::refine_all(const pddl::State& s, pddl::ActionId toward) {
+void Belief::refine_all(const pddl::State& s, RefineWhat what) {
   std::vector<int> all(policies_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
-  refine_some(s, all, toward);
+  refine_some(s, all, what);
 }
 
-pddl::ActionId Belief::refine_target(pddl::ActionId action, bool evidence,
-                                     const std::vector<std::string>& utterances) const {
-  // An utterance is explained by the plans from s, so s needs every Q-value.
-  if (evidence || !utterances.empty() || options_.assistant_turns == AssistantTurns::All) return -1;
-  return action;
+Belief::RefineWhat Belief::refine_what(pddl::ActionId action, bool evidence,
+                                       const std::vector<std::string>& utterances) const {
+  // Scoring the human's action needs every Q-value at s.
+  if (evidence || options_.assistant_turns == AssistantTurns::All) return {};
+  return {.toward = action, .keep_stored = !utterances.empty()};
 }
 
-void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, pddl::ActionId toward) {
+Belief::RefineWhat Belief::hear_refine_what() const {
+  if (options_.assistant_turns == AssistantTurns::All) return {};
+  return {.toward = -1, .keep_stored = true};
+}
+
+void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, RefineWhat what) {
   if (!search_) return;  // VH: V = -h_g, nothing to refine
-  refinements_ += hs.size();
+  // Which refinement each hypothesis gets (toward >= 0: refine_toward), and
+  // who needs none.
+  std::vector<std::pair<size_t, pddl::ActionId>> work;
+  for (int hi : hs) {
+    const size_t h = static_cast<size_t>(hi);
+    const bool stored = what.keep_stored && policies_[h].on_stored_path(s);
+    if (what.keep_stored && !stored) {
+      work.push_back({h, -1});
+    } else if (what.toward >= 0 || !stored) {
+      work.push_back({h, what.toward});
+    }
+  }
+  refinements_ += work.size();
   // Each hypothesis owns its policy and heuristic, so the refinements are
   // independent and may run on several threads.
   budget_stops_.resize(policies_.size(), 0);
-  auto refine_one = [&](size_t h) {
+  auto refine_one = [&](size_t h, pddl::ActionId toward) {
     budget_stops_[h] += (toward >= 0 ? policies_[h].refine_toward(s, toward, options_.refine)
                                      : policies_[h].refine_step(s, options_.refine))
                             .stopped_by_budget;
   };
-  if (pool_ && hs.size() > 1) {
+  if (pool_ && work.size() > 1) {
     // Longest first: the step ends when the slowest thread does, and a long
     // refinement started last would leave the other threads idle. Each
     // hypothesis' time is predicted by its last refinement at a state where
@@ -182,16 +199,15 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, pddl:
     // order does not change any result.
     std::vector<double>& last = refine_seconds_[acting_agent(s)];
     last.resize(policies_.size(), 0.0);
-    std::vector<size_t> order(hs.begin(), hs.end());
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return last[a] > last[b]; });
-    pool_->run(order.size(), [&](size_t i) {
-      const size_t h = order[i];
+    std::stable_sort(work.begin(), work.end(), [&](const auto& a, const auto& b) { return last[a.first] > last[b.first]; });
+    pool_->run(work.size(), [&](size_t i) {
+      const auto [h, toward] = work[i];
       const auto t0 = std::chrono::steady_clock::now();
-      refine_one(h);
+      refine_one(h, toward);
       last[h] = seconds_since(t0);
     });
   } else {
-    for (int h : hs) refine_one(static_cast<size_t>(h));
+    for (const auto& [h, toward] : work) refine_one(h, toward);
   }
 }
 
@@ -290,7 +306,7 @@ StepRecord Belief::start(const pddl::State& s0, const std::vector<std::string>& 
     auto utts = particle_step(lm);
     return record("", false, std::move(utts), seconds_since(t0));
   }
-  refine_all(s0);
+  refine_all(s0, RefineWhat{});
   auto utts = score_utterances(s0, utterances, lm);
   return record("", false, std::move(utts), seconds_since(t0));
 }
@@ -301,7 +317,8 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
   const pddl::State s = state;  // `state` may alias state_
   if (particle_mode()) {
     const bool evidence = is_speaker_action(action);
-    history_.push_back({.kind = Event::Kind::Refine, .state = s, .action = refine_target(action, evidence, utterances)});
+    const RefineWhat what = refine_what(action, evidence, utterances);
+    history_.push_back({.kind = Event::Kind::Refine, .state = s, .action = what.toward, .keep_stored = what.keep_stored});
     if (evidence) history_.push_back({.kind = Event::Kind::Act, .state = s, .action = action});
     history_.push_back(speak_event(s, utterances, true));
     auto utts = particle_step(lm);
@@ -310,7 +327,7 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
     return record(task_->action_name(action), evidence, std::move(utts), seconds_since(t0));
   }
   const bool evidence = is_speaker_action(action);
-  refine_all(s, refine_target(action, evidence, utterances));
+  refine_all(s, refine_what(action, evidence, utterances));
   if (evidence)
     for (size_t h = 0; h < hyps_.size(); ++h) action_ll_[h] += score_action(static_cast<int>(h), s, action);
   // Robot actions: do(a), no evidence and no temperature update.
@@ -324,7 +341,8 @@ StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::Language
   if (utterances.empty()) return last;
   const auto t0 = std::chrono::steady_clock::now();
   if (particle_mode()) {
-    history_.push_back({.kind = Event::Kind::Refine, .state = state_});
+    const RefineWhat what = hear_refine_what();
+    history_.push_back({.kind = Event::Kind::Refine, .state = state_, .action = what.toward, .keep_stored = what.keep_stored});
     history_.push_back(speak_event(state_, utterances, false));
     auto utts = particle_step(&lm);
     StepRecord r = record(last.action, last.evidence, std::move(last.utterances), last.seconds);
@@ -332,7 +350,7 @@ StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::Language
     r.seconds += seconds_since(t0);
     return r;
   }
-  refine_all(state_);
+  refine_all(state_, hear_refine_what());
   auto utts = score_utterances(state_, utterances, &lm, /*speak_factor=*/false);
   if (options_.speak_factors) {
     // The step already counted "no utterance"; it had one after all.

@@ -73,10 +73,14 @@ ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord&
 // What a belief step refines at the assistant's turns, where no action is
 // scored, so the refinement only learns values for the steps after it.
 // Taken: one lookahead, from the state the assistant's action led to (the
-// state the next step refines at). All: the spec's REFINE at every step, a
-// lookahead from every successor. With no search stopped by its budget the
-// later Q-values are the same optimal costs either way (docs/decisions.md,
-// "Refining the assistant's turns").
+// state the next step refines at). When such a step (or hear(), after the
+// last action) also scores an utterance, a hypothesis whose plan from the
+// state is already stored gets no more than that: the utterance is explained
+// by that stored plan, which refining cannot change; the others get the full
+// REFINE. All: the spec's REFINE at every step, a lookahead from every
+// successor. With no search stopped by its budget the later Q-values are the
+// same optimal costs either way (docs/decisions.md, "Refining the
+// assistant's turns").
 enum class AssistantTurns { Taken, All };
 std::string to_string(AssistantTurns a);               // "taken", "all"
 AssistantTurns parse_assistant_turns(const std::string& text);  // throws InputError
@@ -102,7 +106,7 @@ struct InferenceOptions {
   // with the policies refined at s_k (the paper's model; default); Before =
   // s_{k-1}, the reference code's alignment. docs/decisions.md has the numbers.
   UtteranceTiming utterance_timing = UtteranceTiming::After;
-  // Refinement at the assistant's turns without an utterance (see AssistantTurns).
+  // Refinement at the assistant's turns, where no action is scored (see AssistantTurns).
   AssistantTurns assistant_turns = AssistantTurns::Taken;
   // Utterances the model cannot read carry little evidence (docs/decisions.md,
   // "Unreadable utterances"): the utterance log-likelihoods are multiplied by
@@ -270,15 +274,28 @@ class Belief {
     enum class Kind { Refine, Act, Speak } kind = Kind::Refine;
     pddl::State state;
     pddl::ActionId action = -1;             // Act; Refine: >= 0 refines toward this action only
+    bool keep_stored = false;               // Refine: as RefineWhat::keep_stored
     std::vector<std::string> texts{};       // Speak
     std::vector<double> weights{};          // Speak: each text's evidence weight (set when first scored)
     double before = 0, after = 0;           // Speak: goal-independent log factors around the texts
   };
-  void refine_all(const pddl::State& s, pddl::ActionId toward = -1);
-  // toward >= 0: Policy::refine_toward(s, toward) instead of refine_step(s).
-  void refine_some(const pddl::State& s, const std::vector<int>& hs, pddl::ActionId toward = -1);
-  // The action a Refine event at s refines toward before `action` is taken (-1: all).
-  pddl::ActionId refine_target(pddl::ActionId action, bool evidence, const std::vector<std::string>& utterances) const;
+  // What a step refines at s.
+  struct RefineWhat {
+    // >= 0: Policy::refine_toward(s, toward) instead of refine_step(s).
+    pddl::ActionId toward = -1;
+    // A hypothesis whose policy already has a stored goal path from s is
+    // refined only toward `toward` (not at all when it is -1); the others get
+    // refine_step(s). For utterances at the assistant's turns: the utterance
+    // is explained by the rollout from s, which follows the stored path, and
+    // no refinement changes a stored path.
+    bool keep_stored = false;
+  };
+  void refine_all(const pddl::State& s, RefineWhat what);
+  void refine_some(const pddl::State& s, const std::vector<int>& hs, RefineWhat what);
+  // What a step at s refines before `action` is taken.
+  RefineWhat refine_what(pddl::ActionId action, bool evidence, const std::vector<std::string>& utterances) const;
+  // What hear() refines at the current state before scoring its utterances.
+  RefineWhat hear_refine_what() const;
   // log P(a | s, h) with h's policy as refined at s; updates h's temperatures.
   double score_action(int h, const pddl::State& s, pddl::ActionId action);
   // Particle mode: the Speak event of a step with these utterances; `step`:

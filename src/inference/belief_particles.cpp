@@ -50,7 +50,7 @@ double Belief::particle_ll(Modality m, int h) const {
 
 void Belief::apply_event(const Event& e, const std::vector<int>& hs) {
   switch (e.kind) {
-    case Event::Kind::Refine: refine_some(e.state, hs, e.action); return;
+    case Event::Kind::Refine: refine_some(e.state, hs, {.toward = e.action, .keep_stored = e.keep_stored}); return;
     case Event::Kind::Act:
       for (int h : hs) action_ll_[h] += score_action(h, e.state, e.action);
       return;

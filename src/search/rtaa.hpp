@@ -69,6 +69,13 @@ class Policy {
   std::optional<pddl::ActionId> best_action(const pddl::State& s) const;
   // The same, from Q-values already computed by q_values(s).
   std::optional<pddl::ActionId> best_action(const pddl::State& s, const std::vector<QValue>& qs) const;
+  // Whether s lies on a stored goal path. Such a path is never changed by
+  // later refinements (a tree action, once set, stays until the policy is
+  // reset), so rollout(s) follows it whatever else is refined.
+  bool on_stored_path(const pddl::State& s) const {
+    const Entry* e = tree_entry(s.data());
+    return e && spec_->task().applicable(e->tree_action, s.data());
+  }
   // Greedy rollout of best_action for at most `max_steps`, stopping at the goal.
   std::vector<pddl::ActionId> rollout(const pddl::State& s, int max_steps) const;
 

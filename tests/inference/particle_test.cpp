@@ -325,8 +325,11 @@ TEST(ParticleBelief, HypothesesJoiningLateReplayToTheExactNumbers) {
   Belief b = corridor_belief(task, po);
   corridor_run(exact, *task, lm);
   corridor_run(b, *task, lm);
-  EXPECT_LT(b.refinements(), exact.refinements());
   std::vector<int> all = {0, 1, 2, 3};
+  // Some hypothesis is behind (its last events wait for a sync), and none
+  // was refined more often than exact enumeration refines it.
+  EXPECT_TRUE(std::any_of(all.begin(), all.end(), [&](int h) { return !b.current(h); }));
+  EXPECT_LE(b.refinements(), exact.refinements());
   b.sync_policies(all);
   for (int h : all) {
     EXPECT_TRUE(b.current(h));
