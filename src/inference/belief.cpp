@@ -168,16 +168,15 @@ Belief::RefineWhat Belief::hear_refine_what() const {
 
 void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, RefineWhat what) {
   if (!search_) return;  // VH: V = -h_g, nothing to refine
-  // Which refinement each hypothesis gets (toward >= 0: refine_toward), and
-  // who needs none.
+  // Each hypothesis' refinement (toward >= 0: refine_toward); one with a
+  // stored plan kept gets what a silent turn gives it, possibly nothing.
   std::vector<std::pair<size_t, pddl::ActionId>> work;
   for (int hi : hs) {
     const size_t h = static_cast<size_t>(hi);
-    const bool stored = what.keep_stored && policies_[h].on_stored_path(s);
-    if (what.keep_stored && !stored) {
-      work.push_back({h, -1});
-    } else if (what.toward >= 0 || !stored) {
-      work.push_back({h, what.toward});
+    if (what.keep_stored && policies_[h].on_stored_path(s)) {
+      if (what.toward >= 0) work.push_back({h, what.toward});
+    } else {
+      work.push_back({h, what.keep_stored ? -1 : what.toward});  // no stored plan: the full REFINE
     }
   }
   refinements_ += work.size();
