@@ -53,6 +53,10 @@ void register_serve(CLI::App& app) {
       ->check(PositiveSeconds);
   cmd->add_option("--max-steps", o->limits.play.max_steps, "Actions per session at most (default 300)")
       ->check(PositiveInteger);
+  cmd->add_option("--session-threads", o->limits.play.belief_threads,
+                  "Threads refining each session's belief (default 1, as sessions already run in parallel; 0: all "
+                  "cores, for one player at a time)")
+      ->check(NonNegativeInteger);
   add_particle_options(cmd, o->particles);
   add_lm_options(cmd, o->lm);
   cmd->callback([o] {

@@ -267,6 +267,8 @@ class Belief {
   void sync_policies(const std::vector<int>& hs);
   // Refinements of single hypotheses so far (the cost that particles save).
   size_t refinements() const { return refinements_; }
+  // Threads the refinements of a step run on (1: sequential).
+  int refine_threads() const { return pool_ ? pool_->threads() : 1; }
 
  private:
   // One recorded observation, replayed by hypotheses that join late.

@@ -77,7 +77,8 @@ PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::stri
   options_ = limits_.belief;
   options_.refine.max_nodes = limits_.inference_nodes;
   options_.refine.max_seconds = limits_.search_seconds;
-  options_.threads = 1;  // sessions already run in parallel
+  if (limits_.belief_threads < 0) throw InputError("belief threads must be >= 0 (0: all cores)");
+  options_.threads = limits_.belief_threads;
   rebuild({});
 }
 
@@ -400,7 +401,9 @@ json PlaySession::state() const {
   j["searches_stopped_by_budget"] = belief_->searches_stopped_by_budget();
   // Exact or particle inference, and the policy refinements done so far
   // (hypotheses × steps when exact; fewer where particles leave some out).
-  j["inference"] = {{"particles", options_.particles}, {"refinements", belief_->refinements()}};
+  j["inference"] = {{"particles", options_.particles},
+                    {"refinements", belief_->refinements()},
+                    {"threads", belief_->refine_threads()}};
   return j;
 }
 

@@ -37,9 +37,14 @@ struct PlayLimits {
   double search_seconds = 5;                 // per A* search
   int max_steps = 300;                       // actions per session (undo frees them)
   size_t max_utterance_bytes = 500;
+  // Threads refining one session's belief. 1 (default): sessions already run
+  // in parallel, one per request thread; 0: all cores, for a server that has
+  // one player at a time (the hypotheses are refined in parallel; results do
+  // not depend on it).
+  int belief_threads = 1;
   // Every other belief option (particle inference and its settings; exact
   // enumeration by default). Its budgets and thread count are replaced by
-  // the ones above and one thread per session.
+  // the ones above.
   inference::InferenceOptions belief;
 };
 

@@ -311,6 +311,43 @@ TEST_F(Fixture, ParticleSessionsRefineOnlyWhatTheParticlesHold) {
   EXPECT_LE(held, 2);
 }
 
+TEST_F(Fixture, SessionThreadsRefineInParallelWithTheSameResults) {
+  // A server for one player may refine each session's hypotheses on several
+  // threads; the posteriors and the assistant's decision are those of one thread.
+  auto play = [&](Service& s) {
+    const std::string url = "/api/sessions/" + create(s);
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_EQ(s.handle("POST", url + "/act", R"j({"action":"(left human)"})j").status, 200);
+      EXPECT_EQ(s.handle("POST", url + "/assist", R"j({"apply":true})j").status, 200);
+    }
+    EXPECT_EQ(s.handle("POST", url + "/hear", R"j({"utterance":"Can you get me the yellow key?"})j").status, 200);
+    EXPECT_EQ(s.handle("POST", url + "/act", R"j({"action":"(wait human)"})j").status, 200);
+    json decision = body(s.handle("POST", url + "/assist", R"j({"apply":false})j"))["decision"];
+    json state = body(s.handle("GET", url, ""));
+    return std::make_pair(state, decision);
+  };
+  auto one = make();
+  ServiceLimits lim;
+  lim.play.belief_threads = 2;
+  auto two = make(lim);
+  const auto [s1, d1] = play(*one);
+  const auto [s2, d2] = play(*two);
+  EXPECT_EQ(s1["inference"]["threads"], 1);
+  EXPECT_EQ(s2["inference"]["threads"], 2);
+  EXPECT_EQ(s1["posterior"].dump(), s2["posterior"].dump());
+  EXPECT_EQ(s1["inference"]["refinements"], s2["inference"]["refinements"]);
+  ASSERT_TRUE(d1.is_object()) << d1.dump();
+  EXPECT_FALSE(d1["candidates"].empty());
+  EXPECT_EQ(d1["action"], d2["action"]);
+  EXPECT_EQ(d1["candidates"].dump(), d2["candidates"].dump());
+  ServiceLimits bad;
+  bad.play.belief_threads = -1;
+  auto s = make(bad);
+  Reply r = s->handle("POST", "/api/sessions", json{{"dataset", "doors-keys-gems"}, {"problem", "e1"}}.dump());
+  EXPECT_EQ(r.status, 400) << r.body;
+  EXPECT_NE(r.body.find("threads"), std::string::npos) << r.body;
+}
+
 TEST_F(Fixture, SessionsRunInParallelAndIndependently) {
   auto s = make();
   auto play = [&](const std::string& id, std::string& out) {
