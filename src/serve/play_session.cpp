@@ -77,7 +77,7 @@ PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::stri
   options_ = limits_.belief;
   options_.refine.max_nodes = limits_.inference_nodes;
   options_.refine.max_seconds = limits_.search_seconds;
-  if (limits_.belief_threads < 0) throw InputError("belief threads must be >= 0 (0: all cores)");
+  if (limits_.belief_threads < 0) throw InputError("belief_threads (--session-threads) must be >= 0 (0: all cores), got " + std::to_string(limits_.belief_threads));
   options_.threads = limits_.belief_threads;
   rebuild({});
 }
