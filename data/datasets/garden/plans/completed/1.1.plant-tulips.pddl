@@ -1,0 +1,6 @@
+(pickup robot compost1 rosebed)
+(move human shed border)
+(move robot rosebed border)
+(wait human)
+(put robot compost1 border)
+(work human plant-tulips tulip1 compost1 trowel1 border)

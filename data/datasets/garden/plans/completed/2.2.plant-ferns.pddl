@@ -1,0 +1,8 @@
+(move robot shed greenhouse)
+(pickup human compost1 shed)
+(pickup robot fern1 greenhouse)
+(move human shed border)
+(move robot greenhouse border)
+(put human compost1 border)
+(put robot fern1 border)
+(work human plant-ferns fern1 compost1 spade1 border)

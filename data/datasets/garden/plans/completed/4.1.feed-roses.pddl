@@ -1,0 +1,8 @@
+(move robot patio greenhouse)
+(move human patio rosebed)
+(pickup robot hose1 greenhouse)
+(wait human)
+(move robot greenhouse rosebed)
+(wait human)
+(handover robot human hose1 rosebed)
+(work human feed-roses fertilizer1 twine1 hose1 rosebed)

@@ -1,0 +1,8 @@
+(pickup robot rake1 shed)
+(move human patio rosebed)
+(move robot shed rosebed)
+(put human compost1 rosebed)
+(handover robot human rake1 rosebed)
+(put human mulch1 rosebed)
+(wait robot)
+(work human mulch-roses mulch1 compost1 rake1 rosebed)

@@ -1,0 +1,8 @@
+(move robot vegpatch patio)
+(move human greenhouse vegpatch)
+(pickup robot compost1 patio)
+(put human seeds1 vegpatch)
+(move robot patio vegpatch)
+(wait human)
+(put robot compost1 vegpatch)
+(work human sow-carrots seeds1 compost1 trowel1 vegpatch)

@@ -1,0 +1,8 @@
+(move robot patio gate)
+(pickup human compost1 shed)
+(pickup robot tulip2 gate)
+(move human shed border)
+(move robot gate border)
+(put human compost1 border)
+(put robot tulip2 border)
+(work human plant-tulips tulip2 compost1 trowel1 border)

@@ -1,0 +1,10 @@
+(move human rosebed patio)
+(wait robot)
+(pickup human key2 patio)
+(wait robot)
+(unlock human key2 greenhouse patio)
+(wait robot)
+(move human patio greenhouse)
+(wait robot)
+(pickup human rose1 greenhouse)
+; I'd like to pot this one up. Could you open the shed and find me something to dig with?

@@ -1,0 +1,2 @@
+(pickup human basket1 patio)
+; Can you get the large shears for me?

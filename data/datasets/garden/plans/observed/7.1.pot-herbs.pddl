@@ -1,0 +1,2 @@
+(pickup human trowel1 shed)
+; Fetch the small plant from the greenhouse, would you?

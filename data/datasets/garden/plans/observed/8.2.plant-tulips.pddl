@@ -1,0 +1,10 @@
+(move human gate patio)
+(wait robot)
+(pickup human key1 patio)
+(wait robot)
+(unlock human key1 shed patio)
+(wait robot)
+(move human patio shed)
+(wait robot)
+(pickup human trowel1 shed)
+; I take the compost. You bring the rest to the border, yes?

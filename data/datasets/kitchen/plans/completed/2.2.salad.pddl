@@ -1,0 +1,8 @@
+(move robot fridge1 cupboard1)
+(move human fridge1 counter1)
+(pickup robot bowl1 cupboard1)
+(putdown human tomato2 counter1)
+(move robot cupboard1 counter1)
+(putdown human pepper1 counter1)
+(handover robot human bowl1 counter1)
+(cook2 human salad tomato2 pepper1 bowl1 counter1)

@@ -1,0 +1,8 @@
+(open robot fridge1)
+(move human cupboard1 counter1)
+(pickup robot butter1 fridge1)
+(putdown human flour1 counter1)
+(move robot fridge1 counter1)
+(wait human)
+(putdown robot butter1 counter1)
+(cook3 human crumble apple1 flour1 butter1 tray1 counter1)

@@ -1,0 +1,8 @@
+(open robot cupboard2)
+(move human counter1 cupboard2)
+(wait robot)
+(pickup human pan2 cupboard2)
+(wait robot)
+(move human cupboard2 counter1)
+(wait robot)
+(cook2 human omelette egg1 cheese1 pan2 counter1)

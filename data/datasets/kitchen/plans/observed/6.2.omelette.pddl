@@ -1,0 +1,10 @@
+(move human counter1 fridge1)
+(wait robot)
+(open human fridge1)
+(wait robot)
+(pickup human egg1 fridge1)
+(wait robot)
+(move human fridge1 counter1)
+(wait robot)
+(putdown human egg1 counter1)
+; Could you open the little cupboard? I'll grab the pan.

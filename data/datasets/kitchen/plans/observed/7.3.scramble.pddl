@@ -1,0 +1,6 @@
+(move human counter1 fridge1)
+(wait robot)
+(open human fridge1)
+(wait robot)
+(pickup human egg1 fridge1)
+; Could you get me the big one from the cupboard?

@@ -1,0 +1,8 @@
+(open robot cabinet1)
+(pickup human solvent1 shelf1)
+(pickup robot acid2 cabinet1)
+(move human shelf1 hood1)
+(move robot cabinet1 hood1)
+(put human solvent1 hood1)
+(put robot acid2 hood1)
+(run human dilution acid2 solvent1 pipette1 hood1)

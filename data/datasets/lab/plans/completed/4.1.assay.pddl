@@ -1,0 +1,8 @@
+(open robot fridge1)
+(pickup human enzyme1 fridge1)
+(wait robot)
+(move human fridge1 bench1)
+(wait robot)
+(put human enzyme1 bench1)
+(wait robot)
+(run human assay buffer1 enzyme1 pipette1 bench1)

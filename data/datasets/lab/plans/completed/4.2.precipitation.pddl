@@ -1,0 +1,8 @@
+(open robot fridge1)
+(move human shelf1 hood1)
+(pickup robot serum1 fridge1)
+(wait human)
+(move robot fridge1 hood1)
+(wait human)
+(put robot serum1 hood1)
+(run human precipitation solvent1 serum1 pipette1 hood1)

@@ -1,0 +1,8 @@
+(move robot fridge1 drawer1)
+(move human fridge1 hotplate1)
+(pickup robot pipette1 drawer1)
+(put human culture1 hotplate1)
+(move robot drawer1 hotplate1)
+(put human enzyme2 hotplate1)
+(handover robot human pipette1 hotplate1)
+(run human digestion enzyme2 culture1 pipette1 hotplate1)

@@ -1,0 +1,8 @@
+(open robot fridge1)
+(wait human)
+(pickup robot culture1 fridge1)
+(wait human)
+(move robot fridge1 hood1)
+(wait human)
+(put robot culture1 hood1)
+(run human extraction solvent1 culture1 flask1 hood1)

@@ -1,0 +1,2 @@
+(pickup human pipette1 shelf1)
+; Can you bring me the sample that goes with this?
