@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "assist/assist.hpp"
+#include "assist/request.hpp"
 #include "clips/version.hpp"
 #include "data/dataset.hpp"
 #include "domains/pack.hpp"
@@ -86,6 +87,8 @@ struct Session::Impl {
   std::vector<std::string> goal_labels, profile_names;
   inference::StepRecord last;  // the belief's record of the current step
   std::vector<Step> trace;
+  // What the last instruction asked for, per hypothesis (Q_MDP's request rule).
+  std::vector<std::shared_ptr<const assist::Request>> requests;
   domains::Roles roles;
   std::optional<pddl::Task::AtomRef> assistant_active;  // null: no (active agent) predicate
 
@@ -262,6 +265,7 @@ const Step& Session::hear(const std::string& utterance) {
   if (!m.lm) m.lm = shared_language_model(m.options.language_model);
   try {
     m.last = m.belief->hear({utterance}, *m.lm, m.last);
+    if (!m.last.utterances.empty()) m.requests = assist::requests_from(*m.task, m.last.utterances.back());
   } catch (const lm::LmError& e) {
     throw LanguageModelError(e.what());
   }
@@ -298,10 +302,12 @@ AssistDecision Session::assist() {
   // observe() would make.
   setup.refine_options = search::SearchOptions{};
   setup.refine_options.max_nodes = m.options.max_nodes;
+  assist::set_request_rule(setup, assist::parse_assist_rule(m.pack->spec().assistance_rule), m.pack->language());
   std::vector<assist::Hypothesis> hyps;
   auto& policies = m.belief->policies();
   for (size_t h = 0; h < post.hypotheses.size(); ++h)
-    hyps.push_back({post.hypotheses[h], std::shared_ptr<search::Policy>(&policies[h], [](search::Policy*) {})});
+    hyps.push_back({post.hypotheses[h], std::shared_ptr<search::Policy>(&policies[h], [](search::Policy*) {}), nullptr});
+  if (m.options.method != Method::ActionOnly) assist::attach_requests(hyps, m.requests);
   const int t = m.belief->t() + 1;  // the model timestep of the decision
   const assist::Decision dec = m.options.assistance == Assistance::QMdp
                                    ? assist::qmdp_decision(setup, hyps, setup.start, t)

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "data/dataset.hpp"
+#include "eval/experiment.hpp"
 #include "language/listener.hpp"
 #include "language/lm/language_model.hpp"
 
@@ -43,12 +44,18 @@ struct LmFlags {
   std::string utterance_timing = "after";  // state explaining an utterance: after (s_k) or before (s_{k-1})
   std::string assistant_turns = "taken";  // refinement at the assistant's turns (inference::AssistantTurns)
   std::string qa_floor = "dead-ends";      // Q_MDP floor: dead-ends or horizon (assist::QaFloor)
+  std::string speaker_plans;  // "" (the pack's), single or tied (domains::RolloutSettings::Plans)
+  std::string assist_rule;    // "" (the pack's), paper or request (assist::AssistRule)
 };
 void add_lm_options(CLI::App* cmd, LmFlags& flags);
 // --speaker-rule and --utterance-timing, for the subcommands that run CLIPS inference.
 void add_speaker_model_options(CLI::App* cmd, LmFlags& flags);
 // --qa-floor, for the subcommands that run Q_MDP assistance.
 void add_assistance_options(CLI::App* cmd, LmFlags& flags);
+// What the speaker-model and assistance flags say, into an experiment's or an
+// inference's options (the same parsing for every subcommand).
+void apply_model_flags(const LmFlags& flags, eval::ExperimentOptions& options);
+void apply_model_flags(const LmFlags& flags, inference::InferenceOptions& options);
 // The options the --lm flags say, for every subcommand alike.
 language::LanguageModelOptions lm_options(const LmFlags& flags);
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);

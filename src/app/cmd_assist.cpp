@@ -57,10 +57,7 @@ void register_assist(CLI::App& app) {
       auto lm = make_lm(o->lm, ds);
       eval::ExperimentOptions eo;
       eo.inference_threads = 0;
-      eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
-      eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
-      eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
-      eo.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
+      apply_model_flags(o->lm, eo);
       const eval::LiveDecision d = eval::decide_next_action(ds, obs, *lm, eo, o->method);
       const auto& goals = d.inference.goals;
       if (o->json) {
@@ -89,10 +86,7 @@ void register_assist(CLI::App& app) {
     eval::ExperimentOptions eo;
     eo.seed = o->seed;
     eo.inference_threads = 0;  // one plan: use every core
-    eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
-    eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
-    eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
-    eo.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
+    apply_model_flags(o->lm, eo);
     eo.multimodal = *mm;
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;

@@ -208,6 +208,11 @@ void register_particles(CLI::App* bench) {
     o->dataset = dataset_dir(o->dataset);
     const auto ds = data::Dataset::load(o->dataset);
     o->language_model = make_lm(*lm, ds);
+    {
+      inference::InferenceOptions io;
+      apply_model_flags(*lm, io);
+      o->speaker_plans = io.utterance.plans;
+    }
     o->speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
     o->assistant_turns = inference::parse_assistant_turns(lm->assistant_turns);
@@ -301,10 +306,7 @@ void register_bench(CLI::App& app) {
     o->dataset = dataset_dir(o->dataset);
     o->lm = lm->kind;  // with --lm-base-url, --lm-model, --lm-timeout, --lm-max-reply-mb
     o->lm_options = lm_options(*lm);
-    o->experiment.speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
-    o->experiment.utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
-    o->experiment.qa_floor = assist::parse_qa_floor(lm->qa_floor);
-    o->experiment.assistant_turns = inference::parse_assistant_turns(lm->assistant_turns);
+    apply_model_flags(*lm, o->experiment);
     o->experiment.particles = particles->particles;
     o->experiment.particle_seed = particles->seed;
     o->experiment.ess_threshold = particles->ess_threshold;

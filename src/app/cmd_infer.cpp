@@ -148,10 +148,8 @@ void register_infer(CLI::App& app) {
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
     opts.heuristic = o->heuristic;
-    opts.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
     opts.threads = 0;  // one plan: use every core
-    opts.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
-    opts.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
+    apply_model_flags(o->lm, opts);
     apply_particle_flags(o->particles, opts);
     const inference::InferenceRun run = adhoc ? inference::run_inference_on_observations(ds, plan, *lm, opts)
                                               : inference::run_inference(ds, plan, *lm, opts);

@@ -78,14 +78,12 @@ void register_render(CLI::App& app) {
       eval::ExperimentOptions eo;
       eo.methods = {"clips"};
       eo.inference_threads = 0;
-      eo.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
-      eo.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
-      eo.qa_floor = assist::parse_qa_floor(o->lm.qa_floor);
-      eo.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
+      apply_model_flags(o->lm, eo);
       auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
       if (outcome.failure) std::rethrow_exception(outcome.failure);
       if (!outcome.error.empty()) throw InputError(outcome.error);
       const eval::MethodResult* c = outcome.find("clips");
+      if (c->failure) std::rethrow_exception(c->failure);
       run.goals = outcome.goals;
       run.observed_posterior = outcome.goal_posterior_steps;
       run.final_posterior = c->goal_posterior;
@@ -93,9 +91,7 @@ void register_render(CLI::App& app) {
       run.label = "CLIPS";
     } else {
       inference::InferenceOptions io;
-      io.utterance.speaker_rule = inference::parse_speaker_rule(o->lm.speaker_rule);
-      io.utterance_timing = inference::parse_utterance_timing(o->lm.utterance_timing);
-      io.assistant_turns = inference::parse_assistant_turns(o->lm.assistant_turns);
+      apply_model_flags(o->lm, io);
       io.threads = 0;
       auto inf = inference::run_inference(ds, p, *lm, io);
       run.goals = inf.goals;

@@ -37,6 +37,11 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
                   "all (the spec's REFINE, from every successor). The same posteriors unless a search hits its "
                   "node budget; taken searches less")
       ->check(CLI::IsMember({"taken", "all"}));
+  cmd->add_option("--speaker-plans", f.speaker_plans,
+                  "Which joint plans the speaker model may have in mind: tied (every plan the policy values as "
+                  "well as its greedy one, ties broken every way) or single (the one greedy rollout, the paper's "
+                  "tables); default: the pack's inference.rollout.plans")
+      ->check(CLI::IsMember({"single", "tied"}));
 }
 
 void add_assistance_options(CLI::App* cmd, LmFlags& f) {
@@ -44,6 +49,34 @@ void add_assistance_options(CLI::App* cmd, LmFlags& f) {
                   "Which Q-values Q_MDP floors at the cost of waiting to the horizon: dead-ends (default; only "
                   "unreachable goals, the spec's stated purpose) or horizon (every value, the reference formula)")
       ->check(CLI::IsMember({"dead-ends", "horizon"}));
+  cmd->add_option("--assist-rule", f.assist_rule,
+                  "How Q_MDP picks among actions of equal expected value: request (the one that carries out what "
+                  "the instruction most probably asked for) or paper (the spec's rule, for the paper's tables); "
+                  "default: the pack's assistance_rule")
+      ->check(CLI::IsMember({"paper", "request"}));
+}
+
+namespace {
+std::optional<domains::RolloutSettings::Plans> parse_plans(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  return text == "single" ? domains::RolloutSettings::Plans::Single : domains::RolloutSettings::Plans::Tied;
+}
+}  // namespace
+
+void apply_model_flags(const LmFlags& f, inference::InferenceOptions& io) {
+  io.utterance.speaker_rule = inference::parse_speaker_rule(f.speaker_rule);
+  io.utterance.plans = parse_plans(f.speaker_plans);
+  io.utterance_timing = inference::parse_utterance_timing(f.utterance_timing);
+  io.assistant_turns = inference::parse_assistant_turns(f.assistant_turns);
+}
+
+void apply_model_flags(const LmFlags& f, eval::ExperimentOptions& eo) {
+  eo.speaker_rule = inference::parse_speaker_rule(f.speaker_rule);
+  eo.speaker_plans = parse_plans(f.speaker_plans);
+  eo.utterance_timing = inference::parse_utterance_timing(f.utterance_timing);
+  eo.assistant_turns = inference::parse_assistant_turns(f.assistant_turns);
+  eo.qa_floor = assist::parse_qa_floor(f.qa_floor);
+  if (!f.assist_rule.empty()) eo.assist_rule = assist::parse_assist_rule(f.assist_rule);
 }
 
 language::LanguageModelOptions lm_options(const LmFlags& f) {

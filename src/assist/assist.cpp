@@ -1,6 +1,8 @@
 #include "assist/assist.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,26 @@ using model::kInf;
 using pddl::ActionId;
 
 std::string to_string(QaFloor f) { return f == QaFloor::Horizon ? "horizon" : "dead-ends"; }
+
+std::string to_string(AssistRule r) { return r == AssistRule::Paper ? "paper" : "request"; }
+
+AssistRule parse_assist_rule(const std::string& text) {
+  if (text == "paper") return AssistRule::Paper;
+  if (text == "request") return AssistRule::Request;
+  throw InputError("unknown assistance rule '" + text + "' (expected paper or request)");
+}
+
+std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config) {
+  const auto& actions = task.domain().actions;
+  std::vector<std::pair<int, int>> out(actions.size(), {-1, -1});
+  for (size_t i = 0; i < actions.size(); ++i)
+    if (const auto* r = config.salient_rule(actions[i].name)) {
+      const int n = static_cast<int>(actions[i].param_types.size());
+      if (r->agent_arg >= 1 && r->agent_arg <= n && r->focal_arg >= 1 && r->focal_arg <= n)
+        out[i] = {r->agent_arg - 1, r->focal_arg - 1};
+    }
+  return out;
+}
 
 QaFloor parse_qa_floor(const std::string& text) {
   if (text == "dead-ends") return QaFloor::DeadEnds;
@@ -61,6 +83,65 @@ double live_threshold(const std::vector<Hypothesis>& belief, double threshold) {
   return std::min(threshold, top / 2);
 }
 
+// How much of the request the assistant's part of `plan` carries out, and
+// how much of what the principal said they would do it takes over. Actions
+// match on their name, agent and focal object (not on the place or tool, which
+// the speaker rarely fixes).
+struct RequestMatcher {
+  const AssistSetup& setup;
+  const pddl::Task& task;
+  pddl::ObjectId assistant = -1;
+
+  explicit RequestMatcher(const AssistSetup& s) : setup(s), task(*s.task) {
+    if (auto o = task.find_object(s.assistant)) assistant = *o;
+  }
+  // (schema, focal object) of a salient action by `agent`; schema -1 if not salient.
+  std::pair<int, pddl::ObjectId> key(pddl::ActionId a, pddl::ObjectId* agent = nullptr) const {
+    const auto& ga = task.action(a);
+    if (static_cast<size_t>(ga.schema) >= setup.salient_args.size()) return {-1, -1};
+    const auto [ag, focal] = setup.salient_args[static_cast<size_t>(ga.schema)];
+    if (ag < 0) return {-1, -1};
+    if (agent) *agent = ga.args[static_cast<size_t>(ag)];
+    return {ga.schema, ga.args[static_cast<size_t>(focal)]};
+  }
+  // Score of one hypothesis' request against a plan: Σ_c P(c) (share of c's
+  // assistant part the plan's assistant does - share of c's principal part
+  // it does instead of the principal - kExtraObject per object the
+  // assistant handles that c does not mention). So among equally good
+  // plans the assistant does what it was asked, leaves alone what the
+  // principal said they would do, and takes on no more than it was asked to.
+  static constexpr double kExtraObject = 0.5;
+  double score(const Request& request, const std::vector<ActionId>& plan) const {
+    std::vector<std::pair<int, pddl::ObjectId>> done;
+    std::vector<pddl::ObjectId> handled;
+    for (ActionId a : plan) {
+      pddl::ObjectId agent = -1;
+      auto k = key(a, &agent);
+      if (k.first < 0 || agent != assistant) continue;
+      done.push_back(k);
+      if (std::find(handled.begin(), handled.end(), k.second) == handled.end()) handled.push_back(k.second);
+    }
+    auto share = [&](const std::vector<ActionId>& part) {
+      if (part.empty()) return 0.0;
+      double n = 0;
+      for (ActionId a : part)
+        if (std::find(done.begin(), done.end(), key(a)) != done.end()) n += 1;
+      return n / static_cast<double>(part.size());
+    };
+    double v = 0;
+    for (const RequestedCommand& c : request) {
+      double extra = 0;
+      for (pddl::ObjectId o : handled) {
+        bool mentioned = false;
+        for (ActionId a : c.assistant_part) mentioned = mentioned || key(a).second == o;
+        if (!mentioned) extra += 1;
+      }
+      v += c.probability * (share(c.assistant_part) - share(c.principal_part) - kExtraObject * extra);
+    }
+    return v;
+  }
+};
+
 // The Q_MDP choice at timestep t (spec 9.3): the common best action when
 // every hypothesis above the threshold agrees, else the argmax of the
 // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
@@ -86,7 +167,10 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
   }
   Decision d;
   d.unanimous = all_same && common;
-  if (d.unanimous && !values_always) {
+  const bool request_rule = setup.rule == AssistRule::Request && !setup.salient_args.empty() &&
+                            std::any_of(live.begin(), live.end(),
+                                        [](const Hypothesis* h) { return h->request && !h->request->empty(); });
+  if (d.unanimous && !values_always && !request_rule) {
     d.action = *common;
     return d;
   }
@@ -109,12 +193,53 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
   size_t best = 0;
   for (size_t i = 1; i < acts.size(); ++i)
     if (qa[i] > qa[best]) best = i;
-  if (d.unanimous) {
-    d.action = *common;
-    return d;
-  }
   if (acts.empty()) throw InputError("no action is applicable in the assistance state");
-  d.action = acts[best];
+  d.action = d.unanimous ? *common : acts[best];
+  if (request_rule) {
+    // Ties at the best value go to the action whose continuation (each
+    // hypothesis' own plan after it) carries out most of the request.
+    std::vector<size_t> tied;
+    for (size_t i = 0; i < acts.size(); ++i)
+      if (qa[i] >= qa[best] - setup.tie_tolerance) tied.push_back(i);
+    if (tied.size() > 1) {
+      const RequestMatcher match(setup);
+      const int steps = std::max(0, setup.horizon - t);
+      d.request_scores.assign(acts.size(), std::numeric_limits<double>::quiet_NaN());
+      for (size_t i : tied) {
+        const State next = task.apply(s, acts[i]);
+        double v = 0;
+        for (const Hypothesis* h : live) {
+          if (!h->request || h->request->empty()) continue;
+          std::vector<ActionId> plan{acts[i]};
+          for (ActionId a : h->policy->rollout(next, steps)) plan.push_back(a);
+          v += h->weight * match.score(*h->request, plan);
+        }
+        d.request_scores[i] = v;
+      }
+      size_t pick = tied.front();
+      for (size_t i : tied)
+        if (d.request_scores[i] > d.request_scores[pick] + 1e-12) pick = i;
+      const size_t chosen = static_cast<size_t>(std::find(acts.begin(), acts.end(), d.action) - acts.begin());
+      const bool chosen_tied = std::find(tied.begin(), tied.end(), chosen) != tied.end();
+      if (!chosen_tied || d.request_scores[pick] > d.request_scores[chosen] + 1e-12) {
+        d.broke_tie = acts[pick] != d.action;
+        d.action = acts[pick];
+      }
+      if (d.broke_tie) {
+        // The command that weighs most behind the choice, for explanations.
+        std::map<std::string, double> by_text;
+        for (const Hypothesis* h : live)
+          if (h->request)
+            for (const RequestedCommand& c : *h->request) by_text[c.text] += h->weight * c.probability;
+        double top = -1;
+        for (const auto& [text, w] : by_text)
+          if (w > top) {
+            top = w;
+            d.request_command = text;
+          }
+      }
+    }
+  }
   if (debug_qmdp()) {
     // CLIPS_DEBUG_QMDP=1: each contested decision, per live hypothesis.
     std::fprintf(stderr, "qmdp t=%d choose %s\n", t, task.action_name(acts[best]).c_str());

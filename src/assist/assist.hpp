@@ -19,14 +19,41 @@
 #include <string>
 #include <vector>
 
+#include "language/commands/language_config.hpp"
 #include "search/rtaa.hpp"
 
 namespace clips::assist {
 
+// A command the principal may have meant by their last instruction, under
+// one hypothesis, as ground actions: the assistant's part (what it was asked
+// to do) and the principal's own (what they said they would do themselves).
+struct RequestedCommand {
+  double probability = 0;  // P(c | u, s, h)
+  std::string text;        // display form, for explanations
+  std::vector<pddl::ActionId> assistant_part, principal_part;
+};
+using Request = std::vector<RequestedCommand>;
+
 struct Hypothesis {
   double weight = 0;
   std::shared_ptr<search::Policy> policy;  // owns its specification
+  // What this hypothesis says the last instruction asked for (null: none
+  // heard, or a method that does not listen).
+  std::shared_ptr<const Request> request;
 };
+
+// How Q_MDP picks among the assistant's actions of equal expected value
+// (within AssistSetup::tie_tolerance of the best).
+//   Paper:   spec 9.3 as written: the hypotheses' common best action when
+//            they all agree, else the first maximiser in action order.
+//   Request: the action whose continuation carries out most of what the
+//            principal most probably asked for (P(c | u, observations),
+//            summed over hypotheses) and takes over least of what they said
+//            they would do themselves; the paper's choice when that is equal.
+// docs/decisions.md ("Following the request") has the numbers.
+enum class AssistRule { Paper, Request };
+std::string to_string(AssistRule r);              // "paper", "request"
+AssistRule parse_assist_rule(const std::string& text);  // throws InputError
 
 // How Q_MDP bounds a hypothesis' Q-values (spec 9.3) before weighting them.
 // The spec gives max(Q, -((horizon - t) * cost(wait) + cost(a))) and says its
@@ -66,6 +93,14 @@ struct AssistSetup {
   // is legal in the current state, even off the completed trajectory
   // (clips-spec-virtual-home.md 8.3).
   bool follow_plan_by_index = false;
+  AssistRule rule = AssistRule::Request;
+  // Actions whose expected value is within this of the best are tied (cost
+  // units; ties are exact wherever two plans cost the same).
+  double tie_tolerance = 1e-6;
+  // Per action schema: the 0-based argument positions of the acting agent and
+  // the focal object of a salient action (commands are matched on them), or
+  // {-1, -1} for schemas people do not ask for. Empty: no request is read.
+  std::vector<std::pair<int, int>> salient_args;
   AssistSetup() {
     refine_options.max_nodes = 1u << 16;
     refine_options.max_seconds = 10;
@@ -117,8 +152,17 @@ struct Decision {
   // Every hypothesis above the weight threshold has the same best action
   // (Q_MDP then takes it whatever the weighted values say).
   bool unanimous = false;
+  // AssistRule::Request, when several actions tie at the best value: per
+  // candidate, how much of the request its continuation carries out (NaN for
+  // candidates outside the tie), and the most probable command behind the
+  // choice when the request changed it.
+  std::vector<double> request_scores;
+  std::string request_command;
+  bool broke_tie = false;
 };
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t);
+// The salient-argument table of AssistSetup::salient_args for a command language.
+std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config);
 // pi-bar_MDP's action: the mode of the mixture of the hypotheses' greedy
 // policies (each hypothesis above the threshold votes with its weight).
 Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s);

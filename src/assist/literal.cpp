@@ -78,6 +78,21 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
       goal_found = true;
     }
   }
+  if (!goal_found && ls.truth_policy && static_cast<int>(out.plan.size()) < remaining) {
+    // Phase 2's search ran out of budget: the principal finishes by its own
+    // policy, refined as it goes, with the assistant frozen (it may still
+    // wait or hand over what it holds).
+    search::Policy principal = *ls.truth_policy;
+    State s = model::freeze(task, end, w.assistant);
+    while (static_cast<int>(out.plan.size()) < remaining && !ls.truth->is_goal(s)) {
+      if (w.refine) principal.refine(s, w.refine_options);
+      auto a = principal.value(s) > -model::kInf ? principal.best_action(s) : std::nullopt;
+      if (!a) break;
+      out.plan.push_back(*a);
+      s = task.apply(s, *a);
+    }
+    goal_found = ls.truth->is_goal(s);
+  }
   if (goal_found) {
     out.goal_ok = static_cast<int>(out.plan.size()) <= remaining;
   } else {

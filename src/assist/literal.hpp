@@ -27,6 +27,11 @@ struct LiteralSetup {
   // Domain knowledge: goals that can never hold (their search can only fail).
   std::function<bool(const std::string&)> goal_unsatisfiable;
   int samples = 10;
+  // The principal's own policy for the true goal (the inference policy of
+  // the true hypothesis), for when phase 2's A* runs out of budget: the
+  // principal then goes on as in the Q_MDP simulations, by its policy, the
+  // assistant frozen (null: padding with no-ops, as the reference does).
+  std::shared_ptr<const search::Policy> truth_policy;
   // Grounding search (naive): objects per type and the static facts they must satisfy.
   std::map<std::string, std::vector<std::string>> objects_by_type;
   std::vector<commands::Term> facts;

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "pddl/parser.hpp"
@@ -351,6 +352,8 @@ Dataset Dataset::load(const std::string& dir_in) {
         ds.goal_sets_[e.path().stem().string()] = parse_goal_set(pddl::read_text_file(path), path, ds.goal_defs_);
       }
   }
+  if (fs::path table = dir / "instructions.tsv"; fs::exists(table))
+    apply_instruction_table(pddl::read_text_file(table.string()), table.string(), ds.plans_, ds.broken_);
   // stimuli.json (Doors-Keys-Gems) is optional: only `validate` reads it, to
   // cross-check the plans against it; the tutorial plans demo* have no entry,
   // and copies of the dataset with reworded utterances drop the file. When it
@@ -363,6 +366,72 @@ Dataset Dataset::load(const std::string& dir_in) {
       ds.stimuli_error_ = err.what();
     }
   return ds;
+}
+
+void apply_instruction_table(const std::string& text, const std::string& path, std::vector<PlanRecord>& plans,
+                             const std::vector<BrokenPlan>& broken) {
+  std::map<std::string, PlanRecord*> by_id;
+  for (auto& p : plans) by_id[p.id] = &p;
+  std::set<std::string> seen;
+  auto word = [](const std::string& w) {
+    return !w.empty() && std::all_of(w.begin(), w.end(), [](unsigned char c) {
+      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+    });
+  };
+  int line_no = 0;
+  bool header = false;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) {
+      if (end == text.size()) break;
+      continue;
+    }
+    std::vector<std::string> cols;
+    for (size_t a = 0;;) {
+      const size_t b = line.find('\t', a);
+      cols.push_back(line.substr(a, b == std::string::npos ? std::string::npos : b - a));
+      if (b == std::string::npos) break;
+      a = b + 1;
+    }
+    const SourceLoc loc{path, line_no, 1};
+    if (!header) {
+      if (cols.size() != 3 || cols[0] != "plan" || cols[1] != "split" || cols[2] != "categories")
+        throw InputError(loc, "expected the header line \"plan<TAB>split<TAB>categories\"");
+      header = true;
+      continue;
+    }
+    if (cols.size() != 3) throw InputError(loc, "expected 3 tab-separated columns, found " + std::to_string(cols.size()));
+    const std::string& id = cols[0];
+    if (!seen.insert(id).second) throw InputError(loc, "plan " + id + " is listed twice");
+    if (cols[1] != "dev" && cols[1] != "test")
+      throw InputError(loc, "split '" + cols[1] + "' of plan " + id + " must be dev or test");
+    std::vector<std::string> cats;
+    for (size_t a = 0;;) {
+      const size_t b = cols[2].find(',', a);
+      std::string c = cols[2].substr(a, b == std::string::npos ? std::string::npos : b - a);
+      while (!c.empty() && c.front() == ' ') c.erase(c.begin());
+      while (!c.empty() && c.back() == ' ') c.pop_back();
+      if (!word(c))
+        throw InputError(loc, "category '" + c + "' of plan " + id + " must be lower-case letters, digits and hyphens");
+      if (std::find(cats.begin(), cats.end(), c) == cats.end()) cats.push_back(c);
+      if (b == std::string::npos) break;
+      a = b + 1;
+    }
+    auto it = by_id.find(id);
+    if (it == by_id.end()) {
+      if (std::any_of(broken.begin(), broken.end(), [&](const BrokenPlan& b) { return b.id == id; })) continue;
+      throw InputError(loc, "no plan " + id + " in plans/observed/");
+    }
+    it->second->split = cols[1];
+    it->second->categories = std::move(cats);
+  }
+  if (!header) throw InputError(SourceLoc{path, 1, 1}, "empty file: expected the header line \"plan<TAB>split<TAB>categories\"");
 }
 
 const PlanRecord& Dataset::plan(const std::string& id) const {

@@ -39,6 +39,11 @@ struct PlanRecord {
   pddl::PlanFile completed;
   std::optional<std::string> pragmatic_utterance;  // utterances/pragmatic (mDKG)
   std::optional<std::string> literal_utterance;    // utterances/literal (mDKG)
+  // From the dataset's instructions.tsv, when it lists the plan: the half of
+  // the data it belongs to ("dev": tuned on; "test": reported) and the kinds
+  // of instruction it holds ("synonym", "joint", ...). Empty otherwise.
+  std::string split;
+  std::vector<std::string> categories;
 };
 
 using GoalSpec = domains::GoalSpec;
@@ -125,6 +130,14 @@ std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const
                                                   const std::vector<BrokenPlan>& broken = {});
 std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
                                         const std::map<std::string, std::string>& goal_defs);
+// instructions.tsv: a header line "plan<TAB>split<TAB>categories", then one
+// line per plan: its id, "dev" or "test", and comma-separated category names
+// (lower-case words and hyphens). Sets each listed plan's split and
+// categories; a plan listed twice, an unknown plan (one neither loaded nor
+// set aside in `broken`), a bad split or category name is an InputError at
+// path:line.
+void apply_instruction_table(const std::string& text, const std::string& path, std::vector<PlanRecord>& plans,
+                             const std::vector<BrokenPlan>& broken = {});
 // An utterance given outside a plan file: non-empty, valid UTF-8; throws
 // InputError at `loc` otherwise.
 void check_utterance(const std::string& text, const SourceLoc& loc);

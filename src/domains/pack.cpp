@@ -414,6 +414,66 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
         action("cost_profiles: profile " + p.name + ": costs." + key.first, key.second);
 }
 
+// ---- goal atoms from effects ------------------------------------------------------------
+
+namespace {
+
+// The unconditional add/delete effects of an effect tree (not under when/forall).
+void plain_effects(const pddl::Effect& e, std::vector<const pddl::Effect*>& out) {
+  switch (e.kind) {
+    case pddl::Effect::Kind::And:
+      for (const auto& k : e.kids) plain_effects(k, out);
+      return;
+    case pddl::Effect::Kind::Add:
+    case pddl::Effect::Kind::Del: out.push_back(&e); return;
+    default: return;
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& d, const commands::SalientActionRule& rule) {
+  std::vector<std::string> out;
+  const int a = d.find_action(rule.action);
+  if (a < 0) return out;
+  const pddl::ActionSchema& schema = d.actions[static_cast<size_t>(a)];
+  const int focal = rule.focal_arg - 1;
+  if (focal < 0 || focal >= static_cast<int>(schema.param_types.size())) return out;
+  std::vector<const pddl::Effect*> effects;
+  plain_effects(schema.effect, effects);
+  for (const pddl::Effect* e : effects) {
+    const std::string& pred = d.predicates[static_cast<size_t>(e->pred)].name;
+    if (pred == "active" || pred == "frozen") continue;  // bookkeeping of turns and simulations
+    bool names_focal = false, printable = true;
+    std::string atom = "(" + pred;
+    for (const pddl::TermRef& t : e->args) {
+      if (t.is_var && t.index < static_cast<int>(schema.param_types.size())) {
+        names_focal = names_focal || t.index == focal;
+        atom += " $" + std::to_string(t.index + 1);
+      } else if (!t.is_var && t.index >= 0 && t.index < static_cast<int>(d.constants.size())) {
+        atom += " " + d.constants[static_cast<size_t>(t.index)].name;
+      } else {
+        printable = false;
+      }
+    }
+    atom += ")";
+    if (!names_focal || !printable) continue;
+    if (e->kind == pddl::Effect::Kind::Del) atom = "(not " + atom + ")";
+    if (std::find(out.begin(), out.end(), atom) == out.end()) out.push_back(atom);
+  }
+  return out;
+}
+
+void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain) {
+  for (const auto& rule : spec.language.salient_actions) {
+    if (spec.language.goal_atoms.count(rule.action)) continue;
+    auto atoms = goal_atoms_from_effects(domain, rule);
+    if (atoms.empty()) continue;
+    spec.language.goal_atoms[rule.action] = std::move(atoms);
+    spec.derived_goal_atoms.push_back(rule.action);
+  }
+}
+
 // ---- finding a pack -----------------------------------------------------------------
 
 PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
@@ -439,6 +499,7 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     declared = false;  // nothing to check: `clips plan` works on any domain
   }
   if (declared) check_pack_against(*spec, domain);
+  derive_goal_atoms(*spec, domain);
   return make_pack(std::move(*spec));
 }
 

@@ -101,6 +101,12 @@ struct RolloutSettings {
   // WeightedAStar: this flag predicate is set on the speaker first (VH
   // "nograb": the rest of the work is left to the listener).
   std::string speaker_flag;
+  // Greedy: which joint plans the speaker may have in mind. Tied: every
+  // plan the policy values equally (ties broken every way, each way weighted
+  // as a uniform random tie-break; search/tied_rollouts.hpp); Single: the one
+  // greedy rollout (clips-spec 7.2; the paper packs, for their tables).
+  enum class Plans { Single, Tied };
+  Plans plans = Plans::Tied;
 };
 
 struct InferenceSettings {
@@ -160,6 +166,13 @@ struct PackSpec {
   FewShotSource fewshot;
   LiteralSettings literal;
   std::vector<OptionRule> options;  // empty: every salient action of the assistant, on its focal object
+  // How Q_MDP breaks ties between equally good assistant actions
+  // (assist::AssistRule): "request" (toward what the principal asked for) or
+  // "paper" (spec 9.3 as written; the paper packs, for their tables).
+  std::string assistance_rule = "request";
+  // Salient actions whose language.goal_atoms were derived from the domain's
+  // effects (derive_goal_atoms), for `clips validate` to report.
+  std::vector<std::string> derived_goal_atoms;
   // At most this many utterances per observed plan (0: any).
   int max_utterances_per_plan = 0;
   // The plan tags a plan may have, when they mean something (mDKG: keys, doors).
@@ -308,6 +321,17 @@ PackSpec load_pack_spec(const std::string& path);
 // Checks a spec against a domain: every action, predicate and type it names
 // exists. Throws InputError naming the field.
 void check_pack_against(const PackSpec& spec, const pddl::Domain& domain);
+// What a salient action means as a goal when the pack gives it no
+// language.goal_atoms: the atoms its effect adds and the negations of those
+// it deletes (unconditional effects only) that name its focal object, e.g.
+// (unlock ?a ?k ?d) adding (unlocked ?d) and deleting (locked ?d) gives
+// {"(unlocked $3)", "(not (locked $3))"}; the turn and freeze bookkeeping
+// (`active`, `frozen`) is left out. Empty when no such effect exists.
+std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& domain, const commands::SalientActionRule& rule);
+// Fills language.goal_atoms of every salient action the pack leaves out (and
+// whose effects say something, see above) and lists them in
+// PackSpec::derived_goal_atoms.
+void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain);
 
 // The pack for a domain:
 //   1. `<dir>/pack.json` when `dir` is given and holds one;

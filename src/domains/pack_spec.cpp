@@ -119,7 +119,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   f.only(doc, "",
          {"domain", "code", "grounding", "roles", "goals", "cost_profiles", "default_cost_profile", "inference", "language", "fewshot",
           "literal_listener", "assistance_options", "max_utterances_per_plan", "plan_tags", "scene", "scene_colours", "rules_text",
-          "embedded_corpus", "comment"});
+          "embedded_corpus", "assistance_rule", "comment"});
   PackSpec s;
   s.source = source;
   if (!doc.contains("domain")) f.fail("domain", "missing (the PDDL domain name the pack is for)");
@@ -218,13 +218,17 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
     }
     if (in.contains("rollout")) {
       const json& r = in["rollout"];
-      f.only(r, "inference.rollout", {"kind", "speaker_flag", "comment"});
+      f.only(r, "inference.rollout", {"kind", "speaker_flag", "plans", "comment"});
       if (r.contains("kind"))
         s.inference.rollout.kind = f.choice<RolloutSettings::Kind>(
             r["kind"], "inference.rollout.kind",
             {{"greedy", RolloutSettings::Kind::Greedy}, {"weighted-astar", RolloutSettings::Kind::WeightedAStar}});
       if (r.contains("speaker_flag"))
         s.inference.rollout.speaker_flag = f.text(r["speaker_flag"], "inference.rollout.speaker_flag");
+      if (r.contains("plans"))
+        s.inference.rollout.plans = f.choice<RolloutSettings::Plans>(
+            r["plans"], "inference.rollout.plans",
+            {{"single", RolloutSettings::Plans::Single}, {"tied", RolloutSettings::Plans::Tied}});
     }
   }
 
@@ -304,6 +308,9 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
       s.options.push_back(r);
     }
   }
+  if (doc.contains("assistance_rule"))
+    s.assistance_rule = f.choice<std::string>(doc["assistance_rule"], "assistance_rule",
+                                              {{"request", "request"}, {"paper", "paper"}});
   if (doc.contains("max_utterances_per_plan"))
     s.max_utterances_per_plan = f.integer(doc["max_utterances_per_plan"], "max_utterances_per_plan", 0, 1 << 20);
   if (doc.contains("plan_tags")) s.plan_tags = f.strings(doc["plan_tags"], "plan_tags");

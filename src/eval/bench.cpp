@@ -294,7 +294,7 @@ void summarise(BenchReport& rep) {
     std::map<std::string, std::vector<double>> xs;
     for (auto& p : rep.plans) {
       const MethodResult* m = p.find(name);
-      if (!m || !m->error.empty()) continue;  // issue 8: failed methods are not averaged
+      if (!p.error.empty() || !m || !m->error.empty()) continue;  // failed plans and methods are not averaged
       if (m->p_true_goal) xs["p_true_goal"].push_back(*m->p_true_goal);
       xs["assist_precision"].push_back(m->precision);
       xs["assist_recall"].push_back(m->recall);
@@ -345,7 +345,7 @@ std::string summary_json(const BenchReport& r) {
     nlohmann::ordered_json m = nlohmann::ordered_json::object();
     int n = 0;  // plans the method ran on without an error
     for (auto& p : r.plans)
-      if (const MethodResult* mr = p.find(s.method); mr && mr->error.empty()) ++n;
+      if (const MethodResult* mr = p.find(s.method); p.error.empty() && mr && mr->error.empty()) ++n;
     m["n"] = n;
     for (auto& name : kMetricNames) {
       auto it = s.metrics.find(name);

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "assist/assist.hpp"
+#include "assist/request.hpp"
 #include "data/validate.hpp"
 #include "domains/pack.hpp"
 #include "eval/methods.hpp"
@@ -41,6 +42,7 @@ namespace {
 inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   inference::InferenceOptions io;
   io.utterance.speaker_rule = opts.speaker_rule;
+  io.utterance.plans = opts.speaker_plans;
   io.threads = opts.inference_threads;
   io.utterance_timing = opts.utterance_timing;
   io.assistant_turns = opts.assistant_turns;
@@ -108,6 +110,8 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     setup.refine = belief.searches();
     setup.qa_floor = opts.qa_floor;
     setup.follow_plan_by_index = df.principal_follows_completed_plan;
+    assist::set_request_rule(setup, opts.assist_rule.value_or(assist::parse_assist_rule(pack.spec().assistance_rule)),
+                             pack.language());
 
     // Every method is built first, so an unknown name fails before any work.
     std::vector<std::unique_ptr<Method>> runners;
@@ -117,11 +121,20 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
       auto mt = std::chrono::steady_clock::now();
       MethodResult r;
       r.method = method->name();
-      method->run(ctx, r);
+      // A method that cannot run on this plan fails its own row only.
+      try {
+        method->run(ctx, r);
+      } catch (const std::exception& e) {
+        MethodResult failed;
+        failed.method = r.method;
+        failed.error = e.what();
+        failed.failure = std::current_exception();
+        r = std::move(failed);
+      }
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - mt).count();
       out.methods.push_back(std::move(r));
     }
-    if (const MethodResult* ref = out.find("clips")) {
+    if (const MethodResult* ref = out.find("clips"); ref && ref->error.empty()) {
       for (auto& r : out.methods) {
         r.rel_plan_length = ref->plan_length > 0 ? r.plan_length / ref->plan_length : 0;
         r.rel_human_cost = ref->human_cost > 0 ? r.human_cost / ref->human_cost : 0;
@@ -131,6 +144,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
   } catch (const std::exception& e) {
     out.error = e.what();
     out.failure = std::current_exception();
+    out.methods.clear();  // a plan that failed has no method rows (results.csv, summary.json and the table agree)
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
@@ -162,12 +176,16 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   setup.noop_cost = df.noop_cost;
   setup.refine = belief.searches();
   setup.qa_floor = opts.qa_floor;
+  assist::set_request_rule(setup, opts.assist_rule.value_or(assist::parse_assist_rule(ds.pack().spec().assistance_rule)),
+                           ds.pack().language());
   if (setup.observed_steps >= setup.horizon)
     throw InputError("the observations are " + std::to_string(setup.observed_steps) + " actions long, at or past the "
                      "assistance horizon of " + std::to_string(setup.horizon) + " steps");
   std::vector<assist::Hypothesis> hyps;
   for (size_t h = 0; h < post.hypotheses.size(); ++h)
-    hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h])});
+    hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h]), nullptr});
+  if (mod != Modality::ActionOnly)
+    assist::attach_requests(hyps, assist::last_requests(*task, out.inference.steps, hyps.size()));
   if (!assist::assistant_turn(setup, setup.start)) {
     out.next_actor = df.principal;
     return out;

@@ -64,10 +64,14 @@ struct ExperimentOptions {
   uint64_t seed = 1;
   // The CLIPS speaker model's command rule (spec 13 item 2).
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
+  // Which plans the speaker model may mean; nullopt: the pack's.
+  std::optional<domains::RolloutSettings::Plans> speaker_plans;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   inference::AssistantTurns assistant_turns = inference::AssistantTurns::Taken;
   // Which Q-values Q_MDP floors at the cost of waiting to the horizon.
   assist::QaFloor qa_floor = assist::QaFloor::DeadEnds;
+  // How Q_MDP breaks ties (assist::AssistRule); nullopt: the pack's assistance_rule.
+  std::optional<assist::AssistRule> assist_rule;
   // Threads per inference (InferenceOptions::threads): 1 when plans already
   // run in parallel (`clips bench`), 0 (all cores) for a single plan.
   int inference_threads = 1;

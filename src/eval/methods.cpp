@@ -3,6 +3,7 @@
 #include <functional>
 
 #include "assist/literal.hpp"
+#include "assist/request.hpp"
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
 #include "language/commands/utterance_merge.hpp"
@@ -32,7 +33,12 @@ namespace {
 // An OnlineBelief over a copy of the inference belief, read in one modality.
 class OnlineAdapter : public assist::OnlineBelief {
  public:
-  OnlineAdapter(const inference::Belief& b, Modality m) : belief_(b), modality_(m) { rebuild(); }
+  // `requests`: what the last instruction asked for, per hypothesis (the
+  // steps after it hear nothing, so it stays the same).
+  OnlineAdapter(const inference::Belief& b, Modality m, std::vector<std::shared_ptr<const assist::Request>> requests)
+      : belief_(b), modality_(m), requests_(std::move(requests)) {
+    rebuild();
+  }
   void observe(const pddl::State& pre, pddl::ActionId a) override {
     // Paper semantics for language-only (spec 13.10): no action evidence online.
     if (modality_ == Modality::UtteranceOnly) return;
@@ -47,10 +53,12 @@ class OnlineAdapter : public assist::OnlineBelief {
     auto post = belief_.posterior(modality_);
     hyps_.clear();
     for (size_t h = 0; h < post.hypotheses.size(); ++h)
-      hyps_.push_back({post.hypotheses[h], std::shared_ptr<search::Policy>(&belief_.policies()[h], [](auto*) {})});
+      hyps_.push_back({post.hypotheses[h], std::shared_ptr<search::Policy>(&belief_.policies()[h], [](auto*) {}), nullptr});
+    assist::attach_requests(hyps_, requests_);
   }
   inference::Belief belief_;
   Modality modality_;
+  std::vector<std::shared_ptr<const assist::Request>> requests_;
   std::vector<assist::Hypothesis> hyps_;
 };
 
@@ -71,7 +79,11 @@ class InferenceMethod : public Method {
     for (const auto& st : inf.steps) r.posterior_steps.push_back(st[modality_].goals);
     std::vector<assist::Hypothesis> hyps;
     for (size_t h = 0; h < post.hypotheses.size(); ++h)
-      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h])});
+      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h]), nullptr});
+    // A method that listens reads what the instruction asked for.
+    std::vector<std::shared_ptr<const assist::Request>> requests(hyps.size());
+    if (modality_ != Modality::ActionOnly) requests = assist::last_requests(*ctx.task, inf.steps, hyps.size());
+    assist::attach_requests(hyps, requests);
     switch (policy_) {
       case AssistPolicy::QmdpOffline:
         score_assistance(ctx, assist::qmdp_offline(ctx.setup, hyps, ctx.true_hypothesis), r);
@@ -80,7 +92,7 @@ class InferenceMethod : public Method {
         score_assistance(ctx, assist::pibar_mdp(ctx.setup, hyps, ctx.true_hypothesis), r);
         break;
       case AssistPolicy::QmdpOnline: {
-        OnlineAdapter online(belief, modality_);
+        OnlineAdapter online(belief, modality_, requests);
         const domains::Pack& pack = ctx.dataset.pack();
         std::shared_ptr<heuristics::Heuristic> h = pack.make_heuristic(pack.spec().inference.heuristic, *ctx.task);
         if (!ctx.setup.refine) h->prepare(*ctx.true_spec, ctx.setup.start);
@@ -136,6 +148,7 @@ class LiteralMethod : public Method {
       return pack.make_heuristic(pack.spec().literal.planning_heuristic, *task_ptr);
     };
     ls.goal_unsatisfiable = pack.goal_unsatisfiable(task);
+    ls.truth_policy = std::make_shared<const search::Policy>(ctx.inference.belief->policies()[ctx.true_hypothesis]);
     ls.is_option = [&pack, task_ptr, tag = p.tag](const std::string& o) {
       return pack.is_option_object(*task_ptr, o, tag);
     };

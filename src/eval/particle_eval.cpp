@@ -73,6 +73,7 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   inference::InferenceOptions base;
   base.threads = 1;  // comparable single-core times
   base.utterance.speaker_rule = o.speaker_rule;
+  base.utterance.plans = o.speaker_plans;
   base.utterance_timing = o.utterance_timing;
   base.assistant_turns = o.assistant_turns;
   base.ess_threshold = o.ess_threshold;

@@ -7,6 +7,7 @@
 // averaged over steps, and wall times and hypothesis refinements are
 // compared as ratios particle / exact. Both run single-threaded, one plan at
 // a time, so the times are comparable.
+#include <optional>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -33,6 +34,7 @@ struct ParticleEvalOptions {
   inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
   inference::ParticleEstimate particle_estimate = inference::ParticleEstimate::Support;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
+  std::optional<domains::RolloutSettings::Plans> speaker_plans;  // nullopt: the pack's
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   inference::AssistantTurns assistant_turns = inference::AssistantTurns::Taken;
   std::shared_ptr<lm::LanguageModel> language_model;  // required

@@ -221,6 +221,21 @@ double Belief::score_action(int h, const pddl::State& s, pddl::ActionId action) 
   return std::log(temps_[h].update(q, chosen));
 }
 
+std::vector<SpeakerPlans> Belief::speaker_plans(const pddl::State& s, const std::vector<int>& hs) {
+  std::vector<SpeakerPlans> out(hs.size());
+  const bool tied = search_ && utterance_model_->plans_rule() == domains::RolloutSettings::Plans::Tied;
+  auto one = [&](size_t i) {
+    search::Policy& p = policies_[static_cast<size_t>(hs[i])];
+    out[i] = tied ? utterance_model_->speaker_plans(p, s, options_.refine) : utterance_model_->single_plan(p, s);
+  };
+  if (tied && pool_ && hs.size() > 1) {
+    pool_->run(hs.size(), one);
+  } else {
+    for (size_t i = 0; i < hs.size(); ++i) one(i);
+  }
+  return out;
+}
+
 std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
                                                       lm::LanguageModel* lm, bool speak_factor) {
   std::vector<UtteranceRecord> out;
@@ -231,9 +246,9 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
   }
   if (utterances.empty()) return out;
   if (!lm) throw InputError("an utterance was observed but no language model was given");
-  std::vector<const search::Policy*> pols;
-  for (const auto& p : policies_) pols.push_back(&p);
-  auto scores = utterance_model_->score(pols, s, utterances, *lm);
+  std::vector<int> all(policies_.size());
+  for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
+  auto scores = utterance_model_->score(speaker_plans(s, all), s, utterances, *lm);
   for (size_t u = 0; u < utterances.size(); ++u) {
     UtteranceRecord rec;
     rec.text = utterances[u];

@@ -324,6 +324,9 @@ class Belief {
   // read off the CLIPS filter, m's likelihood where CLIPS's is not zero.
   double particle_ll(Modality m, int h) const;
   Posterior particle_posterior(Modality m) const;
+  // The plans each hypothesis' speaker may have in mind at s (the utterance
+  // model's rule; tie-breaking rollouts refine the policies, in parallel).
+  std::vector<SpeakerPlans> speaker_plans(const pddl::State& s, const std::vector<int>& hs);
   // Scores `utterances` in s and adds them to the utterance part; with
   // speak_factor, also this step's goal-independent speak/no-speak factor.
   std::vector<UtteranceRecord> score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,

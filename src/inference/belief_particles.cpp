@@ -59,9 +59,7 @@ void Belief::apply_event(const Event& e, const std::vector<int>& hs) {
   for (int h : hs) utterance_ll_[h] += e.before;
   if (!e.texts.empty()) {
     if (!lm_) throw InputError("replaying an utterance needs the language model that scored it");
-    std::vector<const search::Policy*> pols;
-    for (int h : hs) pols.push_back(&policies_[h]);
-    const auto scores = utterance_model_->score(pols, e.state, e.texts, *lm_);
+    const auto scores = utterance_model_->score(speaker_plans(e.state, hs), e.state, e.texts, *lm_);
     for (size_t u = 0; u < e.texts.size(); ++u) {
       const double w = e.weights.at(u);
       if (w > 0)
@@ -123,10 +121,8 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
     // event for hypotheses that replay it later.
     sync(need, end - 1);
     for (int h : need) utterance_ll_[h] += last.before;
-    std::vector<const search::Policy*> pols;
-    for (int h : need) pols.push_back(&policies_[h]);
     std::vector<std::vector<HypothesisUtterance>> scores(last.texts.size());
-    if (!pols.empty()) scores = utterance_model_->score(pols, last.state, last.texts, *lm);
+    if (!need.empty()) scores = utterance_model_->score(speaker_plans(last.state, need), last.state, last.texts, *lm);
     last.weights.assign(last.texts.size(), 0.0);
     for (size_t u = 0; u < last.texts.size(); ++u) {
       UtteranceRecord rec;

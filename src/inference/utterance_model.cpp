@@ -2,6 +2,7 @@
 
 #include "util/data_dir.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -47,7 +48,10 @@ UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::
     : task_(std::move(task)),
       config_(pack->language()),
       rollout_kind_(pack->spec().inference.rollout.kind),
+      plans_(options.plans.value_or(pack->spec().inference.rollout.plans)),
       options_(options) {
+  // Tie-breaking rollouts branch a greedy rollout; a searched rollout (VH) has one plan.
+  if (rollout_kind_ != RolloutKind::Greedy) plans_ = domains::RolloutSettings::Plans::Single;
   if (options_.speaker_rule == SpeakerRule::Paper) {
     config_.speaker_actions = config_.paper_speaker_actions;
     config_.exclude_chains = config_.paper_exclude_chains;
@@ -131,9 +135,10 @@ std::vector<pddl::ActionId> UtteranceModel::rollout(const search::Policy& policy
   return {path.rbegin(), path.rend()};
 }
 
-std::vector<commands::Command> UtteranceModel::commands_at(const search::Policy& policy, const pddl::State& s) const {
+std::vector<commands::Command> UtteranceModel::plan_commands(const std::vector<pddl::ActionId>& plan,
+                                                            const pddl::State& s) const {
   std::vector<commands::Term> terms;
-  for (pddl::ActionId a : rollout(policy, s)) terms.push_back(term(a));
+  for (pddl::ActionId a : plan) terms.push_back(term(a));
   // Qualifiers are read in the scoring state (objects keep their colour / type).
   auto salient = commands::extract_salient(
       terms, config_, [&](const std::string& o) { return qualifiers(o, s); });
@@ -143,34 +148,98 @@ std::vector<commands::Command> UtteranceModel::commands_at(const search::Policy&
   });
 }
 
+std::vector<commands::Command> UtteranceModel::commands_at(const search::Policy& policy, const pddl::State& s) const {
+  return plan_commands(rollout(policy, s), s);
+}
+
+SpeakerPlans UtteranceModel::single_plan(const search::Policy& policy, const pddl::State& s) const {
+  return {SpeakerPlan{1.0, rollout(policy, s)}};
+}
+
+SpeakerPlans UtteranceModel::speaker_plans(search::Policy& policy, const pddl::State& s,
+                                           const search::SearchOptions& refine) const {
+  if (plans_ == domains::RolloutSettings::Plans::Single) return single_plan(policy, s);
+  search::TiedRolloutOptions o = options_.tied;
+  o.max_steps = options_.rollout_steps;
+  SpeakerPlans out;
+  for (auto& r : search::tied_rollouts(policy, s, o, refine)) out.push_back({r.weight, std::move(r.actions)});
+  return out;
+}
+
+std::vector<UtteranceModel::WeightedCommand> UtteranceModel::weighted_commands(const SpeakerPlans& plans,
+                                                                               const pddl::State& s,
+                                                                               double& no_command) const {
+  std::vector<WeightedCommand> out;
+  no_command = 0;
+  for (const SpeakerPlan& p : plans) {
+    const std::vector<commands::Command> cs = plan_commands(p.actions, s);
+    if (cs.empty()) {
+      no_command += p.weight;
+      continue;
+    }
+    const double share = p.weight / static_cast<double>(cs.size());
+    for (const commands::Command& c : cs) {
+      auto it = std::find_if(out.begin(), out.end(), [&](const WeightedCommand& w) { return w.command == c; });
+      if (it == out.end()) out.push_back({c, share});
+      else it->weight += share;
+    }
+  }
+  return out;
+}
+
 std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(
     const std::vector<const search::Policy*>& policies, const pddl::State& s,
     const std::vector<std::string>& utterances, lm::LanguageModel& lm) const {
+  std::vector<SpeakerPlans> plans;
+  for (const search::Policy* p : policies) plans.push_back(single_plan(*p, s));
+  return score(plans, s, utterances, lm);
+}
+
+std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(const std::vector<SpeakerPlans>& plans,
+                                                                    const pddl::State& s,
+                                                                    const std::vector<std::string>& utterances,
+                                                                    lm::LanguageModel& lm) const {
   std::vector<std::vector<HypothesisUtterance>> out(utterances.size(),
-                                                    std::vector<HypothesisUtterance>(policies.size()));
-  if (utterances.empty() || policies.empty()) return out;
+                                                    std::vector<HypothesisUtterance>(plans.size()));
+  if (utterances.empty() || plans.empty()) return out;
   // Commands and prompts depend on the hypothesis only; the batch is
-  // utterance-major over (hypothesis, prompt).
-  std::vector<std::vector<commands::Command>> cmds(policies.size());
-  std::vector<std::vector<commands::WeightedPrompt>> prompts(policies.size());
+  // utterance-major over (hypothesis, prompt). A hypothesis' prompts are its
+  // distinct commands, then the empty prompt if some plan has no command.
+  std::vector<std::vector<WeightedCommand>> cmds(plans.size());
+  std::vector<std::vector<commands::WeightedPrompt>> prompts(plans.size());
   size_t per_utterance = 0;
-  for (size_t h = 0; h < policies.size(); ++h) {
-    cmds[h] = commands_at(*policies[h], s);
-    prompts[h] = commands::command_prompts(cmds[h], examples_);
+  for (size_t h = 0; h < plans.size(); ++h) {
+    double no_command = 0;
+    cmds[h] = weighted_commands(plans[h], s, no_command);
+    for (const WeightedCommand& c : cmds[h])
+      prompts[h].push_back({commands::build_prompt(examples_, c.command.llm_form()), c.weight});
+    if (no_command > 0 || cmds[h].empty())
+      prompts[h].push_back({std::string(commands::kEmptyCommandPrompt), cmds[h].empty() ? 1.0 : no_command});
     per_utterance += prompts[h].size();
   }
   std::vector<lm::ScoreRequest> batch;
   batch.reserve(per_utterance * utterances.size());
   for (const auto& u : utterances) {
     const std::string cont = commands::utterance_continuation(u);
-    for (size_t h = 0; h < policies.size(); ++h)
+    for (size_t h = 0; h < plans.size(); ++h)
       for (const auto& p : prompts[h]) batch.push_back({p.prompt, cont});
   }
   const std::vector<double> scores = lm.score(batch);
   if (scores.size() != batch.size()) throw lm::LmError(lm.name() + ": wrong number of scores");
+  auto ground = [&](const commands::Command& c, bool listener) {
+    std::vector<std::string> acts;
+    for (const commands::Term& t : commands::substitute(c.actions, c.binding)) {
+      const commands::Term named = commands::to_agent_names(t, config_);
+      const commands::SalientActionRule* rule = config_.salient_rule(named.name);
+      const bool by_listener = rule && rule->agent_arg >= 1 && rule->agent_arg <= static_cast<int>(named.args.size()) &&
+                               named.args[static_cast<size_t>(rule->agent_arg - 1)] == config_.listener;
+      if (by_listener == listener) acts.push_back(commands::to_pddl(named));
+    }
+    return acts;
+  };
   size_t k = 0;
   for (size_t ui = 0; ui < utterances.size(); ++ui)
-    for (size_t h = 0; h < policies.size(); ++h) {
+    for (size_t h = 0; h < plans.size(); ++h) {
       HypothesisUtterance& r = out[ui][h];
       std::vector<double> terms, lms;
       for (const auto& p : prompts[h]) {
@@ -178,9 +247,11 @@ std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(
         terms.push_back(std::log(p.weight) + lms.back());
       }
       r.log_likelihood = log_sum_exp(terms);
-      const double z = log_sum_exp(lms);
-      for (size_t c = 0; c < cmds[h].size(); ++c)
-        r.commands.push_back({cmds[h][c].display_form(), lms[c], z == kNegInf ? 0.0 : std::exp(lms[c] - z)});
+      for (size_t c = 0; c < cmds[h].size(); ++c) {
+        const double post = r.log_likelihood == kNegInf ? 0.0 : std::exp(terms[c] - r.log_likelihood);
+        r.commands.push_back({cmds[h][c].command.display_form(), lms[c], post, cmds[h][c].weight,
+                              ground(cmds[h][c].command, true), ground(cmds[h][c].command, false)});
+      }
     }
   return out;
 }

@@ -2,15 +2,22 @@
 // The pragmatic speaker (clips-spec.md 7, VH spec 6): how likely is utterance u
 // if the human holds hypothesis h = (g, c) and is in state s?
 //
-//   1. Roll out the joint policy π_h from s (mDKG: greedy in π_h for ≤ 100
-//      steps; VH: weighted A* (w = 2) with the principal barred from grabbing).
-//   2. Keep the salient actions (pickups, hand-overs, unlocks / grabs), each
-//      with the qualifier of its focal object, e.g. (iscolor key2 red).
-//   3. Enumerate the distinct lifted commands over the listener's salient
-//      actions (speaker actions removed), uniform prior 1/|C|.
-//   4. P(u | s, π_h) = Σ_c (1/|C|) P_LM(u | prompt(c)); with no command the
-//      single prompt "\n" is scored with weight 1.
-// The per-command posterior P(c | u, s, π_h) ∝ P_LM(u | c) is a by-product.
+//   1. The joint plans the speaker may have in mind: the policy π_h rolled
+//      out from s. Tied (the default): every plan π_h values as well as its
+//      greedy one, ties broken every way, plan p weighted w_p as a uniform
+//      random tie-break would pick it (search/tied_rollouts.hpp). Single
+//      (the paper packs, spec 7.2): the one greedy rollout (mDKG: greedy in
+//      π_h for <= 100 steps; VH: weighted A* (w = 2) with the principal
+//      barred from grabbing), w = 1.
+//   2. Keep each plan's salient actions (pickups, hand-overs, unlocks /
+//      grabs), each with the qualifier of its focal object, e.g.
+//      (iscolor key2 red).
+//   3. Enumerate each plan's distinct lifted commands C_p over the listener's
+//      salient actions (speaker actions removed), uniform prior 1/|C_p|.
+//   4. P(u | s, π_h) = Σ_p w_p Σ_{c in C_p} (1/|C_p|) P_LM(u | prompt(c)); a
+//      plan with no command scores the single prompt "\n" with its w_p.
+// The per-command posterior P(c | u, s, π_h) is a by-product, with the ground
+// actions each command was lifted from (what the assistant would carry out).
 // All prompts of all hypotheses (and utterances) go to the LM in one batch.
 #include <memory>
 #include <string>
@@ -23,6 +30,7 @@
 #include "language/commands/language_config.hpp"
 #include "language/lm/language_model.hpp"
 #include "search/rtaa.hpp"
+#include "search/tied_rollouts.hpp"
 
 namespace clips::inference {
 
@@ -51,6 +59,9 @@ std::string to_string(UtteranceTiming t);
 
 struct UtteranceModelOptions {
   SpeakerRule speaker_rule = SpeakerRule::Paper;
+  // Which plans the speaker may mean; nullopt: the pack's (inference.rollout.plans).
+  std::optional<domains::RolloutSettings::Plans> plans;
+  search::TiedRolloutOptions tied;  // Tied: budgets of the tie-breaking rollouts
   int rollout_steps = 100;                 // greedy rollout bound
   size_t astar_max_nodes = size_t{1} << 16;  // weighted-A* rollout budget
   double astar_weight = 2.0;               // weighted-A* rollout: f = g + 2h
@@ -63,7 +74,18 @@ struct CommandScore {
   std::string command;    // display form, e.g. "(handover you me ?key1) where (iscolor ?key1 red)"
   double log_lm = 0;      // log P_LM(u | prompt(c))
   double posterior = 0;   // P(c | u, s, π_h)
+  double prior = 0;       // P(c | s, π_h): Σ_p w_p / |C_p| over the plans that hold it
+  // The ground actions it was lifted from (agent names, as the task prints
+  // them), in command order: the listener's part, and the speaker's own.
+  std::vector<std::string> listener_actions, speaker_actions;
 };
+
+// One joint plan the speaker may have in mind, from the scoring state.
+struct SpeakerPlan {
+  double weight = 1;  // sums to 1 over a hypothesis' plans
+  std::vector<pddl::ActionId> actions;
+};
+using SpeakerPlans = std::vector<SpeakerPlan>;
 
 struct HypothesisUtterance {
   double log_likelihood = 0;          // log P(u | s, π_h)
@@ -77,13 +99,25 @@ class UtteranceModel {
 
   const commands::LanguageConfig& config() const { return config_; }
   RolloutKind rollout_kind() const { return rollout_kind_; }
-  // The speaker's rollout of π_h from s (both agents' actions).
+  // Which plans the speaker may mean (options, else the pack's).
+  domains::RolloutSettings::Plans plans_rule() const { return plans_; }
+  // The speaker's greedy rollout of π_h from s (both agents' actions).
   std::vector<pddl::ActionId> rollout(const search::Policy& policy, const pddl::State& s) const;
   // The distinct lifted commands of that rollout, in enumeration order.
   std::vector<commands::Command> commands_at(const search::Policy& policy, const pddl::State& s) const;
+  // The plans the speaker may have in mind at s (step 1 above). Tied refines
+  // `policy` at the states where it looks for ties, with the budgets `refine`.
+  SpeakerPlans speaker_plans(search::Policy& policy, const pddl::State& s, const search::SearchOptions& refine) const;
+  // The one greedy rollout as a plan set (Single), without refining.
+  SpeakerPlans single_plan(const search::Policy& policy, const pddl::State& s) const;
 
-  // result[u][h]: the likelihood of utterance u under policy h at state s.
-  // Exactly one LanguageModel::score call (none if there is nothing to score).
+  // result[u][h]: the likelihood of utterance u under the plans of
+  // hypothesis h at state s. Exactly one LanguageModel::score call (none if
+  // there is nothing to score).
+  std::vector<std::vector<HypothesisUtterance>> score(const std::vector<SpeakerPlans>& plans, const pddl::State& s,
+                                                      const std::vector<std::string>& utterances,
+                                                      lm::LanguageModel& lm) const;
+  // The same with each policy's single greedy rollout.
   std::vector<std::vector<HypothesisUtterance>> score(const std::vector<const search::Policy*>& policies,
                                                       const pddl::State& s,
                                                       const std::vector<std::string>& utterances,
@@ -95,10 +129,20 @@ class UtteranceModel {
 
  private:
   commands::Term term(pddl::ActionId a) const;
+  struct WeightedCommand {
+    commands::Command command;
+    double weight = 0;
+  };
+  // Step 3 over a plan set: distinct commands with their prior weights, and
+  // the weight of plans with no command (scored with the empty prompt).
+  std::vector<WeightedCommand> weighted_commands(const SpeakerPlans& plans, const pddl::State& s,
+                                                 double& no_command) const;
+  std::vector<commands::Command> plan_commands(const std::vector<pddl::ActionId>& plan, const pddl::State& s) const;
 
   std::shared_ptr<const pddl::Task> task_;
   commands::LanguageConfig config_;
   RolloutKind rollout_kind_;
+  domains::RolloutSettings::Plans plans_;
   UtteranceModelOptions options_;
   std::vector<commands::FewShotExample> examples_;  // pragmatic order
   std::unordered_map<std::string, std::string> type_of_;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "assist/assist.hpp"
+#include "assist/request.hpp"
 #include "eval/scenes.hpp"
 #include "search/astar.hpp"
 #include "util/error.hpp"
@@ -216,15 +217,19 @@ json PlaySession::assist(bool apply) {
     setup.refine = belief_->searches();
     setup.refine_options.max_nodes = limits_.assist_nodes;
     setup.refine_options.max_seconds = limits_.search_seconds;
+    assist::set_request_rule(setup, assist::parse_assist_rule(pack_->spec().assistance_rule), pack_->language());
     belief_->sync_policies(modality());  // particle inference: the weighted policies up to date
     const auto post = belief_->posterior(modality());
     std::vector<assist::Hypothesis> hyps;
     for (size_t h = 0; h < post.hypotheses.size(); ++h)
-      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief_->policies()[h])});
+      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief_->policies()[h]), nullptr});
+    if (modality() != inference::Modality::ActionOnly && utterance_record_)
+      assist::attach_requests(hyps, assist::requests_from(*task_, *utterance_record_));
     auto q = assist::qmdp_decision(setup, hyps, s, t);
     chosen = q.action;
     d["unanimous"] = q.unanimous;
-    d["reason"] = q.unanimous ? "every likely goal agrees" : "highest expected value over the goal posterior";
+    d["reason"] = q.broke_tie ? "tied at the best value; this one carries out the request \"" + q.request_command + "\""
+                  : q.unanimous ? "every likely goal agrees" : "highest expected value over the goal posterior";
     json cands = json::array();
     for (size_t i = 0; i < q.candidates.size(); ++i)
       cands.push_back({{"action", task_->action_name(q.candidates[i])}, {"value", number_or_null(q.values[i])}});

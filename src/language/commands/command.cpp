@@ -86,14 +86,29 @@ std::string Command::llm_form() const {
 }
 
 std::string Command::to_goal_formula(const LanguageConfig& config) const {
+  // Goal atoms may be negated ("(not (locked $3))": what an action deletes).
   std::vector<Term> atoms;
+  std::vector<bool> negated;
   for (const auto& action : actions) {
     const Term named = to_agent_names(action, config);
     auto it = config.goal_atoms.find(named.name);
     if (it == config.goal_atoms.end())
       throw std::invalid_argument("no goal atoms configured for action '" + named.name + "'");
     for (const auto& pattern : it->second) {
-      Term atom = parse_term(pattern);
+      // "(not (p ...))": the inner atom, negated.
+      const std::size_t head = pattern.find_first_not_of(" \t(");
+      const bool negative = pattern.compare(head == std::string::npos ? 0 : head, 4, "not ") == 0 ||
+                            pattern.compare(head == std::string::npos ? 0 : head, 4, "not(") == 0;
+      std::string text = pattern;
+      if (negative) {
+        const std::size_t open = pattern.find('(', head + 3);
+        const std::size_t close = pattern.rfind(')');
+        const std::size_t inner_close = close == std::string::npos ? close : pattern.rfind(')', close - 1);
+        if (open == std::string::npos || inner_close == std::string::npos || inner_close <= open)
+          throw std::invalid_argument("goal atom '" + pattern + "' is not (not (<predicate> ...))");
+        text = pattern.substr(open, inner_close - open + 1);
+      }
+      Term atom = parse_term(text);
       for (auto& arg : atom.args) {
         if (arg.size() < 2 || arg.front() != '$') continue;
         const std::size_t index = std::stoul(arg.substr(1));
@@ -106,18 +121,27 @@ std::string Command::to_goal_formula(const LanguageConfig& config) const {
           arg = lowercase(arg.substr(1));
       }
       atoms.push_back(std::move(atom));
+      negated.push_back(negative);
     }
   }
+  auto render_atoms = [&] {
+    std::string out;
+    for (std::size_t i = 0; i < atoms.size(); ++i) {
+      const std::string a = render(atoms[i], pddl_variable, keep_all);
+      out += (out.empty() ? "" : " ") + (negated[i] ? "(not " + a + ")" : a);
+    }
+    return out;
+  };
 
   const auto mentions_variable = [](const Term& t) {
     return std::any_of(t.args.begin(), t.args.end(), [](const std::string& a) { return is_variable(a); });
   };
   const bool lifted = !variables.empty() && std::any_of(atoms.begin(), atoms.end(), mentions_variable);
-  if (!lifted) return "(and " + render_all(atoms, pddl_variable, keep_all) + ")";
+  if (!lifted) return "(and " + render_atoms() + ")";
 
   std::string typed;
   for (const auto& v : variables) typed += (typed.empty() ? "" : " ") + pddl_variable(v.name) + " - " + v.type;
-  std::string body = render_all(atoms, pddl_variable, keep_all);
+  std::string body = render_atoms();
   for (std::size_t i = 0; i < variables.size(); ++i)
     for (std::size_t j = i + 1; j < variables.size(); ++j)
       body += " (not (= " + pddl_variable(variables[i].name) + " " + pddl_variable(variables[j].name) + "))";
