@@ -25,6 +25,7 @@
 #include "language/commands/language_config.hpp"
 #include "language/commands/salient.hpp"
 #include "model/spec.hpp"
+#include "model/turns.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
 #include "util/rng.hpp"
@@ -38,11 +39,17 @@ struct GoalSpec {
   std::string source;     // the file `condition` was read from ("" when built in code), for error locations
 };
 
-// Who helps whom.
-struct Roles {
-  std::string principal = "human";  // the speaker, whose goal is inferred
-  std::string assistant = "robot";  // the agent clips plays
-  std::string noop_action = "wait";  // what an agent does when it does nothing
+// How the agents take turns (roles.turns).
+enum class TurnMode {
+  Auto,       // Domain when the domain declares the turn predicate, else Alternate
+  Domain,     // the domain writes its own turn idiom (the paper domains)
+  Alternate,  // clips compiles turns in: principal, assistant, principal, ...
+  Order,      // clips compiles turns in, in Roles::turn_order
+};
+
+// Who helps whom. The names the planning code asks (principal, assistant,
+// no-op action, turn predicate) are model::TurnTaking's.
+struct Roles : model::TurnTaking {
   int horizon = 100;                 // assistance episodes stop after this many steps
   // The principal's no-op cost in the assistance value (the true profile's
   // no-op cost in mDKG, 1 elsewhere).
@@ -50,6 +57,11 @@ struct Roles {
   // The principal's simulated moves also take the k-th completed-plan action
   // when it is legal, even off the completed trajectory (VirtualHome).
   bool principal_follows_completed_plan = false;
+  TurnMode turns = TurnMode::Auto;
+  std::vector<std::string> turn_order;  // TurnMode::Order: agent object names, the first starts
+  // The agents' type: the turn and freeze predicates range over it, and every
+  // action's first parameter (the acting agent) must be of it.
+  std::string agent_type = "agent";
 };
 
 // Where a problem's candidate goals come from.

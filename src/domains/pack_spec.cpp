@@ -141,11 +141,30 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
 
   if (doc.contains("roles")) {
     const json& r = doc["roles"];
-    f.only(r, "roles", {"principal", "assistant", "noop_action", "horizon", "noop_cost",
-                        "principal_follows_completed_plan", "comment"});
+    f.only(r, "roles", {"principal", "assistant", "noop_action", "turn_predicate", "turns", "agent_type", "horizon",
+                        "noop_cost", "principal_follows_completed_plan", "comment"});
     if (r.contains("principal")) s.roles.principal = f.text(r["principal"], "roles.principal");
     if (r.contains("assistant")) s.roles.assistant = f.text(r["assistant"], "roles.assistant");
     if (r.contains("noop_action")) s.roles.noop_action = f.text(r["noop_action"], "roles.noop_action");
+    if (r.contains("turn_predicate")) s.roles.turn_predicate = f.text(r["turn_predicate"], "roles.turn_predicate");
+    if (r.contains("agent_type")) s.roles.agent_type = f.text(r["agent_type"], "roles.agent_type");
+    if (r.contains("turns")) {
+      const json& t = r["turns"];
+      if (t.is_array()) {
+        s.roles.turns = TurnMode::Order;
+        s.roles.turn_order = f.strings(t, "roles.turns");
+        if (s.roles.turn_order.size() < 2)
+          f.fail("roles.turns", "expected at least two agents in turn order (the principal and the assistant)");
+        for (size_t i = 0; i < s.roles.turn_order.size(); ++i)
+          for (size_t j = 0; j < i; ++j)
+            if (s.roles.turn_order[i] == s.roles.turn_order[j])
+              f.fail("roles.turns[" + std::to_string(i) + "]", "'" + s.roles.turn_order[i] + "' is listed twice");
+      } else if (t.is_string() && (t == "domain" || t == "alternate")) {
+        s.roles.turns = t == "domain" ? TurnMode::Domain : TurnMode::Alternate;
+      } else {
+        f.fail("roles.turns", "expected \"domain\", \"alternate\" or an array of agent object names in turn order");
+      }
+    }
     if (r.contains("horizon")) s.roles.horizon = f.integer(r["horizon"], "roles.horizon", 1, 100000);
     if (r.contains("noop_cost")) s.roles.noop_cost = f.number(r["noop_cost"], "roles.noop_cost", 0, false);
     if (r.contains("principal_follows_completed_plan"))
@@ -153,6 +172,12 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
           f.boolean(r["principal_follows_completed_plan"], "roles.principal_follows_completed_plan");
   }
   if (s.roles.principal == s.roles.assistant) f.fail("roles.assistant", "must differ from roles.principal");
+  if (s.roles.turns == TurnMode::Order)
+    for (const std::string* who : {&s.roles.principal, &s.roles.assistant})
+      if (std::find(s.roles.turn_order.begin(), s.roles.turn_order.end(), *who) == s.roles.turn_order.end())
+        f.fail("roles.turns", "the turn order must include " +
+                                  std::string(who == &s.roles.principal ? "roles.principal" : "roles.assistant") +
+                                  " '" + *who + "'");
 
   if (doc.contains("goals")) {
     const json& g = doc["goals"];

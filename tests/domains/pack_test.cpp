@@ -210,6 +210,32 @@ constexpr const char* kPantryPack = R"j({
   "assistance_options": [{"action": "take", "object_arg": 2, "object_type": "fruit"}]
 })j";
 
+TEST(PackFile, TurnsTurnPredicateAndAgentType) {
+  PackSpec s = parse_pack_spec(R"j({"domain": "k"})j", "t/pack.json");
+  EXPECT_EQ(s.roles.turns, TurnMode::Auto);
+  EXPECT_EQ(s.roles.turn_predicate, "active");
+  EXPECT_EQ(s.roles.noop_action, "wait");
+  EXPECT_EQ(s.roles.agent_type, "agent");
+  s = parse_pack_spec(R"j({"domain": "k", "roles": {"turns": "alternate", "turn_predicate": "turn", "noop_action": "idle",
+                           "agent_type": "person"}})j",
+                      "t/pack.json");
+  EXPECT_EQ(s.roles.turns, TurnMode::Alternate);
+  EXPECT_EQ(s.roles.turn_predicate, "turn");
+  EXPECT_EQ(s.roles.agent_type, "person");
+  // The pack's roles are the turn-taking the planning code asks.
+  const model::TurnTaking& t = s.roles;
+  EXPECT_EQ(t.noop_action, "idle");
+  s = parse_pack_spec(R"j({"domain": "k", "roles": {"turns": ["robot", "dog", "human"]}})j", "t/pack.json");
+  EXPECT_EQ(s.roles.turns, TurnMode::Order);
+  EXPECT_EQ(s.roles.turn_order, (std::vector<std::string>{"robot", "dog", "human"}));
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"turns": ["human", "dog"]}})j").find("must include roles.assistant 'robot'"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"turns": ["human", "robot", "human"]}})j").find("roles.turns[2]"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"turns": true}})j").find("roles.turns: expected \"domain\""),
+            std::string::npos);
+}
+
 TEST(PackFile, SceneColoursAreHexByType) {
   const PackSpec s = parse_pack_spec(
       R"j({"domain": "k", "scene": "cards", "scene_colours": {"comment": "x", "plate": "#A8c8f5", "shelf": "#000000"}})j",
