@@ -200,8 +200,7 @@ Session Session::open_domain(const std::string& domain_dir, const std::string& p
   if (!fs::is_directory(dir)) throw InputError("domain folder '" + domain_dir + "' is not a directory");
   if (!fs::exists(dom)) throw InputError("domain folder '" + domain_dir + "' has no domain.pddl");
   if (!fs::exists(problem_file)) throw InputError("problem file '" + problem_file + "' does not exist");
-  auto domain = std::make_shared<pddl::Domain>(pddl::load_domain(dom.string()));
-  domains::PackPtr pack = domains::find_pack(*domain, domain_dir);
+  auto [domain, pack] = domains::load_domain_with_pack(dom.string(), domain_dir);
   auto task = data::ground_problem(*pack, domain, problem_file);
   std::vector<data::GoalSpec> goals;
   if (options.goals.empty()) {

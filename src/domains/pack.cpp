@@ -1,5 +1,6 @@
 // The generic behaviour of a pack: everything derived from its PackSpec.
 #include "domains/pack.hpp"
+#include "domains/task_transform.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -376,7 +377,9 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
   auto type = [&](const std::string& field, const std::string& name) {
     if (!d.find_type(name)) fail(field, "the domain has no type '" + name + "'");
   };
-  action("roles.noop_action", spec.roles.noop_action);
+  // The turns and freezing clips adds (and the no-op, when it compiles the turns).
+  const TaskTransform added = plan_task_transform(spec, d);
+  if (!added.add_noop) action("roles.noop_action", spec.roles.noop_action);
   for (size_t i = 0; i < spec.grounding.schema_order.size(); ++i)
     action("grounding.schema_order[" + std::to_string(i) + "]", spec.grounding.schema_order[i]);
   if (spec.goals.source == GoalSource::Objects) type("goals.object_type", spec.goals.object_type);
@@ -431,6 +434,7 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     // The generic pack: every default (docs/domains.md).
     PackSpec s;
     s.name = domain.name;
+    s.generic = true;
     s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
     s.language.domain = s.name;
     s.language.salient_actions.clear();
@@ -438,8 +442,19 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     spec = std::move(s);
     declared = false;  // nothing to check: `clips plan` works on any domain
   }
-  if (declared) check_pack_against(*spec, domain);
+  if (declared) {
+    check_pack_against(*spec, domain);
+    spec->transform = plan_task_transform(*spec, domain);
+  }
   return make_pack(std::move(*spec));
+}
+
+DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir) {
+  auto parsed = std::make_shared<const pddl::Domain>(pddl::load_domain(domain_file));
+  DomainWithPack out;
+  out.pack = find_pack(*parsed, dir);
+  out.domain = prepare_domain(out.pack->spec(), std::move(parsed));
+  return out;
 }
 
 }  // namespace clips::domains

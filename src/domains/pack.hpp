@@ -64,6 +64,23 @@ struct Roles : model::TurnTaking {
   std::string agent_type = "agent";
 };
 
+// What clips adds to a pack's domain and problems before grounding (docs/
+// domains.md, "What clips adds"), decided by plan_task_transform
+// (task_transform.hpp) when find_pack checks the pack against the domain.
+// Empty for the paper domains, which write the turn idiom and `frozen`.
+struct TaskTransform {
+  // (frozen ?a - agent_type), and (not (frozen ?a)) in the precondition of
+  // every action but the no-op, ?a its first parameter.
+  bool add_frozen = false;
+  // The turn predicate and next-turn, (<turn> ?a) in every precondition, the
+  // turn hand-over in every effect, and the initial facts of turn_order.
+  bool compile_turns = false;
+  bool add_noop = false;             // compile_turns: the domain lacks the no-op, clips adds it
+  std::string agent_type;            // the agents' type (when anything is added)
+  std::vector<std::string> turn_order;  // compile_turns: agents in turn order (the first starts)
+  bool empty() const { return !add_frozen && !compile_turns; }
+};
+
 // Where a problem's candidate goals come from.
 enum class GoalSource {
   GoalSets,     // goals/sets/<problem>.txt lists labels, goals/definitions/<label>.pddl the conditions
@@ -182,6 +199,12 @@ struct PackSpec {
   // pastel from a hash of the type (items) or grey (fixtures).
   std::map<std::string, std::string> scene_colours;
   std::string rules_text;  // the world's rules in English, for the multimodal LLM baseline
+  // Not read from the file: what clips adds to the domain for this pack
+  // (find_pack decides it against the domain; empty for a pack built
+  // without one, and for the generic pack, which adds nothing).
+  TaskTransform transform;
+  // The generic pack (no pack file): clips adds nothing to the domain.
+  bool generic = false;
 };
 
 // A task compiled to plain STRIPS for an outside planner (e.g. Fast Downward).
@@ -318,7 +341,8 @@ int reached_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& goal
 PackSpec parse_pack_spec(const std::string& json_text, const std::string& source);
 PackSpec load_pack_spec(const std::string& path);
 // Checks a spec against a domain: every action, predicate and type it names
-// exists. Throws InputError naming the field.
+// exists, and what clips must add to the domain for it can be added
+// (plan_task_transform). Throws InputError naming the field.
 void check_pack_against(const PackSpec& spec, const pddl::Domain& domain);
 
 // The pack for a domain:
@@ -326,7 +350,17 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& domain);
 //   2. `<data>/domains/<domain name>/pack.json` (util::data_dir());
 //   3. the compiled-in pack of that name (doors-keys-gems, virtual-home);
 //   4. the generic pack: everything defaulted (see docs/domains.md).
+// A declared pack is checked against the domain (check_pack_against) and
+// carries what clips adds to it (PackSpec::transform).
 PackPtr find_pack(const pddl::Domain& domain, const std::string& dir = "");
+// A domain file and its pack as clips grounds them: find_pack on the file's
+// folder (or `dir`), and the domain with the pack's task transformations
+// applied (task_transform.hpp), which problems are parsed against.
+struct DomainWithPack {
+  std::shared_ptr<const pddl::Domain> domain;
+  PackPtr pack;
+};
+DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir);
 // A pack from a spec: its "code" picks the compiled hooks ("" none).
 PackPtr make_pack(PackSpec spec);
 // The compiled-in specs (equal to data/domains/<name>/pack.json; tested).

@@ -203,7 +203,7 @@ struct Pantry {
 
 constexpr const char* kPantryPack = R"j({
   "domain": "pantry",
-  "roles": {"principal": "cook", "assistant": "helper"},
+  "roles": {"principal": "cook", "assistant": "helper", "turns": ["helper", "cook"]},
   "goals": {"source": "objects", "object_type": "fruit", "condition": "(has cook {})"},
   "language": {"salient_actions": [{"action": "take", "focal_arg": 2}, {"action": "give", "focal_arg": 3}],
                "qualifier": {"predicate": "isripe"}},
@@ -283,10 +283,13 @@ TEST(PackFile, AFolderPackIsFoundAndDrivesGoalsOptionsAndCandidates) {
   EXPECT_EQ(goals[0].label, "apple");
   EXPECT_EQ(goals[1].condition, "(has cook pear)");
   // The completion that ends with the cook holding the pear pursued "pear".
+  // The helper acts first (roles.turns), the cook waits in its turns.
   pddl::PlanFile observed, completed;
   observed.actions.push_back({"(take helper knife)", SourceLoc{"obs", 1, 1}});
-  completed.actions.push_back({"(take helper pear)", SourceLoc{"comp", 1, 1}});
-  completed.actions.push_back({"(give helper cook pear)", SourceLoc{"comp", 2, 1}});
+  completed.actions.push_back({"(wait cook)", SourceLoc{"comp", 1, 1}});
+  completed.actions.push_back({"(take helper pear)", SourceLoc{"comp", 2, 1}});
+  completed.actions.push_back({"(wait cook)", SourceLoc{"comp", 3, 1}});
+  completed.actions.push_back({"(give helper cook pear)", SourceLoc{"comp", 4, 1}});
   EXPECT_EQ(pack->true_goal_index(*task, goals, "", observed, completed), 1);
   // Options: fruit the helper takes (the knife is no option).
   EXPECT_EQ(pack->options_taken(completed, "", task.get()), (std::vector<std::string>{"pear"}));
