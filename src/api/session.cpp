@@ -87,7 +87,7 @@ struct Session::Impl {
   inference::StepRecord last;  // the belief's record of the current step
   std::vector<Step> trace;
   domains::Roles roles;
-  std::optional<pddl::Task::AtomRef> assistant_active;  // null: no (active agent) predicate
+  std::optional<pddl::Task::AtomRef> assistant_active;  // null: the domain has no turn predicate (generic pack)
 
   Impl(SessionOptions o, std::shared_ptr<const pddl::Task> t, domains::PackPtr p, std::vector<data::GoalSpec> goals,
        std::vector<model::CostProfile> profiles)
@@ -113,7 +113,7 @@ struct Session::Impl {
     belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
     roles = pack->roles();
     try {
-      assistant_active = task->atom("active", {roles.assistant});
+      assistant_active = roles.turn_atom(*task, roles.assistant);
     } catch (const InputError&) {
       assistant_active.reset();
     }
@@ -289,8 +289,7 @@ AssistDecision Session::assist() {
   setup.start = m.belief->state();
   setup.observed_steps = m.belief->t();
   setup.horizon = m.roles.horizon;
-  setup.principal = m.roles.principal;
-  setup.assistant = m.roles.assistant;
+  setup.set_turns(m.roles);
   setup.noop_cost = m.roles.noop_cost;
   setup.refine = m.belief->searches();
   // The inference's own budget, so these refinements are the ones the next

@@ -100,8 +100,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     setup.start = belief.state();
     setup.observed_steps = static_cast<int>(p.observed.actions.size());
     setup.horizon = df.horizon;
-    setup.principal = df.principal;
-    setup.assistant = df.assistant;
+    setup.set_turns(df);
     setup.noop_cost = df.noop_cost;
     setup.completed = resolve_all(*task, setup.start, p.completed);
     setup.option_of = [&pack, task, tag = p.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
@@ -157,8 +156,7 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   setup.start = belief.state();
   setup.observed_steps = static_cast<int>(out.inference.steps.size()) - 1;
   setup.horizon = df.horizon;
-  setup.principal = df.principal;
-  setup.assistant = df.assistant;
+  setup.set_turns(df);
   setup.noop_cost = df.noop_cost;
   setup.refine = belief.searches();
   setup.qa_floor = opts.qa_floor;

@@ -229,7 +229,7 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
     const pddl::Task& task = *prob.task;
     const inference::UtteranceModel speaker(prob.task, pack);
     const auto tags = usable_tags(*pack, task);
-    const auto noop = task.find_action("(" + pack->roles().noop_action + " " + pack->roles().assistant + ")");
+    const auto noop = pack->roles().find_noop(task, pack->roles().assistant);
     for (int i = 1; i <= options.plans_per_problem; ++i) {
       util::Rng rng(util::Rng::derive(options.seed, {kPlanStream, static_cast<uint64_t>(p), static_cast<uint64_t>(i)}));
       GeneratedPlan plan;
