@@ -415,6 +415,14 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
     for (const auto& p : r.profiles)
       for (const auto& [key, cost] : p.costs)
         action("cost_profiles: profile " + p.name + ": costs." + key.first, key.second);
+  if (!spec.fewshot.file.empty()) {
+    fs::path file(spec.fewshot.file);
+    if (file.is_relative() && !spec.source.empty()) file = fs::path(spec.source).parent_path() / file;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+      fail("fewshot.file", "no file " + file.string() +
+                               (fs::path(spec.fewshot.file).is_relative() ? " (read from the pack file's folder)" : ""));
+  }
 }
 
 // ---- finding a pack -----------------------------------------------------------------

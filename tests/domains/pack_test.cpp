@@ -236,6 +236,19 @@ TEST(PackFile, TurnsTurnPredicateAndAgentType) {
             std::string::npos);
 }
 
+TEST(PackFile, AMissingFewShotFileNamesTheField) {
+  Pantry p;
+  std::ofstream(p.dir / "pack.json") << R"j({"domain": "pantry", "roles": {"principal": "cook", "assistant": "helper"},
+                                             "fewshot": {"file": "examples.tsv"}})j";
+  try {
+    find_pack(*p.domain, p.dir.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fewshot.file: no file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("examples.tsv"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PackFile, SceneColoursAreHexByType) {
   const PackSpec s = parse_pack_spec(
       R"j({"domain": "k", "scene": "cards", "scene_colours": {"comment": "x", "plate": "#A8c8f5", "shelf": "#000000"}})j",
