@@ -4,12 +4,15 @@
 // budgets), so that what bench would stop at is reported before it starts.
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <set>
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "data/validate.hpp"
+#include "domains/pack.hpp"
+#include "pddl/sexpr.hpp"
 #include "eval/experiment.hpp"
 
 namespace clips::app {
@@ -24,6 +27,25 @@ const data::PlanRecord* first_checked_plan(const data::Dataset& ds, const data::
       if (p.id == r.plan_id && p.evaluated) return &p;
   }
   return nullptr;
+}
+
+// The dataset's own pack.json against data/schema/pack.schema.json (the C++
+// reader checks it again, and more, when the dataset loads). The number of
+// violations, each printed as a FAIL line.
+int check_pack_schema(const std::string& dir, bool quiet) {
+  const std::filesystem::path file = std::filesystem::path(dir) / "pack.json";
+  if (!std::filesystem::exists(file)) return 0;
+  std::vector<std::string> errors;
+  try {
+    errors = domains::pack_schema_errors(pddl::read_text_file(file.string()), file.string());
+  } catch (const InputError& e) {
+    // Not JSON (the dataset's load reports it), or no schema to check against.
+    fmt::print("WARN  {}: not checked against the schema {}: {}\n", file.string(), domains::pack_schema_path(), e.what());
+    return 0;
+  }
+  for (const auto& e : errors) fmt::print("FAIL  {}: {}\n", file.string(), e);
+  if (errors.empty() && !quiet) fmt::print("ok    {} conforms to {}\n", file.string(), domains::pack_schema_path());
+  return static_cast<int>(errors.size());
 }
 
 }  // namespace
@@ -42,7 +64,9 @@ void register_validate(CLI::App& app) {
                 "that checks, with tiny search budgets)");
   add_lm_options(cmd, *lm);
   cmd->callback([=] {
-    auto ds = data::Dataset::load(dataset_dir(*dataset));
+    const std::string dir = dataset_dir(*dataset);
+    const int schema_failures = check_pack_schema(dir, *quiet);
+    auto ds = data::Dataset::load(dir);
     auto report = data::validate_dataset(ds);
     for (auto& r : report.results) {
       if (r.ok) {
@@ -75,7 +99,7 @@ void register_validate(CLI::App& app) {
         fmt::print("bench set-up not checked: no plan bench would evaluate checks\n");
       }
     }
-    g_exit_code = report.failed == 0 && bench_failures == 0 ? kExitOk : kExitSomeFailed;
+    g_exit_code = report.failed == 0 && bench_failures == 0 && schema_failures == 0 ? kExitOk : kExitSomeFailed;
   });
 }
 

@@ -340,6 +340,15 @@ int reached_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& goal
 // predicates, types, agents are checked when a problem is grounded).
 PackSpec parse_pack_spec(const std::string& json_text, const std::string& source);
 PackSpec load_pack_spec(const std::string& path);
+// The JSON Schema of pack files, data/schema/pack.schema.json under the data
+// folder (util::data_dir()).
+std::string pack_schema_path();
+// The violations of that schema by a pack file's text, each "<field>:
+// <what>" (empty: the text conforms). InputError when the text is not JSON
+// or the schema cannot be read. parse_pack_spec checks more (values that
+// depend on each other); the schema is what editors check as one types.
+std::vector<std::string> pack_schema_errors(const std::string& json_text, const std::string& source,
+                                            const std::string& schema_path = pack_schema_path());
 // Checks a spec against a domain: every action, predicate and type it names
 // exists, and what clips must add to the domain for it can be added
 // (plan_task_transform). Throws InputError naming the field.
