@@ -90,7 +90,7 @@ struct Session::Impl {
   // What the last instruction asked for, per hypothesis (Q_MDP's request rule).
   std::vector<std::shared_ptr<const assist::Request>> requests;
   domains::Roles roles;
-  std::optional<pddl::Task::AtomRef> assistant_active;  // null: no (active agent) predicate
+  std::optional<pddl::Task::AtomRef> assistant_active;  // null: the domain has no turn predicate (generic pack)
 
   Impl(SessionOptions o, std::shared_ptr<const pddl::Task> t, domains::PackPtr p, std::vector<data::GoalSpec> goals,
        std::vector<model::CostProfile> profiles)
@@ -116,7 +116,7 @@ struct Session::Impl {
     belief = std::make_unique<inference::Belief>(task, pack, std::move(goals), std::move(profiles), io);
     roles = pack->roles();
     try {
-      assistant_active = task->atom("active", {roles.assistant});
+      assistant_active = roles.turn_atom(*task, roles.assistant);
     } catch (const InputError&) {
       assistant_active.reset();
     }
@@ -203,8 +203,7 @@ Session Session::open_domain(const std::string& domain_dir, const std::string& p
   if (!fs::is_directory(dir)) throw InputError("domain folder '" + domain_dir + "' is not a directory");
   if (!fs::exists(dom)) throw InputError("domain folder '" + domain_dir + "' has no domain.pddl");
   if (!fs::exists(problem_file)) throw InputError("problem file '" + problem_file + "' does not exist");
-  auto domain = std::make_shared<pddl::Domain>(pddl::load_domain(dom.string()));
-  domains::PackPtr pack = domains::find_pack(*domain, domain_dir);
+  auto [domain, pack] = domains::load_domain_with_pack(dom.string(), domain_dir);
   auto task = data::ground_problem(*pack, domain, problem_file);
   std::vector<data::GoalSpec> goals;
   if (options.goals.empty()) {
@@ -294,8 +293,7 @@ AssistDecision Session::assist() {
   setup.start = m.belief->state();
   setup.observed_steps = m.belief->t();
   setup.horizon = m.roles.horizon;
-  setup.principal = m.roles.principal;
-  setup.assistant = m.roles.assistant;
+  setup.set_turns(m.roles);
   setup.noop_cost = m.roles.noop_cost;
   setup.refine = m.belief->searches();
   // The inference's own budget, so these refinements are the ones the next

@@ -12,6 +12,7 @@
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "domains/pack.hpp"
+#include "domains/task_transform.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "search/rtaa.hpp"
@@ -108,10 +109,13 @@ void register_plan(CLI::App& app) {
     } else {
       if (o->domain_file.empty() || o->problem.empty())
         throw InputError("give --dataset DIR --problem ID, or --domain FILE --problem FILE");
-      auto d = std::make_shared<pddl::Domain>(pddl::load_domain(o->domain_file));
-      // A pack.json beside the domain file, or the shared/built-in pack of its name.
-      pack = domains::find_pack(*d, std::filesystem::path(o->domain_file).parent_path().string());
+      // A pack.json beside the domain file, or the shared/built-in pack of its
+      // name; the domain as that pack has clips ground it.
+      auto [d, found] = domains::load_domain_with_pack(o->domain_file,
+                                                       std::filesystem::path(o->domain_file).parent_path().string());
+      pack = found;
       auto p = std::make_shared<pddl::Problem>(pddl::load_problem(*d, o->problem));
+      domains::prepare_problem(pack->spec(), *d, *p);
       pddl::GroundingOptions go = pack->spec().grounding;
       go.max_ground_actions = o->max_ground_actions;
       task = std::make_shared<pddl::Task>(d, p, go);

@@ -1,24 +1,72 @@
 // `clips validate`: simulate every observed plan and its completion, and check
-// that the completion reaches exactly the dataset's true goal.
+// that the completion reaches exactly the dataset's true goal; then rehearse
+// `clips bench` on the first plan that checks (every method's set-up, with tiny
+// budgets), so that what bench would stop at is reported before it starts.
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <set>
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "data/validate.hpp"
+#include "domains/pack.hpp"
+#include "pddl/sexpr.hpp"
+#include "eval/experiment.hpp"
 
 namespace clips::app {
 
+namespace {
+
+// The first evaluated plan (what bench runs) that checks.
+const data::PlanRecord* first_checked_plan(const data::Dataset& ds, const data::ValidationReport& report) {
+  for (const auto& r : report.results) {
+    if (!r.ok) continue;
+    for (const auto& p : ds.plans())
+      if (p.id == r.plan_id && p.evaluated) return &p;
+  }
+  return nullptr;
+}
+
+// The dataset's own pack.json against data/schema/pack.schema.json (the C++
+// reader checks it again, and more, when the dataset loads). The number of
+// violations, each printed as a FAIL line.
+int check_pack_schema(const std::string& dir, bool quiet) {
+  const std::filesystem::path file = std::filesystem::path(dir) / "pack.json";
+  if (!std::filesystem::exists(file)) return 0;
+  std::vector<std::string> errors;
+  try {
+    errors = domains::pack_schema_errors(pddl::read_text_file(file.string()), file.string());
+  } catch (const InputError& e) {
+    // Not JSON (the dataset's load reports it), or no schema to check against.
+    fmt::print("WARN  {}: not checked against the schema {}: {}\n", file.string(), domains::pack_schema_path(), e.what());
+    return 0;
+  }
+  for (const auto& e : errors) fmt::print("FAIL  {}: {}\n", file.string(), e);
+  if (errors.empty() && !quiet) fmt::print("ok    {} conforms to {}\n", file.string(), domains::pack_schema_path());
+  return static_cast<int>(errors.size());
+}
+
+}  // namespace
+
 void register_validate(CLI::App& app) {
-  auto* cmd = app.add_subcommand("validate", "Simulate every observed plan and its completion; check the true goals");
+  auto* cmd = app.add_subcommand(
+      "validate", "Simulate every observed plan and its completion; check the true goals; rehearse clips bench on one plan");
   auto dataset = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
+  auto plans_only = std::make_shared<bool>(false);
+  auto lm = std::make_shared<LmFlags>();
   add_dataset_option(cmd, *dataset, "Dataset directory (with domain.pddl, problems/, plans/)");
-  cmd->add_flag("-q,--quiet", *quiet, "Print only failures and the final line");
+  cmd->add_flag("-q,--quiet", *quiet, "Print only failures, warnings and the final lines");
+  cmd->add_flag("--plans-only", *plans_only,
+                "Check the plans only; skip the rehearsal of clips bench (every method's set-up on the first plan "
+                "that checks, with tiny search budgets)");
+  add_lm_options(cmd, *lm);
   cmd->callback([=] {
-    auto ds = data::Dataset::load(dataset_dir(*dataset));
+    const std::string dir = dataset_dir(*dataset);
+    const int schema_failures = check_pack_schema(dir, *quiet);
+    auto ds = data::Dataset::load(dir);
     auto report = data::validate_dataset(ds);
     for (auto& r : report.results) {
       if (r.ok) {
@@ -28,7 +76,30 @@ void register_validate(CLI::App& app) {
       }
     }
     fmt::print("validated {} plans, {} failed\n", report.results.size(), report.failed);
-    g_exit_code = report.failed == 0 ? kExitOk : kExitSomeFailed;
+    int bench_failures = 0;
+    if (!*plans_only) {
+      if (const data::PlanRecord* plan = first_checked_plan(ds, report)) {
+        eval::BenchCheck check;
+        try {
+          auto model = make_lm(*lm, ds);
+          check = eval::check_bench_setup(ds, *plan, *model, eval::ExperimentOptions{});
+        } catch (const std::exception& e) {
+          // The language model itself (its corpus files, the endpoint).
+          check.plan_id = plan->id;
+          check.failures.push_back({"language model", e.what()});
+        }
+        for (const auto& m : check.passed)
+          if (!*quiet) fmt::print("ok    bench set-up: {:<16} on plan {}\n", m, check.plan_id);
+        for (const auto& w : check.warnings) fmt::print("WARN  bench set-up: {}\n", w);
+        for (const auto& [what, error] : check.failures) fmt::print("FAIL  bench set-up: {}: {}\n", what, error);
+        bench_failures = static_cast<int>(check.failures.size());
+        fmt::print("bench set-up on plan {}: {} methods ok, {} failed, {} warnings\n", check.plan_id,
+                   check.passed.size(), bench_failures, check.warnings.size());
+      } else {
+        fmt::print("bench set-up not checked: no plan bench would evaluate checks\n");
+      }
+    }
+    g_exit_code = report.failed == 0 && bench_failures == 0 && schema_failures == 0 ? kExitOk : kExitSomeFailed;
   });
 }
 

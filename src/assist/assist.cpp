@@ -253,10 +253,8 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
   return d;
 }
 
-ActionId find_wait(const pddl::Task& task, const std::string& agent) {
-  auto w = task.find_action("(wait " + agent + ")");
-  if (!w) throw InputError("assistance needs a (wait " + agent + ") action");
-  return *w;
+ActionId find_wait(const AssistSetup& setup, const std::string& agent) {
+  return setup.turns().noop(*setup.task, agent);  // InputError naming the no-op action
 }
 
 // Shared machinery of one simulated episode.
@@ -272,12 +270,9 @@ struct Episode {
 
   explicit Episode(const AssistSetup& s)
       : setup(s), task(*s.task), trajectory(s.task->num_words()), assistant(s.assistant), principal(s.principal) {
-    principal_active = task.atom("active", {principal});
-    auto w = task.find_action("(wait " + assistant + ")");
-    auto pw = task.find_action("(wait " + principal + ")");
-    if (!w || !pw) throw InputError("assistance needs (wait " + assistant + ") and (wait " + principal + ") actions");
-    assistant_wait = *w;
-    principal_wait = *pw;
+    principal_active = s.turns().turn_atom(task, principal);
+    assistant_wait = find_wait(s, assistant);
+    principal_wait = find_wait(s, principal);
     State cur = setup.start;
     for (size_t j = 0; j < setup.completed.size(); ++j) {
       trajectory[cur.data()].push_back(static_cast<int>(j));
@@ -400,7 +395,9 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   return r;
 }
 
-bool assistant_turn(const AssistSetup& setup, const State& s) { return !Episode(setup).principal_turn(s); }
+bool assistant_turn(const AssistSetup& setup, const State& s) {
+  return !setup.turns().is_turn_of(*setup.task, s, setup.principal);
+}
 
 AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<const model::Specification> true_spec,
@@ -509,7 +506,7 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
 }
 
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t) {
-  return decide_qmdp(setup, find_wait(*setup.task, setup.assistant), belief, s, t, /*values_always=*/true);
+  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, /*values_always=*/true);
 }
 
 Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s) {
@@ -526,7 +523,7 @@ Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>&
     if (setup.refine) h.policy->refine(s, setup.refine_options);
     // As in pibar_mdp: a hypothesis with no way to its goal waits.
     auto b = h.policy->value(s) > -kInf ? h.policy->best_action(s) : std::nullopt;
-    const ActionId a = b ? *b : find_wait(task, setup.assistant);
+    const ActionId a = b ? *b : find_wait(setup, setup.assistant);
     if (common && *common != a) all_same = false;
     if (!common) common = a;
     for (size_t i = 0; i < d.candidates.size(); ++i)

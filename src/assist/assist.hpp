@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "language/commands/language_config.hpp"
+#include "model/turns.hpp"
 #include "search/rtaa.hpp"
 
 namespace clips::assist {
@@ -68,13 +69,13 @@ enum class QaFloor { DeadEnds, Horizon };
 std::string to_string(QaFloor f);         // "dead-ends", "horizon"
 QaFloor parse_qa_floor(const std::string& text);  // throws InputError
 
-struct AssistSetup {
+// The turn-taking names (principal: the simulated human, assistant, their
+// no-op action and turn predicate) are the pack's (model::TurnTaking).
+struct AssistSetup : model::TurnTaking {
   std::shared_ptr<const pddl::Task> task;
   pddl::State start;                 // s_T
   int observed_steps = 0;            // T
   int horizon = 100;                 // model timesteps T+1 .. horizon
-  std::string principal = "human";   // the simulated human
-  std::string assistant = "robot";
   double noop_cost = 0.6;            // padding step cost (mean wait cost)
   // Hypotheses below are ignored by Q_MDP and pi-bar; the cut-off used is at
   // most half the largest weight, so a flat posterior over many goals still
@@ -105,6 +106,8 @@ struct AssistSetup {
     refine_options.max_nodes = 1u << 16;
     refine_options.max_seconds = 10;
   }
+  const model::TurnTaking& turns() const { return *this; }
+  void set_turns(const model::TurnTaking& t) { static_cast<model::TurnTaking&>(*this) = t; }
 };
 
 struct AssistResult {

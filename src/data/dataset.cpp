@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "domains/task_transform.hpp"
 #include "pddl/parser.hpp"
 #include "util/utf8.hpp"
 
@@ -242,7 +243,10 @@ std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
                                                  std::shared_ptr<const pddl::Domain> domain,
                                                  const std::string& problem_path, int64_t max_ground_actions) {
   const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
+  // A domain as parsed (not through load_domain_with_pack) gets the pack's additions here.
+  domain = domains::prepare_domain(pack.spec(), std::move(domain));
   auto prob = std::make_shared<pddl::Problem>(pddl::load_problem(*domain, problem_path, with_goal));
+  domains::prepare_problem(pack.spec(), *domain, *prob);
   pddl::GroundingOptions go = pack.spec().grounding;
   go.max_ground_actions = max_ground_actions;
   auto t = std::make_shared<const pddl::Task>(std::move(domain), std::move(prob), go);
@@ -276,8 +280,9 @@ Dataset Dataset::load(const std::string& dir_in) {
     throw InputError("dataset directory '" + dir_in + (fs::exists(dir) ? "' is not a directory" : "' does not exist"));
   fs::path dom = dir / "domain.pddl";
   if (!fs::exists(dom)) throw InputError("dataset directory '" + dir_in + "' has no domain.pddl");
-  ds.domain_ = std::make_shared<pddl::Domain>(pddl::load_domain(dom.string()));
-  ds.pack_ = domains::find_pack(*ds.domain_, dir_in);
+  auto [domain, pack] = domains::load_domain_with_pack(dom.string(), dir_in);
+  ds.domain_ = std::move(domain);
+  ds.pack_ = std::move(pack);
 
   fs::path obs_dir = dir / "plans" / "observed";
   fs::path comp_dir = dir / "plans" / "completed";

@@ -142,8 +142,10 @@ void apply_instruction_table(const std::string& text, const std::string& path, s
 // InputError at `loc` otherwise.
 void check_utterance(const std::string& text, const SourceLoc& loc);
 // A problem of `domain` grounded as its pack asks and checked by it (what
-// Dataset::task does), for problems outside a dataset. Loads the problem's
-// :goal only when the pack takes its goal from there.
+// Dataset::task does), for problems outside a dataset: the pack's task
+// transformations applied (domains/task_transform.hpp; `domain` may be as
+// parsed or already prepared). Loads the problem's :goal only when the pack
+// takes its goal from there.
 std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
                                                  std::shared_ptr<const pddl::Domain> domain,
                                                  const std::string& problem_path,

@@ -1,5 +1,6 @@
 // The generic behaviour of a pack: everything derived from its PackSpec.
 #include "domains/pack.hpp"
+#include "domains/task_transform.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -376,7 +377,9 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
   auto type = [&](const std::string& field, const std::string& name) {
     if (!d.find_type(name)) fail(field, "the domain has no type '" + name + "'");
   };
-  action("roles.noop_action", spec.roles.noop_action);
+  // The turns and freezing clips adds (and the no-op, when it compiles the turns).
+  const TaskTransform added = plan_task_transform(spec, d);
+  if (!added.add_noop) action("roles.noop_action", spec.roles.noop_action);
   for (size_t i = 0; i < spec.grounding.schema_order.size(); ++i)
     action("grounding.schema_order[" + std::to_string(i) + "]", spec.grounding.schema_order[i]);
   if (spec.goals.source == GoalSource::Objects) type("goals.object_type", spec.goals.object_type);
@@ -412,6 +415,14 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
     for (const auto& p : r.profiles)
       for (const auto& [key, cost] : p.costs)
         action("cost_profiles: profile " + p.name + ": costs." + key.first, key.second);
+  if (!spec.fewshot.file.empty()) {
+    fs::path file(spec.fewshot.file);
+    if (file.is_relative() && !spec.source.empty()) file = fs::path(spec.source).parent_path() / file;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+      fail("fewshot.file", "no file " + file.string() +
+                               (fs::path(spec.fewshot.file).is_relative() ? " (read from the pack file's folder)" : ""));
+  }
 }
 
 // ---- goal atoms from effects ------------------------------------------------------------
@@ -432,7 +443,8 @@ void plain_effects(const pddl::Effect& e, std::vector<const pddl::Effect*>& out)
 
 }  // namespace
 
-std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& d, const commands::SalientActionRule& rule) {
+std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& d, const commands::SalientActionRule& rule,
+                                                 const std::string& turn_predicate) {
   std::vector<std::string> out;
   const int a = d.find_action(rule.action);
   if (a < 0) return out;
@@ -443,7 +455,7 @@ std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& d, const co
   plain_effects(schema.effect, effects);
   for (const pddl::Effect* e : effects) {
     const std::string& pred = d.predicates[static_cast<size_t>(e->pred)].name;
-    if (pred == "active" || pred == "frozen") continue;  // bookkeeping of turns and simulations
+    if (pred == turn_predicate || pred == "frozen") continue;  // bookkeeping of turns and simulations
     bool names_focal = false, printable = true;
     std::string atom = "(" + pred;
     for (const pddl::TermRef& t : e->args) {
@@ -467,7 +479,7 @@ std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& d, const co
 void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain) {
   for (const auto& rule : spec.language.salient_actions) {
     if (spec.language.goal_atoms.count(rule.action)) continue;
-    auto atoms = goal_atoms_from_effects(domain, rule);
+    auto atoms = goal_atoms_from_effects(domain, rule, spec.roles.turn_predicate);
     if (atoms.empty()) continue;
     spec.language.goal_atoms[rule.action] = std::move(atoms);
     spec.derived_goal_atoms.push_back(rule.action);
@@ -491,6 +503,7 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     // The generic pack: every default (docs/domains.md).
     PackSpec s;
     s.name = domain.name;
+    s.generic = true;
     s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
     s.language.domain = s.name;
     s.language.salient_actions.clear();
@@ -498,9 +511,20 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     spec = std::move(s);
     declared = false;  // nothing to check: `clips plan` works on any domain
   }
-  if (declared) check_pack_against(*spec, domain);
+  if (declared) {
+    check_pack_against(*spec, domain);
+    spec->transform = plan_task_transform(*spec, domain);
+  }
   derive_goal_atoms(*spec, domain);
   return make_pack(std::move(*spec));
+}
+
+DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir) {
+  auto parsed = std::make_shared<const pddl::Domain>(pddl::load_domain(domain_file));
+  DomainWithPack out;
+  out.pack = find_pack(*parsed, dir);
+  out.domain = prepare_domain(out.pack->spec(), std::move(parsed));
+  return out;
 }
 
 }  // namespace clips::domains

@@ -25,6 +25,7 @@
 #include "language/commands/language_config.hpp"
 #include "language/commands/salient.hpp"
 #include "model/spec.hpp"
+#include "model/turns.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
 #include "util/rng.hpp"
@@ -38,11 +39,17 @@ struct GoalSpec {
   std::string source;     // the file `condition` was read from ("" when built in code), for error locations
 };
 
-// Who helps whom.
-struct Roles {
-  std::string principal = "human";  // the speaker, whose goal is inferred
-  std::string assistant = "robot";  // the agent clips plays
-  std::string noop_action = "wait";  // what an agent does when it does nothing
+// How the agents take turns (roles.turns).
+enum class TurnMode {
+  Auto,       // Domain when the domain declares the turn predicate, else Alternate
+  Domain,     // the domain writes its own turn idiom (the paper domains)
+  Alternate,  // clips compiles turns in: principal, assistant, principal, ...
+  Order,      // clips compiles turns in, in Roles::turn_order
+};
+
+// Who helps whom. The names the planning code asks (principal, assistant,
+// no-op action, turn predicate) are model::TurnTaking's.
+struct Roles : model::TurnTaking {
   int horizon = 100;                 // assistance episodes stop after this many steps
   // The principal's no-op cost in the assistance value (the true profile's
   // no-op cost in mDKG, 1 elsewhere).
@@ -50,6 +57,28 @@ struct Roles {
   // The principal's simulated moves also take the k-th completed-plan action
   // when it is legal, even off the completed trajectory (VirtualHome).
   bool principal_follows_completed_plan = false;
+  TurnMode turns = TurnMode::Auto;
+  std::vector<std::string> turn_order;  // TurnMode::Order: agent object names, the first starts
+  // The agents' type: the turn and freeze predicates range over it, and every
+  // action's first parameter (the acting agent) must be of it.
+  std::string agent_type = "agent";
+};
+
+// What clips adds to a pack's domain and problems before grounding (docs/
+// domains.md, "What clips adds"), decided by plan_task_transform
+// (task_transform.hpp) when find_pack checks the pack against the domain.
+// Empty for the paper domains, which write the turn idiom and `frozen`.
+struct TaskTransform {
+  // (frozen ?a - agent_type), and (not (frozen ?a)) in the precondition of
+  // every action but the no-op, ?a its first parameter.
+  bool add_frozen = false;
+  // The turn predicate and next-turn, (<turn> ?a) in every precondition, the
+  // turn hand-over in every effect, and the initial facts of turn_order.
+  bool compile_turns = false;
+  bool add_noop = false;             // compile_turns: the domain lacks the no-op, clips adds it
+  std::string agent_type;            // the agents' type (when anything is added)
+  std::vector<std::string> turn_order;  // compile_turns: agents in turn order (the first starts)
+  bool empty() const { return !add_frozen && !compile_turns; }
 };
 
 // Where a problem's candidate goals come from.
@@ -183,6 +212,12 @@ struct PackSpec {
   // pastel from a hash of the type (items) or grey (fixtures).
   std::map<std::string, std::string> scene_colours;
   std::string rules_text;  // the world's rules in English, for the multimodal LLM baseline
+  // Not read from the file: what clips adds to the domain for this pack
+  // (find_pack decides it against the domain; empty for a pack built
+  // without one, and for the generic pack, which adds nothing).
+  TaskTransform transform;
+  // The generic pack (no pack file): clips adds nothing to the domain.
+  bool generic = false;
 };
 
 // A task compiled to plain STRIPS for an outside planner (e.g. Fast Downward).
@@ -318,16 +353,27 @@ int reached_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& goal
 // predicates, types, agents are checked when a problem is grounded).
 PackSpec parse_pack_spec(const std::string& json_text, const std::string& source);
 PackSpec load_pack_spec(const std::string& path);
+// The JSON Schema of pack files, data/schema/pack.schema.json under the data
+// folder (util::data_dir()).
+std::string pack_schema_path();
+// The violations of that schema by a pack file's text, each "<field>:
+// <what>" (empty: the text conforms). InputError when the text is not JSON
+// or the schema cannot be read. parse_pack_spec checks more (values that
+// depend on each other); the schema is what editors check as one types.
+std::vector<std::string> pack_schema_errors(const std::string& json_text, const std::string& source,
+                                            const std::string& schema_path = pack_schema_path());
 // Checks a spec against a domain: every action, predicate and type it names
-// exists. Throws InputError naming the field.
+// exists, and what clips must add to the domain for it can be added
+// (plan_task_transform). Throws InputError naming the field.
 void check_pack_against(const PackSpec& spec, const pddl::Domain& domain);
 // What a salient action means as a goal when the pack gives it no
 // language.goal_atoms: the atoms its effect adds and the negations of those
 // it deletes (unconditional effects only) that name its focal object, e.g.
 // (unlock ?a ?k ?d) adding (unlocked ?d) and deleting (locked ?d) gives
 // {"(unlocked $3)", "(not (locked $3))"}; the turn and freeze bookkeeping
-// (`active`, `frozen`) is left out. Empty when no such effect exists.
-std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& domain, const commands::SalientActionRule& rule);
+// (`turn_predicate`, `frozen`) is left out. Empty when no such effect exists.
+std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& domain, const commands::SalientActionRule& rule,
+                                                 const std::string& turn_predicate);
 // Fills language.goal_atoms of every salient action the pack leaves out (and
 // whose effects say something, see above) and lists them in
 // PackSpec::derived_goal_atoms.
@@ -338,7 +384,17 @@ void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain);
 //   2. `<data>/domains/<domain name>/pack.json` (util::data_dir());
 //   3. the compiled-in pack of that name (doors-keys-gems, virtual-home);
 //   4. the generic pack: everything defaulted (see docs/domains.md).
+// A declared pack is checked against the domain (check_pack_against) and
+// carries what clips adds to it (PackSpec::transform).
 PackPtr find_pack(const pddl::Domain& domain, const std::string& dir = "");
+// A domain file and its pack as clips grounds them: find_pack on the file's
+// folder (or `dir`), and the domain with the pack's task transformations
+// applied (task_transform.hpp), which problems are parsed against.
+struct DomainWithPack {
+  std::shared_ptr<const pddl::Domain> domain;
+  PackPtr pack;
+};
+DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir);
 // A pack from a spec: its "code" picks the compiled hooks ("" none).
 PackPtr make_pack(PackSpec spec);
 // The compiled-in specs (equal to data/domains/<name>/pack.json; tested).

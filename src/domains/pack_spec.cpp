@@ -4,13 +4,18 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "domains/pack.hpp"
+#include "util/data_dir.hpp"
 #include "util/error.hpp"
+#include "util/json_schema.hpp"
 
 namespace clips::domains {
 
@@ -28,13 +33,15 @@ class Fields {
   // Rejects keys outside `known` (a misspelt field would otherwise be ignored).
   void only(const json& obj, const std::string& path, const std::set<std::string>& known) const {
     if (!obj.is_object()) fail(path.empty() ? "(top level)" : path, "expected an object");
-    for (const auto& [key, value] : obj.items())
+    for (const auto& [key, value] : obj.items()) {
+      if (key == "comment" && !value.is_string()) fail(join(path, key), "expected a string (free text)");
       if (!known.contains(key)) {
         std::string list;
         for (const auto& k : known)
-          if (k != "comment") list += (list.empty() ? "" : ", ") + k;
+          if (k != "comment" && k != "$schema") list += (list.empty() ? "" : ", ") + k;
         fail(join(path, key), "unknown field (known: " + list + ")");
       }
+    }
   }
   static std::string join(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
@@ -98,9 +105,10 @@ model::CostProfile read_profile(const Fields& f, const json& v, const std::strin
     if (!c.is_object()) f.fail(path + ".costs", "expected an object {\"<agent>\": {\"<action>\": cost}}");
     for (const auto& [agent, actions] : c.items()) {
       const std::string ap = path + ".costs." + agent;
+      if (agent == "comment" && actions.is_string()) continue;
       if (!actions.is_object()) f.fail(ap, "expected an object {\"<action>\": cost}");
       for (const auto& [action, cost] : actions.items())
-        p.costs[{agent, action}] = f.number(cost, ap + "." + action, 0, false);
+        if (action != "comment" || !cost.is_string()) p.costs[{agent, action}] = f.number(cost, ap + "." + action, 0, false);
     }
   }
   return p;
@@ -119,12 +127,13 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   f.only(doc, "",
          {"domain", "code", "grounding", "roles", "goals", "cost_profiles", "default_cost_profile", "inference", "language", "fewshot",
           "literal_listener", "assistance_options", "max_utterances_per_plan", "plan_tags", "scene", "scene_colours", "rules_text",
-          "embedded_corpus", "assistance_rule", "comment"});
+          "embedded_corpus", "assistance_rule", "comment", "$schema"});
   PackSpec s;
   s.source = source;
   if (!doc.contains("domain")) f.fail("domain", "missing (the PDDL domain name the pack is for)");
   s.name = f.text(doc["domain"], "domain");
   if (doc.contains("code")) s.code = f.text(doc["code"], "code", true);
+  if (doc.contains("$schema")) f.text(doc["$schema"], "$schema");  // for editors (data/schema/pack.schema.json)
   s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
 
   if (doc.contains("grounding")) {
@@ -141,11 +150,30 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
 
   if (doc.contains("roles")) {
     const json& r = doc["roles"];
-    f.only(r, "roles", {"principal", "assistant", "noop_action", "horizon", "noop_cost",
-                        "principal_follows_completed_plan", "comment"});
+    f.only(r, "roles", {"principal", "assistant", "noop_action", "turn_predicate", "turns", "agent_type", "horizon",
+                        "noop_cost", "principal_follows_completed_plan", "comment"});
     if (r.contains("principal")) s.roles.principal = f.text(r["principal"], "roles.principal");
     if (r.contains("assistant")) s.roles.assistant = f.text(r["assistant"], "roles.assistant");
     if (r.contains("noop_action")) s.roles.noop_action = f.text(r["noop_action"], "roles.noop_action");
+    if (r.contains("turn_predicate")) s.roles.turn_predicate = f.text(r["turn_predicate"], "roles.turn_predicate");
+    if (r.contains("agent_type")) s.roles.agent_type = f.text(r["agent_type"], "roles.agent_type");
+    if (r.contains("turns")) {
+      const json& t = r["turns"];
+      if (t.is_array()) {
+        s.roles.turns = TurnMode::Order;
+        s.roles.turn_order = f.strings(t, "roles.turns");
+        if (s.roles.turn_order.size() < 2)
+          f.fail("roles.turns", "expected at least two agents in turn order (the principal and the assistant)");
+        for (size_t i = 0; i < s.roles.turn_order.size(); ++i)
+          for (size_t j = 0; j < i; ++j)
+            if (s.roles.turn_order[i] == s.roles.turn_order[j])
+              f.fail("roles.turns[" + std::to_string(i) + "]", "'" + s.roles.turn_order[i] + "' is listed twice");
+      } else if (t.is_string() && (t == "domain" || t == "alternate")) {
+        s.roles.turns = t == "domain" ? TurnMode::Domain : TurnMode::Alternate;
+      } else {
+        f.fail("roles.turns", "expected \"domain\", \"alternate\" or an array of agent object names in turn order");
+      }
+    }
     if (r.contains("horizon")) s.roles.horizon = f.integer(r["horizon"], "roles.horizon", 1, 100000);
     if (r.contains("noop_cost")) s.roles.noop_cost = f.number(r["noop_cost"], "roles.noop_cost", 0, false);
     if (r.contains("principal_follows_completed_plan"))
@@ -153,6 +181,12 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
           f.boolean(r["principal_follows_completed_plan"], "roles.principal_follows_completed_plan");
   }
   if (s.roles.principal == s.roles.assistant) f.fail("roles.assistant", "must differ from roles.principal");
+  if (s.roles.turns == TurnMode::Order)
+    for (const std::string* who : {&s.roles.principal, &s.roles.assistant})
+      if (std::find(s.roles.turn_order.begin(), s.roles.turn_order.end(), *who) == s.roles.turn_order.end())
+        f.fail("roles.turns", "the turn order must include " +
+                                  std::string(who == &s.roles.principal ? "roles.principal" : "roles.assistant") +
+                                  " '" + *who + "'");
 
   if (doc.contains("goals")) {
     const json& g = doc["goals"];
@@ -335,6 +369,31 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   if (doc.contains("rules_text")) s.rules_text = f.text(doc["rules_text"], "rules_text");
   if (doc.contains("embedded_corpus")) s.embedded_corpus = f.strings(doc["embedded_corpus"], "embedded_corpus");
   return s;
+}
+
+std::string pack_schema_path() { return util::data_dir() + "/schema/pack.schema.json"; }
+
+std::vector<std::string> pack_schema_errors(const std::string& json_text, const std::string& source,
+                                            const std::string& schema_path) {
+  json doc;
+  try {
+    doc = json::parse(json_text);
+  } catch (const json::exception& e) {
+    throw InputError(SourceLoc{source, 0, 0}, std::string("invalid JSON: ") + e.what());
+  }
+  // Read once per schema file: validate checks one pack, tests many.
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const util::JsonSchema>> loaded;
+  std::shared_ptr<const util::JsonSchema> schema;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto& slot = loaded[schema_path];
+    if (!slot) slot = std::make_shared<const util::JsonSchema>(util::JsonSchema::load(schema_path));
+    schema = slot;
+  }
+  std::vector<std::string> out;
+  for (const auto& e : schema->validate(doc)) out.push_back(e.str());
+  return out;
 }
 
 PackSpec load_pack_spec(const std::string& path) {

@@ -1,5 +1,6 @@
 #include "eval/experiment.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "assist/assist.hpp"
@@ -8,6 +9,7 @@
 #include "domains/pack.hpp"
 #include "eval/methods.hpp"
 #include "inference/belief.hpp"
+#include "language/listener.hpp"
 
 namespace clips::eval {
 
@@ -64,6 +66,45 @@ std::vector<pddl::ActionId> resolve_all(const pddl::Task& task, const pddl::Stat
 
 }  // namespace
 
+namespace {
+
+// The hypothesis of the plan's true goal and cost profile.
+int true_hypothesis(const inference::InferenceRun& inf, const data::PlanRecord& p) {
+  const inference::Belief& belief = *inf.belief;
+  int true_h = -1;
+  for (size_t h = 0; h < belief.hypotheses().size(); ++h)
+    if (belief.hypotheses()[h].goal == inf.true_goal && belief.hypotheses()[h].profile == inf.true_profile)
+      true_h = static_cast<int>(h);
+  if (true_h < 0) throw InputError("plan " + p.id + ": the true specification is not among the hypotheses");
+  return true_h;
+}
+
+// The assistance episode of a dataset plan from s_T (the belief's state
+// after the observed plan), as every method of `clips bench` runs it.
+assist::AssistSetup assistance_setup(const data::Dataset& ds, const data::PlanRecord& p,
+                                     const std::shared_ptr<const pddl::Task>& task, const inference::Belief& belief,
+                                     const ExperimentOptions& opts) {
+  const domains::Pack& pack = ds.pack();
+  const domains::Roles& df = pack.roles();
+  assist::AssistSetup setup;
+  setup.task = task;
+  setup.start = belief.state();
+  setup.observed_steps = static_cast<int>(p.observed.actions.size());
+  setup.horizon = df.horizon;
+  setup.set_turns(df);
+  setup.noop_cost = df.noop_cost;
+  setup.completed = resolve_all(*task, setup.start, p.completed);
+  setup.option_of = [&pack, task, tag = p.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
+  setup.refine = belief.searches();
+  setup.qa_floor = opts.qa_floor;
+  setup.follow_plan_by_index = df.principal_follows_completed_plan;
+  assist::set_request_rule(setup, opts.assist_rule.value_or(assist::parse_assist_rule(pack.spec().assistance_rule)),
+                           pack.language());
+  return setup;
+}
+
+}  // namespace
+
 PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm::LanguageModel& lm,
                           const ExperimentOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
@@ -72,7 +113,6 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
   try {
     auto task = ds.task(p.problem_id);
     const domains::Pack& pack = ds.pack();
-    const domains::Roles& df = pack.roles();
     out.true_options = data::true_options(ds, p);
     auto methods = opts.methods.empty() ? default_methods(pack, opts.all_assistance) : opts.methods;
     if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back("multimodal");  // issue 8
@@ -84,34 +124,14 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     out.utterance_warnings = inf.utterance_warnings;
     out.true_goal = inf.true_goal;
     for (const auto& st : inf.steps) out.goal_posterior_steps.push_back(st[Modality::Both].goals);  // issue 8
-    const inference::Belief& belief = *inf.belief;
-    int true_h = -1;
-    for (size_t h = 0; h < belief.hypotheses().size(); ++h)
-      if (belief.hypotheses()[h].goal == inf.true_goal && belief.hypotheses()[h].profile == inf.true_profile)
-        true_h = static_cast<int>(h);
-    if (true_h < 0) throw InputError("plan " + p.id + ": the true specification is not among the hypotheses");
+    const int true_h = true_hypothesis(inf, p);
     // Particle inference: the policies the methods read (every modality's
     // weighted hypotheses, the true one for the multimodal baseline) must have
     // followed the whole observed history.
     for (Modality m : inference::kModalities) inf.belief->sync_policies(m);
     inf.belief->sync_policies({true_h});
-    auto true_spec = belief.hypotheses()[true_h].spec;
-
-    assist::AssistSetup setup;
-    setup.task = task;
-    setup.start = belief.state();
-    setup.observed_steps = static_cast<int>(p.observed.actions.size());
-    setup.horizon = df.horizon;
-    setup.principal = df.principal;
-    setup.assistant = df.assistant;
-    setup.noop_cost = df.noop_cost;
-    setup.completed = resolve_all(*task, setup.start, p.completed);
-    setup.option_of = [&pack, task, tag = p.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
-    setup.refine = belief.searches();
-    setup.qa_floor = opts.qa_floor;
-    setup.follow_plan_by_index = df.principal_follows_completed_plan;
-    assist::set_request_rule(setup, opts.assist_rule.value_or(assist::parse_assist_rule(pack.spec().assistance_rule)),
-                             pack.language());
+    auto true_spec = inf.belief->hypotheses()[true_h].spec;
+    const assist::AssistSetup setup = assistance_setup(ds, p, task, *inf.belief, opts);
 
     // Every method is built first, so an unknown name fails before any work.
     std::vector<std::unique_ptr<Method>> runners;
@@ -150,6 +170,115 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
   return out;
 }
 
+bool is_missing_goal_atoms(const std::string& error) {
+  return error.find("no goal atoms configured for action") != std::string::npos;
+}
+
+BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& p, lm::LanguageModel& lm,
+                             const ExperimentOptions& opts_in) {
+  BenchCheck out;
+  out.plan_id = p.id;
+  ExperimentOptions opts = opts_in;
+  if (opts.refine_max_nodes == 0) opts.refine_max_nodes = 256;
+  const domains::Pack& pack = ds.pack();
+  const auto methods = opts.methods.empty() ? default_methods(pack, opts.all_assistance) : opts.methods;
+  auto failed = [&](const std::string& what, const std::string& error) {
+    if (is_missing_goal_atoms(error))
+      out.warnings.push_back(what + ": " + error + " (language.goal_atoms); the literal listener cannot plan for it");
+    else
+      out.failures.push_back({what, error});
+  };
+
+  // What every method shares: inference in three modalities and the assistance set-up.
+  std::shared_ptr<const pddl::Task> task;
+  inference::InferenceRun inf;
+  std::vector<std::string> true_options;
+  int true_h = -1;
+  std::optional<assist::AssistSetup> setup;
+  try {
+    task = ds.task(p.problem_id);
+    true_options = data::true_options(ds, p);
+    for (const std::string& m : methods) make_method(m);  // an unknown name, before any work
+    inf = inference::run_inference(ds, p, lm, inference_options(opts));
+    true_h = true_hypothesis(inf, p);
+    for (Modality m : inference::kModalities) inf.belief->sync_policies(m);
+    inf.belief->sync_policies({true_h});
+    setup = assistance_setup(ds, p, task, *inf.belief, opts);
+    setup->horizon = std::min(setup->horizon, setup->observed_steps + 2);
+    setup->refine_options.max_nodes = opts.refine_max_nodes;
+    setup->refine_options.max_seconds = 5;
+    // The Q_MDP episode's turn atom and no-ops (its Episode asks them first).
+    assist::assistant_turn(*setup, setup->start);
+    for (const std::string* agent : {&setup->principal, &setup->assistant}) setup->noop(*task, *agent);
+  } catch (const std::exception& e) {
+    failed("inference and assistance set-up", e.what());
+    return out;
+  }
+  const PlanContext ctx{ds, p, lm, opts, task, inf, true_h, inf.belief->hypotheses()[true_h].spec, *setup, true_options};
+  for (const std::string& m : methods) {
+    MethodResult r;
+    r.method = m;
+    try {
+      make_method(m)->run(ctx, r);
+    } catch (const std::exception& e) {
+      r.error = e.what();
+    }
+    if (r.error.empty()) out.passed.push_back(m);
+    else if (r.error.find("goal atom '") != std::string::npos) failed(m, r.error + " (language.goal_atoms)");
+    else failed(m, r.error);
+  }
+
+  // Each salient action's goal, as the literal listener would compile it for
+  // a command naming the action (the listener's short run plans only for the
+  // most probable ones).
+  const bool literal = std::any_of(methods.begin(), methods.end(),
+                                   [](const std::string& m) { return m.rfind("literal", 0) == 0; });
+  if (literal) {
+    try {
+      const auto lsetup = language::literal_listener_setup(ds.pack_ptr());
+      const auto commands = language::literal_commands(*task, setup->start, lsetup);
+      const auto& salient = lsetup.config.salient_actions;
+      for (size_t i = 0; i < salient.size(); ++i) {
+        const std::string field = "language.salient_actions[" + std::to_string(i) + "] (" + salient[i].action + ")";
+        const commands::Command* found = nullptr;
+        for (const auto& c : commands)
+          for (const auto& a : c.actions)
+            if (!found && a.name == salient[i].action && c.actions.size() == 1) found = &c;
+        if (!found) {
+          out.warnings.push_back(field + ": no command names it in the state after plan " + p.id +
+                                 "'s observed actions, so its goal atoms are not checked here");
+          continue;
+        }
+        try {
+          language::compile_command_goal(*task, *found, lsetup.config);
+        } catch (const std::exception& e) {
+          failed("literal listener: the goal of " + found->display_form(),
+                 std::string(e.what()) + (is_missing_goal_atoms(e.what()) ? "" : " (language.goal_atoms." + salient[i].action + ")"));
+        }
+      }
+    } catch (const std::exception& e) {
+      failed("literal listener: commands", e.what());
+    }
+  }
+
+  // The assistance options: precision and recall count the assistant's actions
+  // that are options; with none in the problem they are 0 for every method.
+  try {
+    bool any = false;
+    const auto assistant = task->find_object(pack.roles().assistant);
+    for (pddl::ActionId a = 0; a < task->num_actions() && !any; ++a)
+      any = !task->action(a).args.empty() && assistant && task->action(a).args[0] == *assistant &&
+            pack.option_of(*task, a, p.tag).has_value();
+    if (!any)
+      out.warnings.push_back("assistance_options: no action of the assistant '" + pack.roles().assistant +
+                             "' in problem " + p.problem_id + " is an assistance option, so assistance precision and "
+                             "recall are 0 for every method");
+  } catch (const std::exception& e) {
+    failed("assistance options", e.what());
+  }
+  return out;
+}
+
 LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations, lm::LanguageModel& lm,
                                 const ExperimentOptions& opts, const std::string& method) {
   if (method != "clips" && method != "lang_only" && method != "action_only")
@@ -171,8 +300,7 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   setup.start = belief.state();
   setup.observed_steps = static_cast<int>(out.inference.steps.size()) - 1;
   setup.horizon = df.horizon;
-  setup.principal = df.principal;
-  setup.assistant = df.assistant;
+  setup.set_turns(df);
   setup.noop_cost = df.noop_cost;
   setup.refine = belief.searches();
   setup.qa_floor = opts.qa_floor;

@@ -116,4 +116,28 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
 PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,
                           const ExperimentOptions& opts);
 
+// `clips validate`'s rehearsal of `clips bench` on one plan, through the same
+// code with tiny budgets (the options' refine_max_nodes, default 256 nodes,
+// and a two-step assistance horizon): inference in its three modalities (CLIPS
+// with the utterance, language-only, action-only), then every method bench
+// would run (opts.methods, else the pack's defaults) from s_T, then what such
+// a short run may not reach: the goal of a command for each salient action
+// (language.goal_atoms) and the assistance options. What bench would stop at
+// (a predicate or object the task lacks, the no-op or turn atom of an agent, a
+// goal atom naming a missing argument, an unreadable few-shot file) is a
+// failure naming the method or check; a salient action with no goal atoms is
+// a warning (is_missing_goal_atoms).
+struct BenchCheck {
+  std::string plan_id;
+  std::vector<std::string> passed;                            // methods whose set-up ran
+  std::vector<std::pair<std::string, std::string>> failures;  // (method or check, error)
+  std::vector<std::string> warnings;
+};
+BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                             const ExperimentOptions& opts);
+// Whether an error says that a command's action has no language.goal_atoms.
+// check_bench_setup reports it as a warning: goal atoms are to be derived
+// from the actions' effects (then the literal listener no longer stops at it).
+bool is_missing_goal_atoms(const std::string& error);
+
 }  // namespace clips::eval

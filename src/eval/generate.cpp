@@ -12,6 +12,7 @@
 #include "inference/temperature.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/utterance_sampler.hpp"
+#include "domains/task_transform.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "search/astar.hpp"
@@ -45,6 +46,7 @@ std::shared_ptr<const pddl::Task> ground(const domains::Pack& pack, const std::s
                                          const std::string& text, const std::string& path) {
   const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
   auto problem = std::make_shared<pddl::Problem>(pddl::parse_problem(*domain, text, path, with_goal));
+  domains::prepare_problem(pack.spec(), *domain, *problem);
   auto task = std::make_shared<const pddl::Task>(domain, std::move(problem), pack.spec().grounding);
   pack.check_problem(*task, path);
   return task;
@@ -168,8 +170,8 @@ std::string type_name(const pddl::Task& task, const std::string& object) {
 GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageModel* lm_in) {
   if (options.problems < 1 || options.plans_per_problem < 1)
     throw InputError("clips generate needs at least one problem and one plan per problem");
-  auto domain = std::make_shared<const pddl::Domain>(pddl::load_domain(options.domain_file));
-  const domains::PackPtr pack = domains::find_pack(*domain, fs::path(options.domain_file).parent_path().string());
+  const auto [domain, pack] = domains::load_domain_with_pack(options.domain_file,
+                                                             fs::path(options.domain_file).parent_path().string());
   const int max_steps = options.max_steps > 0 ? options.max_steps : pack->roles().horizon;
   GeneratedDataset out;
   out.files["domain.pddl"] = pddl::read_text_file(options.domain_file);
@@ -227,7 +229,7 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
     const pddl::Task& task = *prob.task;
     const inference::UtteranceModel speaker(prob.task, pack);
     const auto tags = usable_tags(*pack, task);
-    const auto noop = task.find_action("(" + pack->roles().noop_action + " " + pack->roles().assistant + ")");
+    const auto noop = pack->roles().find_noop(task, pack->roles().assistant);
     for (int i = 1; i <= options.plans_per_problem; ++i) {
       util::Rng rng(util::Rng::derive(options.seed, {kPlanStream, static_cast<uint64_t>(p), static_cast<uint64_t>(i)}));
       GeneratedPlan plan;

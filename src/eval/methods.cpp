@@ -143,6 +143,9 @@ class LiteralMethod : public Method {
     ls.world = ctx.setup;
     ls.truth = ctx.true_spec;
     ls.config = lsetup.config;
+    // The assistance searches' node budget (2^16 in bench, as the listener's
+    // own default; tiny in `clips validate`'s rehearsal).
+    ls.max_nodes = ctx.setup.refine_options.max_nodes;
     auto task_ptr = ctx.task;
     ls.make_heuristic = [&pack, task_ptr]() -> std::shared_ptr<heuristics::Heuristic> {
       return pack.make_heuristic(pack.spec().literal.planning_heuristic, *task_ptr);

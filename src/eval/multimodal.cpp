@@ -162,10 +162,9 @@ lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanReco
 assist::AssistResult execute_assistant_actions(const assist::AssistSetup& setup, const std::vector<std::string>& actions,
                                                search::Policy truth, std::vector<std::string>& notes) {
   const pddl::Task& task = *setup.task;
-  auto principal_active = task.atom("active", {setup.principal});
-  auto aw = task.find_action("(wait " + setup.assistant + ")");
-  auto pw = task.find_action("(wait " + setup.principal + ")");
-  if (!aw || !pw) throw InputError("assistance needs (wait " + setup.assistant + ") and (wait " + setup.principal + ")");
+  const model::TurnTaking& turns = setup.turns();
+  const auto principal_active = turns.turn_atom(task, setup.principal);
+  const ActionId aw = turns.noop(task, setup.assistant), pw = turns.noop(task, setup.principal);
   auto assistant = task.find_object(setup.assistant);
   std::unordered_map<State, int, pddl::StateHash> trajectory;
   {
@@ -178,9 +177,9 @@ assist::AssistResult execute_assistant_actions(const assist::AssistSetup& setup,
   }
   const model::Specification& tspec = truth.spec();
   auto truth_action = [&](const State& s_h) {
-    if (truth.value(s_h) == -model::kInf) return task.test(s_h, principal_active) ? *pw : *aw;
+    if (truth.value(s_h) == -model::kInf) return task.test(s_h, principal_active) ? pw : aw;
     auto a = truth.best_action(s_h);
-    return a ? *a : (task.test(s_h, principal_active) ? *pw : *aw);
+    return a ? *a : (task.test(s_h, principal_active) ? pw : aw);
   };
   assist::AssistResult r;
   State s = setup.start;
@@ -202,7 +201,7 @@ assist::AssistResult execute_assistant_actions(const assist::AssistSetup& setup,
       }
     } else {
       const std::string& text = actions[next++];
-      a = *aw;
+      a = aw;
       auto found = task.find_action(text);
       if (!found) {
         notes.push_back("action \"" + text + "\" is not a ground action of this problem; the " + setup.assistant +

@@ -149,10 +149,7 @@ Modality PlaySession::modality() const {
   return Modality::Both;  // clips; literal shows the CLIPS belief beside its own reading
 }
 
-std::string PlaySession::active_agent() const {
-  if (dkg_) return task_->object_name(dkg_->active_agent(belief_->state()));
-  return vh_->active(belief_->state(), vh_->actor()) ? principal_ : assistant_;
-}
+std::string PlaySession::active_agent() const { return pack_->roles().active_agent(*task_, belief_->state()); }
 
 std::optional<std::string> PlaySession::reached_goal() const {
   for (const auto& h : belief_->hypotheses())
@@ -179,8 +176,7 @@ json PlaySession::assist(bool apply) {
   if (method_ == "literal") {
     // The literal listener follows the most probable command for the latest
     // instruction: plan for its goal jointly, take the assistant's first step.
-    const auto wait = task_->find_action("(wait " + assistant_ + ")");
-    chosen = *wait;
+    chosen = pack_->roles().noop(*task_, assistant_);
     d["reason"] = "no instruction yet: wait";
     if (utterance_) {
       const auto& ranked = literal_reading();
@@ -212,8 +208,7 @@ json PlaySession::assist(bool apply) {
     setup.task = task_;
     setup.start = s;
     setup.horizon = horizon_;
-    setup.principal = principal_;
-    setup.assistant = assistant_;
+    setup.set_turns(pack_->roles());
     setup.refine = belief_->searches();
     setup.refine_options.max_nodes = limits_.assist_nodes;
     setup.refine_options.max_seconds = limits_.search_seconds;

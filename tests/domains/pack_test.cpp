@@ -203,12 +203,51 @@ struct Pantry {
 
 constexpr const char* kPantryPack = R"j({
   "domain": "pantry",
-  "roles": {"principal": "cook", "assistant": "helper"},
+  "roles": {"principal": "cook", "assistant": "helper", "turns": ["helper", "cook"]},
   "goals": {"source": "objects", "object_type": "fruit", "condition": "(has cook {})"},
   "language": {"salient_actions": [{"action": "take", "focal_arg": 2}, {"action": "give", "focal_arg": 3}],
                "qualifier": {"predicate": "isripe"}},
   "assistance_options": [{"action": "take", "object_arg": 2, "object_type": "fruit"}]
 })j";
+
+TEST(PackFile, TurnsTurnPredicateAndAgentType) {
+  PackSpec s = parse_pack_spec(R"j({"domain": "k"})j", "t/pack.json");
+  EXPECT_EQ(s.roles.turns, TurnMode::Auto);
+  EXPECT_EQ(s.roles.turn_predicate, "active");
+  EXPECT_EQ(s.roles.noop_action, "wait");
+  EXPECT_EQ(s.roles.agent_type, "agent");
+  s = parse_pack_spec(R"j({"domain": "k", "roles": {"turns": "alternate", "turn_predicate": "turn", "noop_action": "idle",
+                           "agent_type": "person"}})j",
+                      "t/pack.json");
+  EXPECT_EQ(s.roles.turns, TurnMode::Alternate);
+  EXPECT_EQ(s.roles.turn_predicate, "turn");
+  EXPECT_EQ(s.roles.agent_type, "person");
+  // The pack's roles are the turn-taking the planning code asks.
+  const model::TurnTaking& t = s.roles;
+  EXPECT_EQ(t.noop_action, "idle");
+  s = parse_pack_spec(R"j({"domain": "k", "roles": {"turns": ["robot", "dog", "human"]}})j", "t/pack.json");
+  EXPECT_EQ(s.roles.turns, TurnMode::Order);
+  EXPECT_EQ(s.roles.turn_order, (std::vector<std::string>{"robot", "dog", "human"}));
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"turns": ["human", "dog"]}})j").find("must include roles.assistant 'robot'"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"turns": ["human", "robot", "human"]}})j").find("roles.turns[2]"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"turns": true}})j").find("roles.turns: expected \"domain\""),
+            std::string::npos);
+}
+
+TEST(PackFile, AMissingFewShotFileNamesTheField) {
+  Pantry p;
+  std::ofstream(p.dir / "pack.json") << R"j({"domain": "pantry", "roles": {"principal": "cook", "assistant": "helper"},
+                                             "fewshot": {"file": "examples.tsv"}})j";
+  try {
+    find_pack(*p.domain, p.dir.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fewshot.file: no file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("examples.tsv"), std::string::npos) << e.what();
+  }
+}
 
 TEST(PackFile, SceneColoursAreHexByType) {
   const PackSpec s = parse_pack_spec(
@@ -257,10 +296,13 @@ TEST(PackFile, AFolderPackIsFoundAndDrivesGoalsOptionsAndCandidates) {
   EXPECT_EQ(goals[0].label, "apple");
   EXPECT_EQ(goals[1].condition, "(has cook pear)");
   // The completion that ends with the cook holding the pear pursued "pear".
+  // The helper acts first (roles.turns), the cook waits in its turns.
   pddl::PlanFile observed, completed;
   observed.actions.push_back({"(take helper knife)", SourceLoc{"obs", 1, 1}});
-  completed.actions.push_back({"(take helper pear)", SourceLoc{"comp", 1, 1}});
-  completed.actions.push_back({"(give helper cook pear)", SourceLoc{"comp", 2, 1}});
+  completed.actions.push_back({"(wait cook)", SourceLoc{"comp", 1, 1}});
+  completed.actions.push_back({"(take helper pear)", SourceLoc{"comp", 2, 1}});
+  completed.actions.push_back({"(wait cook)", SourceLoc{"comp", 3, 1}});
+  completed.actions.push_back({"(give helper cook pear)", SourceLoc{"comp", 4, 1}});
   EXPECT_EQ(pack->true_goal_index(*task, goals, "", observed, completed), 1);
   // Options: fruit the helper takes (the knife is no option).
   EXPECT_EQ(pack->options_taken(completed, "", task.get()), (std::vector<std::string>{"pear"}));

@@ -17,7 +17,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cmake --install "$build" --prefix "$prefix" >/dev/null
 for f in include/clips/clips.hpp include/clips/session.hpp include/clips/version.hpp share/clips/language/corpus-dkg.tsv \
-         share/clips/domains/doors-keys-gems/pack.json bin/clips; do
+         share/clips/domains/doors-keys-gems/pack.json share/clips/schema/pack.schema.json bin/clips; do
   [ -e "$prefix/$f" ] || fail "$f was not installed"
 done
 lib=$(find "$prefix" -name 'libclips.a' | head -1)

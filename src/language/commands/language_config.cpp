@@ -71,6 +71,15 @@ class Reader {
     return value.get<int>();
   }
 
+  // Rejects keys outside `known` and "comment" (free text, allowed everywhere).
+  void only(const json& obj, const std::string& path, const std::set<std::string>& known) const {
+    if (!obj.is_object()) fail(path, "expected an object");
+    for (const auto& [key, value] : obj.items()) {
+      if (key == "comment" && value.is_string()) continue;
+      if (!known.contains(key)) fail(path + "." + key, "unknown key");
+    }
+  }
+
   bool boolean(const json& value, const std::string& key) const {
     if (!value.is_boolean()) fail(key, "expected true or false");
     return value.get<bool>();
@@ -93,6 +102,7 @@ class Reader {
 
 void read_party(const Reader& r, const json& value, const std::string& key, std::string& object,
                 std::string& pronoun) {
+  r.only(value, key, {"object", "pronoun"});
   object = r.string(r.field(value, "object", key), key + ".object");
   pronoun = r.string(r.field(value, "pronoun", key), key + ".pronoun");
 }
@@ -125,6 +135,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   for (std::size_t i = 0; i < actions.size(); ++i) {
     const std::string key = "salient_actions[" + std::to_string(i) + "]";
     SalientActionRule rule;
+    r.only(actions[i], key, {"action", "agent_arg", "focal_arg"});
     rule.action = r.string(r.field(actions[i], "action", key), key + ".action");
     if (actions[i].contains("agent_arg"))
       rule.agent_arg = r.positive_int(actions[i]["agent_arg"], key + ".agent_arg");
@@ -135,8 +146,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   if (doc.contains("qualifier")) {
     const json& q = doc["qualifier"];
     c.qualifier = r.string(r.field(q, "predicate", "qualifier"), "qualifier.predicate");
-    for (const auto& [key, value] : q.items())
-      if (key != "predicate" && key != "object_arg" && key != "more") r.fail("qualifier." + key, "unknown key");
+    r.only(q, "qualifier", {"predicate", "object_arg", "more"});
     if (q.contains("object_arg"))
       c.qualifier_object_arg = r.positive_int(q["object_arg"], "qualifier.object_arg");
     if (q.contains("more")) {
@@ -187,6 +197,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
     const json& atoms = doc["goal_atoms"];
     if (!atoms.is_object()) r.fail("goal_atoms", "expected an object of action -> [atom templates]");
     for (const auto& [action, templates] : atoms.items()) {
+      if (action == "comment" && templates.is_string()) continue;
       const std::string key = "goal_atoms." + action;
       if (!templates.is_array() || templates.empty()) r.fail(key, "expected a non-empty array of strings");
       for (const auto& t : templates) c.goal_atoms[action].push_back(r.string(t, key));

@@ -1,0 +1,120 @@
+// A user's own domain through the CLI (issue 42): tests/fixtures/garden has no
+// turn idiom, no `frozen` and no no-op; its pack names the no-op `idle` and the
+// turn predicate `turn`. `clips validate` rehearses bench on it, `clips assist`
+// assists on it, and what bench would stop at is reported by validate, naming
+// the field.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "eval/support.hpp"
+
+namespace clips::eval {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::clips_binary;
+using testing::contains;
+using testing::run;
+
+std::string garden() { return clips::paths::source_dir() + "/tests/fixtures/garden"; }
+std::string sq(const std::string& s) { return "'" + s + "'"; }
+
+// A scratch copy of the garden with its pack.json rewritten by `edit`.
+struct GardenCopy {
+  testing::TempDir dir{"garden"};
+  std::string ds = (dir.path / "garden").string();
+  explicit GardenCopy(const std::function<std::string(std::string)>& edit) {
+    fs::copy(garden(), ds, fs::copy_options::recursive);
+    const fs::path pack = fs::path(ds) / "pack.json";
+    const std::string text = edit(testing::read_text(pack));
+    std::ofstream(pack) << text;
+  }
+};
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(CliOwnDomain, ValidateRehearsesBenchOnThePacksNoOpAndTurnPredicate) {
+  const auto r = run(clips_binary() + " validate --dataset " + garden());
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "pack.json conforms to")) << r.out;
+  EXPECT_TRUE(contains(r.out, "validated 2 plans, 0 failed")) << r.out;
+  EXPECT_TRUE(contains(r.out, "bench set-up on plan 1.1.basil: 4 methods ok, 0 failed, 0 warnings")) << r.out;
+  for (const char* m : {"clips", "lang_only", "action_only", "literal"})
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(std::string("ok    bench set-up: ") + m + " +on plan 1.1.basil"))) << m;
+}
+
+TEST(CliOwnDomain, AssistTakesTurnsWithIdle) {
+  auto r = run(clips_binary() + " assist --dataset " + garden() + " --plan 1.1.basil --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["goal_reached"].get<bool>()) << j;
+  const auto plan = j["plan"].get<std::vector<std::string>>();
+  ASSERT_GE(plan.size(), 2u);
+  EXPECT_EQ(plan[0], "(take bot basil1 shed)") << j;
+  // Turns alternate: the bot's actions at even positions, the gardener's at odd ones.
+  for (size_t i = 0; i < plan.size(); ++i)
+    EXPECT_TRUE(contains(plan[i], i % 2 == 0 ? " bot" : " gardener")) << i << ": " << plan[i];
+  EXPECT_EQ(j["true_options"], nlohmann::json::array({"basil1"}));
+  // The next action after ad-hoc observations: the bot's turn after the gardener idles.
+  r = run(clips_binary() + " assist --dataset " + garden() + " --problem 1 --actions " + sq("(idle gardener)") +
+          " --utterance " + sq("Could you bring me the green seeds?") + " --utterance-step 1 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto next = nlohmann::json::parse(r.out);
+  EXPECT_EQ(next["next_actor"], "bot");
+  EXPECT_EQ(next["action"], "(take bot basil1 shed)");
+}
+
+TEST(CliOwnDomain, ValidateNamesWhatBenchWouldStopAt) {
+  // A goal atom naming a missing argument: the literal listener's goal.
+  {
+    GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holding $1 $7)"); });
+    const auto r = run(clips_binary() + " validate --dataset " + c.ds);
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "validated 2 plans, 0 failed")) << r.out;
+    EXPECT_TRUE(contains(r.out, "FAIL  bench set-up: ")) << r.out;
+    EXPECT_TRUE(contains(r.out, "(holding $1 $7)' refers to a missing argument")) << r.out;
+    EXPECT_TRUE(contains(r.out, "language.goal_atoms.take")) << r.out;
+  }
+  // No goal atoms for a salient action: a warning, not a failure.
+  {
+    GardenCopy c([](std::string t) { return replaced(t, ",\n    \"goal_atoms\": {\"take\": [\"(holding $1 $2)\"]}", ""); });
+    const auto r = run(clips_binary() + " validate --dataset " + c.ds);
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "WARN  bench set-up: ")) << r.out;
+    EXPECT_TRUE(contains(r.out, "no goal atoms configured for action 'take'")) << r.out;
+  }
+  // A misspelt field: the schema and the reader name it (an input error).
+  {
+    GardenCopy c([](std::string t) { return replaced(t, "\"horizon\"", "\"horizn\""); });
+    const auto r = run(clips_binary() + " validate --dataset " + c.ds);
+    EXPECT_EQ(r.status, 3) << r.out;
+    EXPECT_TRUE(contains(r.out, "pack.json: roles.horizn: unknown field")) << r.out;
+  }
+  // A missing few-shot file.
+  {
+    GardenCopy c([](std::string t) { return replaced(t, "\"fewshot.tsv\"", "\"examples.tsv\""); });
+    const auto r = run(clips_binary() + " validate --dataset " + c.ds);
+    EXPECT_EQ(r.status, 3) << r.out;
+    EXPECT_TRUE(contains(r.out, "fewshot.file: no file")) << r.out;
+  }
+  // Roles naming an object the problems lack.
+  {
+    GardenCopy c([](std::string t) { return replaced(t, "\"assistant\": \"bot\"", "\"assistant\": \"robot\""); });
+    const auto r = run(clips_binary() + " validate --dataset " + c.ds);
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "roles.assistant names 'robot', which is not an object of this problem")) << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace clips::eval
