@@ -184,7 +184,8 @@ void PlaySession::rebuild(const std::vector<Event>& events) {
   events_.clear();
   history_.clear();
   previous_.reset();
-  last_decision_.reset();
+  // Decisions stay with the events they followed.
+  std::erase_if(decisions_, [&](const Decided& d) { return d.events > events.size(); });
   utterance_.reset();
   utterance_state_.reset();
   utterance_record_.reset();
@@ -347,8 +348,9 @@ json PlaySession::assist(bool apply) {
   }
   d["action"] = task_->action_name(chosen);
   d["applied"] = apply;
+  d["t"] = belief_->t();  // the step it was decided at
   if (apply) apply_action(chosen);
-  last_decision_ = d;
+  decisions_.push_back({events_.size(), apply, d});
   return d;
 }
 
@@ -365,12 +367,21 @@ void PlaySession::undo() {
   rebuild(keep);
 }
 
-void PlaySession::reset() { rebuild({}); }
+void PlaySession::reset() {
+  decisions_.clear();
+  rebuild({});
+}
 
+// A method switch keeps the decisions: each names the method that made it.
 void PlaySession::set_method(const std::string& method) {
   check_method(method);
   method_ = method;
-  last_decision_.reset();
+}
+
+json PlaySession::decision() const {
+  for (auto it = decisions_.rbegin(); it != decisions_.rend(); ++it)
+    if (it->applied ? it->events <= events_.size() : it->events == events_.size()) return it->decision;
+  return nullptr;
 }
 
 json PlaySession::posterior_json(Modality m) const {
@@ -508,7 +519,7 @@ json PlaySession::state() const {
   for (const auto& h : history_) hist.push_back({{"event", h.label}, {"goals", h.goals[m]}});
   j["history"] = std::move(hist);
   j["reading"] = reading();
-  j["decision"] = last_decision_ ? *last_decision_ : json(nullptr);
+  j["decision"] = decision();
   // The human moves of the reference plan (a hint for players and tests).
   json moves = json::array();
   j["observed_utterances"] = json::array();

@@ -132,6 +132,7 @@ class PlaySession {
   std::string active_agent() const;
   std::optional<std::string> reached_goal() const;
   nlohmann::json scene() const;
+  nlohmann::json decision() const;
   nlohmann::json reading() const;
   nlohmann::json posterior_json(inference::Modality m) const;
   const language::ListenerResult& literal_reading() const;
@@ -160,7 +161,17 @@ class PlaySession {
   std::vector<HistoryPoint> history_;
   // The state before the last action (what changed, for text scenes).
   std::optional<pddl::State> previous_;
-  std::optional<nlohmann::json> last_decision_;
+  // The assist results still in the history, oldest first, each with the
+  // number of events the history had after it (an applied decision's action
+  // is the last of them). The state shows the latest applied one whose
+  // action is still in the history (undo takes it back with the action), or
+  // a decision not applied while nothing has happened since.
+  struct Decided {
+    size_t events = 0;
+    bool applied = false;
+    nlohmann::json decision;
+  };
+  std::vector<Decided> decisions_;
   // The latest instruction and the state it was heard in (the literal listener reads it there).
   std::optional<std::string> utterance_;
   std::optional<pddl::State> utterance_state_;

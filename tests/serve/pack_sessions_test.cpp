@@ -1,7 +1,7 @@
 // Sessions on every pack, in process (no socket): the workshop (a text-scene
 // pack with recorded plans), the kitchen of docs/domains.md served from a
-// folder without any plan, sessions from PDDL text, and the errors of text
-// input.
+// folder without any plan, sessions from PDDL text, the errors of text
+// input, and the decision shown after undo and a method switch.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -242,6 +242,38 @@ TEST_F(PackSessions, BadTextInputIsA400NamingTheField) {
     EXPECT_EQ(r.status, 400) << cut << ": " << r.body;
   }
   EXPECT_EQ(s->live_sessions(), 0u);
+}
+
+TEST_F(PackSessions, TheDecisionShownIsTheLatestStillInTheHistory) {
+  auto s = make();
+  json st = created(*s, {{"dataset", "doors-keys-gems"}, {"problem", "e1"}, {"plan", "e1.1.keys"}});
+  const std::string url = "/api/sessions/" + st["id"].get<std::string>();
+  EXPECT_TRUE(st["decision"].is_null());
+  post(*s, url + "/act", {{"action", "(left human)"}});
+  const json first = post(*s, url + "/assist", {{"apply", true}})["decision"];
+  EXPECT_EQ(first["t"], 1);
+  post(*s, url + "/act", {{"action", "(left human)"}});
+  st = post(*s, url + "/assist", {{"apply", true}})["state"];
+  EXPECT_EQ(st["decision"]["t"], 3);
+  // Undo takes back the second move and its reply: the first decision is shown again.
+  st = post(*s, url + "/undo", json::object());
+  EXPECT_EQ(st["t"], 2);
+  EXPECT_EQ(st["decision"], first);
+  // A method switch keeps it, naming the method that made it.
+  st = post(*s, url + "/method", {{"method", "lang_only"}});
+  EXPECT_EQ(st["method"], "lang_only");
+  EXPECT_EQ(st["decision"]["method"], "clips");
+  EXPECT_EQ(st["decision"], first);
+  // A decision not taken is shown until something happens.
+  post(*s, url + "/act", {{"action", "(left human)"}});
+  const json preview = post(*s, url + "/assist", {{"apply", false}})["decision"];
+  st = body(s->handle("GET", url, ""));
+  EXPECT_EQ(st["decision"], preview);
+  EXPECT_EQ(st["decision"]["applied"], false);
+  st = post(*s, url + "/act", {{"action", "(wait robot)"}});
+  EXPECT_EQ(st["decision"], first);
+  st = post(*s, url + "/reset", json::object());
+  EXPECT_TRUE(st["decision"].is_null());
 }
 
 }  // namespace
