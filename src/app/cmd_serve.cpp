@@ -33,9 +33,9 @@ void register_serve(CLI::App& app) {
   cmd->add_option("--host", o->host, "Address to listen on (default 127.0.0.1, loopback only)");
   cmd->add_option("--port", o->port, "TCP port (default 8080; 0 picks a free one)")->check(CLI::Range(0, 65535));
   cmd->add_option("--dataset", o->datasets,
-                  "Dataset folder to serve (repeatable); requests name a dataset by its folder's base name and "
-                  "never give paths (default: $CLIPS_DATASET/doors-keys-gems and /virtual-home, else "
-                  "../shared/dataset/...)");
+                  "Dataset or domain folder to serve (repeatable; any pack, plans/ optional: every problem plays); "
+                  "requests name a dataset by its folder's base name and never give paths (default: "
+                  "$CLIPS_DATASET/doors-keys-gems and /virtual-home, else ../shared/dataset/...)");
   cmd->add_flag("--stdio", o->stdio, "Read one JSON request per line on stdin, answer one per line on stdout");
   cmd->add_option("--threads", o->threads, "Requests handled at once (default 8)")->check(PositiveInteger);
   cmd->add_option("--max-sessions", o->limits.max_sessions, "Live sessions at most (default 64; more: HTTP 503)")

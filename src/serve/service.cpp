@@ -169,7 +169,7 @@ Reply Service::datasets() const {
 
 std::shared_ptr<lm::LanguageModel> Service::dataset_lm(Served& served) {
   if (!domain_lm_) return lm_;
-  std::lock_guard lock(lm_mutex_);
+  std::lock_guard lock(served.lm_mutex);
   if (served.lm) return served.lm;
   const data::Dataset& ds = *served.dataset;
   // The problems of the recorded plans (as `clips infer` trains on), else every problem.

@@ -81,7 +81,8 @@ class Service {
   // A served folder: its dataset and, once a session needed it, its model.
   struct Served {
     std::shared_ptr<const data::Dataset> dataset;
-    std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex_
+    std::mutex lm_mutex;  // held while its model is built: other folders' sessions do not wait
+    std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex
   };
   std::shared_ptr<Entry> find(const std::string& id);
   Reply create(const std::string& body);
@@ -97,7 +98,7 @@ class Service {
   std::function<Clock::time_point()> now_;
   std::map<std::string, Served> datasets_;
   DomainLanguageModel domain_lm_;
-  std::mutex lm_mutex_;  // guards the models below and Served::lm; held while one is built
+  std::mutex lm_mutex_;  // guards text_lms_; held while one of them is built
   std::vector<std::pair<std::string, std::shared_ptr<lm::LanguageModel>>> text_lms_;  // newest last
   mutable std::mutex mutex_;  // guards sessions_, pending_, rng_
   std::map<std::string, std::shared_ptr<Entry>> sessions_;
