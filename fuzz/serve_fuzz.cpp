@@ -12,7 +12,7 @@
 // create a session and then act on it, hear, assist, undo, ...
 //
 // The service serves the repo's small Doors-Keys-Gems example and the
-// workshop dataset (which cannot be played) with the embedded language model
+// workshop dataset (a text scene) with the embedded language model
 // and tiny search budgets: the handlers are the target (search has its own
 // targets), and an input that opens the most sessions must stay well inside
 // the 1 s per-input limit under instrumentation. Every session an input creates is deleted at its

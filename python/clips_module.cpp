@@ -7,6 +7,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <functional>
 #include <optional>
 
 #include "clips/clips.hpp"
@@ -18,6 +20,45 @@
 namespace py = pybind11;
 
 namespace {
+
+// ---- session options: one table for every opener ---------------------------
+//
+// Session.open_dataset and Session.open_domain take the same keyword options,
+// read by this one table (name, what it sets, its default from
+// clips::SessionOptions{} itself), so that the openers cannot drift apart.
+
+std::string type_name(py::handle v) { return py::str(py::type::handle_of(v).attr("__name__")); }
+
+template <typename T>
+T cast_option(const char* name, py::handle v, const char* expected) {
+  try {
+    return py::cast<T>(v);
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string("option '") + name + "': expected " + expected + ", got " + type_name(v));
+  }
+}
+
+std::string text_option(const char* name, py::handle v) { return cast_option<std::string>(name, v, "str"); }
+
+long long int_option(const char* name, py::handle v, long long lo) {
+  if (py::isinstance<py::bool_>(v))
+    throw py::type_error(std::string("option '") + name + "': expected int, got bool");
+  const long long x = cast_option<long long>(name, v, "int");
+  if (x < lo) throw clips::InputError(std::string(name) + " must be >= " + std::to_string(lo) + ", got " + std::to_string(x));
+  return x;
+}
+
+double float_option(const char* name, py::handle v) {
+  if (py::isinstance<py::bool_>(v))
+    throw py::type_error(std::string("option '") + name + "': expected float, got bool");
+  return cast_option<double>(name, v, "float");
+}
+
+std::vector<std::string> list_option(const char* name, py::handle v) {
+  if (py::isinstance<py::str>(v))
+    throw py::type_error(std::string("option '") + name + "': expected a list of str, got one str");
+  return cast_option<std::vector<std::string>>(name, v, "a list of str");
+}
 
 clips::Method parse_method(const std::string& m) {
   if (m == "clips" || m == "both") return clips::Method::Clips;
@@ -32,33 +73,116 @@ clips::Assistance parse_assistance(const std::string& a) {
   throw clips::InputError("unknown assistance '" + a + "' (expected qmdp or pibar)");
 }
 
-clips::SessionOptions session_options(const std::string& method, const std::string& assistance, const std::string& lm,
-                                      const std::string& lm_base_url, const std::string& lm_model, double lm_timeout,
-                                      std::vector<std::string> goals, std::vector<std::string> cost_profiles,
-                                      size_t max_nodes, int threads, int particles = 0,
-                                      uint64_t particle_seed = 1, const clips::SessionOptions& tuning = {}) {
+struct SessionOption {
+  const char* name;
+  const char* help;
+  std::function<void(clips::SessionOptions&, py::handle)> set;
+  std::function<std::string(const clips::SessionOptions&)> show;  // the default, as Python would write it
+};
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string number(double v) { return py::str(py::float_(v)); }
+
+const std::vector<SessionOption>& session_option_table() {
+  using O = clips::SessionOptions;
+  static const std::vector<SessionOption> table = {
+      {"method", "clips, language or action: the evidence the posterior and the assistance use",
+       [](O& o, py::handle v) { o.method = parse_method(text_option("method", v)); },
+       [](const O&) { return quoted("clips"); }},
+      {"assistance", "qmdp or pibar",
+       [](O& o, py::handle v) { o.assistance = parse_assistance(text_option("assistance", v)); },
+       [](const O&) { return quoted("qmdp"); }},
+      {"lm", "language model: embedded (offline) or openai",
+       [](O& o, py::handle v) { o.language_model.backend = text_option("lm", v); },
+       [](const O& o) { return quoted(o.language_model.backend); }},
+      {"lm_base_url", "openai: completions API base URL ('': $CLIPS_LM_BASE_URL, else OpenAI's)",
+       [](O& o, py::handle v) { o.language_model.base_url = text_option("lm_base_url", v); },
+       [](const O& o) { return quoted(o.language_model.base_url); }},
+      {"lm_model", "openai: model name ('': $CLIPS_LM_MODEL, else davinci-002)",
+       [](O& o, py::handle v) { o.language_model.model = text_option("lm_model", v); },
+       [](const O& o) { return quoted(o.language_model.model); }},
+      {"lm_timeout", "openai: seconds per request",
+       [](O& o, py::handle v) {
+         o.language_model.timeout_seconds = float_option("lm_timeout", v);
+         if (!(o.language_model.timeout_seconds > 0)) throw clips::InputError("lm_timeout must be > 0");
+       },
+       [](const O& o) { return number(o.language_model.timeout_seconds); }},
+      {"goals", "candidate goals as PDDL conditions ([]: the domain pack's)",
+       [](O& o, py::handle v) { o.goals = list_option("goals", v); }, [](const O&) { return std::string("[]"); }},
+      {"cost_profiles", "candidate cost profiles ([]: the plan's or the pack's default)",
+       [](O& o, py::handle v) { o.cost_profiles = list_option("cost_profiles", v); },
+       [](const O&) { return std::string("[]"); }},
+      {"max_nodes", "expansions per lookahead search",
+       [](O& o, py::handle v) { o.max_nodes = static_cast<size_t>(int_option("max_nodes", v, 1)); },
+       [](const O& o) { return std::to_string(o.max_nodes); }},
+      {"threads", "threads refining the hypotheses (0: all cores)",
+       [](O& o, py::handle v) { o.threads = static_cast<int>(int_option("threads", v, 0)); },
+       [](const O& o) { return std::to_string(o.threads); }},
+      {"particles", "particle inference with this many particles (0: exact enumeration)",
+       [](O& o, py::handle v) { o.particles = static_cast<int>(int_option("particles", v, 0)); },
+       [](const O& o) { return std::to_string(o.particles); }},
+      {"particle_seed", "the particle filter's seed",
+       [](O& o, py::handle v) {
+         if (py::isinstance<py::bool_>(v)) throw py::type_error("option 'particle_seed': expected int, got bool");
+         o.particle_seed = cast_option<uint64_t>("particle_seed", v, "an int from 0 to 2**64-1");
+       },
+       [](const O& o) { return std::to_string(o.particle_seed); }},
+      {"ess_threshold", "resample below this share of the particles, in [0, 1]",
+       [](O& o, py::handle v) { o.ess_threshold = float_option("ess_threshold", v); },
+       [](const O& o) { return number(o.ess_threshold); }},
+      {"rejuvenation_moves", "Metropolis-Hastings sweeps after each resampling",
+       [](O& o, py::handle v) { o.rejuvenation_moves = static_cast<int>(int_option("rejuvenation_moves", v, 0)); },
+       [](const O& o) { return std::to_string(o.rejuvenation_moves); }},
+      {"rejuvenate", "when else the sweeps run: evidence, utterances or resampling",
+       [](O& o, py::handle v) { o.rejuvenate = text_option("rejuvenate", v); },
+       [](const O& o) { return quoted(o.rejuvenate); }},
+      {"proposal_groups", "exploring proposals per sweep",
+       [](O& o, py::handle v) { o.proposal_groups = static_cast<int>(int_option("proposal_groups", v, 1)); },
+       [](const O& o) { return std::to_string(o.proposal_groups); }},
+      {"particle_filters", "all (one filter per method) or clips",
+       [](O& o, py::handle v) { o.particle_filters = text_option("particle_filters", v); },
+       [](const O& o) { return quoted(o.particle_filters); }},
+      {"particle_estimate", "support or weights",
+       [](O& o, py::handle v) { o.particle_estimate = text_option("particle_estimate", v); },
+       [](const O& o) { return quoted(o.particle_estimate); }},
+      {"assistant_turns", "refinement at the assistant's turns: taken or all (as --assistant-turns)",
+       [](O& o, py::handle v) { o.assistant_turns = text_option("assistant_turns", v); },
+       [](const O& o) { return quoted(o.assistant_turns); }},
+  };
+  return table;
+}
+
+// The options named in `kwargs`; `taken` lists keywords the opener reads
+// itself. An unknown keyword is a TypeError, as for any Python function.
+clips::SessionOptions session_options(const py::kwargs& kwargs, const char* opener,
+                                      std::initializer_list<const char*> taken = {}) {
   clips::SessionOptions o;
-  o.method = parse_method(method);
-  o.assistance = parse_assistance(assistance);
-  o.language_model.backend = lm;
-  o.language_model.base_url = lm_base_url;
-  o.language_model.model = lm_model;
-  o.language_model.timeout_seconds = lm_timeout;
-  o.goals = std::move(goals);
-  o.cost_profiles = std::move(cost_profiles);
-  o.max_nodes = max_nodes;
-  o.threads = threads;
-  if (particles < 0) throw clips::InputError("particles must be >= 0 (0: exact inference)");
-  o.particles = particles;
-  o.particle_seed = particle_seed;
-  o.ess_threshold = tuning.ess_threshold;
-  o.rejuvenation_moves = tuning.rejuvenation_moves;
-  o.rejuvenate = tuning.rejuvenate;
-  o.proposal_groups = tuning.proposal_groups;
-  o.particle_filters = tuning.particle_filters;
-  o.particle_estimate = tuning.particle_estimate;
-  o.assistant_turns = tuning.assistant_turns;
+  const auto& table = session_option_table();
+  for (auto item : kwargs) {
+    const std::string key = py::str(item.first);
+    if (std::any_of(taken.begin(), taken.end(), [&](const char* t) { return key == t; })) continue;
+    auto it = std::find_if(table.begin(), table.end(), [&](const SessionOption& so) { return key == so.name; });
+    if (it == table.end())
+      throw py::type_error(std::string(opener) + "() got an unexpected keyword argument '" + key + "'");
+    if (item.second.is_none()) continue;  // None: the default
+    it->set(o, item.second);
+  }
   return o;
+}
+
+std::string options_doc() {
+  std::string d = "Keyword options (shared by open_dataset and open_domain; None keeps the default):\n";
+  const clips::SessionOptions defaults;
+  for (const auto& so : session_option_table())
+    d += std::string("  ") + so.name + "=" + so.show(defaults) + ": " + so.help + "\n";
+  return d;
+}
+
+// A str or os.PathLike (pathlib.Path) as a path.
+std::string path_arg(const char* name, py::handle v) {
+  if (py::isinstance<py::str>(v)) return py::cast<std::string>(v);
+  if (py::hasattr(v, "__fspath__")) return py::cast<std::string>(py::module_::import("os").attr("fspath")(v));
+  throw py::type_error(std::string("argument '") + name + "': expected str or os.PathLike, got " + type_name(v));
 }
 
 py::dict to_dict(const clips::Posterior& p) {
@@ -245,50 +369,56 @@ PYBIND11_MODULE(clips, m) {
                              "A live inference session; open it with Session.open_dataset or Session.open_domain")
       .def_static(
           "open_dataset",
-          [](const std::string& dataset, const std::string& problem, const std::string& method,
-             const std::string& assistance, const std::string& lm, const std::string& lm_base_url,
-             const std::string& lm_model, double lm_timeout, std::vector<std::string> goals,
-             std::vector<std::string> cost_profiles, size_t max_nodes, int threads, int particles,
-             uint64_t particle_seed, double ess_threshold, int rejuvenation_moves, const std::string& rejuvenate,
-             int proposal_groups, const std::string& particle_filters, const std::string& particle_estimate,
-             const std::string& assistant_turns) {
-            clips::SessionOptions tuning;
-            tuning.ess_threshold = ess_threshold;
-            tuning.rejuvenation_moves = rejuvenation_moves;
-            tuning.rejuvenate = rejuvenate;
-            tuning.proposal_groups = proposal_groups;
-            tuning.particle_filters = particle_filters;
-            tuning.particle_estimate = particle_estimate;
-            tuning.assistant_turns = assistant_turns;
-            auto o = session_options(method, assistance, lm, lm_base_url, lm_model, lm_timeout, std::move(goals),
-                                     std::move(cost_profiles), max_nodes, threads, particles, particle_seed, tuning);
+          [](py::object dataset, const std::string& problem, const py::kwargs& kwargs) {
+            const std::string dir = path_arg("dataset", dataset);
+            auto o = session_options(kwargs, "open_dataset");
             py::gil_scoped_release unlocked;
-            return clips::Session::open_dataset(dataset, problem, std::move(o));
+            return clips::Session::open_dataset(dir, problem, std::move(o));
           },
-          py::arg("dataset"), py::arg("problem"), py::kw_only(), py::arg("method") = "clips",
-          py::arg("assistance") = "qmdp", py::arg("lm") = "embedded", py::arg("lm_base_url") = "",
-          py::arg("lm_model") = "", py::arg("lm_timeout") = 120.0, py::arg("goals") = std::vector<std::string>{},
-          py::arg("cost_profiles") = std::vector<std::string>{}, py::arg("max_nodes") = size_t{1} << 18,
-          py::arg("threads") = 0, py::arg("particles") = 0, py::arg("particle_seed") = uint64_t{1},
-          py::arg("ess_threshold") = 0.5, py::arg("rejuvenation_moves") = 2, py::arg("rejuvenate") = "evidence",
-          py::arg("proposal_groups") = 8, py::arg("particle_filters") = "all", py::arg("particle_estimate") = "support",
-          py::arg("assistant_turns") = "taken",
-          "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state); "
-          "particles > 0: particle inference with that many particles instead of exact enumeration, tuned as "
-          "clips infer's options of the same names (assistant_turns: 'taken' or 'all', as --assistant-turns)")
+          py::arg("dataset"), py::arg("problem"),
+          ("open_dataset(dataset, problem, **options)\n\n"
+           "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state); the "
+           "folder may have no plans/. particles > 0: particle inference with that many particles instead of exact "
+           "enumeration, tuned as clips infer's options of the same names.\n\n" +
+           options_doc())
+              .c_str())
       .def_static(
           "open_domain",
-          [](const std::string& domain_dir, const std::string& problem_file, const std::string& method,
-             const std::string& assistance, const std::string& lm, std::vector<std::string> goals,
-             std::vector<std::string> cost_profiles) {
-            auto o = session_options(method, assistance, lm, "", "", 120.0, std::move(goals), std::move(cost_profiles),
-                                     size_t{1} << 18, 0);
+          [](py::object domain_dir, py::object problem_file, const py::kwargs& kwargs) {
+            auto text = [&](const char* key) -> std::optional<std::string> {
+              if (!kwargs.contains(key) || kwargs[key].is_none()) return std::nullopt;
+              return text_option(key, kwargs[key]);
+            };
+            const auto domain_text = text("domain_text"), problem_text = text("problem_text"),
+                       pack_text = text("pack_text");
+            auto o = session_options(kwargs, "open_domain", {"domain_text", "problem_text", "pack_text"});
+            const bool from_text = domain_text || problem_text || pack_text;
+            if (from_text) {
+              if (!domain_dir.is_none() || !problem_file.is_none())
+                throw clips::InputError(
+                    "open_domain: give domain_dir and problem_file (paths), or domain_text and problem_text "
+                    "(PDDL text, with pack_text), not both");
+              if (!domain_text || !problem_text)
+                throw clips::InputError(std::string("open_domain: ") + (domain_text ? "problem_text" : "domain_text") +
+                                        " is missing (PDDL text comes as both domain_text and problem_text)");
+              py::gil_scoped_release unlocked;
+              return clips::Session::open_domain_text(*domain_text, *problem_text, pack_text.value_or(""), std::move(o));
+            }
+            if (domain_dir.is_none() || problem_file.is_none())
+              throw clips::InputError(std::string("open_domain: ") + (domain_dir.is_none() ? "domain_dir" : "problem_file") +
+                                      " is missing (give domain_dir and problem_file, or domain_text and problem_text)");
+            const std::string dir = path_arg("domain_dir", domain_dir), file = path_arg("problem_file", problem_file);
             py::gil_scoped_release unlocked;
-            return clips::Session::open_domain(domain_dir, problem_file, std::move(o));
+            return clips::Session::open_domain(dir, file, std::move(o));
           },
-          py::arg("domain_dir"), py::arg("problem_file"), py::kw_only(), py::arg("method") = "clips",
-          py::arg("assistance") = "qmdp", py::arg("lm") = "embedded", py::arg("goals") = std::vector<std::string>{},
-          py::arg("cost_profiles") = std::vector<std::string>{})
+          py::arg("domain_dir") = py::none(), py::arg("problem_file") = py::none(),
+          ("open_domain(domain_dir=None, problem_file=None, *, domain_text=None, problem_text=None, pack_text=None, "
+           "**options)\n\n"
+           "A domain folder (holding domain.pddl, and pack.json if the domain has one) and a problem file; or the "
+           "domain and the problem as PDDL text (domain_text, problem_text), with the pack as JSON text (pack_text; "
+           "None: the pack the domain's name finds). The candidate goals follow the pack's rule for the problem.\n\n" +
+           options_doc())
+              .c_str())
       .def(
           "observe",
           [](clips::Session& s, const std::string& action) {

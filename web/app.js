@@ -1,13 +1,23 @@
 // The clips play page: talks to the JSON API of `clips serve` (docs/api.md).
 // Plain JS, no libraries, nothing fetched from outside the server.
+//
+// Every request goes through one queue (enqueue/pump): keys pressed while the
+// robot thinks wait their turn and are applied in order, never dropped.
 'use strict';
 
 const COLOURS = { red: '#d62728', yellow: '#e6b800', blue: '#1f77b4', green: '#2ca02c', pink: '#e377c2',
                   orange: '#ff7f0e', purple: '#9467bd', '': '#888' };
 const SERIES = ['#d62728', '#1f77b4', '#2ca02c', '#e6b800', '#9467bd', '#8c564b', '#e377c2', '#17becf', '#7f7f7f'];
+// Dash patterns and point markers of the chart's lines: 5 x 6 distinct pairs,
+// so that lines with equal values still show each other.
+const DASHES = [[], [7, 4], [2, 3], [9, 3, 2, 3], [4, 2, 1, 2]];
+const MARKERS = ['circle', 'square', 'triangle', 'diamond', 'cross', 'bar'];
+const METHOD_NAMES = { clips: 'CLIPS', lang_only: 'language-only', action_only: 'action-only', literal: 'the literal listener' };
+const KEY_MOVES = { ArrowUp: 'up', ArrowDown: 'down', ArrowLeft: 'left', ArrowRight: 'right' };
 const $ = (id) => document.getElementById(id);
 
-const ui = { catalogue: null, session: null, state: null, busy: false };
+const ui = { catalogue: null, session: null, state: null, busy: false, queue: [], maxQueued: 0, chartStyles: [],
+             utteranceBytes: 500 };
 window.clips = ui;  // for tests and the curious
 
 async function api(method, path, body) {
@@ -46,39 +56,76 @@ function onDataset() {
 function onProblem() {
   const ds = currentDataset();
   const p = ds && ds.problems.find((q) => q.id === $('problem').value);
-  fillSelect($('plan'), p ? p.plans : []);
+  // A problem without a recorded plan plays too: its goals follow the pack's rule.
+  fillSelect($('plan'), p && p.plans.length ? p.plans : [''], (v) => v || '(no recorded plan)');
 }
 
 async function loadCatalogue() {
   ui.catalogue = await api('GET', '/api/datasets');
+  if (ui.catalogue.limits) ui.utteranceBytes = ui.catalogue.limits.utterance_bytes;
   fillSelect($('dataset'), ui.catalogue.datasets.map((d) => d.name));
   onDataset();
+  updateBytes();
 }
 
-// Runs one request at a time; every reply carries the whole state.
-async function step(fn) {
+// ---- the queue: one request at a time, in the order asked -------------------
+
+function enqueue(kind, run) {
+  ui.queue.push({ kind, run });
+  showQueue();
+  pump();
+}
+
+async function pump() {
   if (ui.busy) return;
   ui.busy = true;
   setEnabled(false);
-  try { await fn(); } catch (e) { $('status').innerHTML = '<span class="err"></span>'; $('status').firstChild.textContent = e.message; }
+  while (ui.queue.length) {
+    const task = ui.queue.shift();
+    showQueue();
+    try { await task.run(); } catch (e) { showError(e.message); }
+  }
   ui.busy = false;
   setEnabled(true);
-  document.body.dataset.busy = '0';
+  showQueue();
+}
+
+function showError(message) {
+  $('status').innerHTML = '<span class="err"></span>';
+  $('status').firstChild.textContent = message;
+}
+
+function showQueue() {
+  const moves = ui.queue.filter((t) => t.kind === 'move').length;
+  ui.maxQueued = Math.max(ui.maxQueued, moves);  // the most keys that ever waited (tests read it)
+  $('status').dataset.queued = String(moves);
+  const q = $('queued');
+  if (q) q.textContent = moves ? ` (${moves} key${moves > 1 ? 's' : ''} queued)` : '';
 }
 
 function setEnabled(on) {
   document.body.dataset.busy = on ? '0' : '1';
-  for (const b of document.querySelectorAll('#controls button, #send, #undo, #reset')) b.disabled = !on || !ui.session;
+  const done = !!(ui.state && ui.state.reached_goal);
+  for (const b of document.querySelectorAll('#undo, #reset')) b.disabled = !on || !ui.session;
+  for (const b of document.querySelectorAll('#controls button')) b.disabled = !on || !ui.session || done;
+  updateBytes();
 }
 
-async function start() {
-  await step(async () => {
+// Keys and buttons act on the board: give it the focus back, so the arrow
+// keys work at once after typing an instruction or clicking a button.
+function focusBoard() { $('board').focus({ preventScroll: true }); }
+
+function start() {
+  enqueue('start', async () => {
     if (ui.session) api('DELETE', '/api/sessions/' + ui.session).catch(() => {});
+    ui.session = null;
+    ui.queue = ui.queue.filter((t) => t.kind !== 'move');
     $('log').innerHTML = '';
-    const s = await api('POST', '/api/sessions', { dataset: $('dataset').value, problem: $('problem').value,
-                                                   plan: $('plan').value, method: $('method').value });
+    const body = { dataset: $('dataset').value, problem: $('problem').value, method: $('method').value };
+    if ($('plan').value) body.plan = $('plan').value;
+    const s = await api('POST', '/api/sessions', body);
     ui.session = s.id;
-    log('started ' + s.dataset + ' problem ' + s.problem + ' (' + s.plan + ')');
+    log('started ' + s.dataset + ' problem ' + s.problem + (s.plan ? ' (' + s.plan + ')' : ' (no recorded plan)'));
     show(s);
     await maybeAssist(s);
   });
@@ -95,20 +142,57 @@ async function maybeAssist(s) {
   return s;
 }
 
-async function act(action) {
-  await step(async () => {
-    const s = await api('POST', `/api/sessions/${ui.session}/act`, { action });
-    log(action);
-    show(s);
-    await maybeAssist(s);
+async function doAct(action) {
+  const s = await api('POST', `/api/sessions/${ui.session}/act`, { action });
+  log(action);
+  show(s);
+  await maybeAssist(s);
+}
+
+function goalNote() {
+  return `the goal is reached (${ui.state.reached_goal}): no more moves; Undo or Reset to play on`;
+}
+
+function act(action) {
+  if (!ui.session) return;
+  enqueue('act', async () => {
+    if (ui.state.reached_goal) { log(goalNote(), 'err'); return; }
+    await doAct(action);
   });
 }
 
-async function say(text) {
-  await step(async () => {
-    const s = await api('POST', `/api/sessions/${ui.session}/hear`, { utterance: text });
-    log('"' + text + '"', 'say');
-    show(s);
+// A key: which action it means is decided when its turn in the queue comes,
+// in the state the earlier keys and the robot's replies led to.
+function move(dir) {
+  if (!ui.session) return;
+  if (ui.state && ui.state.reached_goal && !ui.busy) { log(goalNote(), 'err'); return; }
+  enqueue('move', async () => {
+    if (ui.state.reached_goal) { log(goalNote(), 'err'); return; }
+    const a = dir === 'noop' ? ui.state.noop_action && ui.state.actions.includes(ui.state.noop_action) && ui.state.noop_action
+                             : humanAction(dir);
+    if (a) await doAct(a); else log((dir === 'noop' ? 'cannot wait' : 'cannot move ' + dir) + ' now', 'err');
+  });
+}
+
+function utf8Bytes(text) { return new TextEncoder().encode(text).length; }
+
+function say(text) {
+  if (!ui.session) return;
+  enqueue('say', async () => {
+    $('say-error').hidden = true;
+    try {
+      const s = await api('POST', `/api/sessions/${ui.session}/hear`, { utterance: text });
+      log('"' + text + '"', 'say');
+      // Only now is it heard: the box is cleared unless it holds something new.
+      if ($('utterance').value.trim() === text) $('utterance').value = '';
+      updateBytes();
+      show(s);
+    } catch (e) {
+      // A rejected instruction stays in the box, with the reason beside it.
+      $('say-error').textContent = 'Not heard: ' + e.message;
+      $('say-error').hidden = false;
+      throw e;
+    }
   });
 }
 
@@ -118,10 +202,19 @@ function humanAction(kind) {
   return s.actions.find((a) => a.startsWith('(' + kind + ' ' + s.principal)) || null;
 }
 
-function move(dir) {
-  if (!ui.state || ui.busy) return;
-  const a = humanAction(dir);
-  if (a) act(a); else log('cannot move ' + dir + ' now', 'err');
+// The instruction box counts UTF-8 bytes, as the server does.
+function updateBytes() {
+  const n = utf8Bytes($('utterance').value.trim()), max = ui.utteranceBytes;
+  const over = n > max;
+  $('bytes').textContent = `${n}/${max} bytes`;
+  $('bytes').className = over ? 'err' : '';
+  $('send').disabled = !ui.session || over || n === 0;
+  if (over) {
+    $('say-error').textContent = `Too long: ${n} bytes; the server takes at most ${max} bytes (UTF-8; letters such as é take two).`;
+    $('say-error').hidden = false;
+  } else if ($('say-error').textContent.startsWith('Too long')) {
+    $('say-error').hidden = true;
+  }
 }
 
 // ---- drawing --------------------------------------------------------------
@@ -129,21 +222,37 @@ function move(dir) {
 function show(s) {
   ui.state = s;
   const done = s.reached_goal;
+  if (done) {
+    const dropped = ui.queue.filter((t) => t.kind === 'move').length;
+    if (dropped) log(`${dropped} queued key${dropped > 1 ? 's' : ''} not played: the goal is reached`, 'err');
+    ui.queue = ui.queue.filter((t) => t.kind !== 'move');
+  }
   $('status').className = done ? 'done' : '';
-  $('status').textContent = done ? `Goal reached: ${done} (step ${s.t}).`
+  $('status').textContent = done ? `Goal reached: ${done} (step ${s.t}). The board takes no more moves: Undo or Reset to play on.`
     : `Step ${s.t}: ${s.turn === s.principal ? 'your move' : 'the assistant is thinking'}.`;
+  const q = document.createElement('span'); q.id = 'queued'; $('status').appendChild(q);
+  showQueue();
+  $('board').classList.toggle('done', !!done);
   $('modality').textContent = '(' + s.posterior.modality + ' evidence)';
-  if (s.scene.kind === 'grid') drawGrid(s.scene); else drawHome(s.scene);
+  if (s.scene.kind === 'grid') drawGrid(s.scene);
+  else if (s.scene.kind === 'home') drawHome(s.scene);
+  else drawText(s.scene);
   drawVerbs(s);
   drawBars(s.posterior.goals);
   drawChart(s);
   drawReading(s.reading);
-  drawDecision(s.decision);
+  drawDecision(s);
+  setEnabled(!ui.busy);
+}
+
+function showOnly(id) {
+  for (const x of ['grid', 'home', 'textscene']) $(x).hidden = x !== id;
+  $('controls').hidden = false;
 }
 
 function drawGrid(sc) {
   const cv = $('grid');
-  cv.hidden = false; $('home').hidden = true; $('controls').hidden = false;
+  showOnly('grid');
   const cell = Math.floor(Math.min(480 / sc.width, 480 / sc.height));
   cv.width = cell * sc.width; cv.height = cell * sc.height;
   const g = cv.getContext('2d');
@@ -217,9 +326,8 @@ function drawKey(g, cx, cy, r, fill) {
 }
 
 function drawHome(sc) {
-  $('grid').hidden = true; $('controls').hidden = false;
+  showOnly('home');
   const home = $('home');
-  home.hidden = false;
   home.innerHTML = '';
   home.className = 'cards';
   for (const f of sc.fixtures) {
@@ -239,23 +347,106 @@ function drawHome(sc) {
   }
 }
 
-// Buttons for the human's applicable non-move actions (pick up, unlock, hand over, wait, ...).
+function el(tag, cls, text) {
+  const e = document.createElement(tag);
+  if (cls) e.className = cls;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+function named(o) { return o.name + (o.qualities.length ? ' (' + o.qualities.join(', ') + ')' : ''); }
+
+// A pack without pictures: its places as cards, what each agent holds, the
+// other facts, and what the last step changed.
+function drawText(sc) {
+  showOnly('textscene');
+  const box = $('textscene');
+  box.innerHTML = '';
+  const touched = new Set();  // objects named by a fact that just changed
+  for (const f of [...sc.changed.added, ...sc.changed.removed])
+    for (const w of f.replace(/[()]/g, ' ').split(/\s+/).slice(2)) touched.add(w);
+  const agentLine = (a) => {
+    const d = el('div', 'agent ' + (a.name === ui.state.principal ? 'human' : 'robot'));
+    d.dataset.agent = a.name;
+    d.textContent = a.name + (a.holds.length ? ' holding ' + a.holds.map(named).join(', ') : '') +
+                    (sc.active === a.name ? ' (to move)' : '');
+    if (touched.has(a.name) || a.holds.some((o) => touched.has(o.name))) d.classList.add('changed');
+    return d;
+  };
+  const cards = el('div', 'cards');
+  for (const p of sc.places) {
+    const card = el('div', 'card');
+    card.dataset.place = p.name;
+    card.appendChild(el('h3', '', named(p)));
+    for (const a of sc.agents.filter((a) => a.at === p.name)) card.appendChild(agentLine(a));
+    for (const o of p.objects) {
+      const d = el('div', 'item', named(o));
+      d.dataset.object = o.name;
+      if (touched.has(o.name)) d.classList.add('changed');
+      card.appendChild(d);
+    }
+    if (!p.objects.length) card.appendChild(el('div', 'pile', '(nothing here)'));
+    cards.appendChild(card);
+  }
+  const nowhere = sc.agents.filter((a) => !a.at);
+  if (nowhere.length) {
+    const card = el('div', 'card');
+    card.appendChild(el('h3', '', 'agents'));
+    for (const a of nowhere) card.appendChild(agentLine(a));
+    cards.appendChild(card);
+  }
+  box.appendChild(cards);
+  if (sc.facts.length) {
+    box.appendChild(el('h3', '', 'Facts'));
+    const ul = el('ul', 'facts');
+    for (const f of sc.facts) ul.appendChild(el('li', sc.changed.added.includes(f) ? 'changed' : '', f));
+    box.appendChild(ul);
+  }
+  const ch = el('div', 'delta');
+  ch.id = 'changed';
+  if (sc.changed.added.length + sc.changed.removed.length) {
+    ch.appendChild(el('span', '', 'Last step: '));
+    for (const f of sc.changed.added) ch.appendChild(el('span', 'added', '+ ' + f));
+    for (const f of sc.changed.removed) ch.appendChild(el('span', 'removed', '\u2212 ' + f));
+  } else {
+    ch.textContent = 'Nothing has changed yet.';
+  }
+  box.appendChild(ch);
+}
+
+// Buttons for the human's applicable actions: on a grid the ones the arrows
+// do not cover (pick up, unlock, hand over, wait); otherwise every one,
+// grouped by action.
 function drawVerbs(s) {
   const box = $('verbs');
   box.innerHTML = '';
+  const grid = s.scene.kind === 'grid';
+  document.querySelector('.arrows').hidden = !grid;
   const moves = ['up', 'down', 'left', 'right'];
-  const mine = s.actions.filter((a) => !moves.some((m) => a.startsWith('(' + m + ' ')));
-  const arrows = document.querySelector('.arrows');
-  arrows.hidden = s.scene.kind !== 'grid';
+  const mine = grid ? s.actions.filter((a) => !moves.some((m) => a.startsWith('(' + m + ' '))) : s.actions;
+  const groups = new Map();
   for (const a of mine) {
-    const b = document.createElement('button');
-    b.textContent = a.slice(1, -1).replace(/^pickup/, 'pick up').replace(/^handover/, 'hand over');
-    b.dataset.action = a;
-    b.onclick = () => act(a);
-    b.disabled = ui.busy;
-    box.appendChild(b);
+    const verb = a.slice(1, -1).split(/\s+/)[0];
+    if (!groups.has(verb)) groups.set(verb, []);
+    groups.get(verb).push(a);
   }
-  if (!mine.length && s.turn !== s.principal) box.textContent = '';
+  const label = (a) => {
+    const words = a.slice(1, -1).split(/\s+/);
+    if (grid || s.scene.kind === 'home') return words.join(' ').replace(/^pickup/, 'pick up').replace(/^handover/, 'hand over');
+    return words.slice(1).filter((w) => w !== s.principal).join(' ') || words[0];
+  };
+  for (const [verb, actions] of groups) {
+    const row = grid || s.scene.kind === 'home' ? box : el('div', 'verb');
+    if (row !== box) { row.appendChild(el('span', 'verb-name', verb)); box.appendChild(row); }
+    for (const a of actions) {
+      const b = el('button', '', label(a));
+      b.dataset.action = a;
+      b.title = a;
+      b.onclick = () => act(a);
+      b.disabled = ui.busy || !!s.reached_goal;
+      row.appendChild(b);
+    }
+  }
 }
 
 function goalColour(g, i) { return COLOURS[g.colour] && g.colour ? COLOURS[g.colour] : SERIES[i % SERIES.length]; }
@@ -279,11 +470,32 @@ function drawBars(goals) {
   });
 }
 
+function drawMarker(g, shape, x, y, r) {
+  g.beginPath();
+  if (shape === 'circle') g.arc(x, y, r, 0, 2 * Math.PI);
+  else if (shape === 'square') g.rect(x - r, y - r, 2 * r, 2 * r);
+  else if (shape === 'triangle') { g.moveTo(x, y - r - 1); g.lineTo(x + r + 1, y + r); g.lineTo(x - r - 1, y + r); g.closePath(); }
+  else if (shape === 'diamond') { g.moveTo(x, y - r - 1); g.lineTo(x + r + 1, y); g.lineTo(x, y + r + 1); g.lineTo(x - r - 1, y); g.closePath(); }
+  if (shape === 'cross' || shape === 'bar') {
+    g.save(); g.setLineDash([]); g.lineWidth = 2;
+    if (shape === 'cross') { g.moveTo(x - r, y - r); g.lineTo(x + r, y + r); g.moveTo(x + r, y - r); g.lineTo(x - r, y + r); }
+    else { g.moveTo(x, y - r - 1); g.lineTo(x, y + r + 1); }
+    g.stroke(); g.restore();
+  } else {
+    g.fill();
+  }
+}
+
+function seriesStyle(goal, k) {
+  return { goal: goal.goal, colour: goalColour(goal, k), dash: DASHES[k % DASHES.length], marker: MARKERS[k % MARKERS.length] };
+}
+
 function drawChart(s) {
   const cv = $('chart'), g = cv.getContext('2d');
   const W = cv.width, H = cv.height, L = 30, B = 18, T = 6;
   g.clearRect(0, 0, W, H);
-  g.strokeStyle = '#999'; g.fillStyle = '#666'; g.font = '10px sans-serif';
+  g.setLineDash([]);
+  g.strokeStyle = '#999'; g.fillStyle = '#666'; g.font = '10px sans-serif'; g.textAlign = 'left'; g.textBaseline = 'alphabetic';
   g.beginPath(); g.moveTo(L, T); g.lineTo(L, H - B); g.lineTo(W - 4, H - B); g.stroke();
   for (const v of [0, 0.5, 1]) {
     const y = H - B - v * (H - B - T);
@@ -293,13 +505,42 @@ function drawChart(s) {
   g.fillText('update', W - 40, H - 4);
   const xOf = (i) => L + (n <= 1 ? 0 : (i / (n - 1)) * (W - L - 8));
   const yOf = (p) => H - B - p * (H - B - T);
-  s.posterior.goals.forEach((goal, k) => {
-    g.strokeStyle = goalColour(goal, k); g.lineWidth = 2;
+  ui.chartStyles = s.posterior.goals.map(seriesStyle);
+  ui.chartStyles.forEach((st, k) => {
+    g.strokeStyle = st.colour; g.fillStyle = st.colour; g.lineWidth = 2;
+    g.setLineDash(st.dash);
     g.beginPath();
-    hist.forEach((h, i) => { const x = xOf(i), y = yOf(h.goals[k]); if (i) g.lineTo(x, y); else g.moveTo(x, y); });
+    hist.forEach((h, i) => { const x = xOf(i), y = yOf(h.goals[k] ?? 0); if (i) g.lineTo(x, y); else g.moveTo(x, y); });
     g.stroke();
+    g.setLineDash([]);
+    // Markers on at most ~24 points, so that long games stay readable.
+    const every = Math.max(1, Math.ceil(n / 24));
+    hist.forEach((h, i) => { if (i % every === 0 || i === n - 1) drawMarker(g, st.marker, xOf(i), yOf(h.goals[k] ?? 0), 2.5); });
   });
   g.lineWidth = 1;
+  drawLegend();
+}
+
+function drawLegend() {
+  const box = $('legend');
+  box.innerHTML = '';
+  for (const st of ui.chartStyles) {
+    const item = el('span', 'key');
+    item.dataset.goal = st.goal;
+    item.dataset.dash = st.dash.join(',');
+    item.dataset.marker = st.marker;
+    const c = document.createElement('canvas');
+    c.width = 34; c.height = 12;
+    const g = c.getContext('2d');
+    g.strokeStyle = st.colour; g.fillStyle = st.colour; g.lineWidth = 2;
+    g.setLineDash(st.dash);
+    g.beginPath(); g.moveTo(1, 6); g.lineTo(33, 6); g.stroke();
+    g.setLineDash([]);
+    drawMarker(g, st.marker, 17, 6, 3);
+    item.appendChild(c);
+    item.appendChild(el('span', '', st.goal));
+    box.appendChild(item);
+  }
 }
 
 function table(rows, chosen) {
@@ -323,13 +564,24 @@ function drawReading(r) {
   box.appendChild(table(r.commands.map((c) => [c.command, c.p.toFixed(3)])));
 }
 
-function drawDecision(d) {
-  const box = $('decision');
+// The assistant's latest decision still in the history (the server keeps it
+// with the action it chose; undo takes both back).
+function drawDecision(s) {
+  const box = $('decision'), d = s.decision;
   box.innerHTML = '';
-  if (!d) { box.textContent = 'The assistant has not acted yet.'; return; }
+  if (!d) {
+    box.textContent = s.t === 0 ? 'The assistant has not acted yet.'
+      : 'No decision of the assistant is left in this history: its moves were undone, or it has not decided since the start.';
+    return;
+  }
   const p = document.createElement('div');
   p.textContent = `${d.action}: ${d.reason}` + (d.command ? ` (command ${d.command}, p = ${d.command_probability.toFixed(2)})` : '');
   box.appendChild(p);
+  const when = el('div', 'note', `Decided after step ${d.t} by ${METHOD_NAMES[d.method] || d.method}` +
+    (d.method !== s.method ? `, before the switch to ${METHOD_NAMES[s.method] || s.method}` : '') +
+    (d.applied ? '.' : ' (not taken).'));
+  when.id = 'decision-when';
+  box.appendChild(when);
   if (d.candidates.length) {
     const rows = d.candidates.slice().sort((a, b) => (b.value ?? -1e9) - (a.value ?? -1e9))
       .map((c) => [c.action, c.value === null ? 'dead end' : c.value.toFixed(2)]);
@@ -341,24 +593,42 @@ function drawDecision(d) {
 
 // ---- wiring ----------------------------------------------------------------
 
-$('dataset').onchange = onDataset;
-$('problem').onchange = onProblem;
+$('dataset').onchange = () => { onDataset(); focusBoard(); };
+$('problem').onchange = () => { onProblem(); focusBoard(); };
+$('plan').onchange = focusBoard;
 $('start').onclick = start;
-$('reset').onclick = () => step(async () => { $('log').innerHTML = ''; show(await api('POST', `/api/sessions/${ui.session}/reset`)); });
-$('undo').onclick = () => step(async () => { show(await api('POST', `/api/sessions/${ui.session}/undo`)); log('(undo)'); });
+$('reset').onclick = () => enqueue('reset', async () => {
+  $('log').innerHTML = '';
+  show(await api('POST', `/api/sessions/${ui.session}/reset`));
+});
+$('undo').onclick = () => enqueue('undo', async () => {
+  show(await api('POST', `/api/sessions/${ui.session}/undo`));
+  log('(undo)');
+});
 $('method').onchange = () => {
+  focusBoard();
   if (!ui.session) return;
-  step(async () => { show(await api('POST', `/api/sessions/${ui.session}/method`, { method: $('method').value })); });
+  const method = $('method').value;
+  enqueue('method', async () => { show(await api('POST', `/api/sessions/${ui.session}/method`, { method })); });
 };
+$('utterance').addEventListener('input', updateBytes);
 $('say').onsubmit = (e) => {
   e.preventDefault();
   const text = $('utterance').value.trim();
-  if (text && ui.session) { say(text); $('utterance').value = ''; }
+  updateBytes();
+  if (!text || !ui.session || utf8Bytes(text) > ui.utteranceBytes) return;  // the counter says why
+  say(text);
+  focusBoard();
 };
 for (const b of document.querySelectorAll('[data-move]')) b.onclick = () => move(b.dataset.move);
+// Whatever button was clicked, the keys go to the board next.
+document.addEventListener('click', (e) => {
+  if (e.target.closest && e.target.closest('button')) focusBoard();
+});
 document.addEventListener('keydown', (e) => {
-  if (e.target.tagName === 'INPUT') return;
-  const dir = { ArrowUp: 'up', ArrowDown: 'down', ArrowLeft: 'left', ArrowRight: 'right' }[e.key];
+  const tag = e.target.tagName;
+  if (tag === 'INPUT' || tag === 'SELECT' || tag === 'TEXTAREA' || e.altKey || e.ctrlKey || e.metaKey) return;
+  const dir = KEY_MOVES[e.key] || (e.key === 'w' || e.key === 'W' ? 'noop' : null);
   if (dir && ui.session) { e.preventDefault(); move(dir); }
 });
 loadCatalogue().catch((e) => { $('status').textContent = 'Cannot reach the server: ' + e.message; });

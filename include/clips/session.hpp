@@ -137,15 +137,26 @@ struct Step {
 class Session {
  public:
   // A problem of a dataset directory (the paper's layout: domain.pddl,
-  // problems/<id>.pddl, ...). `problem` is a problem id ("2") or a plan id
-  // ("2.1.keys"); a plan id takes the plan's candidate goals and cost
-  // profiles, but the session starts from the problem's initial state (the
-  // plan's actions are not observed).
+  // problems/<id>.pddl, ...; plans/ may be absent). `problem` is a problem id
+  // ("2") or a plan id ("2.1.keys"); a plan id takes the plan's candidate
+  // goals and cost profiles, but the session starts from the problem's
+  // initial state (the plan's actions are not observed).
   static Session open_dataset(const std::string& dataset_dir, const std::string& problem, SessionOptions options = {});
   // A domain folder (holding domain.pddl; any domain with a language pack)
   // and a problem file.
   static Session open_domain(const std::string& domain_dir, const std::string& problem_file,
                              SessionOptions options = {});
+  // A domain and a problem given as PDDL text rather than files, with the
+  // domain's pack as JSON text (docs/domains.md; "": the pack the domain's
+  // name finds, as for a folder without pack.json: data/domains/<name>/,
+  // a compiled-in pack, else the generic one). The candidate goals follow
+  // the pack's rule for the problem (objects of a type, or the problem's
+  // :goal); a pack that reads goal sets needs SessionOptions::goals. Errors
+  // name "<domain text>", "<problem text>" or "<pack text>" with the line and
+  // column. A pack given as text has no folder: a relative fewshot.file is
+  // read from the working directory.
+  static Session open_domain_text(const std::string& domain_pddl, const std::string& problem_pddl,
+                                  const std::string& pack_json = "", SessionOptions options = {});
 
   Session(Session&&) noexcept;
   Session& operator=(Session&&) noexcept;

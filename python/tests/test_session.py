@@ -190,3 +190,138 @@ def test_run_bench_returns_rows_per_plan_and_method():
     assert [(r["plan"], r["method"]) for r in rep["rows"]] == [("e1.1.keys", "clips")]
     assert 0 <= rep["rows"][0]["p_true_goal"] <= 1
     assert "clips" in rep["summary"]
+
+
+# ---- open_domain: every option of open_dataset, and PDDL as text ------------
+
+WORKSHOP = ROOT / "data" / "datasets" / "workshop"
+
+# A value other than the default for every keyword option, and one the option refuses.
+OPTIONS = {
+    "method": ("action", "telepathy"),
+    "assistance": ("pibar", "oracle"),
+    "lm": ("embedded", "nope"),
+    "lm_base_url": ("http://127.0.0.1:9/v1", 3),
+    "lm_model": ("some-model", 3),
+    "lm_timeout": (5.0, -1.0),
+    "goals": (["(made table)", "(made stool)"], "(made table)"),
+    "cost_profiles": (["unit"], ["no-such-profile"]),
+    "max_nodes": (5000, 0),
+    "threads": (1, -1),
+    "particles": (64, -1),
+    "particle_seed": (7, "seven"),
+    "ess_threshold": (0.9, 2.0),
+    "rejuvenation_moves": (1, -1),
+    "rejuvenate": ("utterances", "sometimes"),
+    "proposal_groups": (2, 0),
+    "particle_filters": ("clips", "some"),
+    "particle_estimate": ("weights", "counts"),
+    "assistant_turns": ("all", "some"),
+}
+
+
+def documented_options(opener):
+    doc = opener.__doc__
+    block = doc[doc.index("Keyword options"):].splitlines()[1:]
+    return [line.split("=")[0].strip() for line in block if line.startswith("  ") and "=" in line]
+
+
+def docs_example_files():
+    text = (ROOT / "docs" / "domains.md").read_text(encoding="utf-8")
+    import re
+    return dict(re.findall(r"<!-- file: (\S+) -->\s*\n```[a-z]*\n(.*?)```", text, re.S))
+
+
+def test_both_openers_take_every_option():
+    """open_dataset and open_domain read one option table: the same names, the same checks."""
+    assert documented_options(clips.Session.open_dataset) == list(OPTIONS)
+    assert documented_options(clips.Session.open_domain) == list(OPTIONS)
+    opened = [lambda **kw: clips.Session.open_dataset(str(WORKSHOP), "1", **kw),
+              lambda **kw: clips.Session.open_domain(str(WORKSHOP), str(WORKSHOP / "problems" / "1.pddl"), **kw)]
+    for name, (_, bad) in OPTIONS.items():
+        errors = []
+        for open_ in opened:
+            with pytest.raises((clips.InputError, TypeError)) as e:
+                s = open_(**{name: bad}, particles=8) if name not in ("particles", "particle_seed") else open_(**{name: bad})
+                s.observe("(move human bench rack)")
+                s.hear("Can you bring the big plank?")
+            errors.append((type(e.value), str(e.value)))
+        assert errors[0] == errors[1], name
+    for open_ in opened:
+        with pytest.raises(TypeError, match="unexpected keyword argument 'colour'"):
+            open_(colour="red")
+
+
+def test_open_domain_options_reach_the_session():
+    path = dict(domain_dir=WORKSHOP, problem_file=WORKSHOP / "problems" / "1.pddl")  # pathlib paths are fine
+    good = {name: value for name, (value, _) in OPTIONS.items() if not name.startswith("lm_")}
+    s = clips.Session.open_domain(**path, **good)
+    s.observe("(move human bench rack)")
+    post = s.posterior()
+    assert list(post["goals"]) == ["(made table)", "(made stool)"]  # goals
+    assert list(post["cost_profiles"]) == ["unit"]  # cost_profiles
+    assert sum(post["goals"].values()) == pytest.approx(1.0)
+    again = clips.Session.open_domain(**path, **good)
+    again.observe("(move human bench rack)")
+    assert again.posterior() == post  # particles are a function of particle_seed
+    d = s.assist()  # pibar: the candidates' values are the mixture of policies' probabilities
+    assert d["assistant_turn"] and d["action"].startswith("(") and "robot" in d["action"]
+    assert sum(c["value"] for c in d["candidates"]) == pytest.approx(1.0)
+    assert all(0 <= c["value"] <= 1 for c in d["candidates"])
+    # Exact inference agrees between open_dataset and open_domain on the same problem and options.
+    exact = dict(goals=["(made table)", "(made stool)"], max_nodes=5000, threads=1, assistant_turns="all")
+    a = clips.Session.open_dataset(WORKSHOP, "1", **exact)
+    b = clips.Session.open_domain(**path, **exact)
+    for s_ in (a, b):
+        s_.observe("(move human bench rack)")
+        s_.hear("Can you bring the big plank over to the bench?")
+    assert a.posterior() == b.posterior()
+    # None keeps an option's default.
+    assert clips.Session.open_domain(**path, max_nodes=None, particles=None).posterior()["goals"]
+
+
+def test_open_domain_from_pddl_text_matches_the_files(tmp_path):
+    files = docs_example_files()
+    pack = json.loads(files["kitchen/pack.json"])
+    pack.pop("fewshot")  # a pack as text has no folder beside it
+    folder = tmp_path / "kitchen"
+    (folder / "problems").mkdir(parents=True)
+    (folder / "domain.pddl").write_text(files["kitchen/domain.pddl"])
+    (folder / "pack.json").write_text(json.dumps(pack))
+    (folder / "problems" / "1.pddl").write_text(files["kitchen/problems/1.pddl"])
+
+    def play(s):
+        s.observe("(take cook flour1 pantry)")
+        s.hear("Can you fetch the milk?")
+        return s.posterior()
+
+    from_text = clips.Session.open_domain(domain_text=files["kitchen/domain.pddl"],
+                                          problem_text=files["kitchen/problems/1.pddl"], pack_text=json.dumps(pack),
+                                          threads=1)
+    assert from_text.domain == "kitchen"
+    post = play(from_text)
+    assert post == play(clips.Session.open_domain(folder, folder / "problems" / "1.pddl", threads=1))
+    assert max(post["goals"], key=post["goals"].get) == "cake"  # flour and milk (docs/domains.md)
+    # A folder without plans/ opens as a dataset too.
+    assert play(clips.Session.open_dataset(folder, "1", threads=1)) == post
+
+
+def test_open_domain_text_errors_name_the_input():
+    files = docs_example_files()
+    domain, problem = files["kitchen/domain.pddl"], files["kitchen/problems/1.pddl"]
+    pack = json.dumps({k: v for k, v in json.loads(files["kitchen/pack.json"]).items() if k != "fewshot"})
+    with pytest.raises(clips.InputError, match=r"<domain text>:1:\d+"):
+        clips.Session.open_domain(domain_text="(define (domain kitchen", problem_text=problem, pack_text=pack)
+    with pytest.raises(clips.InputError, match=r"<problem text>:\d+:\d+: .*'plank'"):
+        clips.Session.open_domain(domain_text=domain, pack_text=pack,
+                                  problem_text="(define (problem p) (:domain kitchen) (:objects x - plank))")
+    with pytest.raises(clips.InputError, match="<pack text>"):
+        clips.Session.open_domain(domain_text=domain, problem_text=problem, pack_text="{")
+    with pytest.raises(clips.InputError, match="problem_text is missing"):
+        clips.Session.open_domain(domain_text=domain)
+    with pytest.raises(clips.InputError, match="not both"):
+        clips.Session.open_domain(str(WORKSHOP), problem_text=problem)
+    with pytest.raises(clips.InputError, match="domain_dir is missing"):
+        clips.Session.open_domain()
+    with pytest.raises(TypeError, match="domain_text"):
+        clips.Session.open_domain(domain_text=3, problem_text=problem)

@@ -177,7 +177,7 @@ Session& Session::operator=(Session&&) noexcept = default;
 Session::~Session() = default;
 
 Session Session::open_dataset(const std::string& dataset_dir, const std::string& problem, SessionOptions options) {
-  data::Dataset ds = data::Dataset::load(dataset_dir);
+  data::Dataset ds = data::Dataset::load(dataset_dir, false);
   const data::PlanRecord* plan = nullptr;
   for (const auto& p : ds.plans())
     if (p.id == problem) plan = &p;
@@ -215,6 +215,23 @@ Session Session::open_domain(const std::string& domain_dir, const std::string& p
       } catch (const InputError& e) {
         throw InputError(std::string(e.what()) + "; give the candidate goals in SessionOptions::goals");
       }
+    }
+  }
+  auto profiles = pack->default_profiles();
+  return Session(std::make_unique<Impl>(std::move(options), task, pack, std::move(goals), std::move(profiles)));
+}
+
+Session Session::open_domain_text(const std::string& domain_pddl, const std::string& problem_pddl,
+                                  const std::string& pack_json, SessionOptions options) {
+  auto domain = std::make_shared<pddl::Domain>(pddl::parse_domain(domain_pddl, "<domain text>"));
+  domains::PackPtr pack = data::text_pack(*domain, pack_json, "<pack text>");
+  auto task = data::ground_problem_text(*pack, domain, problem_pddl, "<problem text>");
+  std::vector<data::GoalSpec> goals;
+  if (options.goals.empty()) {
+    try {
+      goals = data::text_problem_goals(*pack, *task, "<problem text>");
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + "; give the candidate goals in SessionOptions::goals");
     }
   }
   auto profiles = pack->default_profiles();

@@ -10,6 +10,7 @@
 
 #include "app/cli.hpp"
 #include "app/particle_flags.hpp"
+#include "language/listener.hpp"
 #include "serve/frontends.hpp"
 #include "serve/service.hpp"
 #include "util/error.hpp"
@@ -32,14 +33,18 @@ void register_serve(CLI::App& app) {
   cmd->add_option("--host", o->host, "Address to listen on (default 127.0.0.1, loopback only)");
   cmd->add_option("--port", o->port, "TCP port (default 8080; 0 picks a free one)")->check(CLI::Range(0, 65535));
   cmd->add_option("--dataset", o->datasets,
-                  "Dataset folder to serve (repeatable); requests name a dataset by its folder's base name and "
-                  "never give paths (default: $CLIPS_DATASET/doors-keys-gems and /virtual-home, else "
-                  "../shared/dataset/...)");
+                  "Dataset or domain folder to serve (repeatable; any pack, plans/ optional: every problem plays); "
+                  "requests name a dataset by its folder's base name and never give paths (default: "
+                  "$CLIPS_DATASET/doors-keys-gems and /virtual-home, else ../shared/dataset/...)");
   cmd->add_flag("--stdio", o->stdio, "Read one JSON request per line on stdin, answer one per line on stdout");
   cmd->add_option("--threads", o->threads, "Requests handled at once (default 8)")->check(PositiveInteger);
   cmd->add_option("--max-sessions", o->limits.max_sessions, "Live sessions at most (default 64; more: HTTP 503)")
       ->check(PositiveInteger);
   cmd->add_option("--max-body", o->limits.max_body_bytes, "Request body size limit in bytes (default 65536)")
+      ->check(PositiveInteger);
+  cmd->add_option("--max-pddl-bytes", o->limits.max_pddl_bytes,
+                  "Size limit of each PDDL or pack text of a session created from text (\"domain\", \"problem\", "
+                  "\"pack\"), in bytes (default 32768)")
       ->check(PositiveInteger);
   cmd->add_option("--idle-timeout", o->limits.idle_seconds, "Seconds after which an unused session is deleted (default 1800)")
       ->check(PositiveSeconds);
@@ -81,6 +86,14 @@ void register_serve(CLI::App& app) {
     }
     auto lm = make_lm(o->lm);
     serve::Service service(dirs, o->limits, lm);
+    // A domain without a hand-written corpus (the workshop, your own) gets the
+    // embedded model trained on its own names, as `clips infer` gives it; the
+    // paper's domains and other backends share the one model.
+    service.set_domain_language_model([lm, flags = o->lm](const domains::Pack& pack, const pddl::Domain& domain,
+                                                          const std::vector<const pddl::Problem*>& problems) {
+      if (flags.kind != "embedded" || !pack.spec().embedded_corpus.empty()) return lm;
+      return language::make_domain_language_model(flags.kind, lm_options(flags), pack, domain, problems);
+    });
     if (o->stdio) {
       g_exit_code = serve::run_stdio(service, std::cin, std::cout);
       return;

@@ -254,6 +254,39 @@ std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
   return t;
 }
 
+std::shared_ptr<const pddl::Task> ground_problem_text(const domains::Pack& pack,
+                                                      std::shared_ptr<const pddl::Domain> domain,
+                                                      const std::string& problem_text, const std::string& source,
+                                                      int64_t max_ground_actions) {
+  const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
+  auto prob = std::make_shared<pddl::Problem>(pddl::parse_problem(*domain, problem_text, source, with_goal));
+  pddl::GroundingOptions go = pack.spec().grounding;
+  go.max_ground_actions = max_ground_actions;
+  auto t = std::make_shared<const pddl::Task>(std::move(domain), std::move(prob), go);
+  pack.check_problem(*t, source);
+  return t;
+}
+
+domains::PackPtr text_pack(const pddl::Domain& domain, const std::string& pack_json, const std::string& source) {
+  if (pack_json.find_first_not_of(" \t\r\n") == std::string::npos) {
+    // Looked up by name in the data folder: a name must not walk out of it.
+    if (domain.name.empty() || domain.name.find_first_of("/\\") != std::string::npos || domain.name[0] == '.')
+      throw InputError("domain name '" + domain.name + "' cannot name a pack (no '/', '\\' or leading '.')");
+    return domains::find_pack(domain);
+  }
+  domains::PackSpec spec = domains::parse_pack_spec(pack_json, source);
+  domains::check_pack_against(spec, domain);
+  return domains::make_pack(std::move(spec));
+}
+
+std::vector<GoalSpec> text_problem_goals(const domains::Pack& pack, const pddl::Task& task, const std::string& source) {
+  if (pack.spec().goals.source == domains::GoalSource::GoalSets)
+    throw InputError(source + ": pack " + pack.name() +
+                     " takes its candidate goals from goal sets (goals/sets/<problem>.txt of a folder); give the "
+                     "candidate goals, or a problem of the folder");
+  return pack.problem_goals(task, source);
+}
+
 std::vector<GoalSpec> folder_goal_set(const std::string& dir_in, const std::string& problem_id) {
   const fs::path dir(dir_in), defs = dir / "goals" / "definitions";
   const fs::path set = dir / "goals" / "sets" / (problem_id + ".txt");
@@ -271,7 +304,7 @@ std::vector<GoalSpec> folder_goal_set(const std::string& dir_in, const std::stri
   return out;
 }
 
-Dataset Dataset::load(const std::string& dir_in) {
+Dataset Dataset::load(const std::string& dir_in, bool require_plans) {
   if (debug_load()) std::fprintf(stderr, "dataset: loading %s\n", dir_in.c_str());
   Dataset ds;
   ds.dir_ = dir_in;
@@ -286,17 +319,20 @@ Dataset Dataset::load(const std::string& dir_in) {
 
   fs::path obs_dir = dir / "plans" / "observed";
   fs::path comp_dir = dir / "plans" / "completed";
-  if (!fs::is_directory(obs_dir)) throw InputError("dataset directory '" + dir_in + "' has no plans/observed/");
+  const bool has_plans = fs::is_directory(obs_dir);
+  if (!has_plans && require_plans) throw InputError("dataset directory '" + dir_in + "' has no plans/observed/");
   // Compiled once: compiling a std::regex writes libstdc++'s shared
   // ctype<char>::narrow cache (GCC PR 77704), a race when datasets load on
   // several threads at once; matching only reads.
   static const std::regex eval_re(R"(^(\d+)(\w?)\.(\d+)\.(.+)$)");
   static const std::regex any_re(R"(^([A-Za-z0-9_]+)\.(\d+)\.(.+)$)");
+  static const std::regex problem_re(R"(^(\d{1,9})([A-Za-z]?)$)");
   std::vector<std::pair<PlanKey, PlanRecord>> recs;
   // Plan files in name order, so broken_plans() and the load are deterministic.
   std::vector<fs::path> plan_files;
-  for (auto& e : fs::directory_iterator(obs_dir))
-    if (e.path().extension() == ".pddl") plan_files.push_back(e.path());
+  if (has_plans)
+    for (auto& e : fs::directory_iterator(obs_dir))
+      if (e.path().extension() == ".pddl") plan_files.push_back(e.path());
   std::sort(plan_files.begin(), plan_files.end());
   for (const fs::path& path : plan_files) try {
     const fs::directory_entry e(path);
@@ -339,6 +375,20 @@ Dataset Dataset::load(const std::string& dir_in) {
   }
   std::sort(recs.begin(), recs.end(), [](auto& a, auto& b) { return a.first < b.first; });
   for (auto& [k, r] : recs) ds.plans_.push_back(std::move(r));
+  {
+    // Every problem file, in the plans' order.
+    std::vector<PlanKey> keys;
+    std::error_code ec;
+    for (auto& e : fs::directory_iterator(dir / "problems", ec)) {
+      if (e.path().extension() != ".pddl") continue;
+      const std::string stem = e.path().stem().string();
+      std::smatch m;
+      if (std::regex_match(stem, m, problem_re)) keys.push_back({std::stoi(m[1]), m[2], 0, stem});
+      else keys.push_back({1 << 30, "", 0, stem});
+    }
+    std::sort(keys.begin(), keys.end());
+    for (auto& k : keys) ds.problem_ids_.push_back(k.name);
+  }
 
   if (ds.pack_->spec().goals.source == domains::GoalSource::GoalSets) {
     fs::path defs = dir / "goals" / "definitions";

@@ -62,7 +62,9 @@ struct StimulusInfo {  // one entry of stimuli.json (mDKG)
 
 class Dataset {
  public:
-  static Dataset load(const std::string& dir);
+  // `require_plans = false` also accepts a folder without plans/observed/ (a
+  // domain folder with problems only: `clips serve`, Session::open_dataset).
+  static Dataset load(const std::string& dir, bool require_plans = true);
 
   const std::string& dir() const { return dir_; }
   // What clips knows about the domain beyond its PDDL.
@@ -82,6 +84,9 @@ class Dataset {
   // grid, or a key or gem is neither on it nor held by an agent.
   std::shared_ptr<const pddl::Task> task(const std::string& problem_id) const;
   std::string problem_path(const std::string& problem_id) const;
+  // The problems of problems/*.pddl (file stems), with or without plans, in
+  // the plans' order (numeric id, letter suffix, then name).
+  const std::vector<std::string>& problem_ids() const { return problem_ids_; }
   // Raises or lowers GroundingOptions::max_ground_actions for tasks grounded
   // after the call (clips plan --max-ground-actions).
   void set_max_ground_actions(int64_t n) { max_ground_actions_ = n; }
@@ -101,6 +106,7 @@ class Dataset {
   std::shared_ptr<const pddl::Domain> domain_;
   std::vector<PlanRecord> plans_;
   std::vector<BrokenPlan> broken_;
+  std::vector<std::string> problem_ids_;
   std::map<std::string, std::string> goal_defs_;                 // goal label -> condition text
   std::map<std::string, std::string> goal_def_paths_;            // goal label -> its goals/definitions file
   std::map<std::string, std::vector<std::string>> goal_sets_;   // problem -> labels
@@ -150,6 +156,21 @@ std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
                                                  std::shared_ptr<const pddl::Domain> domain,
                                                  const std::string& problem_path,
                                                  int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions);
+// The same for a problem given as PDDL text; `source` names it in errors
+// ("problem:3:5: ...").
+std::shared_ptr<const pddl::Task> ground_problem_text(const domains::Pack& pack,
+                                                      std::shared_ptr<const pddl::Domain> domain,
+                                                      const std::string& problem_text, const std::string& source,
+                                                      int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions);
+// For a domain and problem given as text rather than as files. The pack of
+// a domain: parsed from `pack_json` (errors name `source`) and checked
+// against the domain, or, when it is empty, found by the domain's name (the
+// data folder's packs, the compiled-in ones, else the generic pack).
+domains::PackPtr text_pack(const pddl::Domain& domain, const std::string& pack_json, const std::string& source);
+// The candidate goals of a problem by its pack's rule, when the pack takes
+// them from the problem (objects or its :goal); a pack that takes them from
+// goal sets (files of a folder) is refused, naming `source`.
+std::vector<GoalSpec> text_problem_goals(const domains::Pack& pack, const pddl::Task& task, const std::string& source);
 // The goal set goals/sets/<problem>.txt of a folder in the dataset layout,
 // with each label's condition from goals/definitions/.
 std::vector<GoalSpec> folder_goal_set(const std::string& dir, const std::string& problem_id);

@@ -6,6 +6,7 @@
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
 #include "eval/scenes.hpp"
+#include "pddl/parser.hpp"
 #include "search/astar.hpp"
 #include "util/error.hpp"
 
@@ -43,38 +44,133 @@ std::string kind_name(render::ObjectKind k) {
 
 }  // namespace
 
-PlaySession::PlaySession(std::shared_ptr<const data::Dataset> dataset, std::string dataset_name,
-                         const std::string& problem, const std::string& plan_id, const std::string& method,
-                         std::shared_ptr<lm::LanguageModel> lm, PlayLimits limits)
-    : ds_(std::move(dataset)),
-      dataset_name_(std::move(dataset_name)),
-      problem_(problem),
-      pack_(ds_->pack_ptr()),
+namespace {
+
+// A problem id as the dataset lists it, never a path.
+void check_problem_id(const data::Dataset& ds, const std::string& name, const std::string& problem) {
+  const auto& ids = ds.problem_ids();
+  if (std::find(ids.begin(), ids.end(), problem) == ids.end()) {
+    std::string known;
+    for (size_t i = 0; i < ids.size() && i < 12; ++i) known += (i ? ", " : "") + ids[i];
+    if (ids.size() > 12) known += ", ...";
+    throw InputError("field 'problem': dataset '" + name + "' has no problem '" + problem + "' (problems: " +
+                     (known.empty() ? "none" : known) + ")");
+  }
+}
+
+// The pack's principal and assistant are objects of the problem.
+void check_roles(const pddl::Task& task, const domains::Pack& pack) {
+  for (const auto& [agent, role] : {std::pair{pack.roles().principal, "principal"}, {pack.roles().assistant, "assistant"}})
+    if (!task.find_object(agent))
+      throw InputError("the problem has no object '" + agent + "' (the pack " + pack.name() + " names it as the " +
+                       role + ")");
+}
+
+}  // namespace
+
+PlaySetup dataset_setup(std::shared_ptr<const data::Dataset> ds, std::string name, const std::string& problem,
+                        const std::string& plan_id) {
+  check_problem_id(*ds, name, problem);
+  PlaySetup s;
+  s.dataset = std::move(name);
+  s.problem = problem;
+  s.pack = ds->pack_ptr();
+  for (const auto& p : ds->plans()) {
+    if (p.problem_id != problem) continue;
+    if (plan_id.empty() ? s.plan == nullptr : p.id == plan_id) s.plan = &p;
+  }
+  if (!s.plan && !plan_id.empty())
+    throw InputError("field 'plan': no plan '" + plan_id + "' on problem '" + problem + "'");
+  try {
+    s.task = ds->task(problem);
+  } catch (const InputError& e) {
+    throw InputError(std::string("field 'problem': ") + e.what());
+  }
+  if (s.plan) {
+    s.goals = ds->candidate_goals(*s.plan);
+    s.true_goal = ds->true_goal_index(*s.plan);
+    s.profiles = inference::plan_cost_profiles(*s.pack, *s.plan).profiles;
+  } else {
+    // No recorded plan: the pack's goal rule for the problem, its default profiles.
+    data::PlanRecord only;
+    only.id = only.problem_id = problem;
+    try {
+      s.goals = ds->candidate_goals(only);
+    } catch (const InputError& e) {
+      throw InputError("field 'problem': problem '" + problem + "' has no candidate goals: " + e.what());
+    }
+    s.profiles = s.pack->default_profiles();
+  }
+  s.owner = std::move(ds);
+  return s;
+}
+
+PlaySetup text_setup(const std::string& domain_pddl, const std::string& problem_pddl, const std::string& pack_json,
+                     const PlayLimits& limits) {
+  auto field = [](const char* name, auto&& fn) {
+    try {
+      return fn();
+    } catch (const InputError& e) {
+      throw InputError(std::string("field '") + name + "': " + e.what());
+    }
+  };
+  PlaySetup s;
+  auto domain = field("domain", [&] { return std::make_shared<const pddl::Domain>(pddl::parse_domain(domain_pddl, "domain")); });
+  const bool no_pack = pack_json.find_first_not_of(" \t\r\n") == std::string::npos;
+  s.pack = field(no_pack ? "domain" : "pack", [&] {
+    auto pack = data::text_pack(*domain, pack_json, "pack");
+    if (!pack->spec().fewshot.file.empty() || !pack->spec().embedded_corpus.empty())
+      throw InputError("a pack sent as text may not name files (fewshot.file, embedded_corpus); leave them out");
+    return pack;
+  });
+  s.task = field("problem", [&] {
+    return data::ground_problem_text(*s.pack, domain, problem_pddl, "problem", limits.text_max_ground_actions);
+  });
+  s.problem = s.task->problem().name;
+  field("problem", [&] {
+    try {
+      check_roles(*s.task, *s.pack);
+    } catch (const InputError& e) {
+      if (!no_pack) throw;
+      throw InputError(std::string(e.what()) + "; no pack was sent, so the one found for domain '" + s.pack->name() +
+                       "' plays (the generic pack when none is known): send the domain's pack as 'pack'");
+    }
+    return 0;
+  });
+  s.goals = field("problem", [&] { return data::text_problem_goals(*s.pack, *s.task, "problem"); });
+  s.profiles = s.pack->default_profiles();
+  return s;
+}
+
+PlaySession::PlaySession(PlaySetup setup, const std::string& method, std::shared_ptr<lm::LanguageModel> lm,
+                         PlayLimits limits)
+    : ds_(std::move(setup.owner)),
+      dataset_name_(std::move(setup.dataset)),
+      problem_(std::move(setup.problem)),
+      plan_(setup.plan),
+      task_(std::move(setup.task)),
+      pack_(std::move(setup.pack)),
+      goals_(std::move(setup.goals)),
+      profiles_(std::move(setup.profiles)),
+      true_goal_(setup.true_goal),
       method_(method),
       lm_(std::move(lm)),
       limits_(limits) {
   check_method(method_);
-  if (pack_->spec().scene == domains::SceneKind::Text)
-    throw InputError("field 'dataset': the " + pack_->name() +
-                     " pack draws no scene (its scene is \"text\"), so the page cannot show it; grid and cards packs "
-                     "can be played");
-  for (const auto& p : ds_->plans()) {
-    if (p.problem_id != problem_) continue;
-    if (plan_id.empty() ? plan_ == nullptr : p.id == plan_id) plan_ = &p;
-  }
-  if (!plan_) {
-    if (!plan_id.empty()) throw InputError("field 'plan': no plan '" + plan_id + "' on problem '" + problem_ + "'");
-    throw InputError("field 'problem': dataset '" + dataset_name_ + "' has no problem '" + problem_ + "'");
-  }
-  task_ = ds_->task(problem_);
-  goals_ = ds_->candidate_goals(*plan_);
-  true_goal_ = ds_->true_goal_index(*plan_);
-  profiles_ = inference::plan_cost_profiles(*pack_, *plan_).profiles;
+  if (goals_.empty()) throw InputError("field 'problem': problem '" + problem_ + "' has no candidate goal");
   principal_ = pack_->roles().principal;
   assistant_ = pack_->roles().assistant;
   horizon_ = pack_->roles().horizon;
-  if (pack_->spec().scene == domains::SceneKind::Cards) vh_.emplace(*task_);
-  else dkg_.emplace(*task_);
+  try {
+    check_roles(*task_, *pack_);
+  } catch (const InputError& e) {
+    throw InputError(std::string("field 'problem': ") + e.what());
+  }
+  switch (pack_->spec().scene) {
+    case domains::SceneKind::Grid: dkg_.emplace(*task_); break;
+    case domains::SceneKind::Cards: vh_.emplace(*task_); break;
+    case domains::SceneKind::Text: text_.emplace(task_, *pack_); break;
+  }
   options_ = limits_.belief;
   options_.refine.max_nodes = limits_.inference_nodes;
   options_.refine.max_seconds = limits_.search_seconds;
@@ -88,7 +184,9 @@ void PlaySession::rebuild(const std::vector<Event>& events) {
   last_ = belief_->start(task_->initial_state());
   events_.clear();
   history_.clear();
-  last_decision_.reset();
+  previous_.reset();
+  // Decisions stay with the events they followed.
+  std::erase_if(decisions_, [&](const Decided& d) { return d.events > events.size(); });
   utterance_.reset();
   utterance_state_.reset();
   utterance_record_.reset();
@@ -108,6 +206,7 @@ void PlaySession::push_history(const std::string& label) {
 }
 
 void PlaySession::apply_action(pddl::ActionId a) {
+  previous_ = belief_->state();
   last_ = belief_->observe(a);
   events_.push_back({false, task_->action_name(a)});
   push_history(task_->action_name(a));
@@ -169,6 +268,16 @@ json PlaySession::assist(bool apply) {
   const pddl::State& s = belief_->state();
   if (active_agent() != assistant_)
     throw ConflictError("it is the " + active_agent() + "'s turn, not the assistant's");
+  if (apply && belief_->t() >= limits_.max_steps)
+    throw ConflictError("the session has reached its limit of " + std::to_string(limits_.max_steps) + " steps");
+  {
+    bool any = false;
+    for (pddl::ActionId a : task_->applicable_actions(s)) {
+      const auto& args = task_->action(a).args;
+      any |= !args.empty() && task_->object_name(args[0]) == assistant_;
+    }
+    if (!any) throw ConflictError("the assistant (" + assistant_ + ") has no applicable action");
+  }
   json d;
   d["method"] = method_;
   pddl::ActionId chosen = -1;
@@ -232,8 +341,9 @@ json PlaySession::assist(bool apply) {
   }
   d["action"] = task_->action_name(chosen);
   d["applied"] = apply;
+  d["t"] = belief_->t();  // the step it was decided at
   if (apply) apply_action(chosen);
-  last_decision_ = d;
+  decisions_.push_back({events_.size(), apply, d});
   return d;
 }
 
@@ -250,12 +360,21 @@ void PlaySession::undo() {
   rebuild(keep);
 }
 
-void PlaySession::reset() { rebuild({}); }
+void PlaySession::reset() {
+  decisions_.clear();
+  rebuild({});
+}
 
+// A method switch keeps the decisions: each names the method that made it.
 void PlaySession::set_method(const std::string& method) {
   check_method(method);
   method_ = method;
-  last_decision_.reset();
+}
+
+json PlaySession::decision() const {
+  for (auto it = decisions_.rbegin(); it != decisions_.rend(); ++it)
+    if (it->applied ? it->events <= events_.size() : it->events == events_.size()) return it->decision;
+  return nullptr;
 }
 
 json PlaySession::posterior_json(Modality m) const {
@@ -294,6 +413,7 @@ json PlaySession::trace() const {
 
 json PlaySession::scene() const {
   const pddl::State& s = belief_->state();
+  if (text_) return text_->draw(s, previous_ ? &*previous_ : nullptr, active_agent());
   json j;
   if (dkg_) {
     const auto g = eval::dkg_scene(*dkg_, s);
@@ -366,18 +486,21 @@ json PlaySession::reading() const {
 
 json PlaySession::state() const {
   json j;
-  j["dataset"] = dataset_name_;
+  j["dataset"] = dataset_name_.empty() ? json(nullptr) : json(dataset_name_);
   j["domain"] = pack_->name();
   j["problem"] = problem_;
-  j["plan"] = plan_->id;
+  j["plan"] = plan_ ? json(plan_->id) : json(nullptr);
   j["method"] = method_;
   j["t"] = belief_->t();
   j["turn"] = active_agent();
   j["principal"] = principal_;
   j["assistant"] = assistant_;
+  // The principal's no-op ("(wait human)"), for a key that waits; null when the domain has none.
+  const auto noop = task_->find_action("(" + pack_->roles().noop_action + " " + principal_ + ")");
+  j["noop_action"] = noop ? json(task_->action_name(*noop)) : json(nullptr);
   const auto reached = reached_goal();
   j["reached_goal"] = reached ? json(*reached) : json(nullptr);
-  j["true_goal"] = goals_.at(true_goal_).label;
+  j["true_goal"] = true_goal_ >= 0 ? json(goals_.at(true_goal_).label) : json(nullptr);
   j["scene"] = scene();
   json acts = json::array();
   if (active_agent() == principal_)
@@ -389,15 +512,17 @@ json PlaySession::state() const {
   for (const auto& h : history_) hist.push_back({{"event", h.label}, {"goals", h.goals[m]}});
   j["history"] = std::move(hist);
   j["reading"] = reading();
-  j["decision"] = last_decision_ ? *last_decision_ : json(nullptr);
+  j["decision"] = decision();
   // The human moves of the reference plan (a hint for players and tests).
   json moves = json::array();
-  for (const auto& a : plan_->observed.actions)
-    if (const auto id = task_->find_action(a.text); id && task_->object_name(task_->action(*id).args.at(0)) == principal_)
-      moves.push_back(task_->action_name(*id));
-  j["observed_moves"] = std::move(moves);
   j["observed_utterances"] = json::array();
-  for (const auto& u : plan_->observed.utterances) j["observed_utterances"].push_back(u.text);
+  if (plan_) {
+    for (const auto& a : plan_->observed.actions)
+      if (const auto id = task_->find_action(a.text); id && task_->object_name(task_->action(*id).args.at(0)) == principal_)
+        moves.push_back(task_->action_name(*id));
+    for (const auto& u : plan_->observed.utterances) j["observed_utterances"].push_back(u.text);
+  }
+  j["observed_moves"] = std::move(moves);
   j["searches_stopped_by_budget"] = belief_->searches_stopped_by_budget();
   // Exact or particle inference, and the policy refinements done so far
   // (hypotheses × steps when exact; fewer where particles leave some out).

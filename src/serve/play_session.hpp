@@ -1,9 +1,10 @@
 #pragma once
-// One interactive game on a dataset problem: a person plays the human, the
-// assistant infers their goal from what they do and say and acts by the
+// One interactive game on a problem of any pack: a person plays the human,
+// the assistant infers their goal from what they do and say and acts by the
 // chosen method. A thin adapter over the internals the CLI uses
 // (inference::Belief, assist::qmdp_decision, the literal listener); every
-// reply is plain JSON for the server.
+// reply is plain JSON for the server. The problem comes from a loaded
+// dataset (with or without a recorded plan) or from PDDL text.
 //
 // Not thread-safe: the server serialises each session's requests.
 #include <map>
@@ -20,6 +21,7 @@
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "language/lm/language_model.hpp"
+#include "serve/text_scene.hpp"
 
 namespace clips::serve {
 
@@ -37,6 +39,9 @@ struct PlayLimits {
   double search_seconds = 5;                 // per A* search
   int max_steps = 300;                       // actions per session (undo frees them)
   size_t max_utterance_bytes = 500;
+  // Sessions from PDDL text: ground actions of one schema at most (the
+  // grounder refuses more, naming the action).
+  int64_t text_max_ground_actions = 200000;
   // Threads refining one session's belief. 1 (default): sessions already run
   // in parallel, one per request thread; 0: all cores, for a server that has
   // one player at a time (the hypotheses are refined in parallel; results do
@@ -51,14 +56,39 @@ struct PlayLimits {
 // The methods a player may switch between (names as in `clips assist`).
 const std::vector<std::string>& play_methods();
 
+// What a session plays: a grounded problem, its pack, the candidate goals and
+// cost profiles, and the reference plan when there is one.
+struct PlaySetup {
+  std::string dataset;  // the served dataset's name; "" for PDDL text
+  std::string problem;  // the problem's id in the dataset, or its PDDL name
+  std::shared_ptr<const data::Dataset> owner;  // keeps `plan` alive (null for text)
+  const data::PlanRecord* plan = nullptr;      // the reference plan; null: none
+  std::shared_ptr<const pddl::Task> task;
+  domains::PackPtr pack;
+  std::vector<data::GoalSpec> goals;
+  std::vector<model::CostProfile> profiles;
+  int true_goal = -1;  // index in goals; -1: unknown (no reference plan)
+};
+
+// A problem of a loaded dataset. `plan_id` picks the reference plan (cost
+// profiles, true goal, the observed moves offered as hints); empty: the
+// problem's first plan, or none when the problem has no plan (then the
+// candidate goals follow the pack's goal rule and the profiles its default).
+// `problem` must be one of ds->problem_ids() (never used as a path
+// otherwise). Throws InputError naming the field ('problem', 'plan').
+PlaySetup dataset_setup(std::shared_ptr<const data::Dataset> ds, std::string name, const std::string& problem,
+                        const std::string& plan_id);
+// A domain and problem as PDDL text, with the pack as JSON text ("": the one
+// the domain's name finds, else the generic pack). A pack sent as text may
+// not name files (fewshot.file, embedded_corpus). Throws InputError starting
+// "field 'domain'", "field 'problem'" or "field 'pack'".
+PlaySetup text_setup(const std::string& domain_pddl, const std::string& problem_pddl, const std::string& pack_json,
+                     const PlayLimits& limits);
+
 class PlaySession {
  public:
-  // `plan_id` picks the reference plan (cost profiles, true goal, the observed
-  // moves offered as hints); empty: the problem's first plan. Throws
-  // InputError naming the field for an unknown problem, plan or method.
-  PlaySession(std::shared_ptr<const data::Dataset> dataset, std::string dataset_name, const std::string& problem,
-              const std::string& plan_id, const std::string& method, std::shared_ptr<lm::LanguageModel> lm,
-              PlayLimits limits);
+  // Throws InputError naming the field for an unknown method.
+  PlaySession(PlaySetup setup, const std::string& method, std::shared_ptr<lm::LanguageModel> lm, PlayLimits limits);
 
   // Any agent's action as PDDL text, e.g. "(left human)". The assistant's own
   // actions are interventions (no evidence). InputError: not an action of the
@@ -76,6 +106,8 @@ class PlaySession {
   void reset();
   void set_method(const std::string& method);
 
+  // Every reply's session state (docs/api.md); the scene is data for any
+  // pack: grid, cards, or text (places, holdings, facts, what changed).
   nlohmann::json state() const;
   nlohmann::json posterior() const;
   nlohmann::json trace() const;
@@ -100,13 +132,14 @@ class PlaySession {
   std::string active_agent() const;
   std::optional<std::string> reached_goal() const;
   nlohmann::json scene() const;
+  nlohmann::json decision() const;
   nlohmann::json reading() const;
   nlohmann::json posterior_json(inference::Modality m) const;
   const language::ListenerResult& literal_reading() const;
 
   std::shared_ptr<const data::Dataset> ds_;
   std::string dataset_name_, problem_;
-  const data::PlanRecord* plan_ = nullptr;
+  const data::PlanRecord* plan_ = nullptr;  // null: no reference plan
   std::shared_ptr<const pddl::Task> task_;
   domains::PackPtr pack_;
   std::vector<data::GoalSpec> goals_;
@@ -120,12 +153,25 @@ class PlaySession {
   inference::InferenceOptions options_;
   std::optional<domains::DkgWorld> dkg_;
   std::optional<domains::VhWorld> vh_;
+  std::optional<TextScene> text_;
 
   std::unique_ptr<inference::Belief> belief_;
   inference::StepRecord last_;
   std::vector<Event> events_;
   std::vector<HistoryPoint> history_;
-  std::optional<nlohmann::json> last_decision_;
+  // The state before the last action (what changed, for text scenes).
+  std::optional<pddl::State> previous_;
+  // The assist results still in the history, oldest first, each with the
+  // number of events the history had after it (an applied decision's action
+  // is the last of them). The state shows the latest applied one whose
+  // action is still in the history (undo takes it back with the action), or
+  // a decision not applied while nothing has happened since.
+  struct Decided {
+    size_t events = 0;
+    bool applied = false;
+    nlohmann::json decision;
+  };
+  std::vector<Decided> decisions_;
   // The latest instruction and the state it was heard in (the literal listener reads it there).
   std::optional<std::string> utterance_;
   std::optional<pddl::State> utterance_state_;

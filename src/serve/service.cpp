@@ -2,6 +2,7 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -90,7 +91,8 @@ Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits lim
     std::string name = std::filesystem::path(dir).lexically_normal().filename().string();
     if (name.empty()) name = std::filesystem::path(dir).lexically_normal().parent_path().filename().string();
     if (datasets_.count(name)) throw InputError("--dataset " + dir + ": a dataset named '" + name + "' is already served");
-    datasets_[name] = std::make_shared<const data::Dataset>(data::Dataset::load(dir));
+    // A domain folder with problems but no recorded plans is served too.
+    datasets_[name].dataset = std::make_shared<const data::Dataset>(data::Dataset::load(dir, false));
   }
 }
 
@@ -146,28 +148,97 @@ std::shared_ptr<Service::Entry> Service::find(const std::string& id) {
 
 Reply Service::datasets() const {
   json out = json::array();
-  for (const auto& [name, ds] : datasets_) {
-    json problems = json::array();
+  for (const auto& [name, served] : datasets_) {
+    const data::Dataset& ds = *served.dataset;
     std::map<std::string, std::vector<std::string>> plans;
-    std::vector<std::string> order;
-    for (const auto& p : ds->plans()) {
-      if (!plans.count(p.problem_id)) order.push_back(p.problem_id);
-      plans[p.problem_id].push_back(p.id);
-    }
-    for (const auto& pid : order) problems.push_back({{"id", pid}, {"plans", plans[pid]}});
-    out.push_back({{"name", name}, {"domain", ds->pack().name()}, {"problems", std::move(problems)}});
+    for (const auto& p : ds.plans()) plans[p.problem_id].push_back(p.id);
+    json problems = json::array();
+    for (const auto& pid : ds.problem_ids()) problems.push_back({{"id", pid}, {"plans", plans[pid]}});
+    out.push_back({{"name", name},
+                   {"domain", ds.pack().name()},
+                   {"scene", domains::to_string(ds.pack().spec().scene)},
+                   {"problems", std::move(problems)}});
   }
-  return json_reply(200, json{{"datasets", std::move(out)}, {"methods", play_methods()}});
+  return json_reply(200, json{{"datasets", std::move(out)},
+                              {"methods", play_methods()},
+                              {"limits",
+                               {{"utterance_bytes", limits_.play.max_utterance_bytes},
+                                {"pddl_bytes", limits_.max_pddl_bytes},
+                                {"body_bytes", limits_.max_body_bytes}}}});
+}
+
+std::shared_ptr<lm::LanguageModel> Service::dataset_lm(Served& served) {
+  if (!domain_lm_) return lm_;
+  std::lock_guard lock(served.lm_mutex);
+  if (served.lm) return served.lm;
+  const data::Dataset& ds = *served.dataset;
+  // The problems of the recorded plans (as `clips infer` trains on), else every problem.
+  std::vector<std::string> ids;
+  for (const auto& p : ds.plans())
+    if (std::find(ids.begin(), ids.end(), p.problem_id) == ids.end()) ids.push_back(p.problem_id);
+  if (ids.empty()) ids = ds.problem_ids();
+  std::vector<std::shared_ptr<const pddl::Task>> tasks;
+  std::vector<const pddl::Problem*> problems;
+  for (const auto& id : ids) try {
+      tasks.push_back(ds.task(id));
+      problems.push_back(&tasks.back()->problem());
+    } catch (const InputError&) {
+      // A problem that does not ground has no session either.
+    }
+  served.lm = domain_lm_(ds.pack(), *ds.domain(), problems);
+  return served.lm;
+}
+
+std::shared_ptr<lm::LanguageModel> Service::text_lm(const PlaySetup& setup, const std::string& key) {
+  if (!domain_lm_) return lm_;
+  std::lock_guard lock(lm_mutex_);
+  for (auto& [k, m] : text_lms_)
+    if (k == key) return m;
+  auto m = domain_lm_(*setup.pack, setup.task->domain(), {&setup.task->problem()});
+  text_lms_.emplace_back(key, m);
+  if (text_lms_.size() > 8) text_lms_.erase(text_lms_.begin());  // the oldest goes
+  return m;
 }
 
 Reply Service::create(const std::string& body) {
-  const json j = parse_body(body, {"dataset", "problem", "plan", "method"});
-  const std::string dataset = string_field(j, "dataset", true);
-  const std::string problem = string_field(j, "problem", true);
-  const std::string plan = string_field(j, "plan", false);
+  const json j = parse_body(body, {"dataset", "domain", "method", "pack", "plan", "problem"});
   const std::string method = string_field(j, "method", false, "clips");
-  auto ds = datasets_.find(dataset);
-  if (ds == datasets_.end()) throw HttpError(400, "field 'dataset': no served dataset '" + dataset + "'");
+  const auto& known = play_methods();
+  if (std::find(known.begin(), known.end(), method) == known.end())
+    throw HttpError(400, "field 'method': unknown method '" + method + "' (known: clips, lang_only, action_only, literal)");
+  const bool from_text = j.contains("domain");
+  std::string dataset, problem, plan, domain_text, pack_text;
+  Served* served = nullptr;
+  if (from_text) {
+    // A session on PDDL text: "domain" and "problem" are PDDL, "pack" the pack (JSON text or object).
+    if (j.contains("dataset"))
+      throw HttpError(400, "field 'dataset': give either 'dataset' (a served dataset's problem id) or 'domain' "
+                           "and 'problem' (PDDL text), not both");
+    if (j.contains("plan")) throw HttpError(400, "field 'plan': a session from PDDL text has no recorded plan");
+    domain_text = string_field(j, "domain", true);
+    problem = string_field(j, "problem", true);
+    if (j.contains("pack")) {
+      if (j["pack"].is_object()) pack_text = j["pack"].dump();
+      else if (j["pack"].is_string()) pack_text = j["pack"].get<std::string>();
+      else throw HttpError(400, "field 'pack': expected a JSON object or a string holding one");
+    }
+    for (const auto& [name, text] : {std::pair<const char*, const std::string*>{"domain", &domain_text},
+                                     {"problem", &problem}, {"pack", &pack_text}})
+      if (text->size() > limits_.max_pddl_bytes)
+        throw HttpError(400, std::string("field '") + name + "': " + std::to_string(text->size()) +
+                                 " bytes exceeds the limit of " + std::to_string(limits_.max_pddl_bytes) +
+                                 " bytes (--max-pddl-bytes)");
+  } else {
+    if (j.contains("pack")) throw HttpError(400, "field 'pack': only with 'domain' (PDDL text)");
+    if (!j.contains("dataset"))
+      throw HttpError(400, "field 'dataset' is required (or 'domain' and 'problem' as PDDL text)");
+    dataset = string_field(j, "dataset", true);
+    problem = string_field(j, "problem", true);
+    plan = string_field(j, "plan", false);
+    auto ds = datasets_.find(dataset);
+    if (ds == datasets_.end()) throw HttpError(400, "field 'dataset': no served dataset '" + dataset + "'");
+    served = &ds->second;
+  }
   {
     std::lock_guard lock(mutex_);
     expire_locked(now_().time_since_epoch().count());
@@ -178,7 +249,15 @@ Reply Service::create(const std::string& body) {
   }
   auto entry = std::make_shared<Entry>();
   try {
-    entry->session = std::make_unique<PlaySession>(ds->second, dataset, problem, plan, method, lm_, limits_.play);
+    if (from_text) {
+      PlaySetup setup = text_setup(domain_text, problem, pack_text, limits_.play);
+      auto lm = text_lm(setup, domain_text + '\0' + pack_text + '\0' + problem);
+      entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), limits_.play);
+    } else {
+      PlaySetup setup = dataset_setup(served->dataset, dataset, problem, plan);
+      auto lm = dataset_lm(*served);
+      entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), limits_.play);
+    }
   } catch (...) {
     std::lock_guard lock(mutex_);
     --pending_;

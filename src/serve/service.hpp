@@ -24,6 +24,9 @@ namespace clips::serve {
 
 struct ServiceLimits {
   size_t max_body_bytes = 64 * 1024;
+  // Each PDDL or pack text of a session created from text ("domain",
+  // "problem", "pack"), in bytes.
+  size_t max_pddl_bytes = 32 * 1024;
   size_t max_sessions = 64;
   double idle_seconds = 30 * 60;  // a session untouched this long is deleted
   PlayLimits play;
@@ -42,6 +45,11 @@ struct Asset {
 };
 const std::map<std::string, Asset>& web_assets();  // "/index.html", "/app.js", ...
 
+// The language model for the sessions of one domain (its pack, PDDL domain
+// and the problems it will hear about); the server's own model when unset.
+using DomainLanguageModel = std::function<std::shared_ptr<lm::LanguageModel>(
+    const domains::Pack&, const pddl::Domain&, const std::vector<const pddl::Problem*>&)>;
+
 class Service {
  public:
   using Clock = std::chrono::steady_clock;
@@ -50,6 +58,11 @@ class Service {
   // their folder's base name. Throws InputError for a bad or repeated folder.
   Service(const std::vector<std::string>& dataset_dirs, ServiceLimits limits, std::shared_ptr<lm::LanguageModel> lm,
           std::function<Clock::time_point()> now = Clock::now);
+
+  // Call before serving: where the sessions of each domain get their
+  // language model (e.g. the embedded model trained on a domain's own
+  // corpus). Models are built at a domain's first session and kept.
+  void set_domain_language_model(DomainLanguageModel f) { domain_lm_ = std::move(f); }
 
   Reply handle(const std::string& method, const std::string& path, const std::string& body);
 
@@ -65,8 +78,16 @@ class Service {
     std::unique_ptr<PlaySession> session;
     std::atomic<int64_t> last_used{0};  // Clock ticks
   };
+  // A served folder: its dataset and, once a session needed it, its model.
+  struct Served {
+    std::shared_ptr<const data::Dataset> dataset;
+    std::mutex lm_mutex;  // held while its model is built: other folders' sessions do not wait
+    std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex
+  };
   std::shared_ptr<Entry> find(const std::string& id);
   Reply create(const std::string& body);
+  std::shared_ptr<lm::LanguageModel> dataset_lm(Served& served);
+  std::shared_ptr<lm::LanguageModel> text_lm(const PlaySetup& setup, const std::string& key);
   Reply datasets() const;
   Reply on_session(const std::string& method, const std::string& id, const std::string& op, const std::string& body);
   std::string new_id();
@@ -75,7 +96,10 @@ class Service {
   ServiceLimits limits_;
   std::shared_ptr<lm::LanguageModel> lm_;
   std::function<Clock::time_point()> now_;
-  std::map<std::string, std::shared_ptr<const data::Dataset>> datasets_;
+  std::map<std::string, Served> datasets_;
+  DomainLanguageModel domain_lm_;
+  std::mutex lm_mutex_;  // guards text_lms_; held while one of them is built
+  std::vector<std::pair<std::string, std::shared_ptr<lm::LanguageModel>>> text_lms_;  // newest last
   mutable std::mutex mutex_;  // guards sessions_, pending_, rng_
   std::map<std::string, std::shared_ptr<Entry>> sessions_;
   size_t pending_ = 0;  // sessions being created (they hold a slot)

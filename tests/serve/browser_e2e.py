@@ -1,11 +1,22 @@
 #!/usr/bin/python3
 """End-to-end test of the play page in headless Chromium, driven through the
-DevTools protocol (Debian python3-websocket): load the page, start mDKG
-problem 2 (reference plan 2.1.keys), type "Can you pass me the red key?",
-play the human's observed moves with the arrow keys, then keep playing the
-human's part of the completed plan (waiting when a move does not apply).
-Checks that the assistant picks up and hands over the key the true goal needs
-and that the posterior bars put the true gem ahead. Writes a screenshot.
+DevTools protocol (Debian python3-websocket), the way a person uses it.
+
+Doors-Keys-Gems, problem 2 (plan 2.1.keys), exactly as the README's quick
+start says: type "Can you pass me the red key?", press Enter and, without
+clicking anywhere, press the arrow keys (up three times, left six times) in
+quick succession, then W once. The keys pressed while the robot thinks are
+queued and all applied; the robot picks up the red key and hands it over.
+Then the instruction box's byte limit (300 x "é" is refused visibly, and a
+server rejection keeps the text), the chart's legend, the rest of the
+human's plan to the goal (buttons and keys; the board then takes no more
+moves), and "Why it acted" after undo and a method switch.
+
+Then two packs without pictures, in the page's text scene: the workshop
+dataset (problem 1) and the kitchen of docs/domains.md served from a folder
+without any plan file (problem 2, tests/serve/kitchen-2.pddl): action
+buttons, an instruction, the robot answering. Writes screenshots
+(SCREENSHOT, its -small copy for docs/img/serve.png, -workshop, -kitchen).
 
 usage: browser_e2e.py CLIPS_BINARY SOURCE_DIR SCREENSHOT_PNG
 """
@@ -26,7 +37,12 @@ from serve_harness import SKIP, Server, dataset_root  # noqa: E402
 
 import websocket  # Debian python3-websocket
 
-KEYS = {"up": ("ArrowUp", 38), "down": ("ArrowDown", 40), "left": ("ArrowLeft", 37), "right": ("ArrowRight", 39)}
+KEYS = {"up": ("ArrowUp", 38), "down": ("ArrowDown", 40), "left": ("ArrowLeft", 37), "right": ("ArrowRight", 39),
+        "w": ("w", 87)}
+
+# The README's quick start, key by key (checked against the README's words below).
+QUICK_START_WORDS = "up three times, then left six times, then W once"
+QUICK_START_KEYS = ["up"] * 3 + ["left"] * 6 + ["w"]
 
 
 class Browser:
@@ -83,6 +99,26 @@ class Browser:
         for kind in ("rawKeyDown", "keyUp"):
             self.call("Input.dispatchKeyEvent", type=kind, key=key, code=key, windowsVirtualKeyCode=code)
 
+    def enter(self):
+        """Enter as typed (keydown with its text, so that the form submits)."""
+        self.call("Input.dispatchKeyEvent", type="keyDown", key="Enter", code="Enter", windowsVirtualKeyCode=13,
+                  text="\r", unmodifiedText="\r")
+        self.call("Input.dispatchKeyEvent", type="keyUp", key="Enter", code="Enter", windowsVirtualKeyCode=13)
+
+    def type_into(self, element_id, text):
+        """Click into a text box and type (insertText, as an input method does)."""
+        self.js("document.getElementById(%s).focus()" % json.dumps(element_id))
+        self.call("Input.insertText", text=text)
+
+    def screenshot(self, path, clip=None):
+        params = {"format": "png"}
+        if clip:
+            params["clip"] = clip
+        png = self.call("Page.captureScreenshot", **params)
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(png["data"]))
+        print("screenshot: " + path)
+
     def close(self):
         try:
             self.ws.close()
@@ -92,7 +128,217 @@ class Browser:
             shutil.rmtree(self.profile, ignore_errors=True)
 
 
-IDLE = "window.clips && window.clips.session && !window.clips.busy"
+IDLE = "window.clips && window.clips.session && !window.clips.busy && window.clips.queue.length === 0"
+FOCUS_ON_BOARD = "document.activeElement && document.activeElement.id === 'board'"
+
+
+class Checks:
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, ok, what):
+        if not ok:
+            print("FAIL: " + what)
+            self.failures.append(what)
+        return ok
+
+
+def kitchen_folder(source_dir, root):
+    """The kitchen of docs/domains.md without any plan file, plus problem 2."""
+    sys.path.insert(0, os.path.join(source_dir, "tests", "domains"))
+    from docs_example_test import extract  # noqa: E402
+    with open(os.path.join(source_dir, "docs", "domains.md"), encoding="utf-8") as f:
+        files = extract(f.read())
+    for path, body in files.items():
+        if "/plans/" in path:
+            continue
+        full = os.path.join(root, path)
+        os.makedirs(os.path.dirname(full), exist_ok=True)
+        with open(full, "w", encoding="utf-8") as out:
+            out.write(body)
+    shutil.copy(os.path.join(source_dir, "tests", "serve", "kitchen-2.pddl"),
+                os.path.join(root, "kitchen", "problems", "2.pddl"))
+    return os.path.join(root, "kitchen")
+
+
+def start_session(browser, dataset, problem, plan=None, method="clips"):
+    old = browser.js("window.clips.session")
+    browser.js("""(() => {
+        const set = (id, v) => { const s = document.getElementById(id); s.value = v; s.dispatchEvent(new Event('change')); };
+        set('dataset', %s); set('problem', %s); if (%s !== null) set('plan', %s); set('method', %s);
+        document.getElementById('start').click(); })()""" % (
+        json.dumps(dataset), json.dumps(problem), json.dumps(plan), json.dumps(plan), json.dumps(method)))
+    browser.wait_for(IDLE + " && window.clips.state && window.clips.session !== %s" % json.dumps(old),
+                     "the session on %s problem %s to start" % (dataset, problem))
+    return browser.js("window.clips.state")
+
+
+def robot_log(browser):
+    return browser.js("[...document.querySelectorAll('#log li.robot')].map(li => li.textContent)")
+
+
+def click_action(browser, action):
+    """Clicks the button of an action; False when the page shows none."""
+    return browser.js("(() => { const b = [...document.querySelectorAll('#verbs button')]"
+                      ".find(b => b.dataset.action === %s); if (!b || b.disabled) return false; b.click(); return true; })()"
+                      % json.dumps(action))
+
+
+def play_quick_start(browser, source_dir, dkg, shot, check):
+    """The README's quick start on mDKG problem 2, then the page's details."""
+    with open(os.path.join(source_dir, "README.md"), encoding="utf-8") as f:
+        readme = " ".join(f.read().split())
+    check(QUICK_START_WORDS in readme, "the README's quick start no longer says '%s'" % QUICK_START_WORDS)
+    completed = [l.strip() for l in open(os.path.join(dkg, "plans", "completed", "2.1.keys.pddl"))
+                 if l.strip().startswith("(")]
+    state = start_session(browser, "doors-keys-gems", "2", "2.1.keys")
+    true_goal = state["true_goal"]
+
+    # Type the instruction, press Enter, and go straight on with the keys: the
+    # focus is back on the board, and keys pressed while requests are in
+    # flight are queued, not dropped.
+    browser.type_into("utterance", "Can you pass me the red key?")
+    browser.enter()
+    check(browser.js(FOCUS_ON_BOARD), "after Enter in the instruction box the focus is not on the board")
+    for k in QUICK_START_KEYS[:-1]:
+        browser.key(k)
+    browser.wait_for(IDLE, "the queued keys to be played")
+    state = browser.js("window.clips.state")
+    humans = [a for a in browser.js("[...document.querySelectorAll('#log li:not(.robot):not(.say):not(.err)')]"
+                                    ".map(li => li.textContent)") if a.startswith("(")]
+    moves = ["(%s human)" % k for k in QUICK_START_KEYS[:-1]]
+    check(humans == moves, "the queued keys were not all applied in order: %s" % humans)
+    check(state["t"] == 2 * len(moves), "after %d keys the step is %d, not %d" % (len(moves), state["t"], 2 * len(moves)))
+    check(browser.js("window.clips.maxQueued") >= 2, "the keys never waited in the queue (maxQueued %s)"
+          % browser.js("window.clips.maxQueued"))
+    check(state["reading"] is not None and state["reading"]["utterance"] == "Can you pass me the red key?",
+          "the instruction was not heard")
+    check(browser.js("document.getElementById('utterance').value") == "", "a heard instruction stayed in the box")
+    browser.key(QUICK_START_KEYS[-1])  # W: wait
+    browser.wait_for(IDLE + " && window.clips.state.t > %d" % state["t"], "the wait and the robot's reply")
+    log = robot_log(browser)
+    print("assistant actions: " + " ".join(log))
+    check("(pickup robot key2)" in log and "(handover robot human key2)" in log,
+          "the quick start did not reach the hand-over of the red key: %s" % log)
+    browser.screenshot(shot)
+    # A smaller copy of the page area for the README (docs/img/serve.png).
+    browser.screenshot(shot[:-4] + "-small.png", {"x": 0, "y": 0, "width": 1090, "height": 800, "scale": 0.6})
+
+    # The chart's legend: one entry per goal, every line drawn differently.
+    legend = browser.js("[...document.querySelectorAll('#legend .key')].map(k => [k.dataset.goal, k.dataset.dash, k.dataset.marker])")
+    goals = [g["goal"] for g in browser.js("window.clips.state.posterior.goals")]
+    check([l[0] for l in legend] == goals, "the legend lists %s, not the goals %s" % (legend, goals))
+    check(len({(l[1], l[2]) for l in legend}) == len(legend), "two lines of the chart look alike: %s" % legend)
+
+    # The instruction box counts UTF-8 bytes as the server does: 300 x "é" is
+    # 600 bytes, refused visibly and kept.
+    t = browser.js("window.clips.state.t")
+    history = len(browser.js("window.clips.state.history"))
+    browser.type_into("utterance", "\u00e9" * 300)
+    check(browser.js("document.getElementById('bytes').textContent") == "600/500 bytes", "the byte counter says %s"
+          % browser.js("document.getElementById('bytes').textContent"))
+    check(browser.js("document.getElementById('send').disabled"), "Say is enabled for 600 bytes")
+    check(not browser.js("document.getElementById('say-error').hidden") and
+          "Too long" in browser.js("document.getElementById('say-error').textContent"), "no visible 'too long' note")
+    browser.enter()
+    browser.wait_for(IDLE, "the page to settle")
+    check(len(browser.js("window.clips.state.history")) == history, "an over-long instruction was sent")
+    check(browser.js("document.getElementById('utterance').value") == "\u00e9" * 300, "an over-long instruction was lost")
+    # Should the server refuse one anyway, the text stays and the reason shows.
+    browser.js("window.clips.utteranceBytes = 100000; document.getElementById('utterance').dispatchEvent(new Event('input'))")
+    browser.js("document.getElementById('utterance').focus()")
+    browser.enter()
+    browser.wait_for(IDLE + " && !document.getElementById('say-error').hidden && "
+                     "document.getElementById('say-error').textContent.includes('Not heard')", "the server's refusal")
+    check("500 bytes" in browser.js("document.getElementById('say-error').textContent"),
+          "the refusal does not say the limit: " + browser.js("document.getElementById('say-error').textContent"))
+    check(browser.js("document.getElementById('utterance').value") == "\u00e9" * 300, "a refused instruction was cleared")
+    browser.js("window.clips.utteranceBytes = window.clips.catalogue.limits.utterance_bytes;"
+               "document.getElementById('utterance').value = ''; document.getElementById('utterance').dispatchEvent(new Event('input'))")
+    check(browser.js("window.clips.state.t") == t, "the refused instructions moved the game")
+
+    # The rest of the human's part of the completed plan, after the hand-over:
+    # buttons and keys; the focus returns to the board after each click.
+    rest = completed[completed.index("(handover robot human key2)") + 1:]
+    rest = [a for a in rest if a.split()[1].rstrip(")") == "human"]
+    steps = 0
+    while rest and steps < 30 and not browser.js("window.clips.state.reached_goal"):
+        action = rest[0] if rest[0] in browser.js("window.clips.state.actions") else "(wait human)"
+        if action == rest[0]:
+            rest.pop(0)
+        t0 = browser.js("window.clips.state.t")
+        verb = action[1:-1].split()[0]
+        if verb in KEYS:
+            browser.key(verb)
+        elif verb == "wait":
+            browser.key("w")
+        else:
+            check(click_action(browser, action), "no button for " + action)
+            check(browser.js(FOCUS_ON_BOARD), "after clicking %s the focus is not on the board" % action)
+        browser.wait_for(IDLE + " && window.clips.state.t > %d" % t0, "the turn after " + action)
+        steps += 1
+    final = browser.js("window.clips.state")
+    bars = browser.js("[...document.querySelectorAll('#bars .bar')].map(b => [b.dataset.goal, parseFloat(b.dataset.p)])")
+    print("posterior bars: " + ", ".join("%s=%.3f" % (g, p) for g, p in bars))
+    print("goal reached: %s after %d steps" % (final["reached_goal"], final["t"]))
+    check(final["reached_goal"] == true_goal, "the game did not end at the true goal %s" % true_goal)
+    check(max(bars, key=lambda b: b[1])[0] == true_goal, "the bars do not put the true goal %s ahead" % true_goal)
+
+    # After the goal the board takes no more moves, and says so.
+    check("Goal reached" in browser.js("document.getElementById('status').textContent"), "the status does not say the goal is reached")
+    check(browser.js("[...document.querySelectorAll('#controls button')].every(b => b.disabled)"),
+          "buttons stay live after the goal")
+    browser.key("up")
+    browser.wait_for("[...document.querySelectorAll('#log li.err')].some(li => li.textContent.includes('goal is reached'))",
+                     "the page to refuse a move after the goal")
+    browser.wait_for(IDLE, "the page to settle")
+    check(browser.js("window.clips.state.t") == final["t"], "a key moved the human after the goal")
+
+    # "Why it acted" keeps the decision still in the history after undo and a method switch.
+    browser.js("document.getElementById('undo').click()")
+    browser.wait_for(IDLE + " && window.clips.state.t < %d" % final["t"], "the undo")
+    state = browser.js("window.clips.state")
+    text = browser.js("document.getElementById('decision').textContent")
+    check(state["decision"] is not None and "has not acted" not in text and "Decided after step" in text,
+          "after undo 'Why it acted' says: " + text[:120])
+    browser.js("(() => { const s = document.getElementById('method'); s.value = 'lang_only';"
+               " s.dispatchEvent(new Event('change')); })()")
+    browser.wait_for(IDLE + " && window.clips.state.method === 'lang_only'", "the method switch")
+    text = browser.js("document.getElementById('decision').textContent")
+    check("before the switch to language-only" in text, "after a method switch 'Why it acted' says: " + text[:160])
+    check(browser.js(FOCUS_ON_BOARD), "after the method switch the focus is not on the board")
+
+
+def play_text_scene(browser, dataset, problem, plan, first, instruction, second, shot, check):
+    """A pack without pictures: its text scene, buttons, an instruction, the robot answering."""
+    state = start_session(browser, dataset, problem, plan)
+    check(state["scene"]["kind"] == "text", "%s: the scene is %s" % (dataset, state["scene"]["kind"]))
+    check(not browser.js("document.getElementById('textscene').hidden"), dataset + ": the text scene is hidden")
+    check(browser.js("document.getElementById('grid').hidden"), dataset + ": the grid is shown")
+    place = first.split()[-1].rstrip(")")
+    check(browser.js("!!document.querySelector('#textscene .card[data-place=%s]')" % json.dumps(place)),
+          "%s: no card for %s" % (dataset, place))
+    robot_before = len(robot_log(browser))
+    check(click_action(browser, first), "%s: no button for %s" % (dataset, first))
+    check(browser.js(FOCUS_ON_BOARD), dataset + ": after clicking a button the focus is not on the board")
+    browser.wait_for(IDLE + " && window.clips.state.t >= 2", dataset + ": the robot's reply")
+    browser.type_into("utterance", instruction)
+    browser.enter()
+    browser.wait_for(IDLE + " && window.clips.state.reading", dataset + ": the instruction to be heard")
+    check(browser.js("document.getElementById('utterance').value") == "", dataset + ": the heard instruction stayed")
+    t0 = browser.js("window.clips.state.t")
+    check(click_action(browser, second), "%s: no button for %s" % (dataset, second))
+    browser.wait_for(IDLE + " && window.clips.state.t > %d" % t0, dataset + ": the robot's reply to " + second)
+    state = browser.js("window.clips.state")
+    log = robot_log(browser)
+    print("%s problem %s: assistant actions %s; reading %s" % (
+        dataset, problem, " ".join(log), state["reading"]["commands"][:1]))
+    check(len(log) >= robot_before + 2, dataset + ": the robot did not answer both moves")
+    check(state["decision"] is not None and state["decision"]["candidates"], dataset + ": no decision with candidates")
+    check(state["turn"] == state["principal"], dataset + ": not the human's turn after the robot")
+    changed = browser.js("document.getElementById('changed').textContent")
+    check("+ " in changed, dataset + ": the scene does not show what changed: " + changed)
+    browser.screenshot(shot)
 
 
 def main():
@@ -101,13 +347,12 @@ def main():
     if not os.path.exists(os.path.join(dkg, "domain.pddl")):
         print("skipped: no dataset at " + dkg)
         return SKIP
-    completed = [l.strip() for l in open(os.path.join(dkg, "plans", "completed", "2.1.keys.pddl"))
-                 if l.strip().startswith("(")]
-    needed = [a for a in completed if re.match(r"\((pickup|handover) robot", a)]
-
-    server = Server(clips, [dkg])
+    workshop = os.path.join(source_dir, "data", "datasets", "workshop")
+    tmp = tempfile.mkdtemp(prefix="clips-e2e-kitchen-")
+    kitchen = kitchen_folder(source_dir, tmp)
+    check = Checks()
+    server = Server(clips, [dkg, workshop, kitchen])
     browser = Browser()
-    failures = []
     try:
         browser.call("Page.enable")
         browser.call("Runtime.enable")
@@ -115,92 +360,23 @@ def main():
         browser.call("Page.navigate", url=server.url)
         browser.wait_for("window.clips && window.clips.catalogue !== null && document.querySelectorAll('#problem option').length > 0",
                          "the dataset list")
-        browser.js("""(() => {
-            const set = (id, v) => { const s = document.getElementById(id); s.value = v; s.dispatchEvent(new Event('change')); };
-            set('dataset', 'doors-keys-gems'); set('problem', '2'); set('plan', '2.1.keys'); set('method', 'clips');
-            document.getElementById('start').click(); })()""")
-        browser.wait_for(IDLE + " && window.clips.state", "the session to start")
-        state = browser.js("window.clips.state")
-        true_goal = state["true_goal"]
-        moves = state["observed_moves"]
-        print("true goal %s; observed human moves %s" % (true_goal, moves))
-
-        # Type the instruction like a person: focus the box, insert the text, press the Say button.
-        browser.js("document.getElementById('utterance').focus()")
-        browser.call("Input.insertText", text="Can you pass me the red key?")
-        browser.js("document.getElementById('send').click()")
-        browser.wait_for(IDLE + " && window.clips.state.reading", "the instruction to be heard")
-
-        def play(action):
-            t0 = browser.js("window.clips.state.t")
-            verb = action[1:-1].split()[0]
-            if verb in KEYS:
-                browser.js("document.activeElement && document.activeElement.blur()")
-                browser.key(verb)
-            else:
-                ok = browser.js("(() => { const b = [...document.querySelectorAll('#verbs button')]"
-                                ".find(b => b.dataset.action === %s); if (!b) return false; b.click(); return true; })()"
-                                % json.dumps(action))
-                if not ok:
-                    raise AssertionError("no button for " + action)
-            browser.wait_for(IDLE + " && window.clips.state.t > %d && (window.clips.state.turn === 'human' "
-                             "|| window.clips.state.reached_goal)" % t0, "the turn after " + action)
-
-        for a in moves:
-            play(a)
-        # The rest of the human's part of the completed plan, in order; wait when a step does not apply yet.
-        rest = [a for a in completed if " human" in a.split(")")[0] and a.startswith("(") and a.split()[1].startswith("human")]
-        steps = 0
-        shot_taken = False
-
-        def screenshot():
-            png = browser.call("Page.captureScreenshot", format="png")
-            with open(shot, "wb") as f:
-                f.write(base64.b64decode(png["data"]))
-            # A smaller copy of the page area for the README (docs/img/serve.png).
-            small = browser.call("Page.captureScreenshot", format="png",
-                                 clip={"x": 0, "y": 0, "width": 1090, "height": 800, "scale": 0.6})
-            with open(shot[:-4] + "-small.png", "wb") as f:
-                f.write(base64.b64decode(small["data"]))
-            print("screenshot: " + shot)
-
-        while rest and steps < 40 and not browser.js("window.clips.state.reached_goal"):
-            legal = browser.js("window.clips.state.actions")
-            if rest[0] in legal:
-                play(rest.pop(0))
-            else:
-                play("(wait human)")
-            steps += 1
-            # The picture right after the hand-over shows the assistant's reasons for it.
-            if not shot_taken and browser.js("[...document.querySelectorAll('#log li.robot')]"
-                                             ".some(li => li.textContent.startsWith('(handover'))"):
-                screenshot()
-                shot_taken = True
-
-        log = browser.js("[...document.querySelectorAll('#log li.robot')].map(li => li.textContent)")
-        bars = browser.js("[...document.querySelectorAll('#bars .bar')].map(b => [b.dataset.goal, parseFloat(b.dataset.p)])")
-        final = browser.js("window.clips.state")
-        print("assistant actions: " + " ".join(log))
-        print("posterior bars: " + ", ".join("%s=%.3f" % (g, p) for g, p in bars))
-        print("goal reached: %s after %d steps" % (final["reached_goal"], final["t"]))
-        for a in needed:
-            if a not in log:
-                failures.append("the assistant never did " + a)
-        if needed and all(a in log for a in needed) and log.index(needed[0]) > log.index(needed[-1]):
-            failures.append("hand-over before pick-up")
-        top = max(bars, key=lambda b: b[1])
-        if top[0] != true_goal:
-            failures.append("posterior bars put %s ahead, not the true goal %s" % (top[0], true_goal))
-        if not shot_taken:
-            screenshot()
+        play_quick_start(browser, source_dir, dkg, shot, check)
+        play_text_scene(browser, "workshop", "1", "1.1.table", "(move human bench rack)",
+                        "Can you bring the big plank over to the bench?", "(pickup human plank1 rack)",
+                        shot[:-4] + "-workshop.png", check)
+        browser.js("(() => { const s = document.getElementById('dataset'); s.value = 'kitchen';"
+                   " s.dispatchEvent(new Event('change')); })()")
+        check(browser.js("[...document.querySelectorAll('#problem option')].map(o => o.value)") == ["1", "2"],
+              "the kitchen's problems are not listed")
+        play_text_scene(browser, "kitchen", "2", "", "(move cook counter pantry)", "Can you fetch the milk?",
+                        "(take cook flour1 pantry)", shot[:-4] + "-kitchen.png", check)
     finally:
         browser.close()
+        shutil.rmtree(tmp, ignore_errors=True)
         code = server.stop()
         if code != 0:
-            failures.append("server exit code %d" % code)
-    for f in failures:
-        print("FAIL: " + f)
-    return 1 if failures else 0
+            check(False, "server exit code %d" % code)
+    return 1 if check.failures else 0
 
 
 if __name__ == "__main__":
