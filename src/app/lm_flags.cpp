@@ -42,6 +42,11 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
                   "well as its greedy one, ties broken every way) or single (the one greedy rollout, the paper's "
                   "tables); default: the pack's inference.rollout.plans")
       ->check(CLI::IsMember({"single", "tied"}));
+  cmd->add_option("--utterance-noise", f.utterance_noise,
+                  "Weight in [0, 1) of the utterance model's noise: each goal's utterance likelihood is mixed with "
+                  "the mean over the goals, so one misread word cannot rule a goal out (0: the bare model); "
+                  "default: the pack's inference.utterance_noise")
+      ->check(CLI::Range(0.0, 0.999999));
 }
 
 void add_assistance_options(CLI::App* cmd, LmFlags& f) {
@@ -68,6 +73,7 @@ void apply_model_flags(const LmFlags& f, inference::InferenceOptions& io) {
   io.utterance.plans = parse_plans(f.speaker_plans);
   io.utterance_timing = inference::parse_utterance_timing(f.utterance_timing);
   io.assistant_turns = inference::parse_assistant_turns(f.assistant_turns);
+  if (f.utterance_noise >= 0) io.utterance_noise = f.utterance_noise;
 }
 
 void apply_model_flags(const LmFlags& f, eval::ExperimentOptions& eo) {
@@ -77,6 +83,7 @@ void apply_model_flags(const LmFlags& f, eval::ExperimentOptions& eo) {
   eo.assistant_turns = inference::parse_assistant_turns(f.assistant_turns);
   eo.qa_floor = assist::parse_qa_floor(f.qa_floor);
   if (!f.assist_rule.empty()) eo.assist_rule = assist::parse_assist_rule(f.assist_rule);
+  if (f.utterance_noise >= 0) eo.utterance_noise = f.utterance_noise;
 }
 
 language::LanguageModelOptions lm_options(const LmFlags& f) {

@@ -198,9 +198,17 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
   if (request_rule) {
     // Ties at the best value go to the action whose continuation (each
     // hypothesis' own plan after it) carries out most of the request.
+    // The tolerance in cost units: a share of the cheapest candidate's cost
+    // under the most probable hypothesis.
+    const Hypothesis* top = *std::max_element(live.begin(), live.end(),
+                                              [](const Hypothesis* a, const Hypothesis* b) { return a->weight < b->weight; });
+    double cheapest = kInf;
+    for (ActionId a : acts)
+      if (const double c = top->policy->spec().cost(a); c > 0) cheapest = std::min(cheapest, c);
+    const double tol = setup.tie_tolerance * (cheapest < kInf ? cheapest : 1.0);
     std::vector<size_t> tied;
     for (size_t i = 0; i < acts.size(); ++i)
-      if (qa[i] >= qa[best] - setup.tie_tolerance) tied.push_back(i);
+      if (qa[i] >= qa[best] - tol) tied.push_back(i);
     if (tied.size() > 1) {
       const RequestMatcher match(setup);
       const int steps = std::max(0, setup.horizon - t);
@@ -282,6 +290,13 @@ struct Episode {
   }
 
   bool principal_turn(const State& s) const { return task.test(s, principal_active); }
+
+  // The impatient principal (AssistSetup::impatient_principal): whether the
+  // principal's turn in `s` comes after a round in which nothing changed.
+  struct Patience {
+    std::optional<State> last;  // the state of the principal's previous turn
+    bool stuck(const State& s) const { return last && last->words == s.words; }
+  };
   ActionId wait_of_active(const State& s) const { return principal_turn(s) ? principal_wait : assistant_wait; }
 
   // Which completed-plan steps the principal has taken by rule 1, one flag
@@ -367,16 +382,21 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   bool solo = false;
   State s = setup.start;
   std::vector<bool> taken = ep.fresh_steps();
+  Episode::Patience patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     State s_h = s;
+    const bool stuck = setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
     if (coop < -kLog10) {
       solo = true;
+      s_h = model::freeze(task, s, setup.assistant);
+    } else if (stuck) {
       s_h = model::freeze(task, s, setup.assistant);
     }
     if (setup.refine) truth.refine(s_h, setup.refine_options);
     ActionId a;
     if (ep.principal_turn(s) || solo) {
-      a = ep.principal_action(truth, s_h, !solo, taken, t - setup.observed_steps);
+      if (ep.principal_turn(s)) patience.last = s;
+      a = ep.principal_action(truth, s_h, !solo && !stuck, taken, t - setup.observed_steps);
     } else {
       auto d0 = std::chrono::steady_clock::now();
       a = ep.qmdp_decide(belief, s, t);
@@ -409,11 +429,14 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
   double coop = 0;
   State s = setup.start;
   std::vector<bool> taken = ep.fresh_steps();
+  Episode::Patience patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     if (setup.refine) truth.refine(s, setup.refine_options);
     ActionId a;
     if (ep.principal_turn(s)) {
-      if (coop < -kLog10) {
+      const bool stuck = setup.impatient_principal && patience.stuck(s);
+      patience.last = s;
+      if (coop < -kLog10 || stuck) {
         // Lost trust: plan as if the assistant were frozen, keep acting on own turns only.
         State s_h = model::freeze(task, s, setup.assistant);
         if (setup.refine) truth.refine(s_h, setup.refine_options);
@@ -467,15 +490,19 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
       bool solo = false;
       State s = setup.start;
       std::vector<bool> taken = ep.fresh_steps();
+      Episode::Patience patience;
       for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
         if (!solo && coop < -kLog10) {
           s = model::freeze(task, s, setup.assistant);
           solo = true;
         }
-        if (setup.refine) truth.refine(s, setup.refine_options);
+        const bool stuck = !solo && setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
+        const State s_h = stuck ? model::freeze(task, s, setup.assistant) : s;
+        if (setup.refine) truth.refine(s_h, setup.refine_options);
         ActionId a;
         if (ep.principal_turn(s) || solo) {
-          a = ep.principal_action(truth, s, !solo, taken, t - setup.observed_steps);
+          if (ep.principal_turn(s)) patience.last = s;
+          a = ep.principal_action(truth, s_h, !solo && !stuck, taken, t - setup.observed_steps);
         } else {
           if (setup.refine) mine.refine(s, setup.refine_options);
           auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;

@@ -36,6 +36,9 @@ struct RequestedCommand {
 using Request = std::vector<RequestedCommand>;
 
 struct Hypothesis {
+  Hypothesis() = default;
+  Hypothesis(double w, std::shared_ptr<search::Policy> p, std::shared_ptr<const Request> r = nullptr)
+      : weight(w), policy(std::move(p)), request(std::move(r)) {}
   double weight = 0;
   std::shared_ptr<search::Policy> policy;  // owns its specification
   // What this hypothesis says the last instruction asked for (null: none
@@ -95,9 +98,19 @@ struct AssistSetup : model::TurnTaking {
   // (clips-spec-virtual-home.md 8.3).
   bool follow_plan_by_index = false;
   AssistRule rule = AssistRule::Request;
-  // Actions whose expected value is within this of the best are tied (cost
-  // units; ties are exact wherever two plans cost the same).
-  double tie_tolerance = 1e-6;
+  // The simulated principal does not wait for ever: at a turn where nothing
+  // changed since its last one (both agents waited), it plans as if the
+  // assistant were frozen, i.e. does the work itself. Without it a principal
+  // whose joint plan has the assistant fetch something the assistant does not
+  // believe in, and an assistant that waits for the principal, wait until the
+  // horizon. Set with the request rule (the paper's simulations keep spec 9.2).
+  bool impatient_principal = true;
+  // Actions whose expected value is within this share of the cheapest
+  // candidate action's cost of the best are tied. Exact ties are common
+  // wherever two plans cost the same; the tolerance also lets the assistant
+  // do what it was asked when unlikely goals make another action look a
+  // little better (a quarter of an action, in expectation).
+  double tie_tolerance = 0.25;
   // Per action schema: the 0-based argument positions of the acting agent and
   // the focal object of a salient action (commands are matched on them), or
   // {-1, -1} for schemas people do not ask for. Empty: no request is read.

@@ -138,8 +138,17 @@ int Pack::true_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& g
 
 // ---- costs ----------------------------------------------------------------------
 
+model::CostProfile Pack::default_profile() const {
+  if (spec_.roles.noop_cost == 1.0) return model::unit_profile();
+  model::CostProfile p = model::unit_profile();
+  p.name = "default";
+  for (const std::string& agent : {spec_.roles.principal, spec_.roles.assistant})
+    p.costs[{agent, spec_.roles.noop_action}] = spec_.roles.noop_cost;
+  return p;
+}
+
 ProfileSet Pack::profiles_for(const std::string& tag) const {
-  if (spec_.cost_profiles.empty()) return {{model::unit_profile()}, 0};
+  if (spec_.cost_profiles.empty()) return {{default_profile()}, 0};
   const ProfileRule* fallback = nullptr;
   for (const auto& r : spec_.cost_profiles) {
     if (r.tag == tag) return {r.profiles, r.true_index};
@@ -156,6 +165,7 @@ ProfileSet Pack::profiles_for(const std::string& tag) const {
 model::CostProfile Pack::cost_profile(const std::string& which) const {
   if (which == "unit") return model::unit_profile();
   if (which == "task") return model::task_costs_profile();
+  if (which == "default" && spec_.cost_profiles.empty()) return default_profile();
   std::vector<std::string> names;
   for (const auto& r : spec_.cost_profiles)
     for (const auto& p : r.profiles) {
@@ -163,7 +173,7 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
       if (std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
     }
   if (which.empty()) return model::unit_profile();
-  std::string known = "unit, task";
+  std::string known = spec_.cost_profiles.empty() ? "unit, task, default" : "unit, task";
   for (const auto& n : names) known += ", " + n;
   throw InputError("--costs '" + which + "' is not a cost profile of " + spec_.name + " (known: " + known + ")");
 }
@@ -486,6 +496,45 @@ void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain) {
   }
 }
 
+// ---- where objects are ---------------------------------------------------------------------
+
+namespace {
+
+// Predicates some action's effect adds or deletes (under when/forall too).
+void changed_predicates(const pddl::Effect& e, std::set<pddl::PredId>& out) {
+  if (e.kind == pddl::Effect::Kind::Add || e.kind == pddl::Effect::Kind::Del) out.insert(e.pred);
+  for (const auto& k : e.kids) changed_predicates(k, out);
+}
+
+}  // namespace
+
+std::vector<std::string> location_predicates(const pddl::Domain& d, const std::string& agent_type) {
+  std::vector<std::string> out;
+  const auto agent = d.find_type(agent_type);
+  if (!agent) return out;
+  std::set<pddl::PredId> changed;
+  for (const auto& a : d.actions) changed_predicates(a.effect, changed);
+  auto related = [&](pddl::TypeId a, pddl::TypeId b) { return d.is_subtype(a, b) || d.is_subtype(b, a); };
+  auto agentish = [&](pddl::TypeId t) { return related(t, *agent) && t != 0; };
+  std::vector<pddl::TypeId> places;
+  for (pddl::PredId p : changed) {
+    const auto& types = d.predicates[static_cast<size_t>(p)].arg_types;
+    if (types.size() == 2 && agentish(types[0]) && !agentish(types[1]) && types[1] != 0) places.push_back(types[1]);
+  }
+  for (pddl::PredId p : changed) {
+    const auto& types = d.predicates[static_cast<size_t>(p)].arg_types;
+    if (types.size() != 2 || agentish(types[0]) || types[0] == 0) continue;
+    if (std::any_of(places.begin(), places.end(), [&](pddl::TypeId t) { return related(types[1], t); }))
+      out.push_back(d.predicates[static_cast<size_t>(p)].name);
+  }
+  return out;
+}
+
+void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain) {
+  if (!spec.language.locations_auto) return;
+  spec.language.location_predicates = location_predicates(domain, spec.roles.agent_type);
+}
+
 // ---- finding a pack -----------------------------------------------------------------
 
 PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
@@ -516,6 +565,7 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     spec->transform = plan_task_transform(*spec, domain);
   }
   derive_goal_atoms(*spec, domain);
+  derive_location_predicates(*spec, domain);
   return make_pack(std::move(*spec));
 }
 

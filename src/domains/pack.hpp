@@ -51,9 +51,12 @@ enum class TurnMode {
 // no-op action, turn predicate) are model::TurnTaking's.
 struct Roles : model::TurnTaking {
   int horizon = 100;                 // assistance episodes stop after this many steps
-  // The principal's no-op cost in the assistance value (the true profile's
-  // no-op cost in mDKG, 1 elsewhere).
-  double noop_cost = 1.0;
+  // What doing nothing costs: the principal's no-op in the assistance value,
+  // and, for a pack without cost_profiles, both agents' no-op in the default
+  // profile (every other action 1). Below 1 so that equally short plans do
+  // not differ by needless actions (the paper's profiles: 0.6); VirtualHome
+  // sets 1 (unit costs).
+  double noop_cost = 0.6;
   // The principal's simulated moves also take the k-th completed-plan action
   // when it is legal, even off the completed trajectory (VirtualHome).
   bool principal_follows_completed_plan = false;
@@ -146,6 +149,13 @@ struct InferenceSettings {
   double temperature_shape = 0.5;  // inverse-gamma prior on the Boltzmann temperature
   double temperature_scale = 1.0;
   RolloutSettings rollout;
+  // The weight ε of the utterance model's noise: P(u | h) is read as
+  // (1 - ε) P(u | h) + ε B(u), where B(u) is the mean of P(u | h') over the
+  // hypotheses, so no reading can make a goal more than about 1/ε times
+  // less likely than the others (inference/belief.hpp). 0: the bare model
+  // (the paper packs, for their tables). Fitted on the dev halves of the
+  // repo's own datasets (docs/decisions.md, "Robust utterance evidence").
+  double utterance_noise = 0.1;
 };
 
 struct LiteralSettings {
@@ -275,6 +285,9 @@ class Pack {
 
   // ---- costs ----
   ProfileSet profiles_for(const std::string& tag) const;
+  // The one profile of a pack without cost_profiles: every action 1, both
+  // agents' no-op roles.noop_cost ("unit" when that is 1).
+  model::CostProfile default_profile() const;
   // The default candidate profiles (a live session without a tag).
   std::vector<model::CostProfile> default_profiles() const { return profiles_for("").profiles; }
   // A profile by user-facing name: "unit", "task", or a declared profile's
@@ -378,6 +391,14 @@ std::vector<std::string> goal_atoms_from_effects(const pddl::Domain& domain, con
 // whose effects say something, see above) and lists them in
 // PackSpec::derived_goal_atoms.
 void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain);
+// The predicates that say where an object is (language.location_predicates),
+// when the pack leaves them to "auto": the places are the types of the second
+// argument of a binary predicate some action changes for an agent (where an
+// agent is, (at ?a - agent ?s - station)); a location predicate relates a
+// non-agent first argument to such a place and some action changes it
+// ((on ?i - item ?s - station)).
+std::vector<std::string> location_predicates(const pddl::Domain& domain, const std::string& agent_type);
+void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
 
 // The pack for a domain:
 //   1. `<dir>/pack.json` when `dir` is given and holds one;

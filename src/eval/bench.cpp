@@ -1,5 +1,7 @@
 #include "eval/bench.hpp"
 
+#include "eval/breakdown.hpp"
+
 #include <fmt/core.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -355,6 +357,8 @@ std::string summary_json(const BenchReport& r) {
     methods[s.method] = m;
   }
   j["methods"] = methods;
+  // By split, by instruction category, and the calibration of the goal posteriors.
+  j.update(breakdown_json(breakdown(r)));
   return j.dump(2) + "\n";
 }
 
@@ -468,6 +472,11 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
     for (auto& p : r.plans)
       if (!p.error.empty()) out += fmt::format("  {}: {}\n", p.plan_id, p.error);
   }
+  // A method that failed on a plan is left out of its averages only.
+  for (auto& p : r.plans)
+    for (auto& m : p.methods)
+      if (!m.error.empty()) out += fmt::format("{} failed on {}: {}\n", m.method, p.plan_id, m.error);
+  out += breakdown_table(breakdown(r));
   return out;
 }
 

@@ -78,6 +78,9 @@ ojson plan_json(const PlanOutcome& p) {
           {"true_options", p.true_options},
           {"goal_posterior_steps", matrix(p.goal_posterior_steps)},
           {"utterance_warnings", p.utterance_warnings},
+          {"split", p.split},
+          {"categories", p.categories},
+          {"instruction_step", p.instruction_step},
           {"seconds", real(p.seconds)},
           {"error", p.error},
           {"methods", methods}};
@@ -209,6 +212,10 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   p.true_options = in.texts(j, "true_options", at);
   p.goal_posterior_steps = in.matrix(j, "goal_posterior_steps", at);
   p.utterance_warnings = in.texts(j, "utterance_warnings", at);
+  // Outcomes written before instruction tables existed have none.
+  if (j.contains("split")) p.split = in.text(j, "split", at);
+  if (j.contains("categories")) p.categories = in.texts(j, "categories", at);
+  if (j.contains("instruction_step")) p.instruction_step = static_cast<int>(in.integer(j, "instruction_step", at));
   p.seconds = in.real(j, "seconds", at);
   p.error = in.text(j, "error", at);
   const std::string here = FieldReader::join(at, "methods");

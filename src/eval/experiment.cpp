@@ -45,6 +45,7 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   inference::InferenceOptions io;
   io.utterance.speaker_rule = opts.speaker_rule;
   io.utterance.plans = opts.speaker_plans;
+  io.utterance_noise = opts.utterance_noise;
   io.threads = opts.inference_threads;
   io.utterance_timing = opts.utterance_timing;
   io.assistant_turns = opts.assistant_turns;
@@ -110,6 +111,9 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
   auto t0 = std::chrono::steady_clock::now();
   PlanOutcome out;
   out.plan_id = p.id;
+  out.split = p.split;
+  out.categories = p.categories;
+  if (!p.observed.utterances.empty()) out.instruction_step = p.observed.utterances.back().index;
   try {
     auto task = ds.task(p.problem_id);
     const domains::Pack& pack = ds.pack();

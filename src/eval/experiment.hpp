@@ -55,6 +55,12 @@ struct PlanOutcome {
   std::exception_ptr failure;  // the exception behind `error` (its type tells input from LM failures)
   // (issue 8) CLIPS goal posterior after each observed step ([0]: at s_0), for pictures.
   std::vector<std::vector<double>> goal_posterior_steps;
+  // From the dataset's instructions.tsv (data::PlanRecord): "dev", "test" or
+  // "" and the instruction's categories; and the step whose posterior is the
+  // one after the (last) instruction (-1: the plan has none).
+  std::string split;
+  std::vector<std::string> categories;
+  int instruction_step = -1;
   const MethodResult* find(const std::string& m) const;
 };
 
@@ -66,6 +72,8 @@ struct ExperimentOptions {
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   // Which plans the speaker model may mean; nullopt: the pack's.
   std::optional<domains::RolloutSettings::Plans> speaker_plans;
+  // The utterance model's noise (InferenceOptions::utterance_noise); nullopt: the pack's.
+  std::optional<double> utterance_noise;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   inference::AssistantTurns assistant_turns = inference::AssistantTurns::Taken;
   // Which Q-values Q_MDP floors at the cost of waiting to the horizon.

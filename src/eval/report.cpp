@@ -1,5 +1,7 @@
 #include "eval/report.hpp"
 
+#include "eval/breakdown.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -269,6 +271,21 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
        "\u25c6: the paper's mean.</p>\n<div class=\"charts\">\n";
   for (auto& c : kColumns) h += metric_svg(c, r, paper);
   h += "</div>\n";
+
+  // ---- splits, instruction categories, calibration
+  if (const Breakdown b = breakdown(r); !b.empty()) {
+    if (!b.splits.empty() || !b.categories.empty())
+      h += "<h2>By split and by instruction category</h2>\n<pre class=\"breakdown\">" +
+           html_escape(breakdown_table(Breakdown{b.splits, b.categories, {}})) + "</pre>\n";
+    if (!b.calibration.empty()) {
+      h += "<h2>Calibration of the goal posterior after the instruction</h2>\n<p class=\"meta\">Every candidate "
+           "goal of every plan is one forecast: its posterior probability after the instruction against whether it "
+           "was the true goal, in ten bins. Dashed: perfect calibration; dot size: the bin's share of the "
+           "forecasts.</p>\n<div class=\"charts\">\n";
+      for (const auto& c : b.calibration) h += reliability_svg(c);
+      h += "</div>\n";
+    }
+  }
 
   // ---- per-plan rows
   h += "<h2>Plans</h2>\n<table class=\"plans\">\n<tr><th>plan</th><th>utterance / true goal</th><th>P(true goal)<br>CLIPS"

@@ -66,6 +66,8 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
   check_options(options_);
   const domains::InferenceSettings& settings = pack_->spec().inference;
   search_ = options_.search.value_or(settings.search);
+  noise_ = options_.utterance_noise.value_or(settings.utterance_noise);
+  if (!(noise_ >= 0 && noise_ < 1)) throw InputError("utterance noise must be in [0, 1), not " + std::to_string(noise_));
   const std::string hname = options_.heuristic.empty() ? settings.heuristic : options_.heuristic;
   const TemperatureWeights prior = options_.temperature_prior.value_or(
       inverse_gamma_prior(settings.temperature_shape, settings.temperature_scale));
@@ -236,6 +238,16 @@ std::vector<SpeakerPlans> Belief::speaker_plans(const pddl::State& s, const std:
   return out;
 }
 
+std::vector<commands::Command> Belief::goal_statements(const pddl::State& s, const std::vector<int>& hs) const {
+  std::vector<commands::Command> out(hs.size());
+  if (utterance_model_->config().goal_statements <= 0) return out;
+  for (size_t i = 0; i < hs.size(); ++i) {
+    const data::GoalSpec& g = goals_[static_cast<size_t>(hyps_[static_cast<size_t>(hs[i])].goal)];
+    out[i] = utterance_model_->goal_statement(g.label, g.condition, s);
+  }
+  return out;
+}
+
 std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
                                                       lm::LanguageModel* lm, bool speak_factor) {
   std::vector<UtteranceRecord> out;
@@ -248,21 +260,45 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
   if (!lm) throw InputError("an utterance was observed but no language model was given");
   std::vector<int> all(policies_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
-  auto scores = utterance_model_->score(speaker_plans(s, all), s, utterances, *lm);
+  auto scores = utterance_model_->score(speaker_plans(s, all), goal_statements(s, all), s, utterances, *lm);
   for (size_t u = 0; u < utterances.size(); ++u) {
     UtteranceRecord rec;
     rec.text = utterances[u];
     rec.hypotheses = std::move(scores[u]);
+    rec.log_background = log_background(rec.hypotheses, noise_);
     weigh_utterance(rec);
     if (rec.evidence_weight > 0)
       for (size_t h = 0; h < hyps_.size(); ++h) {
-        const double ll = rec.hypotheses[h].log_likelihood;
+        const double ll = robust(rec.hypotheses[h].log_likelihood, rec.log_background);
         // w * ll with w in (0, 1]; a NaN score counts as impossible.
         utterance_ll_[h] += std::isnan(ll) ? kNegInf : (rec.evidence_weight == 1 ? ll : rec.evidence_weight * ll);
       }
     out.push_back(std::move(rec));
   }
   return out;
+}
+
+double log_background(const std::vector<HypothesisUtterance>& hs, double noise) {
+  if (noise <= 0) return kNegInf;
+  double hi = kNegInf;
+  size_t n = 0;
+  for (const auto& h : hs)
+    if (!std::isnan(h.log_likelihood)) {
+      hi = std::max(hi, h.log_likelihood);
+      ++n;
+    }
+  if (n == 0 || hi == kNegInf) return kNegInf;
+  double z = 0;
+  for (const auto& h : hs)
+    if (!std::isnan(h.log_likelihood)) z += std::exp(h.log_likelihood - hi);
+  return hi + std::log(z / static_cast<double>(n));
+}
+
+double Belief::robust(double ll, double log_b) const {
+  if (noise_ <= 0 || std::isnan(ll) || log_b == kNegInf) return ll;
+  const double a = std::log1p(-noise_) + ll, b = std::log(noise_) + log_b;
+  const double hi = std::max(a, b);
+  return hi + std::log(std::exp(a - hi) + std::exp(b - hi));
 }
 
 double evidence_weight(double share, const InferenceOptions& o) {

@@ -42,6 +42,7 @@
 // each refinement is done at most once per hypothesis). Hypotheses no
 // particle holds keep stale policies; see sync_policies for assistance.
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -115,6 +116,13 @@ struct InferenceOptions {
   // An utterance impossible under every hypothesis is ignored. Both are
   // reported in UtteranceRecord::warning. false: the model's scores as they are.
   bool temper_unreadable = true;
+  // The utterance model's noise ε (domains::InferenceSettings::utterance_noise):
+  // each hypothesis' utterance likelihood L_h enters as (1 - ε) L_h + ε B,
+  // B the mean of L over the hypotheses scored (in particle mode, those held
+  // when the utterance is first heard; later replays reuse that B). Under a
+  // uniform prior this is the language posterior mixed with uniform at ε.
+  // nullopt: the pack's.
+  std::optional<double> utterance_noise;
   double readable_share_none = 0.25;
   double readable_share_full = 0.5;
   // Threads refining the hypotheses' policies in parallel (they are
@@ -183,11 +191,18 @@ struct UtteranceRecord {
   // less for text the model mostly cannot read, 0 when ignored.
   double readable_share = 1;
   double evidence_weight = 1;
+  // log B, the noise component of the robust likelihood (see
+  // InferenceOptions::utterance_noise); -inf when it is off.
+  double log_background = -std::numeric_limits<double>::infinity();
   std::string warning;  // non-empty when the weight is below 1: why, for the user
 };
 
 // The weight an utterance's log-likelihoods get from its readable share.
 double evidence_weight(double readable_share, const InferenceOptions& options);
+// log B of InferenceOptions::utterance_noise: the log of the mean likelihood
+// over the scored hypotheses (NaN ones, not scored, left out); -inf when
+// `noise` is 0 or nothing was scored.
+double log_background(const std::vector<HypothesisUtterance>& hypotheses, double noise);
 
 // What one step observed and the belief after it (a Gen-style trace entry).
 struct StepRecord {
@@ -279,6 +294,7 @@ class Belief {
     bool keep_stored = false;               // Refine: as RefineWhat::keep_stored
     std::vector<std::string> texts{};       // Speak
     std::vector<double> weights{};          // Speak: each text's evidence weight (set when first scored)
+    std::vector<double> backgrounds{};      // Speak: each text's log B (set when first scored)
     double before = 0, after = 0;           // Speak: goal-independent log factors around the texts
   };
   // What a step refines at s.
@@ -327,6 +343,9 @@ class Belief {
   // The plans each hypothesis' speaker may have in mind at s (the utterance
   // model's rule; tie-breaking rollouts refine the policies, in parallel).
   std::vector<SpeakerPlans> speaker_plans(const pddl::State& s, const std::vector<int>& hs);
+  // Each hypothesis' goal statement (UtteranceModel::goal_statement), or none
+  // when the pack's language has goal_statements 0.
+  std::vector<commands::Command> goal_statements(const pddl::State& s, const std::vector<int>& hs) const;
   // Scores `utterances` in s and adds them to the utterance part; with
   // speak_factor, also this step's goal-independent speak/no-speak factor.
   std::vector<UtteranceRecord> score_utterances(const pddl::State& s, const std::vector<std::string>& utterances,
@@ -343,6 +362,9 @@ class Belief {
   std::vector<model::CostProfile> profiles_;
   InferenceOptions options_;
   bool search_ = true;
+  double noise_ = 0;  // utterance noise ε (InferenceOptions::utterance_noise)
+  // The robust log-likelihood of one hypothesis (see utterance_noise).
+  double robust(double ll, double log_background) const;
   std::shared_ptr<const UtteranceModel> utterance_model_;
   std::vector<Hypothesis> hyps_;
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)

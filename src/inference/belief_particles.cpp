@@ -59,12 +59,14 @@ void Belief::apply_event(const Event& e, const std::vector<int>& hs) {
   for (int h : hs) utterance_ll_[h] += e.before;
   if (!e.texts.empty()) {
     if (!lm_) throw InputError("replaying an utterance needs the language model that scored it");
-    const auto scores = utterance_model_->score(speaker_plans(e.state, hs), e.state, e.texts, *lm_);
+    const auto scores =
+        utterance_model_->score(speaker_plans(e.state, hs), goal_statements(e.state, hs), e.state, e.texts, *lm_);
     for (size_t u = 0; u < e.texts.size(); ++u) {
       const double w = e.weights.at(u);
+      const double log_b = e.backgrounds.at(u);
       if (w > 0)
         for (size_t i = 0; i < hs.size(); ++i) {
-          const double ll = scores[u][i].log_likelihood;
+          const double ll = robust(scores[u][i].log_likelihood, log_b);
           utterance_ll_[hs[i]] += std::isnan(ll) ? kNegInf : (w == 1 ? ll : w * ll);
         }
     }
@@ -122,19 +124,24 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
     sync(need, end - 1);
     for (int h : need) utterance_ll_[h] += last.before;
     std::vector<std::vector<HypothesisUtterance>> scores(last.texts.size());
-    if (!need.empty()) scores = utterance_model_->score(speaker_plans(last.state, need), last.state, last.texts, *lm);
+    if (!need.empty())
+      scores = utterance_model_->score(speaker_plans(last.state, need), goal_statements(last.state, need), last.state,
+                                       last.texts, *lm);
     last.weights.assign(last.texts.size(), 0.0);
+    last.backgrounds.assign(last.texts.size(), kNegInf);
     for (size_t u = 0; u < last.texts.size(); ++u) {
       UtteranceRecord rec;
       rec.text = last.texts[u];
       // Hypotheses no particle holds are not scored: NaN log-likelihood.
       rec.hypotheses.assign(hyps_.size(), HypothesisUtterance{std::numeric_limits<double>::quiet_NaN(), {}});
       for (size_t i = 0; i < need.size(); ++i) rec.hypotheses[need[i]] = std::move(scores[u][i]);
+      rec.log_background = log_background(rec.hypotheses, noise_);
       weigh_utterance(rec);
       last.weights[u] = rec.evidence_weight;
+      last.backgrounds[u] = rec.log_background;
       if (rec.evidence_weight > 0)
         for (int h : need) {
-          const double ll = rec.hypotheses[h].log_likelihood;
+          const double ll = robust(rec.hypotheses[h].log_likelihood, rec.log_background);
           utterance_ll_[h] += std::isnan(ll) ? kNegInf : (rec.evidence_weight == 1 ? ll : rec.evidence_weight * ll);
         }
       out.push_back(std::move(rec));

@@ -3,6 +3,7 @@
 #include "util/data_dir.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -63,10 +64,12 @@ UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::
     type_of_[t.object_name(o)] = dom.types[t.problem().objects[o].type].name;
   // Qualifier candidates: every (object, value) pair whose atom is dynamic or
   // statically true; the state decides among dynamic ones.
-  for (const std::string& name : config_.qualifiers()) {
+  std::vector<std::string> described = config_.qualifiers();
+  described.insert(described.end(), config_.location_predicates.begin(), config_.location_predicates.end());
+  for (const std::string& name : described) {
     QualifierAtoms q{name, {}};
     if (auto pred = dom.find_predicate(name); pred && dom.predicates[*pred].arg_types.size() == 2) {
-      const int obj_pos = config_.qualifier_object_arg - 1;
+      const int obj_pos = config_.is_location(name) ? 0 : config_.qualifier_object_arg - 1;
       for (int o = 0; o < t.num_objects(); ++o)
         for (int v = 0; v < t.num_objects(); ++v) {
           std::vector<pddl::ObjectId> args(2);
@@ -99,7 +102,8 @@ std::vector<commands::Term> UtteranceModel::qualifiers(const std::string& object
     for (const auto& [value, ref] : it->second)
       if (task_->test(s, ref)) {
         commands::Term t{q.predicate, {}};
-        t.args = config_.qualifier_object_arg == 1 ? std::vector<std::string>{object, value}
+        t.args = config_.qualifier_object_arg == 1 || config_.is_location(q.predicate)
+                     ? std::vector<std::string>{object, value}
                                                    : std::vector<std::string>{value, object};
         out.push_back(std::move(t));
         break;
@@ -199,6 +203,67 @@ std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(const std::v
                                                                     const pddl::State& s,
                                                                     const std::vector<std::string>& utterances,
                                                                     lm::LanguageModel& lm) const {
+  return score(plans, {}, s, utterances, lm);
+}
+
+namespace {
+
+// The words of a name: split on '-', '_' and spaces, lower case, no digits.
+std::vector<std::string> name_words(const std::string& name) {
+  std::vector<std::string> out;
+  std::string w;
+  auto flush = [&] {
+    if (!w.empty()) out.push_back(w);
+    w.clear();
+  };
+  for (char c : name) {
+    if (c == '-' || c == '_' || std::isspace(static_cast<unsigned char>(c))) flush();
+    else if (std::isalpha(static_cast<unsigned char>(c))) w.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  }
+  flush();
+  return out;
+}
+
+}  // namespace
+
+commands::Command UtteranceModel::goal_statement(const std::string& label, const std::string& condition,
+                                                 const pddl::State& s) const {
+  commands::Command c;
+  c.printed_form = commands::PrintedForm::WhereClause;
+  c.actions.push_back({"make", {config_.speaker_pronoun, "?goal1"}});
+  c.variables.push_back({"goal1", "goal"});
+  std::vector<std::string> words;
+  auto add = [&](const std::string& w) {
+    if (w.size() > 1 && std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
+  };
+  for (const auto& w : name_words(label)) add(w);
+  // The objects the condition names (not the agents), and their qualifiers.
+  std::string token;
+  auto object = [&](const std::string& name) {
+    if (name.empty() || name == config_.speaker || name == config_.listener || !task_->find_object(name)) return;
+    for (const auto& w : name_words(name)) add(w);
+    for (const auto& q : qualifiers(name, s))
+      for (const auto& a : q.args)
+        if (a != name)
+          for (const auto& w : name_words(a)) add(w);
+  };
+  for (char ch : condition + " ") {
+    if (ch == '(' || ch == ')' || std::isspace(static_cast<unsigned char>(ch))) {
+      object(token);
+      token.clear();
+    } else {
+      token.push_back(ch);
+    }
+  }
+  for (const auto& w : words) c.predicates.push_back({"named", {"?goal1", w}});
+  return c;
+}
+
+std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(const std::vector<SpeakerPlans>& plans,
+                                                                    const std::vector<commands::Command>& goals,
+                                                                    const pddl::State& s,
+                                                                    const std::vector<std::string>& utterances,
+                                                                    lm::LanguageModel& lm) const {
   std::vector<std::vector<HypothesisUtterance>> out(utterances.size(),
                                                     std::vector<HypothesisUtterance>(plans.size()));
   if (utterances.empty() || plans.empty()) return out;
@@ -211,10 +276,14 @@ std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(const std::v
   for (size_t h = 0; h < plans.size(); ++h) {
     double no_command = 0;
     cmds[h] = weighted_commands(plans[h], s, no_command);
+    const double gamma = h < goals.size() && !goals[h].predicates.empty() ? config_.goal_statements : 0.0;
+    // Plans with no command speak under the empty prompt (all of them: 1).
+    const double empty_weight = (cmds[h].empty() ? 1.0 : no_command) * (1 - gamma);
+    for (WeightedCommand& c : cmds[h]) c.weight *= 1 - gamma;
+    if (gamma > 0) cmds[h].push_back({goals[h], gamma});
     for (const WeightedCommand& c : cmds[h])
       prompts[h].push_back({commands::build_prompt(examples_, c.command.llm_form()), c.weight});
-    if (no_command > 0 || cmds[h].empty())
-      prompts[h].push_back({std::string(commands::kEmptyCommandPrompt), cmds[h].empty() ? 1.0 : no_command});
+    if (empty_weight > 0) prompts[h].push_back({std::string(commands::kEmptyCommandPrompt), empty_weight});
     per_utterance += prompts[h].size();
   }
   std::vector<lm::ScoreRequest> batch;

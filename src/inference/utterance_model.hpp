@@ -16,6 +16,12 @@
 //      salient actions (speaker actions removed), uniform prior 1/|C_p|.
 //   4. P(u | s, π_h) = Σ_p w_p Σ_{c in C_p} (1/|C_p|) P_LM(u | prompt(c)); a
 //      plan with no command scores the single prompt "\n" with its w_p.
+//   5. With the pack's goal_statements share γ > 0 the speaker may instead
+//      state the goal: P(u | s, h) = (1 - γ) (step 4) + γ P_LM(u | prompt(G_h))
+//      with G_h = (make me ?goal1) where (named ?goal1 w) ... over the words
+//      of the goal's label, of the objects its condition names and of their
+//      qualifier values ("pot-roses" -> pot, roses; (has human gem1) -> gem,
+//      red). So "we're making the frame" is evidence for the frame.
 // The per-command posterior P(c | u, s, π_h) is a by-product, with the ground
 // actions each command was lifted from (what the assistant would carry out).
 // All prompts of all hypotheses (and utterances) go to the LM in one batch.
@@ -117,6 +123,16 @@ class UtteranceModel {
   std::vector<std::vector<HypothesisUtterance>> score(const std::vector<SpeakerPlans>& plans, const pddl::State& s,
                                                       const std::vector<std::string>& utterances,
                                                       lm::LanguageModel& lm) const;
+  // The same, where the speaker of hypothesis h may also state its goal
+  // (step 5): `goals[h]` is its goal statement (goal_statement()).
+  std::vector<std::vector<HypothesisUtterance>> score(const std::vector<SpeakerPlans>& plans,
+                                                      const std::vector<commands::Command>& goals,
+                                                      const pddl::State& s,
+                                                      const std::vector<std::string>& utterances,
+                                                      lm::LanguageModel& lm) const;
+  // The goal statement G_h of a goal (label and condition) in state s.
+  commands::Command goal_statement(const std::string& label, const std::string& condition,
+                                   const pddl::State& s) const;
   // The same with each policy's single greedy rollout.
   std::vector<std::vector<HypothesisUtterance>> score(const std::vector<const search::Policy*>& policies,
                                                       const pddl::State& s,

@@ -73,7 +73,8 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
 
 std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string& kind, const LanguageModelOptions& options,
                                                               const domains::Pack& pack, const pddl::Domain& domain,
-                                                              const std::vector<const pddl::Problem*>& problems) {
+                                                              const std::vector<const pddl::Problem*>& problems,
+                                                              const std::vector<std::string>& goal_names) {
   if (!kind.empty() && kind != "embedded") return make_language_model(kind, options);
   lm::EmbeddedModelOptions o;
   o.data_dir = options.data_dir;
@@ -83,8 +84,10 @@ std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string&
     o.corpus_files.clear();
     std::set<std::pair<std::string, std::string>> seen;  // problems share most pairs
     for (const pddl::Problem* problem : problems) {
-      const auto generated = lm::embedded_options_for_domain(
-          describe_for_language_model(domain, *problem, pack.language(), pack.language().qualifiers()));
+      lm::DomainDescription described =
+          describe_for_language_model(domain, *problem, pack.language(), pack.language().qualifiers());
+      described.goal_names = goal_names;
+      const auto generated = lm::embedded_options_for_domain(described);
       for (const auto& pair : generated.extra_corpus)
         if (seen.emplace(pair.command, pair.utterance).second) o.extra_corpus.push_back(pair);
     }
@@ -100,12 +103,15 @@ std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string
   std::vector<std::shared_ptr<const pddl::Task>> tasks;
   std::vector<const pddl::Problem*> problems;
   std::set<std::string> ids;
+  std::vector<std::string> goal_names;
   for (const auto& p : dataset.plans())
     if (ids.insert(p.problem_id).second) {
       tasks.push_back(dataset.task(p.problem_id));
       problems.push_back(&tasks.back()->problem());
+      for (const auto& g : dataset.candidate_goals(p))
+        if (std::find(goal_names.begin(), goal_names.end(), g.label) == goal_names.end()) goal_names.push_back(g.label);
     }
-  return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), problems);
+  return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), problems, goal_names);
 }
 
 // ---- listener setup ---------------------------------------------------------

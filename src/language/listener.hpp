@@ -57,9 +57,12 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind,
 // (the paper packs), else on a corpus generated from the domain's PDDL and
 // command language over the given problems (lm/domain_corpus.hpp). The
 // prompts' few-shot examples are trained on in both cases.
+// `goal_names`: the candidate goals' labels, for statements of the goal
+// (lm::DomainDescription::goal_names; empty: the problems' objects).
 std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string& kind, const LanguageModelOptions& options,
                                                               const domains::Pack& pack, const pddl::Domain& domain,
-                                                              const std::vector<const pddl::Problem*>& problems);
+                                                              const std::vector<const pddl::Problem*>& problems,
+                                                              const std::vector<std::string>& goal_names = {});
 // The same over every problem a dataset's plans use.
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
                                                                const LanguageModelOptions& options,

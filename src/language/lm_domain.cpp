@@ -27,6 +27,12 @@ lm::DomainDescription describe_for_language_model(const pddl::Domain& domain, co
     out.qualifiers.push_back({name, problem.objects[static_cast<size_t>(atom.args[std::min<size_t>(object_arg, 1)])].name,
                               problem.objects[static_cast<size_t>(atom.args[value_arg])].name});
   }
+  for (const pddl::InitAtom& atom : problem.init_atoms) {
+    const std::string& name = domain.predicates[static_cast<size_t>(atom.pred)].name;
+    if (atom.args.size() == 2 && config.is_location(name))
+      out.locations.push_back({name, problem.objects[static_cast<size_t>(atom.args[0])].name,
+                               problem.objects[static_cast<size_t>(atom.args[1])].name});
+  }
   for (const commands::SalientActionRule& r : config.salient_actions)
     out.command_actions.push_back({r.action, r.agent_arg, r.focal_arg});
   out.speaker = config.speaker;

@@ -207,9 +207,11 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
   for (const auto& s : subset)
     for (const auto& p : s.predicates) {
       Term lifted{p.name, {}};
-      for (const auto& arg : p.args) {
+      const bool location = config.is_location(p.name);  // the place keeps its name: (on ?plank1 rack)
+      for (std::size_t i = 0; i < p.args.size(); ++i) {
+        const std::string& arg = p.args[i];
         auto it = variable_of.find(arg);
-        lifted.args.push_back(it == variable_of.end() ? arg : "?" + it->second);
+        lifted.args.push_back(it == variable_of.end() || (location && i > 0) ? arg : "?" + it->second);
       }
       cmd.predicates.push_back(std::move(lifted));
     }

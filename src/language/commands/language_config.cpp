@@ -23,6 +23,10 @@ std::vector<std::string> LanguageConfig::qualifiers() const {
   return out;
 }
 
+bool LanguageConfig::is_location(const std::string& predicate) const {
+  return std::find(location_predicates.begin(), location_predicates.end(), predicate) != location_predicates.end();
+}
+
 bool LanguageConfig::is_qualifier(const std::string& predicate) const {
   return predicate == qualifier ||
          std::find(more_qualifiers.begin(), more_qualifiers.end(), predicate) != more_qualifiers.end();
@@ -123,7 +127,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
       "domain", "salient_actions", "qualifier", "speaker", "listener", "max_command_actions",
       "max_action_types", "max_qualifier_values_per_action_type", "speaker_actions",
       "exclude_chains", "paper_speaker_actions", "paper_exclude_chains", "variable_naming", "printed_form", "printed_args", "goal_atoms", "goal_variables",
-      "comment"};
+      "locations", "goal_statements", "comment"};
   for (const auto& [key, value] : doc.items())
     if (!known.contains(key)) r.fail(key, "unknown key");
 
@@ -201,6 +205,25 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
       const std::string key = "goal_atoms." + action;
       if (!templates.is_array() || templates.empty()) r.fail(key, "expected a non-empty array of strings");
       for (const auto& t : templates) c.goal_atoms[action].push_back(r.string(t, key));
+    }
+  }
+  if (doc.contains("goal_statements")) {
+    const json& g = doc["goal_statements"];
+    if (!g.is_number() || !(g.get<double>() >= 0 && g.get<double>() < 1))
+      r.fail("goal_statements", "expected a number in [0, 1)");
+    c.goal_statements = g.get<double>();
+  }
+  if (doc.contains("locations")) {
+    const json& l = doc["locations"];
+    if (l.is_string()) {
+      const std::string mode = l.get<std::string>();
+      if (mode != "auto" && mode != "none") r.fail("locations", "expected \"auto\", \"none\" or an array of predicate names");
+      c.locations_auto = mode == "auto";
+    } else if (l.is_array()) {
+      c.locations_auto = false;
+      for (std::size_t i = 0; i < l.size(); ++i) c.location_predicates.push_back(r.string(l[i], "locations[" + std::to_string(i) + "]"));
+    } else {
+      r.fail("locations", "expected \"auto\", \"none\" or an array of predicate names");
     }
   }
   if (doc.contains("goal_variables"))

@@ -86,6 +86,23 @@ struct LanguageConfig {
   // places and instruments people leave unsaid stay in the goal.
   bool print_agents_and_focal_only = false;
 
+  // Predicates that say where an object is, e.g. (on plank1 rack): facts of
+  // the scoring state that the speaker model attaches to a command's objects
+  // as it does qualifiers, keeping the place by name, so that "the plank from
+  // the rack" can be read. The object is their first argument, the place
+  // the second. `locations_auto`: found from the domain when the pack is
+  // built (domains::derive_location_predicates); the pack's "locations":
+  // "auto" (default), "none", or a list of predicate names.
+  std::vector<std::string> location_predicates;
+  bool locations_auto = true;
+  // The share of the speaker's utterances that state the goal itself ("we're
+  // making the frame", "I want the red gem") rather than a command: the
+  // speaker model scores them under the goal's statement, (make me ?goal1)
+  // where (named ?goal1 frame) ... (inference::UtteranceModel). 0: commands
+  // only (the paper's model; its packs keep it for their tables).
+  double goal_statements = 0.15;
+  bool is_location(const std::string& predicate) const;
+
   // Goal atoms per action name; `$i` is replaced by the action's i-th argument
   // after pronouns are mapped back to agent names. E.g. handover ->
   // {"(has $2 $3)", "(pickedup-by $1 $3)"}.

@@ -23,6 +23,16 @@ std::string strip_var(std::string_view s) {
 
 bool is_pronoun(std::string_view s) { return s == "you" || s == "me"; }
 
+// An attribute value as a word: lower case, no trailing digits, the last
+// part of a compound name ("fridge1" -> "fridge", "veg-patch" -> "patch").
+std::string value_word(std::string_view v) {
+  std::string w = lower(v);
+  while (w.size() > 1 && std::isdigit(static_cast<unsigned char>(w.back()))) w.pop_back();
+  const size_t cut = w.find_last_of("-_");
+  if (cut != std::string::npos && cut + 1 < w.size()) w = w.substr(cut + 1);
+  return w;
+}
+
 using Term = std::vector<std::string>;
 
 [[noreturn]] void fail(std::string_view what_for, std::string_view command, const std::string& why) {
@@ -78,7 +88,9 @@ CommandFrame parse_command_frame(std::string_view command, std::string_view what
     }
   }
 
-  // Variable types and attributes from the predicates.
+  // Variable types and attributes from the predicates. A value that is an
+  // object's name (a place: "fridge1", "veg-patch") is read as the word
+  // people say: no trailing digits, the last part of a compound ("patch").
   std::map<std::string, std::string> type_override;
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> attributes;  // value, predicate
   for (const Term& p : predicates) {
@@ -86,7 +98,7 @@ CommandFrame parse_command_frame(std::string_view command, std::string_view what
     if (p[0] == "itemtype" || p[0] == "type") {
       type_override[p[1]] = lower(p[2]);
     } else {
-      attributes[p[1]].emplace_back(p[2], p[0]);
+      attributes[p[1]].emplace_back(value_word(p[2]), p[0]);
     }
   }
 

@@ -68,6 +68,7 @@ struct PlannedAction {
   bool speaker_acts = false;
   const DomainObject* focal = nullptr;
   std::vector<const QualifierFact*> facts;  // the focal object's qualifiers the command states
+  const QualifierFact* location = nullptr;  // where it is, when the command states it
 };
 
 class Generator {
@@ -97,6 +98,11 @@ class Generator {
         for (const auto& stated : variants) {
           PlannedAction a{rule, schema, false, obj, stated};
           for (int k = 0; k < o_.utterances_per_command; ++k) emit({a}, one_action_utterance(a));
+          // The same with where the object is, said as a place ("from the rack").
+          if (const QualifierFact* at = location_of(obj->name)) {
+            a.location = at;
+            for (int k = 0; k < o_.utterances_per_command; ++k) emit({a}, one_action_utterance(a));
+          }
         }
       }
     }
@@ -111,6 +117,7 @@ class Generator {
       if (!mine || !yours || mine->focal == yours->focal) continue;
       emit({*mine, *yours}, joint_utterance(*mine, *yours));
     }
+    goal_statements();
     return std::move(pairs_);
   }
 
@@ -145,6 +152,11 @@ class Generator {
       if (obj.name != d_.speaker && obj.name != d_.listener && is_a(obj.type, want)) out.push_back(&obj);
     return out;
   }
+  const QualifierFact* location_of(const std::string& object) const {
+    for (const QualifierFact& f : d_.locations)
+      if (f.object == object) return &f;
+    return nullptr;
+  }
   std::vector<const QualifierFact*> facts_of(const std::string& object) const {
     std::vector<const QualifierFact*> out;
     for (const QualifierFact& f : d_.qualifiers)
@@ -164,6 +176,7 @@ class Generator {
     std::vector<const QualifierFact*> facts = facts_of(a.focal->name);
     if (facts.size() > 1 && dice_.chance(0.5)) facts = {dice_.pick(facts)};
     a.facts = facts;
+    if (dice_.chance(0.3)) a.location = location_of(a.focal->name);
     return a;
   }
 
@@ -191,6 +204,7 @@ class Generator {
       }
       out += ")";
       for (const QualifierFact* f : a.facts) where += " (" + f->predicate + " " + it->second + " " + f->value + ")";
+      if (a.location) where += " (" + a.location->predicate + " " + it->second + " " + a.location->value + ")";
     }
     return where.empty() ? out : out + " where" + where;
   }
@@ -238,6 +252,11 @@ class Generator {
     std::string np = dice_.chance(0.75) ? "the" : "a";
     for (const std::string& x : adj) np += " " + x;
     np += " " + (!adj.empty() && dice_.chance(0.3) ? std::string("one") : noun(a.focal->type, false));
+    if (a.location) {
+      static const std::vector<std::string> preps = {"from the", "in the", "on the", "at the", "over at the",
+                                                     "by the", "from the"};
+      np += " " + dice_.pick(preps) + " " + name_as_words(a.location->value);
+    }
     return np;
   }
   std::string verb_phrase(const PlannedAction& a, const std::string& np) {
@@ -296,6 +315,40 @@ class Generator {
     const std::string ask = request(verb_phrase(yours, noun_phrase(yours)));
     if (dice_.chance(0.25)) return "you " + verb_phrase(yours, noun_phrase(yours)) + " and " + own + ".";
     return own + ", " + ask;
+  }
+
+  // "(make me ?goal1) where (named ?goal1 pot) (named ?goal1 roses)" <->
+  // "I'd like to pot the roses", "we're making the frame", ...
+  void goal_statements() {
+    std::vector<std::string> names = d_.goal_names;
+    if (names.empty())
+      for (const DomainObject& o : d_.objects)
+        if (o.name != d_.speaker && o.name != d_.listener) names.push_back(o.name);
+    if (names.empty()) return;
+    static const std::vector<std::string> frames = {
+        "we're making the {}.", "I want to make the {}.", "I'd like to do the {}.", "today I'm doing the {}.",
+        "I'm going for the {}.", "I want the {}.", "let's make the {}.", "I'm working on the {}.",
+        "the {}, please.", "we need to get the {} done.", "I'm trying to make a {}.", "I want to {}."};
+    for (int k = 0; k < o_.goal_statements; ++k) {
+      const std::string& name = dice_.pick(names);
+      const std::string words = name_as_words(name);
+      std::string where;
+      size_t start = 0;
+      while (start < words.size()) {
+        size_t end = words.find(' ', start);
+        if (end == std::string::npos) end = words.size();
+        const std::string w = words.substr(start, end - start);
+        if (w.size() > 1) where += " (named goal1 " + w + ")";
+        start = end + 1;
+      }
+      if (where.empty()) continue;
+      std::string u = dice_.pick(frames);
+      u.replace(u.find("{}"), 2, words);
+      const std::string command = "(make " + d_.speaker_pronoun + " goal1) where" + where;
+      if (!u.empty()) u[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(u[0])));
+      if (seen_.insert(command + "\t" + u).second)
+        pairs_.push_back(TrainingPair{command, u, 1.0, "generated pair " + std::to_string(pairs_.size() + 1)});
+    }
   }
 
   const DomainDescription& d_;

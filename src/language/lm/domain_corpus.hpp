@@ -63,6 +63,16 @@ struct DomainDescription {
   std::map<std::string, std::string> parent_type;  // "plank" -> "part", "part" -> "item", ...
   std::vector<DomainObject> objects;
   std::vector<QualifierFact> qualifiers;
+  // Where objects are at the start, (on plank1 rack): the object, then the
+  // place (CommandActionRule's language.location_predicates). Commands may
+  // state them ("(pickup you plank1) where (on plank1 rack)" <-> "get the
+  // plank from the rack").
+  std::vector<QualifierFact> locations;
+  // Names of the candidate goals (labels such as "pot-roses" or goal objects
+  // such as "frame"), for statements of the goal ("we're making the frame"),
+  // which the speaker model reads under (make me ?goal1) where (named
+  // ?goal1 frame). Empty: the problem's objects stand in for them.
+  std::vector<std::string> goal_names;
   std::vector<CommandActionRule> command_actions;
   std::string speaker = "human";  // object names of the two agents
   std::string listener = "robot";
@@ -79,6 +89,7 @@ struct DomainCorpusOptions {
   int utterances_per_command = 3;  // for each one-action command
   int two_action_commands = 120;   // sampled commands with two listener actions
   int joint_commands = 120;        // sampled commands with a speaker and a listener action
+  int goal_statements = 60;        // statements of the goal
 };
 
 // The generated pairs (weight 1, origin "generated <domain-less index>").
