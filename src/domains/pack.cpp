@@ -6,6 +6,7 @@
 #include <set>
 
 #include "heuristics/basic.hpp"
+#include "heuristics/lmcut.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "util/data_dir.hpp"
@@ -169,12 +170,14 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
 
 // ---- heuristics ------------------------------------------------------------------
 
-std::vector<std::string> Pack::heuristic_names() const { return {"hmax", "blind", "hff"}; }
+std::vector<std::string> Pack::heuristic_names() const { return {"lmcut", "hmax", "blind", "hff", "hff-plain"}; }
 
 std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& name, const pddl::Task&) const {
   if (name == "blind") return std::make_unique<heuristics::BlindHeuristic>();
   if (name == "hmax") return std::make_unique<heuristics::HMaxHeuristic>();
-  if (name == "hff") return std::make_unique<heuristics::FFHeuristic>();
+  if (name == "lmcut") return std::make_unique<heuristics::LmCutHeuristic>();
+  if (name == "hff") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/true);
+  if (name == "hff-plain") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/false);
   std::string known;
   for (auto& n : heuristic_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError("unknown heuristic '" + name + "' for " + spec_.name + " (known: " + known + ")");

@@ -120,7 +120,7 @@ struct LiteralSettings {
   // variant) or "literal_efficient" and "literal_naive".
   std::vector<std::string> methods = {"literal"};
   // The heuristic of the listener's own planning towards a command's goal.
-  std::string planning_heuristic = "hmax";
+  std::string planning_heuristic = "lmcut";
   // Types that name lifted variables (?key1, ?door2): an object is named by
   // the first of these it belongs to; empty: by its declared type.
   std::vector<std::string> variable_types;
