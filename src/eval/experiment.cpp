@@ -82,6 +82,11 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     out.utterance_warnings = inf.utterance_warnings;
     out.true_goal = inf.true_goal;
     for (const auto& st : inf.steps) out.goal_posterior_steps.push_back(st[Modality::Both].goals);  // issue 8
+    for (const auto& st : inf.steps) {
+      out.step_seconds.push_back(st.seconds);
+      out.step_work_seconds.push_back(st.work_seconds);
+    }
+    out.inference_threads = inf.belief->refine_threads();
     const inference::Belief& belief = *inf.belief;
     int true_h = -1;
     for (size_t h = 0; h < belief.hypotheses().size(); ++h)

@@ -55,6 +55,11 @@ struct PlanOutcome {
   std::exception_ptr failure;  // the exception behind `error` (its type tells input from LM failures)
   // (issue 8) CLIPS goal posterior after each observed step ([0]: at s_0), for pictures.
   std::vector<std::vector<double>> goal_posterior_steps;
+  // (issue 43) The inference's per-step times ([0]: the start at s_0), wall
+  // and summed over its refinement threads (StepRecord::work_seconds: the
+  // time on one thread), and those threads.
+  std::vector<double> step_seconds, step_work_seconds;
+  int inference_threads = 1;
   const MethodResult* find(const std::string& m) const;
 };
 
