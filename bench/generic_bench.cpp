@@ -11,6 +11,8 @@
 #include <string>
 
 #include "eval/experiment.hpp"
+#include "heuristics/heuristic.hpp"
+#include "pddl/plan.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 
@@ -95,3 +97,46 @@ BENCHMARK_CAPTURE(BM_GenericAssistanceDecision, workshop, std::string("data/data
 BENCHMARK_CAPTURE(BM_GenericAssistanceDecision, storeroom, std::string("bench/data/storeroom"))
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+
+// One heuristic estimate on the storeroom's states (those along every
+// observed plan and completion, for every candidate goal of its problem):
+// the per-state cost behind the lookahead searches (hff, hff-plain) and the
+// listener's optimal planning (lmcut, hmax).
+static void BM_GenericEstimate(benchmark::State& st, const std::string& heuristic) {
+  auto ds = data::Dataset::load(source_path("bench/data/storeroom"));
+  struct Item {
+    std::shared_ptr<model::Specification> spec;
+    std::shared_ptr<heuristics::Heuristic> h;
+    std::vector<pddl::State> states;
+  };
+  std::vector<Item> items;
+  for (auto& p : ds.plans()) {
+    auto task = ds.task(p.problem_id);
+    auto obs = pddl::simulate(*task, task->initial_state(), p.observed);
+    auto comp = pddl::simulate(*task, obs.states.back(), p.completed);
+    std::vector<pddl::State> states = obs.states;
+    states.insert(states.end(), comp.states.begin(), comp.states.end());
+    for (const auto& g : ds.candidate_goals(p)) {
+      Item it;
+      it.spec = std::make_shared<model::Specification>(task, g.condition, model::unit_profile());
+      it.h = ds.pack().make_heuristic(heuristic, *task);
+      it.h->prepare(*it.spec, task->initial_state());
+      it.states = states;
+      items.push_back(std::move(it));
+    }
+  }
+  double sum = 0;
+  size_t n = 0;
+  for (auto _ : st)
+    for (auto& it : items)
+      for (const auto& s : it.states) {
+        sum += it.h->estimate(s.data());
+        ++n;
+      }
+  benchmark::DoNotOptimize(sum);
+  st.SetItemsProcessed(static_cast<int64_t>(n));  // estimates per second
+}
+BENCHMARK_CAPTURE(BM_GenericEstimate, hff, std::string("hff"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GenericEstimate, hff_plain, std::string("hff-plain"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GenericEstimate, lmcut, std::string("lmcut"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GenericEstimate, hmax, std::string("hmax"))->Unit(benchmark::kMillisecond);

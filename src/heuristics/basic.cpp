@@ -1,6 +1,7 @@
 #include "heuristics/basic.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <queue>
 
 namespace clips::heuristics {
@@ -140,6 +141,7 @@ void FFHeuristic::prepare(const model::Specification& spec, const pddl::State&) 
   if (spec_ == &spec) return;
   spec_ = &spec;
   RelaxedTask::Options o;
+  o.relevant_only = true;  // changes no value (relaxed.hpp)
   if (turns_) {
     o.turns = o.dead_preconditions = o.dedup_preconditions = o.normalise_goal = true;
   } else {
@@ -159,22 +161,59 @@ void FFHeuristic::prepare(const model::Specification& spec, const pddl::State&) 
   op_mark_.assign(nops, 0);
   stamp_ = 0;
   count_.assign(r_.turns.agents.size(), 0);
+  // Buckets when every cost is a positive multiple of 1/k for a small k.
+  buckets_mode_ = false;
+  if (r_.positive_costs && nops > 0)
+    for (int k = 1; k <= 1000 && !buckets_mode_; ++k) {
+      bool ok = true;
+      for (double c : r_.cost) {
+        const double v = c * k;
+        if (std::abs(v - std::round(v)) > 1e-9 * std::max(1.0, v) || std::round(v) < 1) {
+          ok = false;
+          break;
+        }
+      }
+      if (ok) {
+        buckets_mode_ = true;
+        bucket_scale_ = k;
+      }
+    }
+  buckets_.clear();
+  bucket_cur_ = bucket_top_ = 0;
 }
 
 // One relaxed action becomes applicable: its adds get h_add cost = the sum
 // of its preconditions' costs plus its own (the best supporter is the first
 // action reaching the lowest cost).
-inline void FFHeuristic::relax(int op) {
+[[gnu::always_inline]] inline void FFHeuristic::relax(int op) {
   const double ac = act_cost_[static_cast<size_t>(op)] + r_.cost[static_cast<size_t>(op)];
   for (int k = r_.add_begin[static_cast<size_t>(op)]; k < r_.add_begin[static_cast<size_t>(op) + 1]; ++k) {
     const int e = r_.add[static_cast<size_t>(k)];
     if (ac < atom_cost_[static_cast<size_t>(e)]) {
       atom_cost_[static_cast<size_t>(e)] = ac;
       supporter_[static_cast<size_t>(e)] = op;
-      heap_.emplace_back(ac, e);
-      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+      push(ac, e);
     }
   }
+}
+
+namespace {
+constexpr size_t kMaxBuckets = size_t{1} << 16;
+}  // namespace
+
+[[gnu::noinline]] void FFHeuristic::push(double c, int b) {
+  if (buckets_mode_) {
+    const double x = std::round(c * bucket_scale_);
+    if (x < static_cast<double>(kMaxBuckets)) {
+      const size_t i = static_cast<size_t>(x);
+      if (i >= buckets_.size()) buckets_.resize(std::min(kMaxBuckets, std::max(i + 1, 2 * buckets_.size())));
+      buckets_[i].emplace_back(c, b);
+      bucket_top_ = std::max(bucket_top_, i + 1);
+      return;
+    }
+  }
+  heap_.emplace_back(c, b);
+  std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
 }
 
 // Atom b's cost c is final: the actions needing it.
@@ -232,6 +271,29 @@ double FFHeuristic::estimate(const uint64_t* s) {
     }
   const bool watch = deadline() != Clock::time_point::max();
   unsigned pops = 0;
+  bool stopped = false;
+  // Buckets in order, then whatever the heap holds (costs past the buckets).
+  // (Pushes go to later buckets and may move the bucket list: index it.)
+  for (bucket_cur_ = 0; !done && bucket_cur_ < bucket_top_; ++bucket_cur_) {
+    if (buckets_[bucket_cur_].size() > 1) std::sort(buckets_[bucket_cur_].begin(), buckets_[bucket_cur_].end());
+    for (size_t i = 0; i < buckets_[bucket_cur_].size(); ++i) {
+      if (watch && (++pops & 4095) == 0 && out_of_time()) {
+        stopped = true;
+        break;
+      }
+      const auto [c, b] = buckets_[bucket_cur_][i];
+      if (c > atom_cost_[static_cast<size_t>(b)]) continue;
+      if (is_goal_atom_[static_cast<size_t>(b)] && --goal_left_ == 0) {
+        done = true;
+        break;
+      }
+      process(b, c);
+    }
+    if (stopped) break;
+  }
+  for (size_t i = 0; i < bucket_top_; ++i) buckets_[i].clear();
+  bucket_top_ = 0;
+  if (stopped) return 0;
   while (!done && !heap_.empty()) {
     if (watch && (++pops & 4095) == 0 && out_of_time()) return 0;
     std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());

@@ -84,7 +84,16 @@ class FFHeuristic : public Heuristic {
   std::vector<double> atom_cost_, act_cost_;
   std::vector<int> unsat_, unsat0_, supporter_;
   std::vector<char> is_goal_atom_;
+  // The queue of (h_add cost, atom): a heap, or, when every cost is a
+  // positive multiple of 1/scale_, buckets of that width, each sorted when
+  // its turn comes (the heap's order exactly: nothing enters the bucket being
+  // emptied), with the heap for costs past the last bucket.
+  void push(double c, int b);
   std::vector<std::pair<double, int>> heap_;
+  bool buckets_mode_ = false;
+  double bucket_scale_ = 1;
+  std::vector<std::vector<std::pair<double, int>>> buckets_;
+  size_t bucket_cur_ = 0, bucket_top_ = 0;  // first bucket not yet emptied; one past the last used
   std::vector<int> zero_, open_, count_, order_;
   std::vector<uint32_t> atom_mark_, op_mark_;
   uint32_t stamp_ = 0;

@@ -58,7 +58,7 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   spec_ = &spec;
   RelaxedTask::Options o;
   o.turns = turns_;
-  o.dead_preconditions = o.dedup_preconditions = o.normalise_goal = true;
+  o.dead_preconditions = o.dedup_preconditions = o.normalise_goal = o.relevant_only = true;
   r_ = RelaxedTask::of(spec, o);
   // Goal clauses asking for two atoms no reachable state has together can
   // never hold: leave them out (all of them: the goal is unreachable).

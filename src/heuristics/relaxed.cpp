@@ -139,11 +139,6 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     add_rows.push_back(std::move(e));
   }
   for (auto& k : r.agent_killable) std::sort(k.begin(), k.end());
-  to_csr(pre_rows, r.pre_begin, r.pre);
-  to_csr(add_rows, r.add_begin, r.add);
-  to_csr(needed, r.needed_begin, r.needed_by);
-  to_csr(kills, r.kill_begin, r.kill);
-  to_csr(killers_rows, r.killers_begin, r.killers);
 
   r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
   if (r.use_turns) {
@@ -155,6 +150,74 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     r.goal_atoms.insert(r.goal_atoms.end(), c.begin(), c.end());
   }
   normalise(r.goal_atoms);
+
+  if (opts.relevant_only) {
+    // Backward from the goal's atoms: the operators adding a relevant atom,
+    // and their preconditions.
+    const size_t nops = pre_rows.size();
+    std::vector<std::vector<int>> adders(static_cast<size_t>(nb));
+    for (size_t op = 0; op < nops; ++op)
+      for (int e : add_rows[op]) adders[static_cast<size_t>(e)].push_back(static_cast<int>(op));
+    std::vector<char> atom_rel(static_cast<size_t>(nb), 0), op_rel(nops, 0);
+    std::vector<int> work;
+    for (int b : r.goal_atoms)
+      if (!atom_rel[static_cast<size_t>(b)]) {
+        atom_rel[static_cast<size_t>(b)] = 1;
+        work.push_back(b);
+      }
+    while (!work.empty()) {
+      const int b = work.back();
+      work.pop_back();
+      for (int op : adders[static_cast<size_t>(b)]) {
+        if (op_rel[static_cast<size_t>(op)]) continue;
+        op_rel[static_cast<size_t>(op)] = 1;
+        for (int p : pre_rows[static_cast<size_t>(op)])
+          if (!atom_rel[static_cast<size_t>(p)]) {
+            atom_rel[static_cast<size_t>(p)] = 1;
+            work.push_back(p);
+          }
+      }
+    }
+    // Renumber the kept operators, in order.
+    std::vector<int> keep_id(nops, -1);
+    std::vector<std::vector<int>> pre2, add2;
+    RelaxedTask k;
+    for (size_t op = 0; op < nops; ++op) {
+      if (!op_rel[op]) continue;
+      keep_id[op] = static_cast<int>(pre2.size());
+      pre2.push_back(std::move(pre_rows[op]));
+      add2.push_back(std::move(add_rows[op]));
+      k.op_action.push_back(r.op_action[op]);
+      k.cost.push_back(r.cost[op]);
+      k.agent.push_back(r.agent[op]);
+    }
+    r.op_action = std::move(k.op_action);
+    r.cost = std::move(k.cost);
+    r.agent = std::move(k.agent);
+    pre_rows = std::move(pre2);
+    add_rows = std::move(add2);
+    r.positive_costs = true;
+    for (double c : r.cost) r.positive_costs &= c > 0;
+    auto remap = [&](std::vector<std::vector<int>>& lists) {
+      for (auto& l : lists) {
+        std::vector<int> out;
+        for (int op : l)
+          if (keep_id[static_cast<size_t>(op)] >= 0) out.push_back(keep_id[static_cast<size_t>(op)]);
+        l = std::move(out);
+      }
+    };
+    remap(needed);
+    remap(kills);
+    std::vector<int> no_pre;
+    for (int op : r.no_pre_ops)
+      if (keep_id[static_cast<size_t>(op)] >= 0) no_pre.push_back(keep_id[static_cast<size_t>(op)]);
+    r.no_pre_ops = std::move(no_pre);
+  }
+  to_csr(pre_rows, r.pre_begin, r.pre);
+  to_csr(add_rows, r.add_begin, r.add);
+  to_csr(needed, r.needed_begin, r.needed_by);
+  to_csr(kills, r.kill_begin, r.kill);
+  to_csr(killers_rows, r.killers_begin, r.killers);
   return r;
 }
 

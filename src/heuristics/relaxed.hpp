@@ -34,6 +34,13 @@ struct RelaxedTask {
     bool keep_empty_ops = false;  // operators without adds (h_FF's plain form keeps them)
     bool dedup_preconditions = false;
     bool normalise_goal = false;
+    // Keep only operators that add an atom the goal needs, directly or
+    // through the preconditions of such operators. The others cannot change
+    // h_add, h_max or LM-cut values of the goal's atoms (nothing they add is
+    // read on the way to the goal), so dropping them changes no estimate,
+    // nor h_FF's supporters; with turn atoms left out, it drops the actions
+    // on items the goal does not involve.
+    bool relevant_only = false;
   };
   Options options;
   int num_atoms = 0;
