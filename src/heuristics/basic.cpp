@@ -228,7 +228,9 @@ inline void FFHeuristic::process(int b, double c) {
 double FFHeuristic::estimate(const uint64_t* s) {
   if (!spec_) return 0;
   if (timed_out()) return 0;
-  if (spec_->is_goal(s)) return 0;
+  // No goal test: where the goal holds, the atoms of one of its clauses
+  // hold, and the estimate is 0 without it (the goal may be large: a
+  // command's existential goal is a disjunction over its groundings).
   // h_add by Dijkstra over atoms, as a priority queue of (cost, atom) pops
   // them (so with the plain relaxation every value and supporter is the
   // h_FF of before): atoms true in s first, in ascending order, then by cost.

@@ -109,6 +109,7 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   supporter_.assign(nops, -1);
   supporter_cost_.assign(nops, kUnset);
   seen_.assign(nops, 0);
+  into_zone_.assign(nops, 0);
   round_ = 0;
   counted_.assign(nops, 0);
   estimate_stamp_ = 0;
@@ -264,7 +265,14 @@ void LmCutHeuristic::incremental_exploration() {
 }
 
 void LmCutHeuristic::mark_goal_plateau() {
-  // Everything that reaches the goal through zero-cost operators' supporters.
+  // Everything that reaches the goal through zero-cost operators' supporters;
+  // every operator adding one of them is marked (into_zone_) for the second
+  // exploration. One round per cut.
+  if (++round_ == 0) {
+    std::fill(seen_.begin(), seen_.end(), 0);
+    std::fill(into_zone_.begin(), into_zone_.end(), 0);
+    round_ = 1;
+  }
   stack_.clear();
   stack_.push_back(goal_prop_);
   while (!stack_.empty()) {
@@ -275,6 +283,7 @@ void LmCutHeuristic::mark_goal_plateau() {
     zone_.push_back(p);
     for (int k = eff_of_begin_[static_cast<size_t>(p)]; k < eff_of_begin_[static_cast<size_t>(p) + 1]; ++k) {
       const size_t o = static_cast<size_t>(eff_of_[static_cast<size_t>(k)]);
+      into_zone_[o] = round_;
       if (cost_[o] == 0) stack_.push_back(supporter_[o]);
     }
   }
@@ -285,10 +294,6 @@ void LmCutHeuristic::second_exploration(const uint64_t* s) {
   // zone: those form the cut.
   cut_.clear();
   stack_.clear();
-  if (++round_ == 0) {
-    std::fill(seen_.begin(), seen_.end(), 0);
-    round_ = 1;
-  }
   auto before = [&](int p) {
     status_[static_cast<size_t>(p)] = BeforeGoalZone;
     zone_.push_back(p);
@@ -307,13 +312,7 @@ void LmCutHeuristic::second_exploration(const uint64_t* s) {
       const size_t o = static_cast<size_t>(ops[k]);
       if (supporter_[o] != p || seen_[o] == round_) continue;
       seen_[o] = round_;
-      bool into_zone = false;
-      for (int j = op_eff_begin_[o]; j < op_eff_begin_[o + 1]; ++j)
-        if (status_[static_cast<size_t>(op_eff_[static_cast<size_t>(j)])] == GoalZone) {
-          into_zone = true;
-          break;
-        }
-      if (into_zone) {
+      if (into_zone_[o] == round_) {
         cut_.push_back(static_cast<int>(o));
         continue;
       }
@@ -356,7 +355,9 @@ int64_t LmCutHeuristic::turn_bound(const uint64_t* s) {
 double LmCutHeuristic::estimate(const uint64_t* s) {
   if (!spec_) return 0;
   if (timed_out()) return 0;
-  if (spec_->is_goal(s)) return 0;
+  // No goal test: where the goal holds, the atoms of one of its clauses
+  // hold, and the estimate is 0 without it (the goal may be large: a
+  // command's existential goal is a disjunction over its groundings).
   if (r_.goal_clauses.empty()) return kInf;  // the goal is false
   if (r_.goal_trivial) return 0;
   first_exploration(s);

@@ -100,8 +100,9 @@ class LmCutHeuristic : public Heuristic {
   // one too: readers check supporter_). The second exploration walks these
   // instead of every operator the proposition is a precondition of.
   std::vector<std::vector<int>> supported_;
-  // Operators seen by the current second exploration (== round_).
-  std::vector<uint32_t> seen_;
+  // Operators seen by the current second exploration, and those adding an
+  // atom of the current goal zone (== round_).
+  std::vector<uint32_t> seen_, into_zone_;
   uint32_t round_ = 0;
   // Turn bound: per agent, its actions (operator or -1, scaled cost); the
   // landmarks counted per agent; operators already in a counted landmark.
