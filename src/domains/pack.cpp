@@ -7,6 +7,7 @@
 
 #include "heuristics/basic.hpp"
 #include "heuristics/lmcut.hpp"
+#include "domains/strips.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "util/data_dir.hpp"
@@ -349,9 +350,9 @@ std::string Pack::object_list(const pddl::Task& task) const {
   return out;
 }
 
-std::optional<StripsExport> Pack::export_strips(const pddl::Task&, const pddl::State&, const std::string&,
-                                                const model::CostProfile&) const {
-  return std::nullopt;
+std::optional<StripsExport> Pack::export_strips(const pddl::Task& task, const pddl::State& start,
+                                                const std::string& goal, const model::CostProfile& costs) const {
+  return export_grounded_strips(task, start, goal, costs);
 }
 
 std::optional<GeneratedProblem> Pack::generate_problem(const GenerateParams&, util::Rng&) const {
