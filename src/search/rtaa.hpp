@@ -8,6 +8,7 @@
 // every interior node of each search tree; afterwards the Q-values of all
 // applicable actions in s are fresh. Policies are copyable values (the
 // assistance phase keeps refining copies of the inference policies).
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -132,23 +133,29 @@ class Policy {
   // copy of that chunk first, so every policy still behaves as a value.
   static constexpr int kEntryChunkBits = 11;
   static constexpr size_t kEntryChunk = size_t{1} << kEntryChunkBits;
-  using Chunk = std::vector<Entry>;
+  using Chunk = std::shared_ptr<Entry[]>;  // kEntryChunk entries (one indirection, as a plain array)
+  static Chunk new_chunk() { return std::make_shared<Entry[]>(kEntryChunk); }
+  static Chunk copy_chunk(const Chunk& c) {
+    Chunk out = std::make_shared_for_overwrite<Entry[]>(kEntryChunk);
+    std::copy(c.get(), c.get() + kEntryChunk, out.get());
+    return out;
+  }
   // The entry of state `id` for writing: allocates its chunk, or copies a
   // chunk this policy shares with a copy of it.
   Entry& entry(int id) {
     const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
     if (c >= chunks_.size()) chunks_.resize(c + 1);
-    std::shared_ptr<Chunk>& chunk = chunks_[c];
-    if (!chunk) chunk = std::make_shared<Chunk>(kEntryChunk);
-    else if (chunk.use_count() > 1) chunk = std::make_shared<Chunk>(*chunk);
-    return (*chunk)[static_cast<size_t>(id) & (kEntryChunk - 1)];
+    Chunk& chunk = chunks_[c];
+    if (!chunk) chunk = new_chunk();
+    else if (chunk.use_count() > 1) chunk = copy_chunk(chunk);
+    return chunk[static_cast<std::ptrdiff_t>(static_cast<size_t>(id) & (kEntryChunk - 1))];
   }
   // The entry of state `id` for reading, if its chunk exists (an entry this
   // policy never wrote reads as the default: no value, no estimate, not in
   // any search).
   const Entry* read_entry(int id) const {
     const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
-    return c < chunks_.size() && chunks_[c] ? &(*chunks_[c])[static_cast<size_t>(id) & (kEntryChunk - 1)] : nullptr;
+    return c < chunks_.size() && chunks_[c] ? chunks_[c].get() + (static_cast<size_t>(id) & (kEntryChunk - 1)) : nullptr;
   }
   const Entry* find_entry(const uint64_t* s) const {
     const int id = graph_->find(s);
@@ -158,8 +165,8 @@ class Policy {
   void for_each_entry(F&& f) {
     for (auto& chunk : chunks_) {
       if (!chunk) continue;
-      if (chunk.use_count() > 1) chunk = std::make_shared<Chunk>(*chunk);
-      for (Entry& e : *chunk) f(e);
+      if (chunk.use_count() > 1) chunk = copy_chunk(chunk);
+      for (size_t i = 0; i < kEntryChunk; ++i) f(chunk[static_cast<std::ptrdiff_t>(i)]);
     }
   }
   // Estimates shared by a policy and its copies: they have the same
@@ -185,7 +192,7 @@ class Policy {
   std::shared_ptr<StateGraph> graph_;
   // H estimates are kept across refine() calls unless the heuristic says
   // they depend on the root prepare() was given.
-  std::vector<std::shared_ptr<Chunk>> chunks_;
+  std::vector<Chunk> chunks_;
   std::shared_ptr<SharedEstimates> estimates_;
   size_t num_values_ = 0;  // entries with has_v
   size_t tree_size_ = 0;   // entries with a tree action
