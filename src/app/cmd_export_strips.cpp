@@ -1,5 +1,6 @@
-// `clips export-strips`: write an mDKG problem as a plain-STRIPS domain +
-// problem with integer action costs, for external classical planners.
+// `clips export-strips`: write a dataset problem (any pack) as a plain-STRIPS
+// domain + problem with integer action costs, for external classical planners
+// (Fast Downward: see README, "Checking plans with Fast Downward").
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -28,16 +29,20 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
 
 void register_export_strips(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "export-strips", "Export a doors-keys-gems problem as plain STRIPS with integer action costs (for Fast Downward etc.)");
+      "export-strips", "Export a problem as plain STRIPS with integer action costs (for Fast Downward etc.)");
   struct Opts {
-    std::string dataset, problem, goal, costs = "1", out, from_plan;
+    std::string dataset, problem, goal, costs, out, from_plan;
   };
   auto o = std::make_shared<Opts>();
-  add_dataset_option(cmd, o->dataset, "Doors-keys-gems dataset directory (with domain.pddl and problems/)");
+  add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl and problems/)");
   cmd->add_option("--problem", o->problem, "Problem id in the dataset (e.g. 2); optional with --from-plan");
-  cmd->add_option("--goal", o->goal, "Goal: a conjunction of (has <agent> <item>) atoms, e.g. \"(has human gem2)\"")
+  cmd->add_option("--goal", o->goal,
+                  "Goal, e.g. \"(made table)\"; doors-keys-gems: a conjunction of (has <agent> <item>) atoms, e.g. "
+                  "\"(has human gem2)\"")
       ->required();
-  cmd->add_option("--costs", o->costs, "Cost profile 1..4 (C1..C4, default 1) or 'unit'");
+  cmd->add_option("--costs", o->costs,
+                  "Cost profile: a name of the pack's (doors-keys-gems: 1..4, C1..C4), 'unit' or 'task' (default: the "
+                  "pack's default profile, else 'task' for domains with total-cost, else 'unit'; doors-keys-gems: C1)");
   cmd->add_option("--out", o->out, "Output directory (created if missing): domain.pddl, problem.pddl, export.json")
       ->required();
   cmd->add_option("--from-plan", o->from_plan, "Start from the end of this observed plan (dataset plan id)");
@@ -58,11 +63,15 @@ void register_export_strips(CLI::App& app) {
       task = ds.task(problem);
       start = task->initial_state();
     }
-    auto profile = ds.pack().cost_profile(o->costs);
+    std::string costs = o->costs;
+    if (costs.empty())
+      costs = !ds.pack().spec().default_cost_profile.empty() ? ds.pack().spec().default_cost_profile
+              : task->domain().total_cost                    ? "task"
+                                                              : "unit";
+    auto profile = ds.pack().cost_profile(costs);
     auto exported = ds.pack().export_strips(*task, start, o->goal, profile);
     if (!exported)
-      throw InputError("export-strips needs a domain pack that compiles its tasks to STRIPS (doors-keys-gems does); " +
-                       o->dataset + " is " + ds.pack().name());
+      throw InputError("export-strips: the " + ds.pack().name() + " pack cannot compile its tasks to STRIPS");
     const domains::StripsExport& ex = *exported;
 
     namespace fs = std::filesystem;
@@ -77,6 +86,7 @@ void register_export_strips(CLI::App& app) {
     meta["goal"] = o->goal;
     meta["costs"] = profile.name;
     if (!o->from_plan.empty()) meta["from_plan"] = o->from_plan;
+    if (!ex.original_actions.empty()) meta["actions"] = ex.original_actions;
     write_file(dir / "domain.pddl", ex.domain);
     write_file(dir / "problem.pddl", ex.problem);
     write_file(dir / "export.json", meta.dump(2) + "\n");

@@ -7,6 +7,8 @@
 #include <set>
 
 #include "heuristics/basic.hpp"
+#include "heuristics/lmcut.hpp"
+#include "domains/strips.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "util/data_dir.hpp"
@@ -180,12 +182,14 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
 
 // ---- heuristics ------------------------------------------------------------------
 
-std::vector<std::string> Pack::heuristic_names() const { return {"hmax", "blind", "hff"}; }
+std::vector<std::string> Pack::heuristic_names() const { return {"lmcut", "hmax", "blind", "hff", "hff-plain"}; }
 
 std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& name, const pddl::Task&) const {
   if (name == "blind") return std::make_unique<heuristics::BlindHeuristic>();
   if (name == "hmax") return std::make_unique<heuristics::HMaxHeuristic>();
-  if (name == "hff") return std::make_unique<heuristics::FFHeuristic>();
+  if (name == "lmcut") return std::make_unique<heuristics::LmCutHeuristic>();
+  if (name == "hff") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/true);
+  if (name == "hff-plain") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/false);
   std::string known;
   for (auto& n : heuristic_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError("unknown heuristic '" + name + "' for " + spec_.name + " (known: " + known + ")");
@@ -357,9 +361,9 @@ std::string Pack::object_list(const pddl::Task& task) const {
   return out;
 }
 
-std::optional<StripsExport> Pack::export_strips(const pddl::Task&, const pddl::State&, const std::string&,
-                                                const model::CostProfile&) const {
-  return std::nullopt;
+std::optional<StripsExport> Pack::export_strips(const pddl::Task& task, const pddl::State& start,
+                                                const std::string& goal, const model::CostProfile& costs) const {
+  return export_grounded_strips(task, start, goal, costs);
 }
 
 std::optional<GeneratedProblem> Pack::generate_problem(const GenerateParams&, util::Rng&) const {

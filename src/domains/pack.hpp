@@ -165,7 +165,7 @@ struct LiteralSettings {
   // variant) or "literal_efficient" and "literal_naive".
   std::vector<std::string> methods = {"literal"};
   // The heuristic of the listener's own planning towards a command's goal.
-  std::string planning_heuristic = "hmax";
+  std::string planning_heuristic = "lmcut";
   // Types that name lifted variables (?key1, ?door2): an object is named by
   // the first of these it belongs to; empty: by its declared type.
   std::vector<std::string> variable_types;
@@ -236,6 +236,10 @@ struct StripsExport {
   std::string problem;   // PDDL text of the STRIPS problem
   int cost_scale = 1;    // exported cost = original cost * cost_scale
   std::string goal;      // the goal as exported, e.g. "(and (has human gem2))"
+  // Exported action name -> original ground action ("" for an action the
+  // export adds), when the names do not say it (the generic export; mDKG's
+  // names map back by domains::to_original_action).
+  std::map<std::string, std::string> original_actions;
 };
 
 // What `clips generate` asks a pack for: a random problem of this size with
@@ -343,8 +347,9 @@ class Pack {
   virtual std::vector<std::string> generated_kinds() const { return {}; }
 
   // ---- outside planners ----
-  // The task from `start` compiled to STRIPS (numeric fluents and bit-matrices
-  // turned into atoms), for packs that know how (mDKG); nullopt otherwise.
+  // The task from `start` compiled to plain STRIPS with integer costs. By
+  // default the grounded task as it is (domains/strips.hpp: tasks without
+  // numeric fluents); mDKG's pack compiles its grid and numbers to atoms.
   virtual std::optional<StripsExport> export_strips(const pddl::Task& task, const pddl::State& start,
                                                     const std::string& goal, const model::CostProfile& costs) const;
 

@@ -83,6 +83,28 @@ struct BenchReport {
 };
 
 BenchReport run_bench(const BenchOptions& opts);
+
+// Latency over a report's plans (issue 43), in seconds: n values, their
+// median, 95th percentile (the value at rank floor(0.95 (n - 1)) of the
+// sorted values, as the Google benchmarks read it) and maximum.
+struct LatencyStats {
+  size_t n = 0;
+  double median = 0, p95 = 0, max = 0;
+  static LatencyStats of(std::vector<double> xs);
+};
+struct BenchLatency {
+  // Belief-update steps after an observed action (t >= 1) as the plans ran
+  // them (on `inference_threads` threads each), and their work summed over
+  // those threads (the time on one thread); the first step of each plan
+  // (refinement at s_0 and any instruction heard there) separately.
+  int inference_threads = 1;  // the largest any plan used
+  LatencyStats step, step_one_thread, start;
+  // Assistance decisions (Q_MDP) of `decision_method`: "clips" when it ran,
+  // else every method's.
+  std::string decision_method;
+  LatencyStats decision;
+};
+BenchLatency bench_latency(const BenchReport& r);
 // Recomputes failed_plans and the per-method summary (means and standard
 // errors) from r.plans; run_bench and merging shards both end with it.
 void summarise(BenchReport& r);

@@ -77,6 +77,9 @@ ojson plan_json(const PlanOutcome& p) {
           {"true_goal", p.true_goal},
           {"true_options", p.true_options},
           {"goal_posterior_steps", matrix(p.goal_posterior_steps)},
+          {"step_seconds", reals(p.step_seconds)},
+          {"step_work_seconds", reals(p.step_work_seconds)},
+          {"inference_threads", p.inference_threads},
           {"utterance_warnings", p.utterance_warnings},
           {"split", p.split},
           {"categories", p.categories},
@@ -211,6 +214,12 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   p.true_goal = static_cast<int>(in.integer(j, "true_goal", at));
   p.true_options = in.texts(j, "true_options", at);
   p.goal_posterior_steps = in.matrix(j, "goal_posterior_steps", at);
+  // Step times came later (issue 43): parts written before have none.
+  if (j.is_object() && j.contains("step_seconds")) {
+    p.step_seconds = in.reals(j, "step_seconds", at);
+    p.step_work_seconds = in.reals(j, "step_work_seconds", at);
+    p.inference_threads = static_cast<int>(in.integer(j, "inference_threads", at));
+  }
   p.utterance_warnings = in.texts(j, "utterance_warnings", at);
   // Outcomes written before instruction tables existed have none.
   if (j.contains("split")) p.split = in.text(j, "split", at);

@@ -128,6 +128,11 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     out.utterance_warnings = inf.utterance_warnings;
     out.true_goal = inf.true_goal;
     for (const auto& st : inf.steps) out.goal_posterior_steps.push_back(st[Modality::Both].goals);  // issue 8
+    for (const auto& st : inf.steps) {
+      out.step_seconds.push_back(st.seconds);
+      out.step_work_seconds.push_back(st.work_seconds);
+    }
+    out.inference_threads = inf.belief->refine_threads();
     const int true_h = true_hypothesis(inf, p);
     // Particle inference: the policies the methods read (every modality's
     // weighted hypotheses, the true one for the multimodal baseline) must have

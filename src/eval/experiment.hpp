@@ -61,6 +61,11 @@ struct PlanOutcome {
   std::string split;
   std::vector<std::string> categories;
   int instruction_step = -1;
+  // (issue 43) The inference's per-step times ([0]: the start at s_0), wall
+  // and summed over its refinement threads (StepRecord::work_seconds: the
+  // time on one thread), and those threads.
+  std::vector<double> step_seconds, step_work_seconds;
+  int inference_threads = 1;
   const MethodResult* find(const std::string& m) const;
 };
 

@@ -11,10 +11,13 @@
 //                   (it may overestimate), but it counts every subgoal, where
 //                   h_max sees only the most expensive one, so it tells apart
 //                   actions that h_max values alike; the default of generic
-//                   domain packs for the human model's policies.
+//                   domain packs for the human model's policies. By default
+//                   it also counts the turns the agents' alternation forces
+//                   (relaxed.hpp); `hff-plain` is the form without.
 #include <vector>
 
 #include "heuristics/heuristic.hpp"
+#include "heuristics/relaxed.hpp"
 
 namespace clips::heuristics {
 
@@ -58,7 +61,14 @@ class HMaxHeuristic : public Heuristic {
 
 class FFHeuristic : public Heuristic {
  public:
-  std::string name() const override { return "hff"; }
+  // `turns`: the turn-aware form ("hff", the default of generic packs; see
+  // relaxed.hpp): turn atoms left out of the relaxation, the relaxed plan's
+  // actions counted per agent and the turns alternation forces added at each
+  // agent's cheapest usable action, and actions whose negative precondition
+  // can never become true again left out. Without: the plain h_FF
+  // ("hff-plain"), values identical to the h_FF clips used before.
+  explicit FFHeuristic(bool turns = true) : turns_(turns) {}
+  std::string name() const override { return turns_ ? "hff" : "hff-plain"; }
   bool admissible() const override { return false; }
   bool consistent() const override { return false; }
   bool estimates_depend_on_root() const override { return false; }
@@ -66,11 +76,28 @@ class FFHeuristic : public Heuristic {
   double estimate(const uint64_t* s) override;
 
  private:
+  void process(int b, double c);
+  void relax(int op);
+  bool turns_;
   const model::Specification* spec_ = nullptr;
-  Relaxation r_;
+  RelaxedTask r_;
   std::vector<double> atom_cost_, act_cost_;
-  std::vector<int> unsat_, supporter_;
-  std::vector<char> in_plan_, atom_done_;
+  std::vector<int> unsat_, unsat0_, supporter_;
+  std::vector<char> is_goal_atom_;
+  // The queue of (h_add cost, atom): a heap, or, when every cost is a
+  // positive multiple of 1/scale_, buckets of that width, each sorted when
+  // its turn comes (the heap's order exactly: nothing enters the bucket being
+  // emptied), with the heap for costs past the last bucket.
+  void push(double c, int b);
+  std::vector<std::pair<double, int>> heap_;
+  bool buckets_mode_ = false;
+  double bucket_scale_ = 1;
+  std::vector<std::vector<std::pair<double, int>>> buckets_;
+  size_t bucket_cur_ = 0, bucket_top_ = 0;  // first bucket not yet emptied; one past the last used
+  std::vector<int> zero_, open_, count_, order_;
+  std::vector<uint32_t> atom_mark_, op_mark_;
+  uint32_t stamp_ = 0;
+  int goal_left_ = 0;
 };
 
 }  // namespace clips::heuristics

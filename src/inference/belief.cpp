@@ -201,12 +201,17 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, Refin
     std::vector<double>& last = refine_seconds_[acting_agent(s)];
     last.resize(policies_.size(), 0.0);
     std::stable_sort(work.begin(), work.end(), [&](const auto& a, const auto& b) { return last[a.first] > last[b.first]; });
+    const auto w0 = std::chrono::steady_clock::now();
     pool_->run(work.size(), [&](size_t i) {
       const auto [h, toward] = work[i];
       const auto t0 = std::chrono::steady_clock::now();
       refine_one(h, toward);
       last[h] = seconds_since(t0);
     });
+    const double wall = seconds_since(w0);
+    double sum = 0;
+    for (const auto& [h, toward] : work) sum += last[h];
+    parallel_saved_ += std::max(0.0, sum - wall);
   } else {
     for (const auto& [h, toward] : work) refine_one(h, toward);
   }
@@ -348,6 +353,7 @@ void Belief::weigh_utterance(UtteranceRecord& rec) const {
 
 StepRecord Belief::start(const pddl::State& s0, const std::vector<std::string>& utterances, lm::LanguageModel* lm) {
   const auto t0 = std::chrono::steady_clock::now();
+  parallel_saved_ = 0;
   state_ = s0;
   t_ = 0;
   if (particle_mode()) {
@@ -364,6 +370,7 @@ StepRecord Belief::start(const pddl::State& s0, const std::vector<std::string>& 
 StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, const std::vector<std::string>& utterances,
                            lm::LanguageModel* lm) {
   const auto t0 = std::chrono::steady_clock::now();
+  parallel_saved_ = 0;
   const pddl::State s = state;  // `state` may alias state_
   if (particle_mode()) {
     const bool evidence = is_speaker_action(action);
@@ -390,6 +397,7 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
 StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::LanguageModel& lm, StepRecord last) {
   if (utterances.empty()) return last;
   const auto t0 = std::chrono::steady_clock::now();
+  parallel_saved_ = 0;
   if (particle_mode()) {
     const RefineWhat what = hear_refine_what();
     history_.push_back({.kind = Event::Kind::Refine, .state = state_, .action = what.toward, .keep_stored = what.keep_stored});
@@ -397,7 +405,9 @@ StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::Language
     auto utts = particle_step(&lm);
     StepRecord r = record(last.action, last.evidence, std::move(last.utterances), last.seconds);
     for (auto& u : utts) r.utterances.push_back(std::move(u));
-    r.seconds += seconds_since(t0);
+    const double more = seconds_since(t0);
+    r.seconds += more;
+    r.work_seconds = last.work_seconds + more + parallel_saved_;
     return r;
   }
   refine_all(state_, hear_refine_what());
@@ -409,7 +419,9 @@ StepRecord Belief::hear(const std::vector<std::string>& utterances, lm::Language
   }
   StepRecord r = record(last.action, last.evidence, std::move(last.utterances), last.seconds);
   for (auto& u : utts) r.utterances.push_back(std::move(u));
-  r.seconds += seconds_since(t0);
+  const double more = seconds_since(t0);
+  r.seconds += more;
+  r.work_seconds = last.work_seconds + more + parallel_saved_;
   return r;
 }
 
@@ -458,6 +470,7 @@ StepRecord Belief::record(std::string action, bool evidence, std::vector<Utteran
   for (Modality m : kModalities) r.posterior[static_cast<int>(m)] = posterior(m);
   r.utterances = std::move(utts);
   r.seconds = seconds;
+  r.work_seconds = seconds + parallel_saved_;
   return r;
 }
 

@@ -212,6 +212,9 @@ struct StepRecord {
   std::array<Posterior, 3> posterior;  // indexed by Modality
   std::vector<UtteranceRecord> utterances;
   double seconds = 0;        // wall time of this step
+  // Its work summed over the refinement threads: the step's time on one
+  // thread (equal to `seconds` when the hypotheses are refined sequentially).
+  double work_seconds = 0;
   const Posterior& operator[](Modality m) const { return posterior[static_cast<int>(m)]; }
 };
 
@@ -378,6 +381,9 @@ class Belief {
   // Scheduling only: per acting agent (the first argument of the state's
   // first applicable action, -1 if none), each hypothesis' last refinement time.
   std::map<pddl::ObjectId, std::vector<double>> refine_seconds_;
+  // Refinement time the worker pool saved in the current step (the sum of
+  // its refinements' times minus its wall time), for StepRecord::work_seconds.
+  double parallel_saved_ = 0;
   std::vector<size_t> budget_stops_;        // per hypothesis (one writer each, also when threaded)
   size_t refinements_ = 0;
   // Particle mode only.

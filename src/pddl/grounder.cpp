@@ -3,6 +3,8 @@
 // with Task::compile.
 #include <algorithm>
 #include <limits>
+#include <set>
+#include <string>
 
 #include "pddl/parser.hpp"
 #include "pddl/task.hpp"
@@ -136,6 +138,21 @@ class ConditionCompiler {
     }
   }
 
+  // A string equal for structurally equal conditions of the pool (atoms by
+  // bit, junctions by their kids; other nodes by their own fields, which
+  // tells apart equal comparisons of distinct numeric nodes: safe).
+  std::string structure(int c) const {
+    const CNode& n = pool_.cnodes[c];
+    std::string out = std::to_string(static_cast<int>(n.op));
+    if (n.op == CNode::And || n.op == CNode::Or) {
+      out += '(';
+      for (int i = 0; i < n.b; ++i) out += structure(pool_.ckids[n.a + i]) + ',';
+      return out + ')';
+    }
+    if (n.op == CNode::Not) return out + '(' + structure(n.a) + ')';
+    return out + ':' + std::to_string(n.a) + ':' + std::to_string(n.b) + ':' + std::to_string(n.c);
+  }
+
   int junction(bool is_and, std::vector<int> kids) {
     std::vector<int> keep;
     for (int k : kids) {
@@ -149,6 +166,16 @@ class ConditionCompiler {
       }
     }
     if (keep.empty()) return is_and ? Task::kTrue : Task::kFalse;
+    // A disjunction repeats the same kid once per binding of variables its
+    // atoms do not read (an existential command goal over ?station1 ...):
+    // keep the first of structurally equal kids (the value cannot change).
+    if (!is_and && keep.size() > 1) {
+      std::vector<int> unique;
+      std::set<std::string> seen;
+      for (int k : keep)
+        if (seen.insert(structure(k)).second) unique.push_back(k);
+      keep = std::move(unique);
+    }
     if (keep.size() == 1) return keep[0];
     int start = static_cast<int>(pool_.ckids.size());
     pool_.ckids.insert(pool_.ckids.end(), keep.begin(), keep.end());

@@ -15,6 +15,17 @@ Policy::Policy(std::shared_ptr<const model::Specification> spec, std::shared_ptr
   if (!graph_) graph_ = std::make_shared<StateGraph>(spec_->task_ptr());
   if (&graph_->task() != &spec_->task())
     throw std::invalid_argument("Policy: the state graph belongs to another task than the specification");
+  if (h_ && !h_->estimates_depend_on_root()) estimates_ = std::make_shared<SharedEstimates>();
+}
+
+void Policy::SharedEstimates::set(int id, double h) {
+  const size_t c = static_cast<size_t>(id) >> kBits;
+  if (c >= chunks.size()) chunks.resize(c + 1);
+  if (!chunks[c]) {
+    chunks[c] = std::make_unique<double[]>(kSize);
+    std::fill(chunks[c].get(), chunks[c].get() + kSize, std::numeric_limits<double>::quiet_NaN());
+  }
+  chunks[c][static_cast<size_t>(id) & (kSize - 1)] = h;
 }
 
 double Policy::value(const uint64_t* s) const {
@@ -23,21 +34,24 @@ double Policy::value(const uint64_t* s) const {
 }
 
 double Policy::learned_estimate(int id) {
-  Entry& e = entry(id);
-  if (e.has_v) return -e.value_or_h;
-  if (!e.has_h) {
-    const double h = h_->estimate(graph_->state(id));  // does not touch the entries, so `e` stays valid
+  if (const Entry* r = read_entry(id); r && (r->has_v || r->has_h)) return r->has_v ? -r->value_or_h : r->value_or_h;
+  double h = estimates_ ? estimates_->get(id) : std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(h)) {
+    h = h_->estimate(graph_->state(id));
     // An estimate cut short by the deadline (0) is used once, never cached.
     if (h_->timed_out()) return h;
-    e.value_or_h = h;
-    e.has_h = true;
+    if (estimates_) estimates_->set(id, h);
   }
-  return e.value_or_h;
+  Entry& e = entry(id);
+  e.value_or_h = h;
+  e.has_h = true;
+  return h;
 }
 
 bool Policy::is_goal_entry(int id) {
+  if (const Entry* r = read_entry(id); r && r->goal >= 0) return r->goal == 1;
   Entry& e = entry(id);
-  if (e.goal < 0) e.goal = spec_->is_goal(graph_->state(id)) ? 1 : 0;
+  e.goal = spec_->is_goal(graph_->state(id)) ? 1 : 0;
   return e.goal == 1;
 }
 
@@ -90,8 +104,8 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
   };
   auto add_node = [&](int entry, int parent, pddl::ActionId a, double g) {
     const int id = static_cast<int>(nodes.size());
-    const double h = learned_estimate(entry);  // also allocates the chunk of `entry`
-    Entry& e = *peek_entry(entry);
+    const double h = learned_estimate(entry);
+    Entry& e = this->entry(entry);
     e.epoch = epoch;
     e.node = id;
     graph_->prefetch(entry);  // most generated nodes are expanded soon after
@@ -116,7 +130,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     }
     const int id = top.node;
     const int eid = nodes[static_cast<size_t>(id)].entry;
-    if (is_goal_entry(eid) || entry(eid).tree_action >= 0) {
+    if (is_goal_entry(eid) || read_entry(eid)->tree_action >= 0) {
       status = SearchStatus::Success;
       terminal = id;
       break;
@@ -145,12 +159,12 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     // loop needs the first, so their cache misses overlap.
     for (const StateGraph::Successor sc : succ)
       if (!prune || ws.keep[static_cast<size_t>(sc.action)])
-        if (const Entry* ce = peek_entry(sc.child)) __builtin_prefetch(ce);
+        if (const Entry* ce = read_entry(sc.child)) __builtin_prefetch(ce);
     for (const StateGraph::Successor sc : succ) {
       if (prune && !ws.keep[static_cast<size_t>(sc.action)]) continue;
       const double g = g0 + spec_->cost(sc.action);
       // A state without an entry is new to this policy, so not in this search.
-      const Entry* ce = peek_entry(sc.child);
+      const Entry* ce = read_entry(sc.child);
       if (!ce || ce->epoch != epoch) {
         ++counter;
         push(add_node(sc.child, id, sc.action, g), true);
@@ -255,7 +269,7 @@ RefineStats Policy::refine_successors(const pddl::State& s, const SearchOptions&
     }
     task.apply(a, s.data(), child.data());
     const int cid = graph_->insert(child.data());
-    if (const Entry& e = entry(cid); e.has_v && e.value_or_h == -kInf) continue;
+    if (const Entry* e = read_entry(cid); e && e->has_v && e->value_or_h == -kInf) continue;
     if (is_goal_entry(cid)) {
       set_value(cid, 0);
     } else {
@@ -273,7 +287,9 @@ RefineStats Policy::refine_successors(const pddl::State& s, const SearchOptions&
 RefineStats Policy::refine_step(const pddl::State& s, const SearchOptions& opts) {
   RefineStats st = refine(s, opts);
   if (!best_action(s)) {
+    auto estimates = estimates_;  // still valid: the same specification and heuristic
     *this = Policy(spec_, h_, graph_);
+    if (estimates) estimates_ = std::move(estimates);
     const RefineStats again = refine(s, opts);
     st.searches += again.searches;
     st.expanded += again.expanded;

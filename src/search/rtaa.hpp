@@ -8,6 +8,8 @@
 // every interior node of each search tree; afterwards the Q-values of all
 // applicable actions in s are fresh. Policies are copyable values (the
 // assistance phase keeps refining copies of the inference policies).
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -125,41 +127,73 @@ class Policy {
   // shared, so most ids belong to other hypotheses' searches: a flat array
   // sized to the graph zero-filled (and on growth, copied) all of them, a
   // third of a belief step's time on the paper's maps. A chunk is allocated
-  // when this policy first touches one of its ids and never moves.
+  // when this policy first touches one of its ids. Copies of a policy (the
+  // assistance refines copies of every hypothesis' policy, for each method)
+  // share chunks until one of them writes to one: the writer gets its own
+  // copy of that chunk first, so every policy still behaves as a value.
   static constexpr int kEntryChunkBits = 11;
   static constexpr size_t kEntryChunk = size_t{1} << kEntryChunkBits;
-  // The entry of state `id`, allocating its chunk.
+  using Chunk = std::shared_ptr<Entry[]>;  // kEntryChunk entries (one indirection, as a plain array)
+  static Chunk new_chunk() { return std::make_shared<Entry[]>(kEntryChunk); }
+  static Chunk copy_chunk(const Chunk& c) {
+    Chunk out = std::make_shared_for_overwrite<Entry[]>(kEntryChunk);
+    std::copy(c.get(), c.get() + kEntryChunk, out.get());
+    return out;
+  }
+  // The entry of state `id` for writing: allocates its chunk, or copies a
+  // chunk this policy shares with a copy of it.
   Entry& entry(int id) {
     const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
     if (c >= chunks_.size()) chunks_.resize(c + 1);
-    std::vector<Entry>& chunk = chunks_[c];
-    if (chunk.empty()) chunk.resize(kEntryChunk);
-    return chunk[static_cast<size_t>(id) & (kEntryChunk - 1)];
+    Chunk& chunk = chunks_[c];
+    if (!chunk) chunk = new_chunk();
+    else if (chunk.use_count() > 1) chunk = copy_chunk(chunk);
+    return chunk[static_cast<std::ptrdiff_t>(static_cast<size_t>(id) & (kEntryChunk - 1))];
   }
-  // The entry of state `id` if its chunk exists (an entry this policy never
-  // wrote reads as the default: no value, no estimate, not in any search).
-  Entry* peek_entry(int id) {
+  // The entry of state `id` for reading, if its chunk exists (an entry this
+  // policy never wrote reads as the default: no value, no estimate, not in
+  // any search).
+  const Entry* read_entry(int id) const {
     const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
-    return c < chunks_.size() && !chunks_[c].empty() ? &chunks_[c][static_cast<size_t>(id) & (kEntryChunk - 1)] : nullptr;
+    return c < chunks_.size() && chunks_[c] ? chunks_[c].get() + (static_cast<size_t>(id) & (kEntryChunk - 1)) : nullptr;
   }
   const Entry* find_entry(const uint64_t* s) const {
     const int id = graph_->find(s);
-    if (id < 0) return nullptr;
-    const size_t c = static_cast<size_t>(id) >> kEntryChunkBits;
-    return c < chunks_.size() && !chunks_[c].empty() ? &chunks_[c][static_cast<size_t>(id) & (kEntryChunk - 1)] : nullptr;
+    return id < 0 ? nullptr : read_entry(id);
   }
   template <class F>
   void for_each_entry(F&& f) {
-    for (auto& chunk : chunks_)
-      for (Entry& e : chunk) f(e);
+    for (auto& chunk : chunks_) {
+      if (!chunk) continue;
+      if (chunk.use_count() > 1) chunk = copy_chunk(chunk);
+      for (size_t i = 0; i < kEntryChunk; ++i) f(chunk[static_cast<std::ptrdiff_t>(i)]);
+    }
   }
+  // Estimates shared by a policy and its copies: they have the same
+  // specification and heuristic, so the same H(s), and a copy refined for
+  // assistance need not estimate again what the original or another copy
+  // did. Per state id, NaN where unknown. Like the heuristic the copies
+  // share, it is not for copies refined on different threads at once. Null
+  // when the heuristic's estimates depend on the root of the refinement.
+  struct SharedEstimates {
+    static constexpr int kBits = 12;
+    static constexpr size_t kSize = size_t{1} << kBits;
+    std::vector<std::unique_ptr<double[]>> chunks;
+    double get(int id) const {
+      const size_t c = static_cast<size_t>(id) >> kBits;
+      return c < chunks.size() && chunks[c] ? chunks[c][static_cast<size_t>(id) & (kSize - 1)]
+                                            : std::numeric_limits<double>::quiet_NaN();
+    }
+    void set(int id, double h);
+  };
 
   std::shared_ptr<const model::Specification> spec_;
   std::shared_ptr<heuristics::Heuristic> h_;
   std::shared_ptr<StateGraph> graph_;
   // H estimates are kept across refine() calls unless the heuristic says
   // they depend on the root prepare() was given.
-  std::vector<std::vector<Entry>> chunks_;
+  std::vector<Chunk> chunks_;
+  std::shared_ptr<SharedEstimates> estimates_;
   size_t num_values_ = 0;  // entries with has_v
   size_t tree_size_ = 0;   // entries with a tree action
   uint32_t epoch_ = 0;

@@ -47,10 +47,10 @@ std::vector<std::vector<std::string>> results_without_seconds(const fs::path& di
 }
 
 // summary.json without the fields that tell one run from another in time
-// (wall_seconds, max_rss_mb, date) and the shards' bookkeeping.
+// (wall_seconds, max_rss_mb, date, latency) and the shards' bookkeeping.
 json summary_without_timing(const fs::path& dir) {
   json j = json::parse(read_text(dir / "summary.json"));
-  for (const char* k : {"wall_seconds", "max_rss_mb", "date", "shards"}) j.erase(k);
+  for (const char* k : {"wall_seconds", "max_rss_mb", "date", "shards", "latency"}) j.erase(k);
   return j;
 }
 
@@ -59,6 +59,8 @@ json plans_without_timing(const fs::path& dir) {
   json plans = json::parse(read_text(dir / "outcomes.json"))["plans"];
   for (auto& p : plans) {
     p.erase("seconds");
+    p.erase("step_seconds");
+    p.erase("step_work_seconds");
     for (auto& m : p["methods"]) {
       m.erase("seconds");
       m.erase("decision_seconds");
@@ -67,13 +69,14 @@ json plans_without_timing(const fs::path& dir) {
   return plans;
 }
 
-// The results table in a command's output: its lines less the timing line
-// ("... s wall ...") and the notes on stderr ("wrote ...").
+// The results table in a command's output: its lines less the timing lines
+// ("... s wall ...", "latency: ...") and the notes on stderr ("wrote ...").
 std::vector<std::string> table_without_timing(const std::string& out) {
   std::vector<std::string> lines;
   std::istringstream in(out);
   for (std::string line; std::getline(in, line);)
-    if (!contains(line, " s wall") && line.rfind("wrote ", 0) != 0) lines.push_back(line);
+    if (!contains(line, " s wall") && line.rfind("wrote ", 0) != 0 && line.rfind("latency: ", 0) != 0)
+      lines.push_back(line);
   return lines;
 }
 

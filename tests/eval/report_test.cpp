@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "eval/bench.hpp"
 #include "eval/report.hpp"
 #include "eval/support.hpp"
 #include "render/image.hpp"
@@ -64,6 +65,33 @@ TEST_F(BenchReportTest, SummaryJson) {
   EXPECT_FALSE(j["methods"].contains("multimodal"));  // no endpoint configured
   // The table says the multimodal baseline was skipped.
   EXPECT_NE(result_->out.find("skipped: no chat endpoint"), std::string::npos) << result_->out;
+  // Per-step latency (issue 43): every observed step of the four plans, their
+  // first steps, the CLIPS decisions; in the table too.
+  ASSERT_TRUE(j.contains("latency"));
+  const auto& lat = j["latency"];
+  EXPECT_GE(lat["inference_threads"].get<int>(), 1);
+  EXPECT_GT(lat["belief_step"]["steps"].get<int>(), 0);
+  EXPECT_EQ(lat["belief_step"]["steps"], lat["belief_step_one_thread"]["steps"]);
+  EXPECT_EQ(lat["belief_start"]["plans"], kPlans.size());
+  EXPECT_EQ(lat["decision_method"], "clips");
+  EXPECT_GT(lat["assistance_decision"]["decisions"].get<int>(), 0);
+  for (const char* k : {"belief_step", "belief_step_one_thread", "belief_start", "assistance_decision"}) {
+    const auto& l = lat[k];
+    EXPECT_LE(l["median_ms"].get<double>(), l["p95_ms"].get<double>()) << k;
+    EXPECT_LE(l["p95_ms"].get<double>(), l["max_ms"].get<double>()) << k;
+  }
+  EXPECT_NE(result_->out.find("latency: belief step median"), std::string::npos) << result_->out;
+  EXPECT_NE(result_->out.find("latency: assistance decision (clips)"), std::string::npos) << result_->out;
+}
+
+// The latency figures' quantiles: the value at rank floor(q (n - 1)).
+TEST(BenchLatency, QuantilesAreTheBenchmarksRanks) {
+  const LatencyStats l = LatencyStats::of({5, 1, 4, 2, 3, 10, 6, 7, 8, 9, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21});
+  EXPECT_EQ(l.n, 21u);
+  EXPECT_EQ(l.median, 11);
+  EXPECT_EQ(l.p95, 20);
+  EXPECT_EQ(l.max, 21);
+  EXPECT_EQ(LatencyStats::of({}).n, 0u);
 }
 
 TEST_F(BenchReportTest, ResultsCsvHasOneRowPerPlanAndMethod) {

@@ -1,0 +1,8 @@
+(pickup robot saw1 toolwall)
+(move human rack bench)
+(move robot toolwall bench)
+(putdown human plank1 bench)
+(handover robot human saw1 bench)
+(putdown human leg1 bench)
+(move robot bench rack)
+(assemble human table plank1 leg1 saw1 bench)

@@ -1,0 +1,4 @@
+(move human cellar bins)
+(wait robot)
+(pickup human bracket1 bins)
+; Could you hand me the drill?

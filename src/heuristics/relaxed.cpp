@@ -1,0 +1,248 @@
+#include "heuristics/relaxed.hpp"
+
+#include <algorithm>
+
+namespace clips::heuristics {
+
+using CNode = pddl::Task::CNode;
+
+namespace {
+
+// The atoms of a precondition's top-level conjunction: positive ones, and
+// those it requires false.
+void conjuncts(const pddl::Task& t, pddl::CondId c, std::vector<int>& pos, std::vector<int>* neg) {
+  const CNode& n = t.cnode(c);
+  if (n.op == CNode::Atom) pos.push_back(n.a);
+  if (n.op == CNode::NotAtom && neg) neg->push_back(n.a);
+  if (n.op == CNode::And)
+    for (int i = 0; i < n.b; ++i) conjuncts(t, t.ckids()[n.a + i], pos, neg);
+}
+
+void normalise(std::vector<int>& clause) {
+  std::sort(clause.begin(), clause.end());
+  clause.erase(std::unique(clause.begin(), clause.end()), clause.end());
+}
+
+void normalise_all(std::vector<std::vector<int>>& clauses) {
+  for (auto& c : clauses) normalise(c);
+  std::sort(clauses.begin(), clauses.end());
+  clauses.erase(std::unique(clauses.begin(), clauses.end()), clauses.end());
+}
+
+constexpr size_t kMaxClauses = 4096;
+
+std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId c, bool norm) {
+  const CNode& n = g.cnode(c);
+  switch (n.op) {
+    case CNode::False: return {};
+    case CNode::Atom: return {{n.a}};
+    case CNode::Or: {
+      std::vector<std::vector<int>> out;
+      for (int i = 0; i < n.b; ++i) {
+        auto k = dnf(g, g.ckids()[n.a + i], norm);
+        out.insert(out.end(), k.begin(), k.end());
+        if (norm && out.size() > kMaxClauses) normalise_all(out);
+      }
+      if (norm) normalise_all(out);
+      return out;
+    }
+    case CNode::And: {
+      std::vector<std::vector<int>> acc{{}};
+      for (int i = 0; i < n.b; ++i) {
+        auto k = dnf(g, g.ckids()[n.a + i], norm);
+        std::vector<std::vector<int>> next;
+        for (auto& a : acc)
+          for (auto& b : k) {
+            auto m = a;
+            m.insert(m.end(), b.begin(), b.end());
+            next.push_back(std::move(m));
+          }
+        acc = std::move(next);
+        if (norm) normalise_all(acc);
+        if (acc.size() > kMaxClauses) return {{}};  // too large: give up (0 is admissible)
+      }
+      return acc;
+    }
+    default: return {{}};
+  }
+}
+
+void to_csr(const std::vector<std::vector<int>>& rows, std::vector<int>& begin, std::vector<int>& flat) {
+  begin.assign(rows.size() + 1, 0);
+  flat.clear();
+  for (size_t i = 0; i < rows.size(); ++i) {
+    flat.insert(flat.end(), rows[i].begin(), rows[i].end());
+    begin[i + 1] = static_cast<int>(flat.size());
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> goal_dnf(const pddl::CompiledCondition& g, bool normalise) {
+  return dnf(g, g.root(), normalise);
+}
+
+RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
+  const pddl::Task& t = spec.task();
+  const int na = t.num_actions(), nb = t.num_atoms();
+  RelaxedTask r;
+  r.options = opts;
+  r.num_atoms = nb;
+  if (opts.turns) {
+    r.turns = TurnStructure::of(t);
+    r.use_turns = r.turns.ok;
+  }
+  std::vector<char> is_turn(static_cast<size_t>(nb), 0);
+  if (r.use_turns)
+    for (int b : r.turns.turn_bit) is_turn[static_cast<size_t>(b)] = 1;
+  std::vector<char> deleted(static_cast<size_t>(nb), 0);
+  if (opts.dead_preconditions)
+    for (pddl::ActionId a = 0; a < na; ++a) {
+      for (int b : t.action(a).eff.del) deleted[static_cast<size_t>(b)] = 1;
+      for (const auto& ce : t.action(a).cond_eff)
+        for (int b : ce.eff.del) deleted[static_cast<size_t>(b)] = 1;
+    }
+
+  std::vector<std::vector<int>> pre_rows, add_rows, needed(static_cast<size_t>(nb)), kills(static_cast<size_t>(nb)),
+      killers_rows(static_cast<size_t>(na));
+  const size_t nagents = r.use_turns ? r.turns.agents.size() : 0;
+  r.agent_safe_min.assign(nagents, model::kInf);
+  r.agent_killable.assign(nagents, {});
+  for (pddl::ActionId a = 0; a < na; ++a) {
+    const pddl::GroundAction& ga = t.action(a);
+    std::vector<int> p, neg, e;
+    conjuncts(t, ga.pre, p, &neg);
+    if (opts.dead_preconditions)
+      for (int b : neg)
+        if (!deleted[static_cast<size_t>(b)]) killers_rows[static_cast<size_t>(a)].push_back(b);
+    if (r.use_turns) std::erase_if(p, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
+    if (opts.dedup_preconditions) normalise(p);
+    e = ga.eff.add;
+    for (const auto& ce : ga.cond_eff) e.insert(e.end(), ce.eff.add.begin(), ce.eff.add.end());
+    if (r.use_turns) std::erase_if(e, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
+    const double c = spec.cost(a);
+    if (r.use_turns) {
+      const size_t x = static_cast<size_t>(r.turns.agent_of[static_cast<size_t>(a)]);
+      if (killers_rows[static_cast<size_t>(a)].empty()) r.agent_safe_min[x] = std::min(r.agent_safe_min[x], c);
+      else r.agent_killable[x].push_back({c, a});
+    }
+    if (e.empty() && !opts.keep_empty_ops) continue;
+    const int op = static_cast<int>(r.op_action.size());
+    r.op_action.push_back(a);
+    r.cost.push_back(c);
+    r.positive_costs &= c > 0;
+    r.agent.push_back(r.use_turns ? r.turns.agent_of[static_cast<size_t>(a)] : -1);
+    for (int b : p) needed[static_cast<size_t>(b)].push_back(op);
+    for (int b : killers_rows[static_cast<size_t>(a)]) kills[static_cast<size_t>(b)].push_back(op);
+    if (p.empty()) r.no_pre_ops.push_back(op);
+    pre_rows.push_back(std::move(p));
+    add_rows.push_back(std::move(e));
+  }
+  for (auto& k : r.agent_killable) std::sort(k.begin(), k.end());
+
+  r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
+  if (r.use_turns) {
+    for (auto& c : r.goal_clauses) std::erase_if(c, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
+    if (opts.normalise_goal) normalise_all(r.goal_clauses);
+  }
+  for (const auto& c : r.goal_clauses) {
+    r.goal_trivial |= c.empty();
+    r.goal_atoms.insert(r.goal_atoms.end(), c.begin(), c.end());
+  }
+  normalise(r.goal_atoms);
+
+  if (opts.relevant_only) {
+    // Backward from the goal's atoms: the operators adding a relevant atom,
+    // and their preconditions.
+    const size_t nops = pre_rows.size();
+    std::vector<std::vector<int>> adders(static_cast<size_t>(nb));
+    for (size_t op = 0; op < nops; ++op)
+      for (int e : add_rows[op]) adders[static_cast<size_t>(e)].push_back(static_cast<int>(op));
+    std::vector<char> atom_rel(static_cast<size_t>(nb), 0), op_rel(nops, 0);
+    std::vector<int> work;
+    for (int b : r.goal_atoms)
+      if (!atom_rel[static_cast<size_t>(b)]) {
+        atom_rel[static_cast<size_t>(b)] = 1;
+        work.push_back(b);
+      }
+    while (!work.empty()) {
+      const int b = work.back();
+      work.pop_back();
+      for (int op : adders[static_cast<size_t>(b)]) {
+        if (op_rel[static_cast<size_t>(op)]) continue;
+        op_rel[static_cast<size_t>(op)] = 1;
+        for (int p : pre_rows[static_cast<size_t>(op)])
+          if (!atom_rel[static_cast<size_t>(p)]) {
+            atom_rel[static_cast<size_t>(p)] = 1;
+            work.push_back(p);
+          }
+      }
+    }
+    // Renumber the kept operators, in order.
+    std::vector<int> keep_id(nops, -1);
+    std::vector<std::vector<int>> pre2, add2;
+    RelaxedTask k;
+    for (size_t op = 0; op < nops; ++op) {
+      if (!op_rel[op]) continue;
+      keep_id[op] = static_cast<int>(pre2.size());
+      pre2.push_back(std::move(pre_rows[op]));
+      add2.push_back(std::move(add_rows[op]));
+      k.op_action.push_back(r.op_action[op]);
+      k.cost.push_back(r.cost[op]);
+      k.agent.push_back(r.agent[op]);
+    }
+    r.op_action = std::move(k.op_action);
+    r.cost = std::move(k.cost);
+    r.agent = std::move(k.agent);
+    pre_rows = std::move(pre2);
+    add_rows = std::move(add2);
+    r.positive_costs = true;
+    for (double c : r.cost) r.positive_costs &= c > 0;
+    auto remap = [&](std::vector<std::vector<int>>& lists) {
+      for (auto& l : lists) {
+        std::vector<int> out;
+        for (int op : l)
+          if (keep_id[static_cast<size_t>(op)] >= 0) out.push_back(keep_id[static_cast<size_t>(op)]);
+        l = std::move(out);
+      }
+    };
+    remap(needed);
+    remap(kills);
+    std::vector<int> no_pre;
+    for (int op : r.no_pre_ops)
+      if (keep_id[static_cast<size_t>(op)] >= 0) no_pre.push_back(keep_id[static_cast<size_t>(op)]);
+    r.no_pre_ops = std::move(no_pre);
+  }
+  to_csr(pre_rows, r.pre_begin, r.pre);
+  to_csr(add_rows, r.add_begin, r.add);
+  to_csr(needed, r.needed_begin, r.needed_by);
+  to_csr(kills, r.kill_begin, r.kill);
+  to_csr(killers_rows, r.killers_begin, r.killers);
+  return r;
+}
+
+bool RelaxedTask::killed(pddl::ActionId a, const uint64_t* s) const {
+  for (int k = killers_begin[static_cast<size_t>(a)]; k < killers_begin[static_cast<size_t>(a) + 1]; ++k)
+    if (pddl::get_bit(s, killers[static_cast<size_t>(k)])) return true;
+  return false;
+}
+
+double RelaxedTask::turn_cost(int x, const uint64_t* s) const {
+  double best = agent_safe_min[static_cast<size_t>(x)];
+  for (const auto& [c, a] : agent_killable[static_cast<size_t>(x)]) {
+    if (c >= best) break;
+    if (!killed(a, s)) return c;
+  }
+  return best;
+}
+
+int min_turns(const std::vector<int>& order, const std::vector<int>& count, int k) {
+  int L = 0;
+  for (int i = 0; i < static_cast<int>(order.size()); ++i) {
+    const int n = count[static_cast<size_t>(order[static_cast<size_t>(i)])];
+    if (n > 0) L = std::max(L, (n - 1) * k + i + 1);
+  }
+  return L;
+}
+
+}  // namespace clips::heuristics
