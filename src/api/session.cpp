@@ -56,6 +56,36 @@ std::shared_ptr<lm::LanguageModel> shared_language_model(const LanguageModelOpti
   return m;
 }
 
+// The model a session hears with: for the embedded backend, the one `clips
+// infer` and `clips serve` use on this domain (trained on the pack's corpora,
+// else on a corpus generated from the domain, its problem and its goals);
+// shared by sessions on the same domain, problem and goals.
+std::shared_ptr<lm::LanguageModel> session_language_model(const LanguageModelOptions& o, const domains::Pack& pack,
+                                                          const pddl::Task& task,
+                                                          const std::vector<std::string>& goal_labels) {
+  if (o.backend != "embedded") return shared_language_model(o);
+  static std::mutex mu;
+  static std::map<std::string, std::weak_ptr<lm::LanguageModel>> models;
+  // A problem read from a file is known by its path; one sent as text is not
+  // shared (its text is not kept).
+  const pddl::Problem& problem = task.problem();
+  std::string key = pack.name() + '\n' + task.domain().name + '\n' + problem.file + '\n' + problem.name + '\n' +
+                    std::to_string(problem.objects.size()) + '\n' + std::to_string(problem.init_atoms.size());
+  for (const auto& g : goal_labels) key += '\n' + g;
+  const bool shared = !problem.file.empty();
+  std::lock_guard<std::mutex> lock(mu);
+  if (shared)
+    if (auto m = models[key].lock()) return m;
+  std::shared_ptr<lm::LanguageModel> m;
+  try {
+    m = language::make_domain_language_model(o.backend, {}, pack, task.domain(), {&task.problem()}, goal_labels);
+  } catch (const lm::LmError& e) {
+    throw LanguageModelError(e.what());
+  }
+  if (shared) models[key] = m;
+  return m;
+}
+
 void check_backend(const std::string& backend) {
   for (const auto& k : language::language_model_kinds())
     if (k == backend) return;
@@ -278,7 +308,7 @@ const Step& Session::observe(int action_id) {
 const Step& Session::hear(const std::string& utterance) {
   data::check_utterance(utterance, SourceLoc{"utterance \"" + utterance + "\"", 0, 0});
   Impl& m = *impl_;
-  if (!m.lm) m.lm = shared_language_model(m.options.language_model);
+  if (!m.lm) m.lm = session_language_model(m.options.language_model, *m.pack, *m.task, m.goal_labels);
   try {
     m.last = m.belief->hear({utterance}, *m.lm, m.last);
     if (!m.last.utterances.empty()) m.requests = assist::requests_from(*m.task, m.last.utterances.back());

@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "heuristics/basic.hpp"
 #include "model/spec.hpp"
+#include "search/tied_rollouts.hpp"
 
 namespace clips::assist {
 
@@ -211,25 +213,61 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       if (qa[i] >= qa[best] - tol) tied.push_back(i);
     if (tied.size() > 1) {
       const RequestMatcher match(setup);
-      const int steps = std::max(0, setup.horizon - t);
+      search::TiedRolloutOptions tied_options;
+      tied_options.max_steps = std::max(0, setup.horizon - t);
+      tied_options.max_plans = 4;
+      tied_options.max_refined_states = 2;
       d.request_scores.assign(acts.size(), std::numeric_limits<double>::quiet_NaN());
       for (size_t i : tied) {
         const State next = task.apply(s, acts[i]);
         double v = 0;
         for (const Hypothesis* h : live) {
           if (!h->request || h->request->empty()) continue;
-          std::vector<ActionId> plan{acts[i]};
-          for (ActionId a : h->policy->rollout(next, steps)) plan.push_back(a);
-          v += h->weight * match.score(*h->request, plan);
+          // Over the equally good continuations, ties broken uniformly: an
+          // action that leaves the request to chance after it scores less
+          // than one that begins carrying it out.
+          for (const search::WeightedRollout& r : search::tied_rollouts(*h->policy, next, tied_options, setup.refine_options)) {
+            std::vector<ActionId> plan{acts[i]};
+            plan.insert(plan.end(), r.actions.begin(), r.actions.end());
+            v += h->weight * r.weight * match.score(*h->request, plan);
+          }
         }
         d.request_scores[i] = v;
       }
+      // Where the continuations do not tell the candidates apart, the one
+      // that brings what was asked nearest wins: h_max, from the state it
+      // leads to, of what the requested assistant actions add.
+      std::vector<double> distance(acts.size(), 0.0);
+      for (const Hypothesis* h : live) {
+        if (!h->request) continue;
+        for (const RequestedCommand& c : *h->request) {
+          std::string goal;
+          for (ActionId a : c.assistant_part)
+            for (int bit : task.action(a).eff.add) {
+              const std::string atom = task.atom_str(bit);
+              if (atom.rfind("(" + setup.turn_predicate + " ", 0) != 0) goal += " " + atom;
+            }
+          if (goal.empty()) continue;
+          auto spec = std::make_shared<model::Specification>(setup.task, "(and" + goal + ")",
+                                                             h->policy->spec().profile());
+          heuristics::HMaxHeuristic hmax;
+          hmax.prepare(*spec, s);
+          for (size_t i : tied) {
+            const double e = hmax.estimate(task.apply(s, acts[i]).data());
+            distance[i] += h->weight * c.probability * (std::isfinite(e) ? e : 1e6);
+          }
+        }
+      }
+      auto better = [&](size_t i, size_t j) {
+        if (d.request_scores[i] > d.request_scores[j] + 1e-9) return true;
+        return d.request_scores[i] > d.request_scores[j] - 1e-9 && distance[i] < distance[j] - 1e-9;
+      };
       size_t pick = tied.front();
       for (size_t i : tied)
-        if (d.request_scores[i] > d.request_scores[pick] + 1e-12) pick = i;
+        if (better(i, pick)) pick = i;
       const size_t chosen = static_cast<size_t>(std::find(acts.begin(), acts.end(), d.action) - acts.begin());
       const bool chosen_tied = std::find(tied.begin(), tied.end(), chosen) != tied.end();
-      if (!chosen_tied || d.request_scores[pick] > d.request_scores[chosen] + 1e-12) {
+      if (!chosen_tied || better(pick, chosen)) {
         d.broke_tie = acts[pick] != d.action;
         d.action = acts[pick];
       }

@@ -259,7 +259,9 @@ std::shared_ptr<const pddl::Task> ground_problem_text(const domains::Pack& pack,
                                                       const std::string& problem_text, const std::string& source,
                                                       int64_t max_ground_actions) {
   const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
+  domain = domains::prepare_domain(pack.spec(), std::move(domain));
   auto prob = std::make_shared<pddl::Problem>(pddl::parse_problem(*domain, problem_text, source, with_goal));
+  domains::prepare_problem(pack.spec(), *domain, *prob);
   pddl::GroundingOptions go = pack.spec().grounding;
   go.max_ground_actions = max_ground_actions;
   auto t = std::make_shared<const pddl::Task>(std::move(domain), std::move(prob), go);
@@ -274,9 +276,7 @@ domains::PackPtr text_pack(const pddl::Domain& domain, const std::string& pack_j
       throw InputError("domain name '" + domain.name + "' cannot name a pack (no '/', '\\' or leading '.')");
     return domains::find_pack(domain);
   }
-  domains::PackSpec spec = domains::parse_pack_spec(pack_json, source);
-  domains::check_pack_against(spec, domain);
-  return domains::make_pack(std::move(spec));
+  return domains::pack_for_domain(domains::parse_pack_spec(pack_json, source), domain);
 }
 
 std::vector<GoalSpec> text_problem_goals(const domains::Pack& pack, const pddl::Task& task, const std::string& source) {

@@ -564,13 +564,18 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     spec = std::move(s);
     declared = false;  // nothing to check: `clips plan` works on any domain
   }
-  if (declared) {
-    check_pack_against(*spec, domain);
-    spec->transform = plan_task_transform(*spec, domain);
-  }
+  if (declared) return pack_for_domain(std::move(*spec), domain);
   derive_goal_atoms(*spec, domain);
   derive_location_predicates(*spec, domain);
   return make_pack(std::move(*spec));
+}
+
+PackPtr pack_for_domain(PackSpec spec, const pddl::Domain& domain) {
+  check_pack_against(spec, domain);
+  spec.transform = plan_task_transform(spec, domain);
+  derive_goal_atoms(spec, domain);
+  derive_location_predicates(spec, domain);
+  return make_pack(std::move(spec));
 }
 
 DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir) {

@@ -413,6 +413,10 @@ void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
 // A declared pack is checked against the domain (check_pack_against) and
 // carries what clips adds to it (PackSpec::transform).
 PackPtr find_pack(const pddl::Domain& domain, const std::string& dir = "");
+// A declared spec (a file's or a text's) made the pack of a domain: checked
+// against it, with what clips adds and what it derives from the domain (goal
+// atoms, location predicates). find_pack's last step.
+PackPtr pack_for_domain(PackSpec spec, const pddl::Domain& domain);
 // A domain file and its pack as clips grounds them: find_pack on the file's
 // folder (or `dir`), and the domain with the pack's task transformations
 // applied (task_transform.hpp), which problems are parsed against.

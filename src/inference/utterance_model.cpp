@@ -234,7 +234,9 @@ commands::Command UtteranceModel::goal_statement(const std::string& label, const
   c.variables.push_back({"goal1", "goal"});
   std::vector<std::string> words;
   auto add = [&](const std::string& w) {
-    if (w.size() > 1 && std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
+    // Type nouns stay nouns (the corpus does not name goals with them either).
+    if (w.size() > 1 && !task_->domain().find_type(w) && std::find(words.begin(), words.end(), w) == words.end())
+      words.push_back(w);
   };
   for (const auto& w : name_words(label)) add(w);
   // The objects the condition names (not the agents), and their qualifiers.

@@ -58,7 +58,7 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind,
 // command language over the given problems (lm/domain_corpus.hpp). The
 // prompts' few-shot examples are trained on in both cases.
 // `goal_names`: the candidate goals' labels, for statements of the goal
-// (lm::DomainDescription::goal_names; empty: the problems' objects).
+// (lm::DomainDescription::goal_names; empty: no statements of the goal).
 std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string& kind, const LanguageModelOptions& options,
                                                               const domains::Pack& pack, const pddl::Domain& domain,
                                                               const std::vector<const pddl::Problem*>& problems,

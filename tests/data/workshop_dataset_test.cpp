@@ -15,7 +15,10 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "data/dataset.hpp"
+#include "util/error.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/sexpr.hpp"
 #include "test_paths.hpp"
@@ -156,3 +159,55 @@ TEST_F(WorkshopDataset, CompletionsReachTheTrueGoalAndNoOtherCandidate) {
 
 }  // namespace
 }  // namespace clips::data
+
+// instructions.tsv: each plan's split and categories, and errors naming the
+// file and line.
+namespace {
+struct WorkshopCopy {
+  std::filesystem::path dir;
+  WorkshopCopy() {
+    dir = std::filesystem::temp_directory_path() / ("clips-instr-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::copy(std::string(CLIPS_SOURCE_DIR) + "/data/datasets/workshop", dir,
+                          std::filesystem::copy_options::recursive);
+  }
+  ~WorkshopCopy() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+  std::string load_error(const std::string& table) const {
+    std::ofstream((dir / "instructions.tsv").string()) << table;
+    try {
+      clips::data::Dataset::load(dir.string());
+    } catch (const clips::InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+}  // namespace
+
+TEST(InstructionTable, SplitsAndCategoriesReachThePlans) {
+  const auto ds = clips::data::Dataset::load(std::string(CLIPS_SOURCE_DIR) + "/data/datasets/workshop");
+  const auto& p = ds.plan("1.1.table");
+  EXPECT_EQ(p.split, "dev");
+  EXPECT_EQ(p.categories, (std::vector<std::string>{"qualifier", "other-action"}));
+  int dev = 0, test = 0;
+  for (const auto& q : ds.plans()) (q.split == "dev" ? dev : test) += 1;
+  EXPECT_GT(dev, 0);
+  EXPECT_GT(test, 0);
+}
+
+TEST(InstructionTable, BadRowsNameTheFileAndLine) {
+  WorkshopCopy w;
+  std::string e = w.load_error("plan\tsplit\tcategories\n1.1.table\ttrain\tdirect\n");
+  EXPECT_NE(e.find("instructions.tsv:2"), std::string::npos) << e;
+  EXPECT_NE(e.find("must be dev or test"), std::string::npos) << e;
+  e = w.load_error("plan\tsplit\tcategories\n9.9.nothing\tdev\tdirect\n");
+  EXPECT_NE(e.find("no plan 9.9.nothing"), std::string::npos) << e;
+  e = w.load_error("plan\tsplit\tcategories\n1.1.table\tdev\n");
+  EXPECT_NE(e.find("expected 3 tab-separated columns"), std::string::npos) << e;
+  e = w.load_error("plan\tsplit\n");
+  EXPECT_NE(e.find("header"), std::string::npos) << e;
+  EXPECT_EQ(w.load_error("plan\tsplit\tcategories\n1.1.table\ttest\tdirect, deixis\n"), "");
+}

@@ -315,8 +315,8 @@ TEST(PackFile, AFolderPackIsFoundAndDrivesGoalsOptionsAndCandidates) {
   EXPECT_NE(std::find(printed.begin(), printed.end(), "(take helper apple)"), printed.end());
   EXPECT_NE(std::find(printed.begin(), printed.end(), "(give helper cook pear)"), printed.end());
   for (const auto& c : cands) EXPECT_EQ(c.args[0], "helper");
-  // Unit costs, LM-cut, the generic text view.
-  EXPECT_EQ(pack->default_profiles().front().name, "unit");
+  // Unit costs but a cheaper no-op (roles.noop_cost, 0.6), LM-cut, the generic text view.
+  EXPECT_EQ(pack->default_profiles().front().name, "default");
   EXPECT_EQ(pack->default_admissible_heuristic(), "lmcut");
   EXPECT_NE(pack->describe_state(*task, task->initial_state()).find("(at apple)"), std::string::npos);
 }

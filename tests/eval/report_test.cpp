@@ -136,10 +136,13 @@ TEST_F(BenchReportTest, ReportFilesAndHtml) {
     EXPECT_NE(html.find("href=\"plans/" + p + ".gif\""), std::string::npos) << p;
     EXPECT_NE(html.find("plans/" + p + "_posterior.svg"), std::string::npos) << p;
   }
-  // Inline SVG charts: five metric charts plus one posterior plot per plan.
+  // Inline SVG charts: five metric charts, one posterior plot per plan, and a
+  // reliability diagram per method with a goal posterior (the examples have no
+  // dev/test split, so one each: clips, lang_only, action_only).
   size_t svgs = 0;
   for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  EXPECT_EQ(svgs, 5 + kPlans.size());
+  EXPECT_EQ(svgs, 5 + kPlans.size() + 3);
+  EXPECT_NE(html.find("Calibration of the goal posterior"), std::string::npos);
 }
 
 TEST_F(BenchReportTest, RendersInHeadlessChromium) {

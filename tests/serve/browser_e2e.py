@@ -362,7 +362,7 @@ def main():
                          "the dataset list")
         play_quick_start(browser, source_dir, dkg, shot, check)
         play_text_scene(browser, "workshop", "1", "1.1.table", "(move human bench rack)",
-                        "Can you bring the big plank over to the bench?", "(pickup human plank1 rack)",
+                        "Can you bring the big plank over to the bench?", "(move human rack toolwall)",
                         shot[:-4] + "-workshop.png", check)
         browser.js("(() => { const s = document.getElementById('dataset'); s.value = 'kitchen';"
                    " s.dispatchEvent(new Event('change')); })()")

@@ -14,7 +14,6 @@
     cake cookies fudge pudding - dish
     cold warm - temperature)
   (:init
-    (active cook) (next-turn cook helper) (next-turn helper cook)
     (counter counter)
     (at cook counter) (at helper pantry)
     (in flour1 pantry) (istemp flour1 warm)

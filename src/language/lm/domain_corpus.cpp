@@ -320,10 +320,13 @@ class Generator {
   // "(make me ?goal1) where (named ?goal1 pot) (named ?goal1 roses)" <->
   // "I'd like to pot the roses", "we're making the frame", ...
   void goal_statements() {
-    std::vector<std::string> names = d_.goal_names;
-    if (names.empty())
-      for (const DomainObject& o : d_.objects)
-        if (o.name != d_.speaker && o.name != d_.listener) names.push_back(o.name);
+    // Type nouns stay nouns: a goal word that is also a type ("the rose" in
+    // "pot-rose") is not made a name, or the noun would lose the mass that
+    // binds qualifiers to it (UtteranceModel::goal_statement skips them too).
+    std::set<std::string> type_words;
+    for (const auto& [child, parent] : d_.parent_type) type_words.insert({child, parent});
+    for (const DomainObject& o : d_.objects) type_words.insert(o.type);
+    const std::vector<std::string>& names = d_.goal_names;
     if (names.empty()) return;
     static const std::vector<std::string> frames = {
         "we're making the {}.", "I want to make the {}.", "I'd like to do the {}.", "today I'm doing the {}.",
@@ -338,7 +341,7 @@ class Generator {
         size_t end = words.find(' ', start);
         if (end == std::string::npos) end = words.size();
         const std::string w = words.substr(start, end - start);
-        if (w.size() > 1) where += " (named goal1 " + w + ")";
+        if (w.size() > 1 && !type_words.count(w)) where += " (named goal1 " + w + ")";
         start = end + 1;
       }
       if (where.empty()) continue;

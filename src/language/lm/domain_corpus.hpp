@@ -71,7 +71,7 @@ struct DomainDescription {
   // Names of the candidate goals (labels such as "pot-roses" or goal objects
   // such as "frame"), for statements of the goal ("we're making the frame"),
   // which the speaker model reads under (make me ?goal1) where (named
-  // ?goal1 frame). Empty: the problem's objects stand in for them.
+  // ?goal1 frame). Empty: no goal statements in the corpus.
   std::vector<std::string> goal_names;
   std::vector<CommandActionRule> command_actions;
   std::string speaker = "human";  // object names of the two agents
