@@ -216,7 +216,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       search::TiedRolloutOptions tied_options;
       tied_options.max_steps = std::max(0, setup.horizon - t);
       tied_options.max_plans = 4;
-      tied_options.max_refined_states = 2;
+      tied_options.refine = false;
       d.request_scores.assign(acts.size(), std::numeric_limits<double>::quiet_NaN());
       for (size_t i : tied) {
         const State next = task.apply(s, acts[i]);

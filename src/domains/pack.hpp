@@ -155,7 +155,7 @@ struct InferenceSettings {
   // less likely than the others (inference/belief.hpp). 0: the bare model
   // (the paper packs, for their tables). Fitted on the dev halves of the
   // repo's own datasets (docs/decisions.md, "Robust utterance evidence").
-  double utterance_noise = 0.1;
+  double utterance_noise = 0.05;
 };
 
 struct LiteralSettings {

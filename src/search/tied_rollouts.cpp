@@ -33,7 +33,7 @@ std::vector<WeightedRollout> tied_rollouts(Policy& policy, const pddl::State& s,
     double w = cur.weight;
     while (static_cast<int>(path.size()) < options.max_steps && !spec.is_goal(x)) {
       const bool may_branch = static_cast<int>(path.size()) < options.branch_depth;
-      if (may_branch && refines_left > 0 && !refined.contains(x.data())) {
+      if (options.refine && may_branch && refines_left > 0 && !refined.contains(x.data())) {
         refined[x.data()] = 1;
         --refines_left;
         if (path.empty()) {
@@ -47,7 +47,7 @@ std::vector<WeightedRollout> tied_rollouts(Policy& policy, const pddl::State& s,
       const std::vector<QValue> qs = policy.q_values(x);
       const auto best = policy.best_action(x, qs);
       if (!best) break;
-      if (may_branch && refined.contains(x.data())) {
+      if (may_branch && (!options.refine || refined.contains(x.data()))) {
         double q_best = -std::numeric_limits<double>::infinity();
         for (const QValue& q : qs)
           if (q.action == *best) q_best = q.q;

@@ -32,6 +32,11 @@ struct TiedRolloutOptions {
   int branch_depth = 4;
   // Actions whose Q is within this of the best are tied (cost units).
   double tolerance = 1e-6;
+  // False: no refinement at all; ties are read from the values the policy
+  // holds, at every state of the first `branch_depth` steps (the assistant's
+  // request rule, which runs at every decision of an episode and must not
+  // search: a REFINE runs one lookahead per applicable action).
+  bool refine = true;
 };
 
 struct WeightedRollout {

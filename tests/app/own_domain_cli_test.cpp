@@ -118,5 +118,26 @@ TEST(CliOwnDomain, ValidateNamesWhatBenchWouldStopAt) {
   }
 }
 
+
+// A method that fails on every plan fails only its own rows: the others'
+// rows stay in results.csv and summary.json counts what ran.
+TEST(CliOwnDomain, OneFailingMethodLeavesTheOthersRows) {
+  GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holding $1 $7)"); });
+  const std::string out = (fs::path(c.ds).parent_path() / "out").string();
+  const auto r = run(clips_binary() + " bench --no-progress -j 1 --methods clips,literal --dataset " + c.ds +
+                     " --out " + out);
+  EXPECT_TRUE(contains(r.out, "literal failed on 1.1.basil: goal atom '(holding $1 $7)'")) << r.out;
+  const std::string csv = testing::read_text(fs::path(out) / "results.csv");
+  for (const char* plan : {"1.1.basil", "1.2.tomato"}) {
+    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",clips,0\\.[0-9]+,[^\n]*,,garden\n")))
+        << plan << "\n" << csv;
+    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",literal,[^\n]*missing argument")))
+        << plan << "\n" << csv;
+  }
+  const auto summary = nlohmann::json::parse(testing::read_text(fs::path(out) / "summary.json"));
+  EXPECT_EQ(summary["methods"]["clips"]["n"], 2);
+  EXPECT_EQ(summary["methods"]["literal"]["n"], 0);
+}
+
 }  // namespace
 }  // namespace clips::eval
