@@ -21,6 +21,7 @@ void register_assist(CLI::App& app) {
     ObservationFlags obs;
     LmFlags lm;
     bool json = false;
+    bool explain = false;
     uint64_t seed = 1;
   };
   auto o = std::make_shared<Opts>();
@@ -41,6 +42,10 @@ void register_assist(CLI::App& app) {
   add_assistance_options(cmd, o->lm);
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling, 0..2^64-1 (default 1)")->check(SeedValue);
   cmd->add_flag("--json", o->json, "Print one JSON object");
+  cmd->add_flag("--explain", o->explain,
+                "Also print each decision where actions tied in value: the tied actions with their values and how "
+                "much of the request each carries out, the action taken and the command that broke the tie "
+                "(request rule; in --json: \"ties\")");
   cmd->callback([o, mm] {
     check_observation_flags(o->obs);  // before loading anything
     const bool adhoc = !o->obs.problem.empty();
@@ -123,6 +128,7 @@ void register_assist(CLI::App& app) {
       j["goals"] = outcome.goals;
       j["goal_posterior"] = r->goal_posterior;
       j["utterance_warnings"] = outcome.utterance_warnings;
+      if (o->explain) j["ties"] = r->ties;
       fmt::print("{}\n", j.dump());
     } else {
       fmt::print("plan {} method {}\n", p.id, name);
@@ -136,6 +142,11 @@ void register_assist(CLI::App& app) {
       fmt::print("options:{}  (true:{})  precision {:.2f} recall {:.2f}\n", opts.empty() ? " none" : opts, truth,
                  r->precision, r->recall);
       if (r->p_true_goal) fmt::print("P(true goal) = {:.3f}\n", *r->p_true_goal);
+      if (o->explain) {
+        fmt::print("ties in value ({}; the request rule breaks them{}):\n", r->ties.size(),
+                   r->ties.empty() ? ", none met" : "");
+        for (const auto& t : r->ties) fmt::print("  {}\n", t);
+      }
     }
   });
 }

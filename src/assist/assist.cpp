@@ -304,6 +304,20 @@ ActionId find_wait(const AssistSetup& setup, const std::string& agent) {
 }
 
 // Shared machinery of one simulated episode.
+std::string explain_tie(const pddl::Task& task, const Decision& d, int t) {
+  std::string out = "step " + std::to_string(t) + ": tied";
+  for (size_t i = 0; i < d.candidates.size(); ++i) {
+    if (i >= d.request_scores.size() || std::isnan(d.request_scores[i])) continue;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " (value %.3f, request %.3f)", i < d.values.size() ? d.values[i] : 0.0,
+                  d.request_scores[i]);
+    out += " " + task.action_name(d.candidates[i]) + buf;
+  }
+  out += "; took " + task.action_name(d.action);
+  if (d.broke_tie) out += ", for the request " + d.request_command;
+  return out;
+}
+
 struct Episode {
   const AssistSetup& setup;
   const pddl::Task& task;
@@ -375,8 +389,12 @@ struct Episode {
   }
 
   ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t) const {
-    return decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false).action;
+    const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false);
+    if (!d.request_scores.empty()) tie_notes.push_back(explain_tie(*setup.task, d, t));
+    return d.action;
   }
+  // The request rule's ties met in the episode, in order (AssistResult::ties).
+  mutable std::vector<std::string> tie_notes;
 
   // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true
   // policy versus uniform over the assistant's available actions.
@@ -450,6 +468,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
     }
   }
   finish(setup, tspec, r);
+  r.ties = std::move(ep.tie_notes);
   return r;
 }
 
@@ -497,6 +516,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
     belief.observe(pre, a);
   }
   finish(setup, *true_spec, r);
+  r.ties = std::move(ep.tie_notes);
   return r;
 }
 

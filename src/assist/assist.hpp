@@ -133,6 +133,10 @@ struct AssistResult {
   double success = 0;                     // probability of reaching the goal
   std::map<std::string, double> options;  // option -> probability
   std::vector<double> decision_seconds;   // wall time of each assistant decision (Q_MDP)
+  // Q_MDP with the request rule: each decision where several actions tied,
+  // the tied actions with their values and request scores, the action taken
+  // and the command that broke the tie (for `clips assist --explain`).
+  std::vector<std::string> ties;
 };
 
 // Belief that keeps updating during online assistance (implemented by the

@@ -35,6 +35,7 @@ struct MethodResult {
   std::vector<std::string> plan;        // the same, printed
 
   std::vector<double> decision_seconds;  // per assistant decision (Q_MDP)
+  std::vector<std::string> ties;         // the request rule's ties (assist::AssistResult::ties)
   double seconds = 0;
   // (issue 8) A method that failed on this plan (e.g. the multimodal endpoint
   // or its answer); such results are left out of the aggregates.

@@ -23,6 +23,7 @@ void score_assistance(const PlanContext& ctx, const assist::AssistResult& a, Met
   r.plan_cost = a.plan_cost;
   r.goal_success = a.success;
   r.decision_seconds = a.decision_seconds;
+  r.ties = a.ties;
   r.actions = a.plan;
   // Printed once, here: the rest of the pipeline keeps action ids.
   for (auto act : a.plan) r.plan.push_back(ctx.task->action_name(act));

@@ -139,5 +139,20 @@ TEST(CliOwnDomain, OneFailingMethodLeavesTheOthersRows) {
   EXPECT_EQ(summary["methods"]["literal"]["n"], 0);
 }
 
+
+// `clips assist --explain` lists the decisions where actions tied in value,
+// with each one's request score and the action taken.
+TEST(CliOwnDomain, AssistExplainShowsTheTies) {
+  const std::string ws = std::string(CLIPS_SOURCE_DIR) + "/data/datasets/workshop";
+  auto r = run(clips_binary() + " assist --dataset " + ws + " --plan 3.3.birdhouse --explain");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "ties in value (")) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("step [0-9]+: tied \\(.*request -?[0-9.]+\\).*; took \\("))) << r.out;
+  r = run(clips_binary() + " assist --json --dataset " + ws + " --plan 3.3.birdhouse --explain");
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("ties"));
+  EXPECT_FALSE(j["ties"].empty());
+}
+
 }  // namespace
 }  // namespace clips::eval
