@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <string>
 
+#include "eval/bench.hpp"
 #include "eval/experiment.hpp"
 #include "heuristics/heuristic.hpp"
 #include "pddl/plan.hpp"
@@ -19,14 +20,6 @@
 using namespace clips;
 
 namespace {
-
-double quantile(std::vector<double> xs, double q) {
-  if (xs.empty()) return 0;
-  std::sort(xs.begin(), xs.end());
-  return xs[static_cast<size_t>(q * static_cast<double>(xs.size() - 1))];
-}
-
-double max_of(const std::vector<double>& xs) { return xs.empty() ? 0 : *std::max_element(xs.begin(), xs.end()); }
 
 std::string source_path(const std::string& rel) { return std::string(CLIPS_SOURCE_DIR) + "/" + rel; }
 
@@ -56,12 +49,13 @@ static void BM_GenericBeliefUpdateStep(benchmark::State& st, const std::string& 
       for (size_t t = 1; t < run.steps.size(); ++t) steps.push_back(run.steps[t].seconds);
     }
   }
-  st.counters["median_ms"] = quantile(steps, 0.5) * 1e3;
-  st.counters["p95_ms"] = quantile(steps, 0.95) * 1e3;
-  st.counters["max_ms"] = max_of(steps) * 1e3;
+  const auto step = eval::LatencyStats::of(steps), start = eval::LatencyStats::of(starts);
+  st.counters["median_ms"] = step.median * 1e3;
+  st.counters["p95_ms"] = step.p95 * 1e3;
+  st.counters["max_ms"] = step.max * 1e3;
   st.counters["steps"] = static_cast<double>(steps.size());
-  st.counters["start_median_ms"] = quantile(starts, 0.5) * 1e3;
-  st.counters["start_max_ms"] = max_of(starts) * 1e3;
+  st.counters["start_median_ms"] = start.median * 1e3;
+  st.counters["start_max_ms"] = start.max * 1e3;
 }
 BENCHMARK_CAPTURE(BM_GenericBeliefUpdateStep, workshop, std::string("data/datasets/workshop"))
     ->Unit(benchmark::kSecond)
@@ -86,9 +80,10 @@ static void BM_GenericAssistanceDecision(benchmark::State& st, const std::string
         decisions.insert(decisions.end(), r->decision_seconds.begin(), r->decision_seconds.end());
     }
   }
-  st.counters["median_ms"] = quantile(decisions, 0.5) * 1e3;
-  st.counters["p95_ms"] = quantile(decisions, 0.95) * 1e3;
-  st.counters["max_ms"] = max_of(decisions) * 1e3;
+  const auto l = eval::LatencyStats::of(decisions);
+  st.counters["median_ms"] = l.median * 1e3;
+  st.counters["p95_ms"] = l.p95 * 1e3;
+  st.counters["max_ms"] = l.max * 1e3;
   st.counters["decisions"] = static_cast<double>(decisions.size());
 }
 BENCHMARK_CAPTURE(BM_GenericAssistanceDecision, workshop, std::string("data/datasets/workshop"))

@@ -10,6 +10,7 @@
 
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
+#include "assist/setup.hpp"
 #include "clips/version.hpp"
 #include "data/dataset.hpp"
 #include "domains/pack.hpp"
@@ -335,19 +336,11 @@ AssistDecision Session::assist() {
   d.goal_weights = post.goals;
   d.assistant_turn = m.assistant_turn();
   if (!d.assistant_turn) return d;
-  assist::AssistSetup setup;
-  setup.task = m.task;
-  setup.start = m.belief->state();
-  setup.observed_steps = m.belief->t();
-  setup.horizon = m.roles.horizon;
-  setup.set_turns(m.roles);
-  setup.noop_cost = m.roles.noop_cost;
-  setup.refine = m.belief->searches();
+  assist::AssistSetup setup = assist::setup_for(*m.pack, m.task, *m.belief);
   // The inference's own budget, so these refinements are the ones the next
   // observe() would make.
   setup.refine_options = search::SearchOptions{};
   setup.refine_options.max_nodes = m.options.max_nodes;
-  assist::set_request_rule(setup, assist::parse_assist_rule(m.pack->spec().assistance_rule), m.pack->language());
   std::vector<assist::Hypothesis> hyps;
   auto& policies = m.belief->policies();
   for (size_t h = 0; h < post.hypotheses.size(); ++h)

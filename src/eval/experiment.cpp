@@ -5,6 +5,7 @@
 
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
+#include "assist/setup.hpp"
 #include "data/validate.hpp"
 #include "domains/pack.hpp"
 #include "eval/methods.hpp"
@@ -87,20 +88,12 @@ assist::AssistSetup assistance_setup(const data::Dataset& ds, const data::PlanRe
                                      const ExperimentOptions& opts) {
   const domains::Pack& pack = ds.pack();
   const domains::Roles& df = pack.roles();
-  assist::AssistSetup setup;
-  setup.task = task;
-  setup.start = belief.state();
+  assist::AssistSetup setup = assist::setup_for(pack, task, belief, opts.assist_rule);
   setup.observed_steps = static_cast<int>(p.observed.actions.size());
-  setup.horizon = df.horizon;
-  setup.set_turns(df);
-  setup.noop_cost = df.noop_cost;
   setup.completed = resolve_all(*task, setup.start, p.completed);
   setup.option_of = [&pack, task, tag = p.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
-  setup.refine = belief.searches();
   setup.qa_floor = opts.qa_floor;
   setup.follow_plan_by_index = df.principal_follows_completed_plan;
-  assist::set_request_rule(setup, opts.assist_rule.value_or(assist::parse_assist_rule(pack.spec().assistance_rule)),
-                           pack.language());
   return setup;
 }
 
@@ -304,17 +297,9 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
   const auto& post = out.inference.final_posterior(mod);
   out.goal_posterior = post.goals;
 
-  assist::AssistSetup setup;
-  setup.task = task;
-  setup.start = belief.state();
+  assist::AssistSetup setup = assist::setup_for(ds.pack(), task, belief, opts.assist_rule);
   setup.observed_steps = static_cast<int>(out.inference.steps.size()) - 1;
-  setup.horizon = df.horizon;
-  setup.set_turns(df);
-  setup.noop_cost = df.noop_cost;
-  setup.refine = belief.searches();
   setup.qa_floor = opts.qa_floor;
-  assist::set_request_rule(setup, opts.assist_rule.value_or(assist::parse_assist_rule(ds.pack().spec().assistance_rule)),
-                           ds.pack().language());
   if (setup.observed_steps >= setup.horizon)
     throw InputError("the observations are " + std::to_string(setup.observed_steps) + " actions long, at or past the "
                      "assistance horizon of " + std::to_string(setup.horizon) + " steps");

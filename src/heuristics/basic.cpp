@@ -1,5 +1,7 @@
 #include "heuristics/basic.hpp"
 
+#include "heuristics/conditions.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <queue>
@@ -8,51 +10,6 @@ namespace clips::heuristics {
 
 using model::kInf;
 using CNode = pddl::Task::CNode;
-
-namespace {
-
-void positive_conjuncts(const pddl::Task& t, pddl::CondId c, std::vector<int>& out) {
-  const CNode& n = t.cnode(c);
-  if (n.op == CNode::Atom) out.push_back(n.a);
-  if (n.op == CNode::And)
-    for (int i = 0; i < n.b; ++i) positive_conjuncts(t, t.ckids()[n.a + i], out);
-}
-
-// DNF of a condition over positive atoms; anything else counts as true.
-std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId c) {
-  const CNode& n = g.cnode(c);
-  switch (n.op) {
-    case CNode::False: return {};
-    case CNode::Atom: return {{n.a}};
-    case CNode::Or: {
-      std::vector<std::vector<int>> out;
-      for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i]);
-        out.insert(out.end(), k.begin(), k.end());
-      }
-      return out;
-    }
-    case CNode::And: {
-      std::vector<std::vector<int>> acc{{}};
-      for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i]);
-        std::vector<std::vector<int>> next;
-        for (auto& a : acc)
-          for (auto& b : k) {
-            auto m = a;
-            m.insert(m.end(), b.begin(), b.end());
-            next.push_back(std::move(m));
-          }
-        acc = std::move(next);
-        if (acc.size() > 4096) return {{}};  // too large: give up (0 is admissible)
-      }
-      return acc;
-    }
-    default: return {{}};
-  }
-}
-
-}  // namespace
 
 Relaxation Relaxation::of(const model::Specification& spec) {
   const pddl::Task& t = spec.task();
@@ -63,13 +20,13 @@ Relaxation Relaxation::of(const model::Specification& spec) {
   r.cost.assign(na, 0);
   r.needed_by.assign(nb, {});
   for (int a = 0; a < na; ++a) {
-    positive_conjuncts(t, t.action(a).pre, r.pre[a]);
+    conjuncts(t, t.action(a).pre, r.pre[a]);
     r.add[a] = t.action(a).eff.add;
     for (auto& ce : t.action(a).cond_eff) r.add[a].insert(r.add[a].end(), ce.eff.add.begin(), ce.eff.add.end());
     r.cost[a] = spec.cost(a);
     for (int p : r.pre[a]) r.needed_by[p].push_back(a);
   }
-  r.goal_clauses = dnf(spec.goal(), spec.goal().root());
+  r.goal_clauses = goal_dnf(spec.goal(), /*normalise=*/false);
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "heuristics/basic.hpp"
+#include "heuristics/conditions.hpp"
 #include "heuristics/mutex.hpp"
 
 namespace clips::heuristics {
@@ -39,16 +40,6 @@ int64_t scaled_cost(double c, int scale) {
   const double r = std::round(v);
   // Within the tolerance of an integer: that integer; else round down.
   return static_cast<int64_t>(std::abs(v - r) <= 1e-9 * std::max(1.0, v) ? r : std::floor(v));
-}
-
-// CSR from per-row lists.
-void to_csr(const std::vector<std::vector<int>>& rows, std::vector<int>& begin, std::vector<int>& flat) {
-  begin.assign(rows.size() + 1, 0);
-  flat.clear();
-  for (size_t i = 0; i < rows.size(); ++i) {
-    flat.insert(flat.end(), rows[i].begin(), rows[i].end());
-    begin[i + 1] = static_cast<int>(flat.size());
-  }
 }
 
 }  // namespace

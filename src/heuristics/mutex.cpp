@@ -1,21 +1,12 @@
 #include "heuristics/mutex.hpp"
 
+#include "heuristics/conditions.hpp"
+
 #include <algorithm>
 #include <map>
 #include <mutex>
 
 namespace clips::heuristics {
-
-namespace {
-
-void positive_atoms(const pddl::Task& t, pddl::CondId c, std::vector<int>& out) {
-  const auto& n = t.cnode(c);
-  if (n.op == pddl::Task::CNode::Atom) out.push_back(n.a);
-  if (n.op == pddl::Task::CNode::And)
-    for (int i = 0; i < n.b; ++i) positive_atoms(t, t.ckids()[n.a + i], out);
-}
-
-}  // namespace
 
 MutexTable::MutexTable(const pddl::Task& task, int max_atoms) {
   const int n = task.num_atoms();
@@ -47,7 +38,7 @@ MutexTable::MutexTable(const pddl::Task& task, int max_atoms) {
   for (pddl::ActionId a = 0; a < task.num_actions(); ++a) {
     const auto& ga = task.action(a);
     Op o;
-    positive_atoms(task, ga.pre, o.pre);
+    conjuncts(task, ga.pre, o.pre);
     std::sort(o.pre.begin(), o.pre.end());
     o.pre.erase(std::unique(o.pre.begin(), o.pre.end()), o.pre.end());
     o.add = ga.eff.add;

@@ -1,86 +1,12 @@
 #include "heuristics/relaxed.hpp"
 
+#include "heuristics/conditions.hpp"
+
 #include <algorithm>
 
 namespace clips::heuristics {
 
 using CNode = pddl::Task::CNode;
-
-namespace {
-
-// The atoms of a precondition's top-level conjunction: positive ones, and
-// those it requires false.
-void conjuncts(const pddl::Task& t, pddl::CondId c, std::vector<int>& pos, std::vector<int>* neg) {
-  const CNode& n = t.cnode(c);
-  if (n.op == CNode::Atom) pos.push_back(n.a);
-  if (n.op == CNode::NotAtom && neg) neg->push_back(n.a);
-  if (n.op == CNode::And)
-    for (int i = 0; i < n.b; ++i) conjuncts(t, t.ckids()[n.a + i], pos, neg);
-}
-
-void normalise(std::vector<int>& clause) {
-  std::sort(clause.begin(), clause.end());
-  clause.erase(std::unique(clause.begin(), clause.end()), clause.end());
-}
-
-void normalise_all(std::vector<std::vector<int>>& clauses) {
-  for (auto& c : clauses) normalise(c);
-  std::sort(clauses.begin(), clauses.end());
-  clauses.erase(std::unique(clauses.begin(), clauses.end()), clauses.end());
-}
-
-constexpr size_t kMaxClauses = 4096;
-
-std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId c, bool norm) {
-  const CNode& n = g.cnode(c);
-  switch (n.op) {
-    case CNode::False: return {};
-    case CNode::Atom: return {{n.a}};
-    case CNode::Or: {
-      std::vector<std::vector<int>> out;
-      for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i], norm);
-        out.insert(out.end(), k.begin(), k.end());
-        if (norm && out.size() > kMaxClauses) normalise_all(out);
-      }
-      if (norm) normalise_all(out);
-      return out;
-    }
-    case CNode::And: {
-      std::vector<std::vector<int>> acc{{}};
-      for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i], norm);
-        std::vector<std::vector<int>> next;
-        for (auto& a : acc)
-          for (auto& b : k) {
-            auto m = a;
-            m.insert(m.end(), b.begin(), b.end());
-            next.push_back(std::move(m));
-          }
-        acc = std::move(next);
-        if (norm) normalise_all(acc);
-        if (acc.size() > kMaxClauses) return {{}};  // too large: give up (0 is admissible)
-      }
-      return acc;
-    }
-    default: return {{}};
-  }
-}
-
-void to_csr(const std::vector<std::vector<int>>& rows, std::vector<int>& begin, std::vector<int>& flat) {
-  begin.assign(rows.size() + 1, 0);
-  flat.clear();
-  for (size_t i = 0; i < rows.size(); ++i) {
-    flat.insert(flat.end(), rows[i].begin(), rows[i].end());
-    begin[i + 1] = static_cast<int>(flat.size());
-  }
-}
-
-}  // namespace
-
-std::vector<std::vector<int>> goal_dnf(const pddl::CompiledCondition& g, bool normalise) {
-  return dnf(g, g.root(), normalise);
-}
 
 RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
   const pddl::Task& t = spec.task();

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "heuristics/conditions.hpp"
 #include "heuristics/turns.hpp"
 #include "model/spec.hpp"
 
@@ -81,11 +82,5 @@ struct RelaxedTask {
 int min_turns(const std::vector<int>& order, const std::vector<int>& count, int k);
 inline int turns_of(int L, int i, int k) { return L > i ? (L - 1 - i) / k + 1 : 0; }
 
-// DNF of a compiled condition over positive atoms (anything else counts as
-// true). `normalise`: clauses sorted and deduplicated as they are built (an
-// existential goal over variables no atom reads repeats every clause); else
-// clauses in the condition's order, as h_max reads them. More than 4096
-// clauses: {{}} (always satisfied, so an estimate of 0).
-std::vector<std::vector<int>> goal_dnf(const pddl::CompiledCondition& g, bool normalise);
 
 }  // namespace clips::heuristics

@@ -1,17 +1,12 @@
 #include "heuristics/turns.hpp"
 
+#include "heuristics/conditions.hpp"
+
 #include <algorithm>
 
 namespace clips::heuristics {
 
 namespace {
-
-void positive_atoms(const pddl::Task& t, pddl::CondId c, std::vector<int>& out) {
-  const auto& n = t.cnode(c);
-  if (n.op == pddl::Task::CNode::Atom) out.push_back(n.a);
-  if (n.op == pddl::Task::CNode::And)
-    for (int i = 0; i < n.b; ++i) positive_atoms(t, t.ckids()[n.a + i], out);
-}
 
 std::vector<int> sorted(std::vector<int> v) {
   std::sort(v.begin(), v.end());
@@ -41,7 +36,7 @@ TurnStructure TurnStructure::of(const pddl::Task& task) {
     }
     ts.agent_of[static_cast<size_t>(a)] = x;
     std::vector<int> pre;
-    positive_atoms(task, ga.pre, pre);
+    conjuncts(task, ga.pre, pre);
     pre = sorted(pre);
     const std::vector<int> del = sorted(ga.eff.del);
     std::vector<int> both;

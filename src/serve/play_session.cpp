@@ -7,6 +7,7 @@
 
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
+#include "assist/setup.hpp"
 #include "eval/scenes.hpp"
 #include "pddl/parser.hpp"
 #include "search/astar.hpp"
@@ -320,15 +321,10 @@ json PlaySession::assist(bool apply) {
     }
     d["candidates"] = json::array();
   } else {
-    assist::AssistSetup setup;
-    setup.task = task_;
+    assist::AssistSetup setup = assist::setup_for(*pack_, task_, *belief_);
     setup.start = s;
-    setup.horizon = horizon_;
-    setup.set_turns(pack_->roles());
-    setup.refine = belief_->searches();
     setup.refine_options.max_nodes = limits_.assist_nodes;
     setup.refine_options.max_seconds = limits_.search_seconds;
-    assist::set_request_rule(setup, assist::parse_assist_rule(pack_->spec().assistance_rule), pack_->language());
     belief_->sync_policies(modality());  // particle inference: the weighted policies up to date
     const auto post = belief_->posterior(modality());
     std::vector<assist::Hypothesis> hyps;
