@@ -84,7 +84,7 @@ void emit(const eval::BenchReport& rep, const std::string& out, const std::strin
   if (!out.empty()) {
     eval::write_bench_files(rep, out);
     fmt::print(stderr, "wrote {0}/summary.json, {0}/results.csv, {0}/posteriors.csv and {0}/outcomes.json{1}\n", out,
-               rep.failed_plans ? " (failed plans: see the error column)" : "");
+               rep.failed_plans || rep.failed_methods ? " (failures: see the error column)" : "");
   }
   if (!report.empty()) {
     eval::ReportOptions ro;
@@ -93,7 +93,8 @@ void emit(const eval::BenchReport& rep, const std::string& out, const std::strin
     ro.jobs = jobs;
     fmt::print(stderr, "wrote {}\n", eval::write_report(rep, ro));
   }
-  g_exit_code = rep.failed_plans == 0 ? kExitOk : kExitSomeFailed;
+  // A method that failed on some plan is a failure too, though the others' rows stand.
+  g_exit_code = rep.failed_plans == 0 && rep.failed_methods == 0 ? kExitOk : kExitSomeFailed;
 }
 
 // On stderr: which part of the sweep a shard ran, and plainly when it has no plan.

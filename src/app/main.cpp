@@ -62,8 +62,8 @@ bool all_digits(const std::string& s) {
 std::string exit_code_help() {
   return "Exit status:\n"
          "  0  success\n"
-         "  1  ran to the end, but some items failed (validate: plans that do not check; bench: plans that could "
-         "not be evaluated)\n"
+         "  1  ran to the end, but some items failed (validate: plans that do not check; bench: plans, or a method "
+         "on some plan, that could not be evaluated)\n"
          "  2  usage error: unknown subcommand or option, missing or malformed value\n"
          "  3  input error: a file or field is unreadable or invalid (the message names it)\n"
          "  4  no plan exists: the search proved the goal unreachable\n"

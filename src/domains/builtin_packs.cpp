@@ -72,7 +72,7 @@ class DkgPack : public Pack {
     throw InputError("--costs must be 1..4 (C1..C4), 'unit' or 'task' for doors-keys-gems, got '" + which + "'");
   }
 
-  std::vector<std::string> heuristic_names() const override { return {"dkg-dist", "dkg-mst", "dkg-mst-reference", "hmax", "blind", "hff", "hff-plain", "lmcut"}; }
+  std::vector<std::string> heuristic_names() const override { return {"dkg-dist", "dkg-mst", "dkg-mst-reference", "hmax", "blind", "hff", "hff-noneg", "hff-plain", "lmcut", "lmcut-noneg"}; }
   std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task) const override {
     if (name == "dkg-mst") return std::make_unique<DkgMstHeuristic>();
     if (name == "dkg-mst-reference")
@@ -151,7 +151,7 @@ class VhPack : public Pack {
  public:
   using Pack::Pack;
 
-  std::vector<std::string> heuristic_names() const override { return {"hmax", "blind", "vh", "vh-planning", "hff", "hff-plain", "lmcut"}; }
+  std::vector<std::string> heuristic_names() const override { return {"hmax", "blind", "vh", "vh-planning", "hff", "hff-noneg", "hff-plain", "lmcut", "lmcut-noneg"}; }
   std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task) const override {
     if (name == "vh") return std::make_unique<VhValueHeuristic>(task);
     if (name == "vh-planning") return std::make_unique<VhPlanningHeuristic>(task);

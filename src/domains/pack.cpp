@@ -182,7 +182,9 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
 
 // ---- heuristics ------------------------------------------------------------------
 
-std::vector<std::string> Pack::heuristic_names() const { return {"lmcut", "hmax", "blind", "hff", "hff-plain"}; }
+std::vector<std::string> Pack::heuristic_names() const {
+  return {"lmcut", "hmax", "blind", "hff", "hff-noneg", "hff-plain", "lmcut-noneg"};
+}
 
 std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& name, const pddl::Task&) const {
   if (name == "blind") return std::make_unique<heuristics::BlindHeuristic>();
@@ -190,6 +192,8 @@ std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& n
   if (name == "lmcut") return std::make_unique<heuristics::LmCutHeuristic>();
   if (name == "hff") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/true);
   if (name == "hff-plain") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/false);
+  if (name == "hff-noneg") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/true, /*negations=*/false);
+  if (name == "lmcut-noneg") return std::make_unique<heuristics::LmCutHeuristic>(/*turns=*/true, /*negations=*/false);
   std::string known;
   for (auto& n : heuristic_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError("unknown heuristic '" + name + "' for " + spec_.name + " (known: " + known + ")");

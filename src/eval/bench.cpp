@@ -352,10 +352,13 @@ BenchLatency bench_latency(const BenchReport& r) {
 
 void summarise(BenchReport& rep) {
   rep.failed_plans = 0;
+  rep.failed_methods = 0;
   rep.summary.clear();
   std::vector<std::string> order;  // methods in order of first appearance
   for (auto& p : rep.plans) {
     if (!p.error.empty()) ++rep.failed_plans;
+    for (auto& m : p.methods)
+      if (!m.error.empty()) ++rep.failed_methods;
     for (auto& m : p.methods)
       if (std::find(order.begin(), order.end(), m.method) == order.end()) order.push_back(m.method);
   }
@@ -396,6 +399,7 @@ std::string summary_json(const BenchReport& r) {
   j["methods_requested"] = r.methods_requested;  // [] = the domain's defaults
   j["plans"] = r.plans.size();
   j["failed_plans"] = r.failed_plans;
+  j["failed_methods"] = r.failed_methods;
   j["lm"] = r.lm;
   j["speaker_rule"] = r.speaker_rule;
   j["utterance_timing"] = r.utterance_timing;

@@ -77,6 +77,7 @@ struct BenchReport {
   double wall_seconds = 0;
   long max_rss_kb = 0;
   int failed_plans = 0;
+  int failed_methods = 0;  // (plan, method) runs that failed on a plan that did not
   // The dataset the plans ran on (loaded once, shared by every worker);
   // write_report reuses it instead of loading it again.
   std::shared_ptr<const data::Dataset> loaded;

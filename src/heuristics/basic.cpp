@@ -101,6 +101,7 @@ void FFHeuristic::prepare(const model::Specification& spec, const pddl::State&) 
   o.relevant_only = true;  // changes no value (relaxed.hpp)
   if (turns_) {
     o.turns = o.dead_preconditions = o.dedup_preconditions = o.normalise_goal = true;
+    o.negations = negations_;
   } else {
     o.keep_empty_ops = true;  // exactly the relaxation (and tie-breaking) of the plain h_FF
   }
@@ -197,17 +198,13 @@ double FFHeuristic::estimate(const uint64_t* s) {
   std::copy(unsat0_.begin(), unsat0_.end(), unsat_.begin());
   heap_.clear();
   zero_.clear();
-  const int words = (r_.num_atoms + 63) / 64;
-  for (int w = 0; w < words; ++w)
-    for (uint64_t bits = s[w]; bits; bits &= bits - 1) {
-      const int b = w * 64 + __builtin_ctzll(bits);
-      if (b >= r_.num_atoms) break;
-      atom_cost_[static_cast<size_t>(b)] = 0;
-      zero_.push_back(b);
-      // Actions this atom kills never become applicable (their count never reaches 0).
-      for (int k = r_.kill_begin[static_cast<size_t>(b)]; k < r_.kill_begin[static_cast<size_t>(b) + 1]; ++k)
-        unsat_[static_cast<size_t>(r_.kill[static_cast<size_t>(k)])] = 1 << 30;
-    }
+  r_.for_each_true(s, [&](int b) {
+    atom_cost_[static_cast<size_t>(b)] = 0;
+    zero_.push_back(b);
+    // Actions this atom kills never become applicable (their count never reaches 0).
+    for (int k = r_.kill_begin[static_cast<size_t>(b)]; k < r_.kill_begin[static_cast<size_t>(b) + 1]; ++k)
+      unsat_[static_cast<size_t>(r_.kill[static_cast<size_t>(k)])] = 1 << 30;
+  });
   // With every cost positive, nothing is pushed at cost 0, so the atoms of s
   // are the queue's first pops in ascending order; with zero-cost actions
   // they go through the queue.

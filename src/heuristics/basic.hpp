@@ -67,8 +67,10 @@ class FFHeuristic : public Heuristic {
   // agent's cheapest usable action, and actions whose negative precondition
   // can never become true again left out. Without: the plain h_FF
   // ("hff-plain"), values identical to the h_FF clips used before.
-  explicit FFHeuristic(bool turns = true) : turns_(turns) {}
-  std::string name() const override { return turns_ ? "hff" : "hff-plain"; }
+  // `negations` (turn-aware form only): negative preconditions as atoms of
+  // their own ("hff"; "hff-noneg" without, the hff of before them).
+  explicit FFHeuristic(bool turns = true, bool negations = true) : turns_(turns), negations_(turns && negations) {}
+  std::string name() const override { return !turns_ ? "hff-plain" : negations_ ? "hff" : "hff-noneg"; }
   bool admissible() const override { return false; }
   bool consistent() const override { return false; }
   bool estimates_depend_on_root() const override { return false; }
@@ -79,6 +81,7 @@ class FFHeuristic : public Heuristic {
   void process(int b, double c);
   void relax(int op);
   bool turns_;
+  bool negations_;
   const model::Specification* spec_ = nullptr;
   RelaxedTask r_;
   std::vector<double> atom_cost_, act_cost_;

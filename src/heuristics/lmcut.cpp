@@ -50,6 +50,7 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   RelaxedTask::Options o;
   o.turns = turns_;
   o.dead_preconditions = o.dedup_preconditions = o.normalise_goal = o.relevant_only = true;
+  o.negations = negations_;
   r_ = RelaxedTask::of(spec, o);
   // Goal clauses asking for two atoms no reachable state has together can
   // never hold: leave them out (all of them: the goal is unreachable).
@@ -189,16 +190,12 @@ void LmCutHeuristic::first_exploration(const uint64_t* s) {
   std::fill(supporter_.begin(), supporter_.end(), -1);
   std::fill(supporter_cost_.begin(), supporter_cost_.end(), kUnset);
   (void)nops;
-  const int words = (init_prop_ + 63) / 64;
-  for (int w = 0; w < words; ++w)
-    for (uint64_t bits = s[w]; bits; bits &= bits - 1) {
-      const int p = w * 64 + __builtin_ctzll(bits);
-      if (p >= init_prop_) break;
-      enqueue(p, 0);
-      // Operators this atom kills never become applicable.
-      for (int k = r_.kill_begin[static_cast<size_t>(p)]; k < r_.kill_begin[static_cast<size_t>(p) + 1]; ++k)
-        unsat_[static_cast<size_t>(r_.kill[static_cast<size_t>(k)])] = 1 << 30;
-    }
+  r_.for_each_true(s, [&](int p) {
+    enqueue(p, 0);
+    // Operators this atom kills never become applicable.
+    for (int k = r_.kill_begin[static_cast<size_t>(p)]; k < r_.kill_begin[static_cast<size_t>(p) + 1]; ++k)
+      unsat_[static_cast<size_t>(r_.kill[static_cast<size_t>(k)])] = 1 << 30;
+  });
   enqueue(init_prop_, 0);
   int64_t c;
   int p;
@@ -291,10 +288,7 @@ void LmCutHeuristic::second_exploration(const uint64_t* s) {
     stack_.push_back(p);
   };
   before(init_prop_);
-  const int words = (init_prop_ + 63) / 64;
-  for (int w = 0; w < words; ++w)
-    for (uint64_t bits = s[w]; bits; bits &= bits - 1)
-      if (const int p = w * 64 + __builtin_ctzll(bits); p < init_prop_) before(p);
+  r_.for_each_true(s, before);
   while (!stack_.empty()) {
     const int p = stack_.back();
     stack_.pop_back();

@@ -44,8 +44,12 @@ namespace clips::heuristics {
 class LmCutHeuristic : public Heuristic {
  public:
   // `turns`: leave turn atoms out and add the turn bound (the default).
-  explicit LmCutHeuristic(bool turns = true) : turns_(turns) {}
-  std::string name() const override { return turns_ ? "lmcut" : "lmcut-plain"; }
+  // `negations`: negative preconditions as atoms of their own (relaxed.hpp;
+  // "lmcut-noneg" without).
+  explicit LmCutHeuristic(bool turns = true, bool negations = true) : turns_(turns), negations_(negations) {}
+  std::string name() const override {
+    return std::string(turns_ ? "lmcut" : "lmcut-plain") + (negations_ ? "" : "-noneg");
+  }
   bool admissible() const override { return true; }
   bool consistent() const override { return false; }
   bool estimates_depend_on_root() const override { return false; }  // the goal only
@@ -81,6 +85,7 @@ class LmCutHeuristic : public Heuristic {
   void clear_queue();
 
   bool turns_;
+  bool negations_;
   const model::Specification* spec_ = nullptr;
   RelaxedTask r_;
   int scale_ = 1;

@@ -13,7 +13,6 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
   const int na = t.num_actions(), nb = t.num_atoms();
   RelaxedTask r;
   r.options = opts;
-  r.num_atoms = nb;
   if (opts.turns) {
     r.turns = TurnStructure::of(t);
     r.use_turns = r.turns.ok;
@@ -22,15 +21,34 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
   if (r.use_turns)
     for (int b : r.turns.turn_bit) is_turn[static_cast<size_t>(b)] = 1;
   std::vector<char> deleted(static_cast<size_t>(nb), 0);
-  if (opts.dead_preconditions)
+  if (opts.dead_preconditions || opts.negations)
     for (pddl::ActionId a = 0; a < na; ++a) {
       for (int b : t.action(a).eff.del) deleted[static_cast<size_t>(b)] = 1;
       for (const auto& ce : t.action(a).cond_eff)
         for (int b : ce.eff.del) deleted[static_cast<size_t>(b)] = 1;
     }
 
-  std::vector<std::vector<int>> pre_rows, add_rows, needed(static_cast<size_t>(nb)), kills(static_cast<size_t>(nb)),
-      killers_rows(static_cast<size_t>(na));
+  // Negation atoms: negative preconditions some action deletes (turn atoms
+  // are out of the relaxation anyway).
+  std::vector<int> neg_atom(static_cast<size_t>(nb), -1);
+  r.num_state_atoms = nb;
+  if (opts.negations) {
+    std::vector<int> p, neg;
+    for (pddl::ActionId a = 0; a < na; ++a) {
+      p.clear();
+      neg.clear();
+      conjuncts(t, t.action(a).pre, p, &neg);
+      for (int b : neg)
+        if (deleted[static_cast<size_t>(b)] && !is_turn[static_cast<size_t>(b)] && neg_atom[static_cast<size_t>(b)] < 0) {
+          neg_atom[static_cast<size_t>(b)] = nb + static_cast<int>(r.negated.size());
+          r.negated.push_back(b);
+        }
+    }
+  }
+  const int ntotal = nb + static_cast<int>(r.negated.size());
+  r.num_atoms = ntotal;
+  std::vector<std::vector<int>> pre_rows, add_rows, needed(static_cast<size_t>(ntotal)),
+      kills(static_cast<size_t>(ntotal)), killers_rows(static_cast<size_t>(na));
   const size_t nagents = r.use_turns ? r.turns.agents.size() : 0;
   r.agent_safe_min.assign(nagents, model::kInf);
   r.agent_killable.assign(nagents, {});
@@ -42,10 +60,19 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
       for (int b : neg)
         if (!deleted[static_cast<size_t>(b)]) killers_rows[static_cast<size_t>(a)].push_back(b);
     if (r.use_turns) std::erase_if(p, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
+    for (int b : neg)
+      if (neg_atom[static_cast<size_t>(b)] >= 0) p.push_back(neg_atom[static_cast<size_t>(b)]);
     if (opts.dedup_preconditions) normalise(p);
     e = ga.eff.add;
     for (const auto& ce : ga.cond_eff) e.insert(e.end(), ce.eff.add.begin(), ce.eff.add.end());
     if (r.use_turns) std::erase_if(e, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
+    if (!r.negated.empty()) {
+      for (int b : ga.eff.del)
+        if (neg_atom[static_cast<size_t>(b)] >= 0) e.push_back(neg_atom[static_cast<size_t>(b)]);
+      for (const auto& ce : ga.cond_eff)
+        for (int b : ce.eff.del)
+          if (neg_atom[static_cast<size_t>(b)] >= 0) e.push_back(neg_atom[static_cast<size_t>(b)]);
+    }
     const double c = spec.cost(a);
     if (r.use_turns) {
       const size_t x = static_cast<size_t>(r.turns.agent_of[static_cast<size_t>(a)]);
@@ -81,10 +108,10 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     // Backward from the goal's atoms: the operators adding a relevant atom,
     // and their preconditions.
     const size_t nops = pre_rows.size();
-    std::vector<std::vector<int>> adders(static_cast<size_t>(nb));
+    std::vector<std::vector<int>> adders(static_cast<size_t>(ntotal));
     for (size_t op = 0; op < nops; ++op)
       for (int e : add_rows[op]) adders[static_cast<size_t>(e)].push_back(static_cast<int>(op));
-    std::vector<char> atom_rel(static_cast<size_t>(nb), 0), op_rel(nops, 0);
+    std::vector<char> atom_rel(static_cast<size_t>(ntotal), 0), op_rel(nops, 0);
     std::vector<int> work;
     for (int b : r.goal_atoms)
       if (!atom_rel[static_cast<size_t>(b)]) {

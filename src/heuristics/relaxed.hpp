@@ -15,6 +15,13 @@
 //   * Dead preconditions. A negative precondition (not p) whose atom no
 //     action ever deletes cannot become true once p holds: the action is
 //     left out in such states (a frozen agent's actions, for example).
+//   * Negations. A negative precondition (not p) that some action can make
+//     true becomes an atom of its own, "not p": true where p is false, added
+//     by the actions that delete p (the usual compilation of negative
+//     preconditions, so still a relaxation: h_max and LM-cut stay
+//     admissible). Without it a locked door is open in the relaxation, and
+//     a state where the door's key was lost for good looks a few steps from
+//     the goal: A* then searches every state it can reach before it stops.
 //
 // The goal is read as a disjunction of conjunctions of positive atoms (DNF of
 // the compiled goal, other literals dropped: a relaxation), duplicate clauses
@@ -32,6 +39,7 @@ struct RelaxedTask {
   struct Options {
     bool turns = false;           // leave turn atoms out and count turns
     bool dead_preconditions = false;
+    bool negations = false;       // negative preconditions as atoms of their own
     bool keep_empty_ops = false;  // operators without adds (h_FF's plain form keeps them)
     bool dedup_preconditions = false;
     bool normalise_goal = false;
@@ -44,7 +52,9 @@ struct RelaxedTask {
     bool relevant_only = false;
   };
   Options options;
-  int num_atoms = 0;
+  int num_atoms = 0;        // the task's atoms, then the negation atoms
+  int num_state_atoms = 0;  // the task's atoms (bits of a state)
+  std::vector<int> negated;  // negation atom num_state_atoms + k is "not negated[k]"
   // Operators in action order: preconditions (positive top-level atoms) and
   // adds (unconditional, then conditional ones) in the task's order.
   std::vector<pddl::ActionId> op_action;
@@ -70,6 +80,21 @@ struct RelaxedTask {
   std::vector<int> killers_begin, killers;  // per action: atoms that kill it
 
   static RelaxedTask of(const model::Specification& spec, Options opts);
+
+  // f(b) for every atom true in s, ascending: the state's bits, then the
+  // negation atoms whose atom is false.
+  template <class F>
+  void for_each_true(const uint64_t* s, F&& f) const {
+    const int words = (num_state_atoms + 63) / 64;
+    for (int w = 0; w < words; ++w)
+      for (uint64_t bits = s[w]; bits; bits &= bits - 1) {
+        const int b = w * 64 + __builtin_ctzll(bits);
+        if (b >= num_state_atoms) break;
+        f(b);
+      }
+    for (size_t k = 0; k < negated.size(); ++k)
+      if (!pddl::get_bit(s, negated[k])) f(num_state_atoms + static_cast<int>(k));
+  }
 
   // The cheapest action of agent x usable in s (for a turn of x).
   double turn_cost(int x, const uint64_t* s) const;

@@ -120,7 +120,8 @@ TEST(CliOwnDomain, ValidateNamesWhatBenchWouldStopAt) {
 
 
 // A method that fails on every plan fails only its own rows: the others'
-// rows stay in results.csv and summary.json counts what ran.
+// rows stay in results.csv and summary.json counts what ran; the exit status
+// says that something failed (1).
 TEST(CliOwnDomain, OneFailingMethodLeavesTheOthersRows) {
   GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holding $1 $7)"); });
   const std::string out = (fs::path(c.ds).parent_path() / "out").string();
@@ -137,6 +138,9 @@ TEST(CliOwnDomain, OneFailingMethodLeavesTheOthersRows) {
   const auto summary = nlohmann::json::parse(testing::read_text(fs::path(out) / "summary.json"));
   EXPECT_EQ(summary["methods"]["clips"]["n"], 2);
   EXPECT_EQ(summary["methods"]["literal"]["n"], 0);
+  EXPECT_EQ(summary["failed_methods"], 2);
+  EXPECT_EQ(summary["failed_plans"], 0);
+  EXPECT_EQ(r.status, 1) << r.out;
 }
 
 

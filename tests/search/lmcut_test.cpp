@@ -151,6 +151,41 @@ TEST(LmCut, MutexGoalsAreDeadEnds) {
   EXPECT_LT(lmcut(either, task->initial_state()), model::kInf);
 }
 
+// A door whose key is lost for good: with negative preconditions as atoms of
+// their own, LM-cut sees the unlock the door needs (3 = h*) and the dead end
+// once the key is gone (inf); without, it sees neither (1 and 1).
+TEST(LmCut, NegativePreconditionsFindTheLockedDoor) {
+  auto task = task_of(R"(
+(define (domain vault)
+  (:requirements :strips :negative-preconditions)
+  (:predicates (inside) (locked) (has-key) (key-here) (lost))
+  (:action take :precondition (and (key-here) (not (lost))) :effect (and (has-key) (not (key-here))))
+  (:action lose :precondition (has-key) :effect (and (not (has-key)) (lost)))
+  (:action unlock :precondition (and (has-key) (locked)) :effect (not (locked)))
+  (:action enter :precondition (not (locked)) :effect (inside)))
+)",
+                      "(define (problem vault-1) (:domain vault) (:init (locked) (key-here)) (:goal (inside)))");
+  model::Specification spec(task, "(inside)", model::unit_profile());
+  const pddl::State s0 = task->initial_state();
+  heuristics::LmCutHeuristic with, without(/*turns=*/true, /*negations=*/false);
+  EXPECT_EQ(without.name(), "lmcut-noneg");
+  with.prepare(spec, s0);
+  without.prepare(spec, s0);
+  EXPECT_DOUBLE_EQ(with.estimate(s0.data()), 3);
+  EXPECT_DOUBLE_EQ(optimal_cost(spec, s0), 3);
+  EXPECT_DOUBLE_EQ(without.estimate(s0.data()), 1);
+  pddl::State lost = s0;
+  for (const char* name : {"(take)", "(lose)"})
+    for (pddl::ActionId a : task->applicable_actions(lost))
+      if (task->action_name(a) == name) {
+        lost = task->apply(lost, a);
+        break;
+      }
+  EXPECT_EQ(with.estimate(lost.data()), model::kInf);
+  EXPECT_EQ(optimal_cost(spec, lost), model::kInf);
+  EXPECT_DOUBLE_EQ(without.estimate(lost.data()), 1);
+}
+
 // Admissibility: on states along random walks (with and without the robot
 // frozen, on either agent's turn) LM-cut never exceeds the optimal cost, on
 // the workshop, the storeroom profiling domain and the Doors-Keys-Gems
