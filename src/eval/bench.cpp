@@ -202,7 +202,8 @@ std::string multimodal_model(const ExperimentOptions& e) {
 
 // The embedded model trains (or loads from its cache) one model per prompt
 // block of few-shot examples, on first use and under a lock: score one
-// example under the speaker model's block and the literal listener's.
+// example under the speaker model's block, the literal listener's and the
+// empty prompt's.
 void warm_up(lm::LanguageModel& lm, const data::Dataset& ds) {
   std::vector<lm::ScoreRequest> batch;
   try {
@@ -213,6 +214,8 @@ void warm_up(lm::LanguageModel& lm, const data::Dataset& ds) {
     };
     add(ds.pack().fewshot(/*literal=*/false));
     if (ds.pack().spec().literal.enabled) add(language::literal_listener_setup(ds.pack_ptr()).examples);
+    // The empty prompt (a joint plan with nothing to say) has a model of its own.
+    batch.push_back({std::string(commands::kEmptyCommandPrompt), commands::utterance_continuation("ok")});
     lm.score(batch);
   } catch (const std::exception&) {
     // Only a warm-up: a pack without examples loads when it is first used.

@@ -14,6 +14,25 @@ struct Pending {
   double weight = 1;
 };
 
+// A REFINE of s restricted to the actions whose Q, as the policy holds it
+// now, is within `slack` of the best: a lookahead from each of their
+// successors (all of them when slack is infinite).
+void refine_near_best(Policy& policy, const pddl::State& s, const SearchOptions& o, double slack) {
+  if (!std::isfinite(slack)) {
+    policy.refine(s, o);
+    return;
+  }
+  const std::vector<QValue> qs = policy.q_values(s);
+  double best = -std::numeric_limits<double>::infinity();
+  for (const QValue& q : qs) best = std::max(best, q.q);
+  if (!std::isfinite(best)) {
+    policy.refine(s, o);
+    return;
+  }
+  for (const QValue& q : qs)
+    if (q.q >= best - slack) policy.refine_toward(s, q.action, o);
+}
+
 }  // namespace
 
 std::vector<WeightedRollout> tied_rollouts(Policy& policy, const pddl::State& s, const TiedRolloutOptions& options,
@@ -36,13 +55,9 @@ std::vector<WeightedRollout> tied_rollouts(Policy& policy, const pddl::State& s,
       if (options.refine && may_branch && refines_left > 0 && !refined.contains(x.data())) {
         refined[x.data()] = 1;
         --refines_left;
-        if (path.empty()) {
-          policy.refine(x, refine);
-        } else {
-          SearchOptions small = refine;
-          small.max_nodes = std::min(refine.max_nodes, options.branch_max_nodes);
-          policy.refine(x, small);
-        }
+        SearchOptions o = refine;
+        if (!path.empty()) o.max_nodes = std::min(refine.max_nodes, options.branch_max_nodes);
+        refine_near_best(policy, x, o, options.refine_slack);
       }
       const std::vector<QValue> qs = policy.q_values(x);
       const auto best = policy.best_action(x, qs);
