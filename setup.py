@@ -4,7 +4,9 @@ corpora, domain packs, the paper's tables, the example dataset) in the
 package, as clips_assist/data. Metadata: pyproject.toml.
 
 Environment: CLIPS_PIP_BUILD_DIR (the CMake build folder, default
-build/pip-<python tag>), CLIPS_PIP_JOBS (parallel jobs, default 2)."""
+build-pip-<SOABI> beside build/: at the same depth, so ccache (with
+CCACHE_BASEDIR above the checkout, as the Makefile sets) serves the objects
+`make build` compiled), CLIPS_PIP_JOBS (parallel jobs, default 2)."""
 import os
 import pathlib
 import re
@@ -25,12 +27,17 @@ DATA = ["language", "paper", "domains", "schema", "examples/doors-keys-gems"]
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
         tag = sysconfig.get_config_var("SOABI") or f"py{sys.version_info[0]}{sys.version_info[1]}"
-        build = pathlib.Path(os.environ.get("CLIPS_PIP_BUILD_DIR", ROOT / "build" / f"pip-{tag}"))
+        build = pathlib.Path(os.environ.get("CLIPS_PIP_BUILD_DIR", ROOT / f"build-pip-{tag}"))
         build.mkdir(parents=True, exist_ok=True)
         jobs = os.environ.get("CLIPS_PIP_JOBS", "2")
-        subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-                        f"-DPython3_EXECUTABLE={sys.executable}", "-DCLIPS_BUILD_TESTS=OFF",
-                        "-DCLIPS_BUILD_BENCH=OFF", "-DCLIPS_SOURCE_DATA=OFF"], check=True)
+        args = [f"-DPython3_EXECUTABLE={sys.executable}", "-DCMAKE_BUILD_TYPE=Release", "-DCLIPS_BUILD_TESTS=OFF",
+                "-DCLIPS_BUILD_BENCH=OFF", "-DCLIPS_SOURCE_DATA=OFF"]
+        try:  # pybind11 from pip (an isolated build) rather than Debian's pybind11-dev
+            import pybind11
+            args.append(f"-Dpybind11_DIR={pybind11.get_cmake_dir()}")
+        except ImportError:
+            pass
+        subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), *args], check=True)
         subprocess.run(["cmake", "--build", str(build), "--target", "clips_assist_python", "-j", jobs], check=True)
         suffix = sysconfig.get_config_var("EXT_SUFFIX")
         built = build / "python" / "clips_assist" / f"_core{suffix}"
@@ -47,4 +54,6 @@ class CMakeBuild(build_ext):
             shutil.copytree(ROOT / "data" / part, data / part, ignore=shutil.ignore_patterns("*.py", "__pycache__"))
 
 
-setup(version=VERSION, ext_modules=[Extension("clips_assist._core", sources=[])], cmdclass={"build_ext": CMakeBuild})
+setup(version=VERSION, ext_modules=[Extension("clips_assist._core", sources=[])], cmdclass={"build_ext": CMakeBuild},
+      # setuptools' own staging, out of the CMake build folder build/.
+      options={"build": {"build_base": "build-pip-setuptools"}})

@@ -325,3 +325,10 @@ def test_open_domain_text_errors_name_the_input():
         clips_assist.Session.open_domain()
     with pytest.raises(TypeError, match="domain_text"):
         clips_assist.Session.open_domain(domain_text=3, problem_text=problem)
+
+
+def test_the_package_under_test_is_the_expected_one():
+    """pip_install_venv runs these tests against the installed package; the
+    in-tree run against build/python."""
+    expected = os.environ.get("CLIPS_ASSIST_EXPECTED_DIR") or str(BINARY_DIR / "python" / "clips_assist")
+    assert pathlib.Path(clips_assist.__file__).resolve().parent == pathlib.Path(expected).resolve()
