@@ -23,6 +23,10 @@ for f in include/clips-assist/clips/clips.hpp include/clips-assist/clips/session
          bin/clips-assist; do
   [ -e "$prefix/$f" ] || fail "$f was not installed"
 done
+# The licence and the citation, under the package's name.
+grep -q "Copyright (c) 2026 The clips-assist authors" "$prefix/share/doc/clips-assist/copyright" \
+  || fail "no MIT licence in share/doc/clips-assist/copyright"
+grep -q "arXiv:2402.17930" "$prefix/share/doc/clips-assist/CITATION.cff" || fail "CITATION.cff does not cite the paper"
 # Nothing under a name Debian's CLIPS (clips, libclips-dev) or PyPI's clipspy uses.
 for f in bin/clips include/clips share/clips; do
   [ ! -e "$prefix/$f" ] || fail "$f was installed: it clashes with Debian's clips / libclips-dev"
