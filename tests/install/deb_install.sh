@@ -31,7 +31,7 @@ done
 tmp=$(mktemp -d /tmp/clips-deb-XXXXXX)
 installed=0
 cleanup() {
-  if [ "$installed" = 1 ]; then dpkg -r clips-assist >/dev/null 2>&1 || echo "deb_install: dpkg -r clips-assist failed" >&2; fi
+  if [ "$installed" = 1 ]; then with_dpkg_lock dpkg -r clips-assist || echo "deb_install: dpkg -r clips-assist failed" >&2; fi
   rm -rf "$tmp"
 }
 trap cleanup EXIT
@@ -63,7 +63,17 @@ grep -Eq '^\./usr/(bin/clips|include/clips/.*|lib/.*libclips\..*|lib/python3/dis
 dpkg-deb -x "$deb" "$tmp/unpacked"
 if grep -rlF "$src/data" "$tmp/unpacked" >/dev/null; then fail "the packaged binaries name $src/data"; fi
 
-dpkg -i "$deb" >/dev/null || fail "dpkg -i failed"
+# dpkg waits for nobody: another apt or dpkg run holds its lock for a while.
+with_dpkg_lock() {
+  for _ in $(seq 60); do
+    "$@" >"$tmp/dpkg.log" 2>&1 && return 0
+    grep -q "lock" "$tmp/dpkg.log" || { cat "$tmp/dpkg.log" >&2; return 1; }
+    sleep 5
+  done
+  cat "$tmp/dpkg.log" >&2
+  return 1
+}
+with_dpkg_lock dpkg -i "$deb" || fail "dpkg -i failed"
 installed=1
 [ "$(dpkg-query -S /usr/bin/clips | cut -d: -f1)" = clips ] || fail "/usr/bin/clips no longer belongs to Debian's clips"
 [ "$(dpkg-query -S /usr/include/clips/clips.h | cut -d: -f1)" = libclips-dev ] || fail "libclips-dev lost clips.h"
