@@ -17,7 +17,7 @@ FUZZ_JOBS ?= 2
 FUZZ_SMOKE ?= 1
 FUZZ_BUILD_TARGET ?= fuzz_targets
 
-.PHONY: all deps configure build test run bench bench-scaling clean fuzz-build fuzz test-asan test-tsan
+.PHONY: all deps configure build test run bench bench-scaling clean fuzz-build fuzz test-asan test-tsan deb
 
 all: build
 
@@ -75,5 +75,12 @@ test-tsan: deps
 	@nice -n 10 cmake --build build-tsan -j $(JOBS)
 	@cd build-tsan && ctest --output-on-failure -j $(JOBS) $(SAN_CTEST_ARGS)
 
+# The Debian package (README, "Installing"): build-deb/clips-assist_<version>_<arch>.deb.
+deb: deps
+	@cmake -S . -B build-deb -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr -DCLIPS_BUILD_TESTS=OFF \
+	  -DCLIPS_BUILD_BENCH=OFF -DCLIPS_SOURCE_DATA=OFF -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+	@cmake --build build-deb -j $(JOBS)
+	@cd build-deb && cpack -G DEB
+
 clean:
-	rm -rf $(BUILD_DIR) build-asan build-tsan
+	rm -rf $(BUILD_DIR) build-asan build-tsan build-deb build-pip-*

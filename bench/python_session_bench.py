@@ -18,7 +18,7 @@ import time
 build = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "build").resolve()
 reps = int(sys.argv[2]) if len(sys.argv) > 2 else 15
 sys.path.insert(0, str(build / "python"))
-import clips  # noqa: E402
+import clips_assist  # noqa: E402
 
 root = pathlib.Path(__file__).resolve().parents[1]
 shared = pathlib.Path(os.environ.get("CLIPS_DATASET", root.parent / "shared" / "dataset")) / "doors-keys-gems"
@@ -29,7 +29,7 @@ actions = [l.strip() for l in (dataset / "plans" / "observed" / f"{plan}.pddl").
 
 
 def replay_once():
-    s = clips.Session.open_dataset(str(dataset), plan)
+    s = clips_assist.Session.open_dataset(str(dataset), plan)
     t0 = time.perf_counter()
     for a in actions:
         s.observe(a)

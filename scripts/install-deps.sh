@@ -12,6 +12,9 @@ PKGS=(
   chromium python3-websocket
   clang-14 libclang-rt-14-dev libfuzzer-14-dev
   pybind11-dev python3-dev python3-pytest
+  python3-venv python3-pip python3-setuptools python3-wheel
+  clips libclips-dev
+  python3-matplotlib python3-nbconvert python3-ipykernel
 )
 missing=()
 for p in "${PKGS[@]}"; do

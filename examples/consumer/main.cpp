@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    std::printf("clips %s, data in %s\n", clips::library_version().c_str(), clips::data_directory().c_str());
+    std::printf("clips-assist %s, data in %s\n", clips::library_version().c_str(), clips::data_directory().c_str());
     clips::Session session = clips::Session::open_dataset(argv[1], "e1");
     session.observe("(left human)");
     session.observe("(wait robot)");

@@ -197,8 +197,10 @@ class Session {
 // The library's version ("0.1.0").
 std::string library_version();
 // Where the library reads its data (language corpora, domain packs):
-// $CLIPS_DATA_DIR, else <prefix>/share/clips of the installed library, else
-// the source tree it was built from.
+// $CLIPS_DATA_DIR, else <prefix>/share/clips-assist of the installed library
+// (for the installed static library: its configured datadir, then
+// /usr/local/share/clips-assist and /usr/share/clips-assist), else, for a
+// build-tree binary, the source tree it was built from.
 std::string data_directory();
 
 }  // namespace clips

@@ -1,4 +1,4 @@
-"""The Python binding of clips: the session API, dataset plans, errors."""
+"""The Python package clips_assist: the session API, dataset plans, errors."""
 import json
 import os
 import pathlib
@@ -7,7 +7,7 @@ import threading
 
 import pytest
 
-import clips
+import clips_assist
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "data" / "examples" / "doors-keys-gems"
@@ -30,7 +30,7 @@ def plan_lines(dataset, plan):
 def replay(dataset, plan):
     """Goal posteriors of a Session replaying a plan, at the points `clips infer` reports them."""
     actions, said = plan_lines(dataset, plan)
-    s = clips.Session.open_dataset(str(dataset), plan)
+    s = clips_assist.Session.open_dataset(str(dataset), plan)
     T = len(actions)
     out = []
     for t in range(T + 1):
@@ -59,10 +59,10 @@ def check_against_cli(dataset, plan):
     for t, (mine, theirs) in enumerate(zip(got, infer["steps"])):
         assert mine == pytest.approx(theirs["posterior"], abs=1e-9), f"{plan} t={t}"
     # run_plan gives the same numbers without a session.
-    run = clips.run_plan(str(dataset), plan)
+    run = clips_assist.run_plan(str(dataset), plan)
     assert len(run["steps"]) == len(infer["steps"])
     for mine, theirs in zip(run["steps"], infer["steps"]):
-        assert mine["clips"] == pytest.approx(theirs["posterior"], abs=1e-9)
+        assert mine["posterior"]["clips"] == pytest.approx(theirs["posterior"], abs=1e-9)
 
 
 def test_session_reproduces_clips_infer_on_the_papers_dataset():
@@ -76,7 +76,7 @@ def test_session_reproduces_clips_infer_on_a_repo_example():
 
 
 def test_posterior_assist_and_trace_are_plain_python_values():
-    s = clips.Session.open_dataset(str(EXAMPLES), "e1")
+    s = clips_assist.Session.open_dataset(str(EXAMPLES), "e1")
     step = s.observe("(left human)")
     assert step["agent"] == "human" and step["evidence"] is True
     s.observe("(wait robot)")
@@ -97,27 +97,27 @@ def test_posterior_assist_and_trace_are_plain_python_values():
 
 
 def test_errors_map_to_python_exceptions_with_the_same_messages():
-    s = clips.Session.open_dataset(str(EXAMPLES), "e1")
+    s = clips_assist.Session.open_dataset(str(EXAMPLES), "e1")
     s.observe("(left human)")
     before = s.posterior()
-    with pytest.raises(clips.InapplicableActionError, match=r"\(left human\)"):
+    with pytest.raises(clips_assist.InapplicableActionError, match=r"\(left human\)"):
         s.observe("(left human)")  # the robot is to move
-    assert issubclass(clips.InapplicableActionError, clips.InputError)
-    assert issubclass(clips.InputError, ValueError)
-    with pytest.raises(clips.InputError, match="fly"):
+    assert issubclass(clips_assist.InapplicableActionError, clips_assist.InputError)
+    assert issubclass(clips_assist.InputError, ValueError)
+    with pytest.raises(clips_assist.InputError, match="fly"):
         s.observe("(fly human)")
-    with pytest.raises(clips.InputError):
+    with pytest.raises(clips_assist.InputError):
         s.hear("")
     assert s.t == 1 and s.posterior() == before
-    with pytest.raises(clips.InputError, match="unknown method"):
-        clips.Session.open_dataset(str(EXAMPLES), "e1", method="telepathy")
-    with pytest.raises(clips.InputError, match="no problem or plan 'zz'"):
-        clips.Session.open_dataset(str(EXAMPLES), "zz")
+    with pytest.raises(clips_assist.InputError, match="unknown method"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "e1", method="telepathy")
+    with pytest.raises(clips_assist.InputError, match="no problem or plan 'zz'"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "zz")
 
 
 def test_particle_sessions_are_seeded_and_close_to_exact():
     def run(**kw):
-        s = clips.Session.open_dataset(str(EXAMPLES), "e1", **kw)
+        s = clips_assist.Session.open_dataset(str(EXAMPLES), "e1", **kw)
         s.observe("(left human)")
         s.observe("(wait robot)")
         s.hear("Can you get me the yellow key?")
@@ -130,8 +130,8 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
     assert run(particles=2000, particle_seed=3) == many  # a function of the seed
     one = run(particles=1)
     assert sorted(one.values())[-1] == pytest.approx(1.0)  # a single particle sits on one goal
-    with pytest.raises(clips.InputError, match="particles"):
-        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=-1)
+    with pytest.raises(clips_assist.InputError, match="particles"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=-1)
     # The tuning options reach the filter: one CLIPS filter resampling every
     # step, read by its weighted counts, is another estimate than the default
     # (which weighs the hypotheses the particles hold exactly), still close.
@@ -139,19 +139,19 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
                 rejuvenate="utterances", particle_estimate="weights")
     assert tuned != many
     assert sum(abs(tuned[g] - exact[g]) for g in exact) / 2 < 0.05
-    with pytest.raises(clips.InputError, match="particle estimate 'counts'"):
-        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_estimate="counts")
-    with pytest.raises(clips.InputError, match="particle filters 'some'"):
-        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_filters="some")
-    with pytest.raises(clips.InputError, match="ESS threshold"):
-        clips.Session.open_dataset(str(EXAMPLES), "e1", particles=10, ess_threshold=2.0)
+    with pytest.raises(clips_assist.InputError, match="particle estimate 'counts'"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_estimate="counts")
+    with pytest.raises(clips_assist.InputError, match="particle filters 'some'"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_filters="some")
+    with pytest.raises(clips_assist.InputError, match="ESS threshold"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=10, ess_threshold=2.0)
 
 
 def test_assistant_turns_option():
     """Refining only toward the assistant's action leaves the posterior as the
     spec's refinement of every successor gives it; a bad value is refused."""
     def run(**kw):
-        s = clips.Session.open_dataset(str(EXAMPLES), "e1", **kw)
+        s = clips_assist.Session.open_dataset(str(EXAMPLES), "e1", **kw)
         for action in ("(left human)", "(left robot)", "(left human)", "(right robot)"):
             s.observe(action)
         s.hear("Can you get me the yellow key?")
@@ -161,15 +161,15 @@ def test_assistant_turns_option():
     assert taken.keys() == every.keys()
     for g in taken:
         assert taken[g] == pytest.approx(every[g], abs=1e-9)
-    with pytest.raises(clips.InputError, match="assistant-turn refinement 'some'"):
-        clips.Session.open_dataset(str(EXAMPLES), "e1", assistant_turns="some")
+    with pytest.raises(clips_assist.InputError, match="assistant-turn refinement 'some'"):
+        clips_assist.Session.open_dataset(str(EXAMPLES), "e1", assistant_turns="some")
 
 
 def test_inference_releases_the_gil():
     # Two sessions on two Python threads: with the GIL released during
     # inference they run concurrently and still agree with one thread.
     def run(out, i):
-        s = clips.Session.open_dataset(str(EXAMPLES), "e1.1.keys")
+        s = clips_assist.Session.open_dataset(str(EXAMPLES), "e1.1.keys")
         for a in ["(left human)", "(wait robot)", "(left human)"]:
             s.observe(a)
         out[i] = s.posterior()["goals"]
@@ -186,7 +186,7 @@ def test_inference_releases_the_gil():
 
 
 def test_run_bench_returns_rows_per_plan_and_method():
-    rep = clips.run_bench(str(EXAMPLES), methods=["clips"], plans=["e1.1.keys"], jobs=1)
+    rep = clips_assist.run_bench(str(EXAMPLES), methods=["clips"], plans=["e1.1.keys"], jobs=1)
     assert [(r["plan"], r["method"]) for r in rep["rows"]] == [("e1.1.keys", "clips")]
     assert 0 <= rep["rows"][0]["p_true_goal"] <= 1
     assert "clips" in rep["summary"]
@@ -234,14 +234,14 @@ def docs_example_files():
 
 def test_both_openers_take_every_option():
     """open_dataset and open_domain read one option table: the same names, the same checks."""
-    assert documented_options(clips.Session.open_dataset) == list(OPTIONS)
-    assert documented_options(clips.Session.open_domain) == list(OPTIONS)
-    opened = [lambda **kw: clips.Session.open_dataset(str(WORKSHOP), "1", **kw),
-              lambda **kw: clips.Session.open_domain(str(WORKSHOP), str(WORKSHOP / "problems" / "1.pddl"), **kw)]
+    assert documented_options(clips_assist.Session.open_dataset) == list(OPTIONS)
+    assert documented_options(clips_assist.Session.open_domain) == list(OPTIONS)
+    opened = [lambda **kw: clips_assist.Session.open_dataset(str(WORKSHOP), "1", **kw),
+              lambda **kw: clips_assist.Session.open_domain(str(WORKSHOP), str(WORKSHOP / "problems" / "1.pddl"), **kw)]
     for name, (_, bad) in OPTIONS.items():
         errors = []
         for open_ in opened:
-            with pytest.raises((clips.InputError, TypeError)) as e:
+            with pytest.raises((clips_assist.InputError, TypeError)) as e:
                 s = open_(**{name: bad}, particles=8) if name not in ("particles", "particle_seed") else open_(**{name: bad})
                 s.observe("(move human bench rack)")
                 s.hear("Can you bring the big plank?")
@@ -255,13 +255,13 @@ def test_both_openers_take_every_option():
 def test_open_domain_options_reach_the_session():
     path = dict(domain_dir=WORKSHOP, problem_file=WORKSHOP / "problems" / "1.pddl")  # pathlib paths are fine
     good = {name: value for name, (value, _) in OPTIONS.items() if not name.startswith("lm_")}
-    s = clips.Session.open_domain(**path, **good)
+    s = clips_assist.Session.open_domain(**path, **good)
     s.observe("(move human bench rack)")
     post = s.posterior()
     assert list(post["goals"]) == ["(made table)", "(made stool)"]  # goals
     assert list(post["cost_profiles"]) == ["unit"]  # cost_profiles
     assert sum(post["goals"].values()) == pytest.approx(1.0)
-    again = clips.Session.open_domain(**path, **good)
+    again = clips_assist.Session.open_domain(**path, **good)
     again.observe("(move human bench rack)")
     assert again.posterior() == post  # particles are a function of particle_seed
     d = s.assist()  # pibar: the candidates' values are the mixture of policies' probabilities
@@ -270,14 +270,14 @@ def test_open_domain_options_reach_the_session():
     assert all(0 <= c["value"] <= 1 for c in d["candidates"])
     # Exact inference agrees between open_dataset and open_domain on the same problem and options.
     exact = dict(goals=["(made table)", "(made stool)"], max_nodes=5000, threads=1, assistant_turns="all")
-    a = clips.Session.open_dataset(WORKSHOP, "1", **exact)
-    b = clips.Session.open_domain(**path, **exact)
+    a = clips_assist.Session.open_dataset(WORKSHOP, "1", **exact)
+    b = clips_assist.Session.open_domain(**path, **exact)
     for s_ in (a, b):
         s_.observe("(move human bench rack)")
         s_.hear("Can you bring the big plank over to the bench?")
     assert a.posterior() == b.posterior()
     # None keeps an option's default.
-    assert clips.Session.open_domain(**path, max_nodes=None, particles=None).posterior()["goals"]
+    assert clips_assist.Session.open_domain(**path, max_nodes=None, particles=None).posterior()["goals"]
 
 
 def test_open_domain_from_pddl_text_matches_the_files(tmp_path):
@@ -295,33 +295,40 @@ def test_open_domain_from_pddl_text_matches_the_files(tmp_path):
         s.hear("Can you fetch the milk?")
         return s.posterior()
 
-    from_text = clips.Session.open_domain(domain_text=files["kitchen/domain.pddl"],
+    from_text = clips_assist.Session.open_domain(domain_text=files["kitchen/domain.pddl"],
                                           problem_text=files["kitchen/problems/1.pddl"], pack_text=json.dumps(pack),
                                           threads=1)
     assert from_text.domain == "kitchen"
     post = play(from_text)
-    assert post == play(clips.Session.open_domain(folder, folder / "problems" / "1.pddl", threads=1))
+    assert post == play(clips_assist.Session.open_domain(folder, folder / "problems" / "1.pddl", threads=1))
     assert max(post["goals"], key=post["goals"].get) == "cake"  # flour and milk (docs/domains.md)
     # A folder without plans/ opens as a dataset too.
-    assert play(clips.Session.open_dataset(folder, "1", threads=1)) == post
+    assert play(clips_assist.Session.open_dataset(folder, "1", threads=1)) == post
 
 
 def test_open_domain_text_errors_name_the_input():
     files = docs_example_files()
     domain, problem = files["kitchen/domain.pddl"], files["kitchen/problems/1.pddl"]
     pack = json.dumps({k: v for k, v in json.loads(files["kitchen/pack.json"]).items() if k != "fewshot"})
-    with pytest.raises(clips.InputError, match=r"<domain text>:1:\d+"):
-        clips.Session.open_domain(domain_text="(define (domain kitchen", problem_text=problem, pack_text=pack)
-    with pytest.raises(clips.InputError, match=r"<problem text>:\d+:\d+: .*'plank'"):
-        clips.Session.open_domain(domain_text=domain, pack_text=pack,
+    with pytest.raises(clips_assist.InputError, match=r"<domain text>:1:\d+"):
+        clips_assist.Session.open_domain(domain_text="(define (domain kitchen", problem_text=problem, pack_text=pack)
+    with pytest.raises(clips_assist.InputError, match=r"<problem text>:\d+:\d+: .*'plank'"):
+        clips_assist.Session.open_domain(domain_text=domain, pack_text=pack,
                                   problem_text="(define (problem p) (:domain kitchen) (:objects x - plank))")
-    with pytest.raises(clips.InputError, match="<pack text>"):
-        clips.Session.open_domain(domain_text=domain, problem_text=problem, pack_text="{")
-    with pytest.raises(clips.InputError, match="problem_text is missing"):
-        clips.Session.open_domain(domain_text=domain)
-    with pytest.raises(clips.InputError, match="not both"):
-        clips.Session.open_domain(str(WORKSHOP), problem_text=problem)
-    with pytest.raises(clips.InputError, match="domain_dir is missing"):
-        clips.Session.open_domain()
+    with pytest.raises(clips_assist.InputError, match="<pack text>"):
+        clips_assist.Session.open_domain(domain_text=domain, problem_text=problem, pack_text="{")
+    with pytest.raises(clips_assist.InputError, match="problem_text is missing"):
+        clips_assist.Session.open_domain(domain_text=domain)
+    with pytest.raises(clips_assist.InputError, match="not both"):
+        clips_assist.Session.open_domain(str(WORKSHOP), problem_text=problem)
+    with pytest.raises(clips_assist.InputError, match="domain_dir is missing"):
+        clips_assist.Session.open_domain()
     with pytest.raises(TypeError, match="domain_text"):
-        clips.Session.open_domain(domain_text=3, problem_text=problem)
+        clips_assist.Session.open_domain(domain_text=3, problem_text=problem)
+
+
+def test_the_package_under_test_is_the_expected_one():
+    """pip_install_venv runs these tests against the installed package; the
+    in-tree run against build/python."""
+    expected = os.environ.get("CLIPS_ASSIST_EXPECTED_DIR") or str(BINARY_DIR / "python" / "clips_assist")
+    assert pathlib.Path(clips_assist.__file__).resolve().parent == pathlib.Path(expected).resolve()

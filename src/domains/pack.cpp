@@ -218,7 +218,7 @@ std::vector<commands::FewShotExample> Pack::fewshot(bool literal, const std::str
                                                            (literal ? " marked for the literal prompt" : ""));
     return out;
   }
-  const std::string dir = language_dir.empty() ? util::data_dir() + "/language" : language_dir;
+  const std::string dir = language_dir.empty() ? util::data_path("language") : language_dir;
   all = commands::load_fewshot_examples(dir + "/fewshot-examples.tsv");
   if (!declared.empty()) return commands::order_examples(all, src.domain, declared);
   const auto orders = commands::load_prompt_orders(dir + "/prompt-orders.json");

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <vector>
@@ -22,7 +23,7 @@ fs::path executable_dir() {
 }
 
 // The folder of the binary this function was linked into (differs from the
-// executable's when clips is a shared library or a Python extension).
+// executable's when the library is shared or a Python extension).
 fs::path library_dir() {
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&library_dir), &info) == 0 || info.dli_fname == nullptr) return {};
@@ -37,21 +38,40 @@ std::vector<fs::path> candidates() {
     out.emplace_back(env);
     return out;  // an explicit choice is never second-guessed
   }
-  // <prefix>/bin/clips and <prefix>/lib/libclips.so sit one level below the
-  // prefix; a multiarch libdir (lib/x86_64-linux-gnu) two, the Python module
-  // (lib/python3/dist-packages) three.
-  for (const fs::path& dir : {executable_dir(), library_dir()}) {
-    if (dir.empty()) continue;
+  const fs::path lib = library_dir(), exe = executable_dir();
+  // <prefix>/bin/clips-assist and <prefix>/lib/libclips_assist.so sit one
+  // level below the prefix; a multiarch libdir (lib/x86_64-linux-gnu) two,
+  // the Python package (lib/python3/dist-packages/clips_assist) four.
+  auto under_prefix = [&out](const fs::path& dir) {
+    if (dir.empty()) return;
     fs::path up = dir;
-    for (int level = 0; level < 3 && up.has_parent_path() && up.parent_path() != up; ++level) {
+    for (int level = 0; level < 4 && up.has_parent_path() && up.parent_path() != up; ++level) {
       up = up.parent_path();
-      out.push_back(up / "share" / "clips");
+      out.push_back(up / "share" / "clips-assist");
     }
-  }
+  };
+  // The binary holding this code decides: a Python module or a shared
+  // library is run by a program installed elsewhere (the interpreter in
+  // /usr/bin must not lead a build tree's module to an installed package's
+  // data). The pip-installed Python package carries its data beside the module.
+  if (!lib.empty()) out.push_back(lib / "data");
+  under_prefix(lib);
 #ifdef CLIPS_SOURCE_DATA_DIR
   out.emplace_back(CLIPS_SOURCE_DATA_DIR);
 #endif
-  return out;
+  under_prefix(exe);
+#ifdef CLIPS_INSTALLED_DATA_DIR
+  // The installed static library, linked into a program anywhere: where it
+  // was configured to install its data, then the usual prefixes.
+  out.emplace_back(CLIPS_INSTALLED_DATA_DIR);
+  out.emplace_back("/usr/local/share/clips-assist");
+  out.emplace_back("/usr/share/clips-assist");
+#endif
+  // Once each, in order.
+  std::vector<fs::path> unique;
+  for (auto& d : out)
+    if (std::find(unique.begin(), unique.end(), d) == unique.end()) unique.push_back(std::move(d));
+  return unique;
 }
 
 }  // namespace
@@ -73,7 +93,8 @@ std::string data_path(const std::string& relative) {
     searched += (searched.empty() ? "" : ", ") + d.string();
   }
   throw InputError("data file '" + relative + "' not found (searched " + searched +
-                   "; set CLIPS_DATA_DIR to the folder holding language/, paper/ and domains/)");
+                   "; set CLIPS_DATA_DIR to the folder holding language/, paper/ and domains/, e.g. "
+                   "<prefix>/share/clips-assist)");
 }
 
 }  // namespace clips::util

@@ -1,14 +1,20 @@
 #pragma once
-// The one place that decides where clips's installed data lives (language
+// The one place that decides where the installed data lives (language
 // corpora, few-shot examples, prompt orders, the paper's result tables, the
-// domain packs' files). Searched in order:
-//   1. $CLIPS_DATA_DIR (the data root: it holds language/, paper/, domains/);
-//   2. <prefix>/share/clips beside an installed executable or library
-//      (<prefix>/bin/clips, <prefix>/lib[/<multiarch>]/libclips*, or the
-//      Python module in <prefix>/lib/python3/dist-packages);
-//   3. the source tree's data/ folder, for builds run from their build tree.
-// The first that exists wins; data_path() names the file it looked for when
-// none has it.
+// domain packs' files, the example dataset). Searched in order:
+//   1. $CLIPS_DATA_DIR (the data root: it holds language/, paper/, domains/),
+//      and nothing else when it is set;
+//   2. data/ beside the binary this code is linked into (the pip-installed
+//      Python package: site-packages/clips_assist/data);
+//   3. <prefix>/share/clips-assist, up to four levels above that binary
+//      (<prefix>/bin/clips-assist, <prefix>/lib[/<multiarch>]/libclips_assist*,
+//      the Python package in <prefix>/lib/python3[.X]/dist-packages/clips_assist);
+//   4. build-tree binaries only: the source tree's data/;
+//   5. the same above the running executable (a program linking the library);
+//   6. the installed static library only: its configured
+//      <datadir>/clips-assist, /usr/local/share/clips-assist, /usr/share/clips-assist.
+// The first that exists wins; data_path() names the places it looked in when
+// none has the file.
 #include <string>
 
 namespace clips::util {

@@ -132,6 +132,54 @@ double sum_continuation_logprobs(const json& logprobs, const std::string& prompt
   return sum;
 }
 
+double sum_prompt_logprobs(const json& prompt_logprobs, const std::string& prompt,
+                           const std::string& continuation, const std::string& where) {
+  if (!prompt_logprobs.is_array()) throw LmError(where + " is not an array");
+  const std::string text = prompt + continuation;
+  std::size_t end = text.size();  // where the token being read ends, in bytes
+  double sum = 0;
+  bool covered = false;
+  for (std::size_t k = prompt_logprobs.size(); k-- > 0 && end > prompt.size();) {
+    const std::string at = where + "[" + std::to_string(k) + "]";
+    const json& entry = prompt_logprobs[k];
+    if (entry.is_null())
+      throw LmError(at + " is null inside the continuation (only the first prompt token has no log-prob)");
+    if (!entry.is_object() || entry.empty()) throw LmError(at + " is not a non-empty object");
+    // The prompt's own token: the one of highest rank (the other, if any, is the top alternative).
+    const json* token = nullptr;
+    long long best_rank = std::numeric_limits<long long>::min();
+    for (const auto& [id, lp] : entry.items()) {
+      if (!lp.is_object()) throw LmError(at + "[\"" + id + "\"] is not an object");
+      const auto rank = lp.find("rank");
+      const long long r = rank != lp.end() && rank->is_number_integer() ? rank->get<long long>() : 1;
+      if (token == nullptr || r > best_rank) {
+        token = &lp;
+        best_rank = r;
+      }
+    }
+    const auto decoded = token->find("decoded_token");
+    if (decoded == token->end() || !decoded->is_string())
+      throw LmError(at + ".decoded_token missing: the tokens cannot be placed in the text");
+    const auto lp = token->find("logprob");
+    if (lp == token->end() || !lp->is_number()) throw LmError(at + ".logprob missing or not a number");
+    const double v = lp->get<double>();
+    if (v > kMaxRoundedLogprob) throw LmError(at + ".logprob is " + json(v).dump() + ", above 0");
+    const std::string& piece = decoded->get_ref<const std::string&>();
+    if (piece.size() > end || text.compare(end - piece.size(), piece.size(), piece) != 0)
+      throw LmError(where + ": the decoded tokens do not spell the prompt (token " + std::to_string(k) + ", " +
+                    json(piece).dump() + ", is not the text before byte " + std::to_string(end) +
+                    "); the server tokenised something else");
+    sum += v;
+    end -= piece.size();
+    covered = true;
+  }
+  if (!covered) throw LmError(where + " covers none of the continuation");
+  if (end > prompt.size())
+    throw LmError(where + ": the tokens end " + std::to_string(end - prompt.size()) +
+                  " bytes into the continuation; the prompt was not scored whole");
+  return sum;
+}
+
 std::vector<double> parse_completions_reply(const std::string& body,
                                             const std::vector<const ScoreRequest*>& chunk,
                                             double temperature, const std::string& context) {
@@ -164,6 +212,17 @@ std::vector<double> parse_completions_reply(const std::string& body,
       throw LmError(context + where + ".index " + std::to_string(index) + " repeats an earlier choice");
     }
     filled[index] = true;
+    // vLLM's prompt_logprobs when the reply has them, else echo + logprobs.
+    if (auto plp = choice.find("prompt_logprobs"); plp != choice.end() && !plp->is_null()) {
+      try {
+        scores[index] = sum_prompt_logprobs(*plp, chunk[index]->prompt, chunk[index]->continuation,
+                                            where + ".prompt_logprobs") /
+                        temperature;
+      } catch (const LmError& e) {
+        throw LmError(context + e.what());
+      }
+      continue;
+    }
     auto lp = choice.find("logprobs");
     if (lp == choice.end() || lp->is_null()) throw LmError(context + where + ".logprobs missing");
     try {
@@ -205,6 +264,13 @@ OpenAiCompletionsModel::OpenAiCompletionsModel(OpenAiCompletionsOptions options)
   }
   if (options_.batch_size == 0) options_.batch_size = 1;
   fallback_ = !options_.try_max_tokens_zero;
+  if (options_.prompt_logprobs) {
+    prompt_logprobs_ = *options_.prompt_logprobs;
+  } else {
+    std::string v = env_or("CLIPS_LM_PROMPT_LOGPROBS", "");
+    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    prompt_logprobs_ = v == "1" || v == "true" || v == "yes" || v == "on";
+  }
 }
 
 std::string OpenAiCompletionsModel::name() const { return "openai:" + model_; }
@@ -246,9 +312,14 @@ std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const 
     json body = {{"model", model_},
                  {"prompt", prompts},
                  {"max_tokens", fallback ? 1 : 0},
-                 {"echo", true},
-                 {"logprobs", options_.logprobs},
                  {"temperature", options_.temperature}};
+    if (prompt_logprobs_) {
+      // vLLM: the prompt tokens' log-probs (and the top alternative) without echo.
+      body["prompt_logprobs"] = 1;
+    } else {
+      body["echo"] = true;
+      body["logprobs"] = options_.logprobs;
+    }
     reply = http_.post_json(endpoint_, body.dump(), headers);
     if (reply.status >= 200 && reply.status < 300) break;
     const std::string why = server_error_text(reply.body);

@@ -4,6 +4,11 @@
 // spec section 7.8: echo the prompt+continuation with logprobs, generate
 // nothing, and sum the log-probabilities of the tokens that start inside the
 // continuation (which includes the "\n" stop), divided by the temperature.
+// With prompt_logprobs on, the request asks for vLLM's `prompt_logprobs`
+// instead of echo + logprobs: the prompt tokens' log-probabilities come back
+// as choices[i].prompt_logprobs, one {token id: {logprob, rank,
+// decoded_token}} per prompt token, and the tokens covering the continuation
+// are found by spelling the text back from its end.
 #include <atomic>
 #include <cstddef>
 #include <nlohmann/json_fwd.hpp>
@@ -28,6 +33,11 @@ struct OpenAiCompletionsOptions {
   // Start with max_tokens=0; when the server rejects it we switch to
   // max_tokens=1 (and ignore the generated token) for the rest of the run.
   bool try_max_tokens_zero = true;
+  // Ask for vLLM's prompt_logprobs rather than echo + logprobs. nullopt:
+  // on when $CLIPS_LM_PROMPT_LOGPROBS is 1, true, yes or on. Servers that do
+  // not know the field (OpenAI's) refuse it, so it is never on by default. A
+  // reply carrying prompt_logprobs is read that way whatever was asked.
+  std::optional<bool> prompt_logprobs;
   HttpOptions http;
 };
 
@@ -42,6 +52,8 @@ class OpenAiCompletionsModel : public LanguageModel {
   const std::string& model() const { return model_; }
   // True once the server has refused max_tokens=0 (or it was never tried).
   bool using_max_tokens_fallback() const { return fallback_.load(); }
+  // True when requests ask for prompt_logprobs (vLLM) instead of echo.
+  bool using_prompt_logprobs() const { return prompt_logprobs_; }
 
  private:
   // Scores one HTTP request's worth of (prompt, continuation) pairs.
@@ -53,6 +65,7 @@ class OpenAiCompletionsModel : public LanguageModel {
   std::string api_key_;
   HttpClient http_;
   std::atomic<bool> fallback_{false};
+  bool prompt_logprobs_ = false;
 };
 
 namespace detail {
@@ -72,6 +85,16 @@ std::size_t utf8_length(const std::string& text);
 // `where` names the JSON object in error messages, e.g. "choices[2].logprobs".
 double sum_continuation_logprobs(const nlohmann::json& logprobs, const std::string& prompt,
                                  const std::string& continuation, const std::string& where);
+
+// The same sum from vLLM's prompt_logprobs: a list with one entry per prompt
+// token (null for the first, which has no log-probability), each an object
+// {token id: {"logprob", "rank", "decoded_token"}} holding the prompt's token
+// and, when it was not the most likely, the top alternative (rank 1): the
+// prompt's token is the entry of highest rank. The decoded tokens, read from
+// the end, must spell prompt + continuation; those that start at or after
+// the prompt's end, and one straddling it, are summed.
+double sum_prompt_logprobs(const nlohmann::json& prompt_logprobs, const std::string& prompt,
+                           const std::string& continuation, const std::string& where);
 
 // The scores in a /v1/completions reply `body` to the batch `chunk`: one per
 // request, in request order (choices may come out of order, by `index`), each

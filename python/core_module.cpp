@@ -1,0 +1,776 @@
+// clips_assist._core (pybind11), the extension of the Python package
+// clips_assist (python/clips_assist/): the session API of
+// include/clips/session.hpp, plus a whole dataset plan (as `clips infer`) and
+// a whole bench (as `clips bench`), all returning plain dicts and lists.
+// C++ exceptions become clips_assist.InputError (a ValueError),
+// InapplicableActionError (an InputError) and LanguageModelError (a
+// RuntimeError) with the same messages. Inference runs without the GIL, on a
+// worker thread, while the calling thread watches for signals: Ctrl-C raises
+// KeyboardInterrupt at once and leaves the session as it was (see
+// interruptible() below). A session pickles as its opener, options and the
+// actions and utterances it was given, replayed on load.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "clips/clips.hpp"
+#include "data/dataset.hpp"
+#include "eval/bench.hpp"
+#include "inference/belief.hpp"
+#include "language/listener.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// ---- session options: one table for every opener ---------------------------
+//
+// Session.open_dataset and Session.open_domain take the same keyword options,
+// read by this one table (name, what it sets, its default from
+// clips::SessionOptions{} itself), so that the openers cannot drift apart.
+
+std::string type_name(py::handle v) { return py::str(py::type::handle_of(v).attr("__name__")); }
+
+template <typename T>
+T cast_option(const char* name, py::handle v, const char* expected) {
+  try {
+    return py::cast<T>(v);
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string("option '") + name + "': expected " + expected + ", got " + type_name(v));
+  }
+}
+
+std::string text_option(const char* name, py::handle v) { return cast_option<std::string>(name, v, "str"); }
+
+// An int option in [lo, hi]; a bool is a TypeError, an int out of range
+// (however large) an InputError (a ValueError).
+long long int_option(const char* name, py::handle v, long long lo, long long hi = INT_MAX) {
+  if (py::isinstance<py::bool_>(v))
+    throw py::type_error(std::string("option '") + name + "': expected int, got bool");
+  if (!py::isinstance<py::int_>(v) && !py::hasattr(v, "__index__"))
+    throw py::type_error(std::string("option '") + name + "': expected int, got " + type_name(v));
+  const py::int_ big(py::reinterpret_borrow<py::object>(v));
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  int overflow = 0;
+  const long long x = PyLong_AsLongLongAndOverflow(big.ptr(), &overflow);
+  if (overflow != 0 || x < lo || x > hi)
+    throw clips::InputError(std::string(name) + " must be an int in " + range + ", got " +
+                            std::string(py::str(py::object(big))));
+  return x;
+}
+
+// A finite float option in [lo, hi] (NaN and infinities are refused).
+double float_option(const char* name, py::handle v, double lo = -HUGE_VAL, double hi = HUGE_VAL) {
+  if (py::isinstance<py::bool_>(v))
+    throw py::type_error(std::string("option '") + name + "': expected float, got bool");
+  const double x = cast_option<double>(name, v, "float");
+  const std::string got = py::str(py::float_(x));
+  if (!std::isfinite(x)) throw clips::InputError(std::string(name) + " must be a finite number, got " + got);
+  if (x < lo || x > hi)
+    throw clips::InputError(std::string(name) + " must be in [" + std::string(py::str(py::float_(lo))) + ", " +
+                            std::string(py::str(py::float_(hi))) + "], got " + got);
+  return x;
+}
+
+std::vector<std::string> list_option(const char* name, py::handle v) {
+  if (py::isinstance<py::str>(v))
+    throw py::type_error(std::string("option '") + name + "': expected a list of str, got one str");
+  return cast_option<std::vector<std::string>>(name, v, "a list of str");
+}
+
+clips::Method parse_method(const std::string& m) {
+  if (m == "clips" || m == "both") return clips::Method::Clips;
+  if (m == "language" || m == "language-only" || m == "utterance") return clips::Method::LanguageOnly;
+  if (m == "action" || m == "action-only") return clips::Method::ActionOnly;
+  throw clips::InputError("unknown method '" + m + "' (expected clips, language or action)");
+}
+
+clips::Assistance parse_assistance(const std::string& a) {
+  if (a == "qmdp") return clips::Assistance::QMdp;
+  if (a == "pibar") return clips::Assistance::PiBar;
+  throw clips::InputError("unknown assistance '" + a + "' (expected qmdp or pibar)");
+}
+
+constexpr long long kMaxThreads = 1024;
+
+struct SessionOption {
+  const char* name;
+  const char* help;
+  std::function<void(clips::SessionOptions&, py::handle)> set;
+  std::function<std::string(const clips::SessionOptions&)> show;  // the default, as Python would write it
+};
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string number(double v) { return py::str(py::float_(v)); }
+
+const std::vector<SessionOption>& session_option_table() {
+  using O = clips::SessionOptions;
+  static const std::vector<SessionOption> table = {
+      {"method", "clips, language or action: the evidence the posterior and the assistance use",
+       [](O& o, py::handle v) { o.method = parse_method(text_option("method", v)); },
+       [](const O&) { return quoted("clips"); }},
+      {"assistance", "qmdp or pibar",
+       [](O& o, py::handle v) { o.assistance = parse_assistance(text_option("assistance", v)); },
+       [](const O&) { return quoted("qmdp"); }},
+      {"lm", "language model: embedded (offline) or openai",
+       [](O& o, py::handle v) { o.language_model.backend = text_option("lm", v); },
+       [](const O& o) { return quoted(o.language_model.backend); }},
+      {"lm_base_url", "openai: completions API base URL ('': $CLIPS_LM_BASE_URL, else OpenAI's)",
+       [](O& o, py::handle v) { o.language_model.base_url = text_option("lm_base_url", v); },
+       [](const O& o) { return quoted(o.language_model.base_url); }},
+      {"lm_model", "openai: model name ('': $CLIPS_LM_MODEL, else davinci-002)",
+       [](O& o, py::handle v) { o.language_model.model = text_option("lm_model", v); },
+       [](const O& o) { return quoted(o.language_model.model); }},
+      {"lm_timeout", "openai: seconds per request",
+       [](O& o, py::handle v) {
+         // At most a day: a larger wait is no timeout (and overflows libcurl's milliseconds).
+         o.language_model.timeout_seconds = float_option("lm_timeout", v, 0, 86400);
+         if (!(o.language_model.timeout_seconds > 0)) throw clips::InputError("lm_timeout must be > 0, got 0.0");
+       },
+       [](const O& o) { return number(o.language_model.timeout_seconds); }},
+      {"goals", "candidate goals as PDDL conditions ([]: the domain pack's)",
+       [](O& o, py::handle v) { o.goals = list_option("goals", v); }, [](const O&) { return std::string("[]"); }},
+      {"cost_profiles", "candidate cost profiles ([]: the plan's or the pack's default)",
+       [](O& o, py::handle v) { o.cost_profiles = list_option("cost_profiles", v); },
+       [](const O&) { return std::string("[]"); }},
+      {"max_nodes", "expansions per lookahead search",
+       [](O& o, py::handle v) { o.max_nodes = static_cast<size_t>(int_option("max_nodes", v, 1, LLONG_MAX)); },
+       [](const O& o) { return std::to_string(o.max_nodes); }},
+      {"threads", "threads refining the hypotheses, 0 to 1024 (0: all cores)",
+       [](O& o, py::handle v) { o.threads = static_cast<int>(int_option("threads", v, 0, kMaxThreads)); },
+       [](const O& o) { return std::to_string(o.threads); }},
+      {"particles", "particle inference with this many particles (0: exact enumeration)",
+       [](O& o, py::handle v) { o.particles = static_cast<int>(int_option("particles", v, 0)); },
+       [](const O& o) { return std::to_string(o.particles); }},
+      {"particle_seed", "the particle filter's seed",
+       [](O& o, py::handle v) {
+         if (py::isinstance<py::bool_>(v)) throw py::type_error("option 'particle_seed': expected int, got bool");
+         o.particle_seed = cast_option<uint64_t>("particle_seed", v, "an int from 0 to 2**64-1");
+       },
+       [](const O& o) { return std::to_string(o.particle_seed); }},
+      {"ess_threshold", "resample below this share of the particles, in [0, 1]",
+       [](O& o, py::handle v) { o.ess_threshold = float_option("ess_threshold", v); },
+       [](const O& o) { return number(o.ess_threshold); }},
+      {"rejuvenation_moves", "Metropolis-Hastings sweeps after each resampling",
+       [](O& o, py::handle v) { o.rejuvenation_moves = static_cast<int>(int_option("rejuvenation_moves", v, 0)); },
+       [](const O& o) { return std::to_string(o.rejuvenation_moves); }},
+      {"rejuvenate", "when else the sweeps run: evidence, utterances or resampling",
+       [](O& o, py::handle v) { o.rejuvenate = text_option("rejuvenate", v); },
+       [](const O& o) { return quoted(o.rejuvenate); }},
+      {"proposal_groups", "exploring proposals per sweep",
+       [](O& o, py::handle v) { o.proposal_groups = static_cast<int>(int_option("proposal_groups", v, 1)); },
+       [](const O& o) { return std::to_string(o.proposal_groups); }},
+      {"particle_filters", "all (one filter per method) or clips",
+       [](O& o, py::handle v) { o.particle_filters = text_option("particle_filters", v); },
+       [](const O& o) { return quoted(o.particle_filters); }},
+      {"particle_estimate", "support or weights",
+       [](O& o, py::handle v) { o.particle_estimate = text_option("particle_estimate", v); },
+       [](const O& o) { return quoted(o.particle_estimate); }},
+      {"assistant_turns", "refinement at the assistant's turns: taken or all (as --assistant-turns)",
+       [](O& o, py::handle v) { o.assistant_turns = text_option("assistant_turns", v); },
+       [](const O& o) { return quoted(o.assistant_turns); }},
+  };
+  return table;
+}
+
+// The options named in `kwargs`; `taken` lists keywords the opener reads
+// itself. An unknown keyword is a TypeError, as for any Python function.
+clips::SessionOptions session_options(const py::kwargs& kwargs, const char* opener,
+                                      std::initializer_list<const char*> taken = {}) {
+  clips::SessionOptions o;
+  const auto& table = session_option_table();
+  for (auto item : kwargs) {
+    const std::string key = py::str(item.first);
+    if (std::any_of(taken.begin(), taken.end(), [&](const char* t) { return key == t; })) continue;
+    auto it = std::find_if(table.begin(), table.end(), [&](const SessionOption& so) { return key == so.name; });
+    if (it == table.end())
+      throw py::type_error(std::string(opener) + "() got an unexpected keyword argument '" + key + "'");
+    if (item.second.is_none()) continue;  // None: the default
+    it->set(o, item.second);
+  }
+  return o;
+}
+
+std::string options_doc() {
+  std::string d = "Keyword options (shared by open_dataset and open_domain; None keeps the default):\n";
+  const clips::SessionOptions defaults;
+  for (const auto& so : session_option_table())
+    d += std::string("  ") + so.name + "=" + so.show(defaults) + ": " + so.help + "\n";
+  return d;
+}
+
+// A str or os.PathLike (pathlib.Path) as a path.
+std::string path_arg(const char* name, py::handle v) {
+  if (py::isinstance<py::str>(v)) return py::cast<std::string>(v);
+  if (py::hasattr(v, "__fspath__")) return py::cast<std::string>(py::module_::import("os").attr("fspath")(v));
+  throw py::type_error(std::string("argument '") + name + "': expected str or os.PathLike, got " + type_name(v));
+}
+
+py::dict to_dict(const clips::Posterior& p) {
+  py::dict goals, profiles;
+  for (size_t g = 0; g < p.goals.size(); ++g) goals[py::str(p.goals[g])] = p.goal_probabilities[g];
+  for (size_t c = 0; c < p.cost_profiles.size(); ++c)
+    profiles[py::str(p.cost_profiles[c])] = p.cost_profile_probabilities[c];
+  py::list hyps;
+  for (const auto& h : p.hypotheses) {
+    py::dict d;
+    d["goal"] = h.goal;
+    d["cost_profile"] = h.cost_profile;
+    d["weight"] = h.weight;
+    hyps.append(d);
+  }
+  py::dict d;
+  d["goals"] = goals;
+  d["cost_profiles"] = profiles;
+  d["hypotheses"] = hyps;
+  d["log_marginal_likelihood"] = p.log_marginal_likelihood;
+  return d;
+}
+
+py::dict to_dict(const clips::Step& s) {
+  py::dict d;
+  d["t"] = s.t;
+  d["action"] = s.action;
+  d["agent"] = s.agent;
+  d["evidence"] = s.evidence;
+  d["utterances"] = s.utterances;
+  d["posterior"] = to_dict(s.posterior);
+  d["seconds"] = s.seconds;
+  return d;
+}
+
+py::dict to_dict(const clips::AssistDecision& a) {
+  py::dict d;
+  d["assistant_turn"] = a.assistant_turn;
+  d["action"] = a.assistant_turn ? py::object(py::str(a.action)) : py::object(py::none());
+  d["id"] = a.id;
+  py::list cands;
+  for (const auto& c : a.candidates) {
+    py::dict cd;
+    cd["id"] = c.id;
+    cd["action"] = c.action;
+    cd["value"] = c.value;
+    cands.append(cd);
+  }
+  d["candidates"] = cands;
+  d["unanimous"] = a.unanimous;
+  py::dict weights;
+  for (size_t g = 0; g < a.goals.size(); ++g) weights[py::str(a.goals[g])] = a.goal_weights[g];
+  d["goal_weights"] = weights;
+  return d;
+}
+
+// ---- long calls: off the calling thread, interruptible ------------------------
+//
+// The engine has no cancellation, so a long call runs on a worker thread
+// holding everything it uses (shared_ptr, copies), while the calling thread
+// waits without the GIL and checks for signals every 20 ms. On Ctrl-C (any
+// signal handler raising) the caller raises at once and the worker is left to
+// finish on its own state, its result dropped: a session interrupted in a call
+// replays its log into a fresh engine before its next use, so it is as it was
+// before the call. Left workers are joined at exit (clips_assist registers
+// _join_abandoned with atexit), so none runs while the process is torn down.
+
+struct Abandoned {
+  std::thread worker;
+  std::shared_ptr<std::atomic<bool>> finished;
+};
+std::mutex abandoned_mutex;
+std::vector<Abandoned>& abandoned() {
+  static auto* left = new std::vector<Abandoned>();  // never destroyed: joined by _join_abandoned
+  return *left;
+}
+
+template <typename F>
+auto interruptible(F f) -> decltype(f()) {
+  using R = decltype(f());
+  auto task = std::make_shared<std::packaged_task<R()>>(std::move(f));
+  auto finished = std::make_shared<std::atomic<bool>>(false);
+  std::future<R> done = task->get_future();
+  std::thread worker([task, finished] {
+    (*task)();
+    *finished = true;
+  });
+  for (;;) {
+    bool ready;
+    {
+      py::gil_scoped_release unlocked;
+      ready = done.wait_for(std::chrono::milliseconds(20)) == std::future_status::ready;
+    }
+    if (ready) break;
+    if (PyErr_CheckSignals() != 0) {
+      std::lock_guard<std::mutex> lock(abandoned_mutex);
+      abandoned().push_back(Abandoned{std::move(worker), finished});
+      throw py::error_already_set();
+    }
+  }
+  worker.join();
+  return done.get();  // the worker's exception, if any, is rethrown here
+}
+
+void join_abandoned() {
+  std::vector<Abandoned> left;
+  {
+    std::lock_guard<std::mutex> lock(abandoned_mutex);
+    left.swap(abandoned());
+  }
+  py::gil_scoped_release unlocked;
+  for (auto& a : left) a.worker.join();
+}
+
+// How many interrupted calls are still running (for the tests).
+int abandoned_running() {
+  std::lock_guard<std::mutex> lock(abandoned_mutex);
+  return static_cast<int>(std::count_if(abandoned().begin(), abandoned().end(),
+                                        [](const Abandoned& a) { return !*a.finished; }));
+}
+
+// ---- the Python session --------------------------------------------------------
+
+// How a session was opened, to open it again (pickling, recovery).
+struct Opener {
+  std::string kind;  // "dataset", "domain" or "text"
+  std::string a, b, c;  // dataset dir + problem; domain dir + problem file; domain, problem and pack text
+};
+
+// One call that changed the session: an action (PDDL text) or an utterance.
+struct Event {
+  bool utterance = false;
+  std::string text;
+};
+
+struct PySession {
+  Opener opener;
+  py::dict options;  // the keyword options as given (None values dropped)
+  clips::SessionOptions parsed;
+  std::vector<Event> log;
+  // Null after an interrupted call; rebuilt from opener + options + log.
+  std::shared_ptr<clips::Session> engine;
+};
+
+std::shared_ptr<clips::Session> open_engine(const Opener& op, const clips::SessionOptions& o) {
+  if (op.kind == "dataset") return std::make_shared<clips::Session>(clips::Session::open_dataset(op.a, op.b, o));
+  if (op.kind == "domain") return std::make_shared<clips::Session>(clips::Session::open_domain(op.a, op.b, o));
+  return std::make_shared<clips::Session>(clips::Session::open_domain_text(op.a, op.b, op.c, o));
+}
+
+void apply(clips::Session& s, const Event& e) {
+  if (e.utterance)
+    s.hear(e.text);
+  else
+    s.observe(e.text);
+}
+
+// The session's engine, replayed first if a call on it was interrupted.
+clips::Session& engine(PySession& ps) {
+  if (!ps.engine) {
+    ps.engine = interruptible([op = ps.opener, o = ps.parsed, log = ps.log] {
+      auto s = open_engine(op, o);
+      for (const auto& e : log) apply(*s, e);
+      return s;
+    });
+  }
+  return *ps.engine;
+}
+
+PySession open_session(Opener op, py::dict options, clips::SessionOptions parsed, std::vector<Event> log = {}) {
+  PySession ps{std::move(op), std::move(options), std::move(parsed), std::move(log), nullptr};
+  engine(ps);
+  return ps;
+}
+
+std::string absolute(const std::string& path) { return std::filesystem::absolute(path).lexically_normal().string(); }
+
+py::dict given_options(const py::kwargs& kwargs, std::initializer_list<const char*> taken = {}) {
+  py::dict d;
+  for (auto item : kwargs) {
+    const std::string key = py::str(item.first);
+    if (item.second.is_none()) continue;
+    if (std::any_of(taken.begin(), taken.end(), [&](const char* t) { return key == t; })) continue;
+    d[item.first] = item.second;
+  }
+  return d;
+}
+
+// One call that changes the session (observe, hear), off the calling thread.
+py::dict step_call(PySession& ps, Event e) {
+  engine(ps);
+  auto shared = ps.engine;
+  try {
+    clips::Step st = interruptible([shared, e] {
+      apply(*shared, e);
+      return shared->trace().back();
+    });
+    if (!e.utterance) e.text = st.action;  // an id becomes its action's text
+    ps.log.push_back(std::move(e));
+    return to_dict(st);
+  } catch (py::error_already_set&) {
+    ps.engine.reset();  // interrupted: the worker keeps the old engine; replay before the next call
+    throw;
+  }
+}
+
+// A dataset plan, as `clips infer --json` (every step, all three methods):
+// steps[t]["action"] is the action observed at t ("" at t = 0) and
+// steps[t]["posterior"] the goal probabilities of each method, in goals' order.
+py::dict run_plan(const std::string& dataset, const std::string& plan_id, const std::string& lm_kind, long long threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw clips::InputError("threads must be an int in [0, " + std::to_string(kMaxThreads) + "], got " +
+                            std::to_string(threads));
+  auto run = interruptible([dataset, plan_id, lm_kind, threads] {
+    auto ds = clips::data::Dataset::load(dataset);
+    const auto& plan = ds.plan(plan_id);
+    auto lm = clips::language::make_language_model(lm_kind);
+    clips::inference::InferenceOptions o;
+    o.threads = static_cast<int>(threads);
+    return clips::inference::run_inference(ds, plan, *lm, o);
+  });
+  py::dict d;
+  d["plan"] = run.plan_id;
+  d["goals"] = run.goals;
+  d["true_goal"] = run.true_goal >= 0 ? py::object(py::str(run.goals[run.true_goal])) : py::object(py::none());
+  d["cost_profiles"] = run.profiles;
+  py::list steps;
+  for (const auto& st : run.steps) {
+    py::dict s;
+    s["t"] = st.t;
+    s["action"] = st.action;
+    py::list us;
+    for (const auto& u : st.utterances) us.append(u.text);
+    s["utterances"] = us;
+    py::dict posterior;
+    for (auto m : clips::inference::kModalities) {
+      const char* name = m == clips::inference::Modality::Both          ? "clips"
+                         : m == clips::inference::Modality::UtteranceOnly ? "language"
+                                                                          : "action";
+      posterior[name] = st[m].goals;
+    }
+    s["posterior"] = posterior;
+    s["log_marginal_likelihood"] = st[clips::inference::Modality::Both].log_marginal;
+    s["seconds"] = st.seconds;
+    steps.append(s);
+  }
+  d["steps"] = steps;
+  d["seconds"] = run.seconds;
+  return d;
+}
+
+// A whole bench, as `clips bench`: one row per plan and method (ready for
+// pandas.DataFrame) and the aggregated summary.
+py::dict run_bench(const std::string& dataset, std::vector<std::string> methods, std::vector<std::string> plans,
+                   long long jobs, uint64_t seed, const std::string& lm_kind) {
+  if (jobs < 0 || jobs > kMaxThreads)
+    throw clips::InputError("jobs must be an int in [0, " + std::to_string(kMaxThreads) + "], got " + std::to_string(jobs));
+  clips::eval::BenchOptions o;
+  o.dataset = dataset;
+  o.jobs = static_cast<int>(jobs);
+  o.experiment.methods = std::move(methods);
+  o.experiment.seed = seed;
+  o.lm = lm_kind;
+  o.plans = std::move(plans);
+  o.progress = false;
+  const clips::eval::BenchReport rep = interruptible([o] { return clips::eval::run_bench(o); });
+  py::list rows;
+  for (const auto& p : rep.plans) {
+    if (!p.error.empty()) {
+      py::dict r;
+      r["plan"] = p.plan_id;
+      r["error"] = p.error;
+      rows.append(r);
+      continue;
+    }
+    for (const auto& m : p.methods) {
+      py::dict r;
+      r["domain"] = rep.domain;
+      r["plan"] = p.plan_id;
+      r["method"] = m.method;
+      r["p_true_goal"] = m.p_true_goal ? py::object(py::float_(*m.p_true_goal)) : py::object(py::none());
+      r["precision"] = m.precision;
+      r["recall"] = m.recall;
+      r["plan_length"] = m.plan_length;
+      r["human_cost"] = m.human_cost;
+      r["plan_cost"] = m.plan_cost;
+      r["goal_success"] = m.goal_success;
+      r["rel_plan_length"] = m.has_relative ? py::object(py::float_(m.rel_plan_length)) : py::object(py::none());
+      r["rel_human_cost"] = m.has_relative ? py::object(py::float_(m.rel_human_cost)) : py::object(py::none());
+      r["seconds"] = m.seconds;
+      r["error"] = m.error;
+      rows.append(r);
+    }
+  }
+  py::dict summary;
+  for (const auto& ms : rep.summary) {
+    py::dict metrics;
+    for (const auto& [name, v] : ms.metrics) {
+      py::dict x;
+      x["mean"] = v.mean;
+      x["se"] = v.se;
+      x["n"] = v.n;
+      metrics[py::str(name)] = x;
+    }
+    summary[py::str(ms.method)] = metrics;
+  }
+  py::dict d;
+  d["domain"] = rep.domain;
+  d["lm"] = rep.lm;
+  d["rows"] = rows;
+  d["summary"] = summary;
+  d["wall_seconds"] = rep.wall_seconds;
+  d["failed_plans"] = rep.failed_plans;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() =
+      "clips_assist._core: the compiled part of clips_assist (import clips_assist, not this module).\n\n"
+      "Goal inference from a human's actions and instructions, and assistance (CLIPS).";
+  m.attr("__version__") = clips::library_version();
+
+  auto& input_error = py::register_exception<clips::InputError>(m, "InputError", PyExc_ValueError);
+  input_error.attr("__doc__") = "Bad input (a file, an option, an action or an utterance); a ValueError naming it.";
+  auto& inapplicable =
+      py::register_exception<clips::InapplicableActionError>(m, "InapplicableActionError", input_error.ptr());
+  inapplicable.attr("__doc__") = "An action whose precondition is false in the current state (an InputError).";
+  auto& lm_error = py::register_exception<clips::LanguageModelError>(m, "LanguageModelError", PyExc_RuntimeError);
+  lm_error.attr("__doc__") = "The language model failed (e.g. the completions server did not answer).";
+  for (py::handle e : std::initializer_list<py::handle>{input_error, inapplicable, lm_error})
+    e.attr("__module__") = "clips_assist";
+  // Internal language-model failures reach Python as the same type.
+  static PyObject* lm_error_type = lm_error.ptr();
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const clips::lm::LmError& e) {
+      PyErr_SetString(lm_error_type, e.what());
+    }
+  });
+
+  py::class_<PySession>(m, "Session",
+                        "A live inference session: observe() the agents' actions, hear() the human's utterances, read "
+                        "posterior() and ask assist() for the assistant's next action.\n\n"
+                        "Open it with Session.open_dataset or Session.open_domain. A session pickles (and copies) as "
+                        "its problem, options and the actions and utterances it was given, replayed on load. Ctrl-C "
+                        "during a call raises KeyboardInterrupt and leaves the session as it was.")
+      .def_static(
+          "open_dataset",
+          [](py::object dataset, const std::string& problem, const py::kwargs& kwargs) {
+            const std::string dir = absolute(path_arg("dataset", dataset));
+            auto o = session_options(kwargs, "open_dataset");
+            return open_session(Opener{"dataset", dir, problem, ""}, given_options(kwargs), std::move(o));
+          },
+          py::arg("dataset"), py::arg("problem"),
+          ("open_dataset(dataset, problem, **options)\n\n"
+           "A dataset problem ('2') or plan ('2.1.keys': its goals and cost profiles, from the initial state); the "
+           "folder may have no plans/. particles > 0: particle inference with that many particles instead of exact "
+           "enumeration, tuned as clips infer's options of the same names. clips_assist.example_dataset() is the "
+           "installed example.\n\n" +
+           options_doc())
+              .c_str())
+      .def_static(
+          "open_domain",
+          [](py::object domain_dir, py::object problem_file, const py::kwargs& kwargs) {
+            auto text = [&](const char* key) -> std::optional<std::string> {
+              if (!kwargs.contains(key) || kwargs[key].is_none()) return std::nullopt;
+              return text_option(key, kwargs[key]);
+            };
+            const auto domain_text = text("domain_text"), problem_text = text("problem_text"),
+                       pack_text = text("pack_text");
+            auto o = session_options(kwargs, "open_domain", {"domain_text", "problem_text", "pack_text"});
+            py::dict given = given_options(kwargs, {"domain_text", "problem_text", "pack_text"});
+            const bool from_text = domain_text || problem_text || pack_text;
+            if (from_text) {
+              if (!domain_dir.is_none() || !problem_file.is_none())
+                throw clips::InputError(
+                    "open_domain: give domain_dir and problem_file (paths), or domain_text and problem_text "
+                    "(PDDL text, with pack_text), not both");
+              if (!domain_text || !problem_text)
+                throw clips::InputError(std::string("open_domain: ") + (domain_text ? "problem_text" : "domain_text") +
+                                        " is missing (PDDL text comes as both domain_text and problem_text)");
+              return open_session(Opener{"text", *domain_text, *problem_text, pack_text.value_or("")}, given,
+                                  std::move(o));
+            }
+            if (domain_dir.is_none() || problem_file.is_none())
+              throw clips::InputError(std::string("open_domain: ") + (domain_dir.is_none() ? "domain_dir" : "problem_file") +
+                                      " is missing (give domain_dir and problem_file, or domain_text and problem_text)");
+            const std::string dir = absolute(path_arg("domain_dir", domain_dir)),
+                              file = absolute(path_arg("problem_file", problem_file));
+            return open_session(Opener{"domain", dir, file, ""}, given, std::move(o));
+          },
+          py::arg("domain_dir") = py::none(), py::arg("problem_file") = py::none(),
+          ("open_domain(domain_dir=None, problem_file=None, *, domain_text=None, problem_text=None, pack_text=None, "
+           "**options)\n\n"
+           "A domain folder (holding domain.pddl, and pack.json if the domain has one) and a problem file; or the "
+           "domain and the problem as PDDL text (domain_text, problem_text), with the pack as JSON text (pack_text; "
+           "None: the pack the domain's name finds). The candidate goals follow the pack's rule for the problem.\n\n" +
+           options_doc())
+              .c_str())
+      .def(
+          "observe",
+          [](PySession& ps, py::object action) {
+            // A str is PDDL text, an int (not a bool) an id of applicable_actions().
+            if (py::isinstance<py::str>(action)) return step_call(ps, Event{false, py::cast<std::string>(action)});
+            if (py::isinstance<py::bool_>(action) || !py::hasattr(action, "__index__"))
+              throw py::type_error("observe(): expected the action as PDDL text (str) or an action id (int), got " +
+                                   type_name(action));
+            const long long id = py::cast<long long>(action.attr("__index__")());
+            if (id < INT_MIN || id > INT_MAX) throw clips::InputError("unknown action id " + std::to_string(id));
+            const std::string text = engine(ps).action_name(static_cast<int>(id));
+            return step_call(ps, Event{false, text});
+          },
+          py::arg("action"),
+          "observe(action) -> dict\n\n"
+          "An action of either agent in the current state: PDDL text ('(left human)') or an id of "
+          "applicable_actions(). Returns the new step (as trace()[-1]). Raises InputError for text naming no action "
+          "or an unknown id, InapplicableActionError when its precondition is false; the session is then unchanged.")
+      .def(
+          "hear",
+          [](PySession& ps, py::object utterance) {
+            if (!py::isinstance<py::str>(utterance))
+              throw py::type_error("hear(): expected the utterance as str, got " + type_name(utterance));
+            return step_call(ps, Event{true, py::cast<std::string>(utterance)});
+          },
+          py::arg("utterance"),
+          "hear(utterance) -> dict\n\n"
+          "An utterance heard in the current state (the human's instruction to the assistant). Returns the current "
+          "step with the new posterior. Raises InputError for empty text, LanguageModelError when the model fails.")
+      .def(
+          "posterior",
+          [](PySession& ps, std::optional<std::string> method) {
+            clips::Session& s = engine(ps);
+            return to_dict(method ? s.posterior(parse_method(*method)) : s.posterior());
+          },
+          py::arg("method") = py::none(),
+          "posterior(method=None) -> dict\n\n"
+          "{'goals': {label: p}, 'cost_profiles': {name: p}, 'hypotheses': [{'goal', 'cost_profile', 'weight'}], "
+          "'log_marginal_likelihood': float} under the session's method, or another ('clips', 'language', 'action').")
+      .def(
+          "assist",
+          [](PySession& ps) {
+            engine(ps);
+            auto shared = ps.engine;
+            try {
+              return to_dict(interruptible([shared] { return shared->assist(); }));
+            } catch (py::error_already_set&) {
+              ps.engine.reset();
+              throw;
+            }
+          },
+          "assist() -> dict\n\n"
+          "The assistant's next action under the session's assistance rule: {'assistant_turn', 'action' (None when "
+          "the human is to move), 'id', 'candidates': [{'id', 'action', 'value'}], 'unanimous', 'goal_weights'}. The "
+          "posterior is not changed.")
+      .def(
+          "state", [](PySession& ps) { return engine(ps).state(); },
+          "state() -> str\n\nThe current state, printable (an ASCII map for Doors-Keys-Gems).")
+      .def("__str__", [](PySession& ps) { return engine(ps).state(); })
+      .def("__repr__",
+           [](PySession& ps) {
+             const clips::Session& s = engine(ps);
+             std::string where = ps.opener.kind == "dataset" ? "problem=" + std::string(py::repr(py::str(ps.opener.b)))
+                                 : ps.opener.kind == "domain"
+                                     ? "problem_file=" + std::string(py::repr(py::str(ps.opener.b)))
+                                     : std::string("from text");
+             return "<clips_assist.Session domain=" + std::string(py::repr(py::str(s.domain()))) + " " + where +
+                    " t=" + std::to_string(s.t()) + " to move=" + std::string(py::repr(py::str(s.active_agent()))) +
+                    ">";
+           })
+      .def(
+          "trace",
+          [](PySession& ps) {
+            py::list out;
+            for (const auto& st : engine(ps).trace()) out.append(to_dict(st));
+            return out;
+          },
+          "trace() -> list[dict]\n\n"
+          "Every step so far: trace()[t] after t actions, with 't', 'action', 'agent', 'evidence', 'utterances', "
+          "'posterior' and 'seconds'.")
+      .def_property_readonly(
+          "t", [](PySession& ps) { return engine(ps).t(); }, "Actions observed so far.")
+      .def_property_readonly(
+          "domain", [](PySession& ps) { return engine(ps).domain(); }, "The PDDL domain's name.")
+      .def_property_readonly(
+          "active_agent", [](PySession& ps) { return engine(ps).active_agent(); }, "Who is to move.")
+      .def_property_readonly(
+          "assistant_turn", [](PySession& ps) { return engine(ps).assistant_turn(); },
+          "True when the assistant is to move.")
+      .def(
+          "applicable_actions",
+          [](PySession& ps) {
+            py::list out;
+            for (const auto& a : engine(ps).applicable_actions()) {
+              py::dict d;
+              d["id"] = a.id;
+              d["action"] = a.action;
+              out.append(d);
+            }
+            return out;
+          },
+          "applicable_actions() -> list[dict]\n\nThe active agent's actions applicable now: [{'id', 'action'}].")
+      .def(
+          "action_name",
+          [](PySession& ps, py::object id) {
+            if (py::isinstance<py::bool_>(id) || !py::hasattr(id, "__index__"))
+              throw py::type_error("action_name(): expected an action id (int), got " + type_name(id));
+            const long long x = py::cast<long long>(id.attr("__index__")());
+            if (x < INT_MIN || x > INT_MAX) throw clips::InputError("unknown action id " + std::to_string(x));
+            return engine(ps).action_name(static_cast<int>(x));
+          },
+          py::arg("action_id"), "action_name(action_id) -> str\n\nThe PDDL text of an action id.")
+      .def(py::pickle(
+          [](const PySession& ps) {
+            py::list log;
+            for (const auto& e : ps.log) log.append(py::make_tuple(e.utterance ? "hear" : "observe", e.text));
+            return py::make_tuple(1, ps.opener.kind, ps.opener.a, ps.opener.b, ps.opener.c, ps.options, log);
+          },
+          [](const py::tuple& st) {
+            if (st.size() != 7 || !py::isinstance<py::int_>(st[0]) || py::cast<int>(st[0]) != 1)
+              throw clips::InputError("not a pickled clips_assist.Session (version 1)");
+            Opener op{py::cast<std::string>(st[1]), py::cast<std::string>(st[2]), py::cast<std::string>(st[3]),
+                      py::cast<std::string>(st[4])};
+            if (op.kind != "dataset" && op.kind != "domain" && op.kind != "text")
+              throw clips::InputError("pickled clips_assist.Session: unknown opener '" + op.kind + "'");
+            py::dict options = py::cast<py::dict>(st[5]);
+            py::kwargs kw;
+            for (auto item : options) kw[item.first] = item.second;
+            auto o = session_options(kw, "Session");
+            std::vector<Event> log;
+            for (py::handle e : py::cast<py::list>(st[6])) {
+              auto pair = py::cast<std::pair<std::string, std::string>>(e);
+              log.push_back(Event{pair.first == "hear", pair.second});
+            }
+            return open_session(std::move(op), std::move(options), std::move(o), std::move(log));
+          }));
+
+  m.def("run_plan", &run_plan, py::arg("dataset"), py::arg("plan"), py::kw_only(), py::arg("lm") = "embedded",
+        py::arg("threads") = 0,
+        "run_plan(dataset, plan, *, lm='embedded', threads=0) -> dict\n\n"
+        "Goal inference over one dataset plan, as `clips infer`: {'plan', 'goals', 'true_goal', 'cost_profiles', "
+        "'steps', 'seconds'}; steps[t] has 't', 'action' (the action observed at t, '' at t = 0), 'utterances', "
+        "'posterior' ({'clips': [...], 'language': [...], 'action': [...]}, each method's goal probabilities in "
+        "goals' order), 'log_marginal_likelihood' and 'seconds'.");
+  m.def("run_bench", &run_bench, py::arg("dataset"), py::kw_only(), py::arg("methods") = std::vector<std::string>{},
+        py::arg("plans") = std::vector<std::string>{}, py::arg("jobs") = 0, py::arg("seed") = 1,
+        py::arg("lm") = "embedded",
+        "run_bench(dataset, *, methods=[], plans=[], jobs=0, seed=1, lm='embedded') -> dict\n\n"
+        "Every plan x method of a dataset, as `clips bench`: {'domain', 'lm', 'rows': [one dict per plan and "
+        "method], 'summary': {method: {metric: {'mean', 'se', 'n'}}}, 'wall_seconds', 'failed_plans'}.");
+  m.def("data_directory", &clips::data_directory,
+        "data_directory() -> str\n\nWhere the library reads its data: $CLIPS_DATA_DIR, else the data installed "
+        "with the package (or under the prefix), else the source tree it was built from.");
+  m.def("_join_abandoned", &join_abandoned, "Waits for the calls Ctrl-C interrupted to finish (run at exit).");
+  m.def("_abandoned_running", &abandoned_running, "How many calls Ctrl-C interrupted are still running.");
+}

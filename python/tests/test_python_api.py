@@ -1,0 +1,205 @@
+"""clips_assist as a Python package: argument checks, reprs, docstrings, stubs,
+pickling, Ctrl-C, and run_plan's per-step records."""
+import ast
+import copy
+import math
+import os
+import pathlib
+import pickle
+import signal
+import threading
+
+import pytest
+
+import clips_assist
+from clips_assist import _core
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "data" / "examples" / "doors-keys-gems"
+GARDEN = ROOT / "data" / "datasets" / "garden"
+
+
+def without_seconds(trace):
+    return [{k: v for k, v in step.items() if k != "seconds"} for step in trace]
+
+
+def test_observe_takes_text_or_an_id_but_not_a_bool():
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    for bad in (True, False, 1.0, None, b"(left human)"):
+        with pytest.raises(TypeError, match="observe"):
+            s.observe(bad)
+    with pytest.raises(TypeError, match="hear"):
+        s.hear(3)
+    with pytest.raises(TypeError, match="action_name"):
+        s.action_name(True)
+    assert s.t == 0
+    ids = {a["action"]: a["id"] for a in s.applicable_actions()}
+    by_id = s.observe(ids["(left human)"])
+    other = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    by_text = other.observe("(left human)")
+    assert by_id["action"] == "(left human)"
+    assert without_seconds([by_id]) == without_seconds([by_text])
+    with pytest.raises(clips_assist.InputError, match="unknown action id"):
+        s.observe(10**12)
+
+
+@pytest.mark.parametrize("option,value", [
+    ("threads", -3), ("threads", 1025), ("threads", 10**30),
+    ("max_nodes", 0), ("max_nodes", -1), ("max_nodes", 2**64),
+    ("lm_timeout", -1.0), ("lm_timeout", 0.0), ("lm_timeout", math.nan), ("lm_timeout", math.inf),
+    ("lm_timeout", 1e9),
+    ("particles", -1), ("particles", 2**40), ("ess_threshold", math.nan), ("rejuvenation_moves", 2**31),
+])
+def test_numeric_options_out_of_range_or_nan_are_value_errors(option, value):
+    with pytest.raises(ValueError, match=option) as e:
+        clips_assist.Session.open_dataset(EXAMPLES, "e1", **{option: value})
+    assert isinstance(e.value, clips_assist.InputError)
+
+
+@pytest.mark.parametrize("option,value", [("threads", True), ("threads", 2.0), ("lm_timeout", "5")])
+def test_numeric_options_of_the_wrong_type_are_type_errors(option, value):
+    with pytest.raises(TypeError, match=option):
+        clips_assist.Session.open_dataset(EXAMPLES, "e1", **{option: value})
+
+
+def test_run_plan_and_run_bench_check_their_thread_counts():
+    with pytest.raises(ValueError, match="threads"):
+        clips_assist.run_plan(str(EXAMPLES), "e1.1.keys", threads=-3)
+    with pytest.raises(ValueError, match="jobs"):
+        clips_assist.run_bench(str(EXAMPLES), plans=["e1.1.keys"], jobs=5000)
+
+
+def test_run_plan_keeps_each_steps_action_text():
+    """issue 44: the action-only posterior used to overwrite steps[t]["action"]."""
+    run = clips_assist.run_plan(str(EXAMPLES), "e1.1.keys")
+    observed = [line.strip() for line in (EXAMPLES / "plans" / "observed" / "e1.1.keys.pddl").read_text().splitlines()
+                if line.strip() and not line.strip().startswith(";")]
+    assert [st["action"] for st in run["steps"]] == [""] + observed
+    for st in run["steps"]:
+        assert set(st["posterior"]) == {"clips", "language", "action"}
+        for probs in st["posterior"].values():
+            assert len(probs) == len(run["goals"]) and sum(probs) == pytest.approx(1.0)
+
+
+def test_repr_names_the_session():
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    s.observe("(left human)")
+    r = repr(s)
+    assert r.startswith("<clips_assist.Session ") and r.endswith(">")
+    assert "domain='doors-keys-gems'" in r and "problem='e1'" in r and "t=1" in r and "to move='robot'" in r
+    assert repr(clips_assist.InputError("x")) == "InputError('x')"
+    assert clips_assist.InputError.__module__ == "clips_assist"
+
+
+def test_every_public_name_has_a_docstring_and_a_stub():
+    stub = ast.parse((pathlib.Path(_core.__file__).parent / "_core.pyi").read_text())
+    stub_names = {n.name for n in stub.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    stub_names |= {t.id for n in stub.body if isinstance(n, ast.AnnAssign) for t in [n.target]}
+    session_stub = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Session")
+    stub_methods = {n.name for n in session_stub.body if isinstance(n, ast.FunctionDef)}
+
+    public = [n for n in dir(_core) if not n.startswith("__")] + ["__version__"]
+    assert sorted(set(public) - stub_names) == []
+    assert sorted(stub_names - set(public) - {"StrPath"}) == []
+    methods = [n for n in dir(_core.Session) if not n.startswith("_")]
+    assert sorted(set(methods) - stub_methods) == []
+    for name in methods:
+        doc = getattr(_core.Session, name).__doc__ or ""
+        # pybind11 writes the signature first; the description must follow.
+        assert len(doc.strip().splitlines()) > 1 or not doc.startswith(name), name
+        assert doc.strip(), name
+    for name in ("run_plan", "run_bench", "data_directory", "example_dataset"):
+        assert len(getattr(clips_assist, name).__doc__.strip().splitlines()) > 1, name
+    assert (pathlib.Path(clips_assist.__file__).parent / "py.typed").exists()
+    assert clips_assist.Session.__doc__ and "pickles" in clips_assist.Session.__doc__
+
+
+def played(s):
+    s.observe("(left human)")
+    s.observe("(wait robot)")
+    s.hear("Can you get me the yellow key?")
+    s.observe("(left human)")  # now the robot is to move
+    return s
+
+
+def test_a_session_pickles_and_copies_as_its_problem_options_and_trace(tmp_path, monkeypatch):
+    s = played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1, assistance="pibar"))
+    blob = pickle.dumps(s)
+    monkeypatch.chdir(tmp_path)  # the dataset path was made absolute
+    for again in (pickle.loads(blob), copy.copy(s), copy.deepcopy(s)):
+        assert repr(again) == repr(s)
+        assert again.posterior() == s.posterior()
+        assert without_seconds(again.trace()) == without_seconds(s.trace())
+        assert again.assist()["action"] == s.assist()["action"]
+        # The options came along: pibar values are probabilities.
+        assert sum(c["value"] for c in again.assist()["candidates"]) == pytest.approx(1.0)
+        # And both go on the same way.
+        action = s.assist()["action"]
+        assert without_seconds([again.observe(action)]) == without_seconds([copy.copy(s).observe(action)])
+    # A copy is independent.
+    c = copy.copy(s)
+    c.observe(s.assist()["action"])
+    assert c.t == 4 and s.t == 3
+
+
+def test_a_session_from_text_pickles_too():
+    domain = (EXAMPLES / "domain.pddl").read_text()
+    problem = (EXAMPLES / "problems" / "e1.pddl").read_text()
+    s = played(clips_assist.Session.open_domain(domain_text=domain, problem_text=problem, threads=1))
+    again = pickle.loads(pickle.dumps(s))
+    assert "from text" in repr(again) and again.posterior() == s.posterior()
+
+
+def test_a_bad_pickle_state_is_refused():
+    state = clips_assist.Session.open_dataset(EXAMPLES, "e1").__getstate__()
+
+    def load(st):  # as pickle does
+        obj = clips_assist.Session.__new__(clips_assist.Session)
+        obj.__setstate__(st)
+        return obj
+
+    assert load(state).t == 0
+    with pytest.raises(clips_assist.InputError, match="version 1"):
+        load((2,) + state[1:])
+    with pytest.raises(clips_assist.InputError, match="unknown opener"):
+        load(state[:1] + ("socket",) + state[2:])
+    with pytest.raises(clips_assist.InapplicableActionError):
+        load(state[:6] + ([("observe", "(wait robot)")],))  # the human is to move first
+
+
+def interrupt_after(seconds):
+    timer = threading.Timer(seconds, os.kill, args=(os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer
+
+
+def test_ctrl_c_interrupts_a_long_observe_and_leaves_the_session_as_it_was():
+    s = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1)
+    s.observe("(pickup human key1 patio)")
+    s.observe("(wait robot)")
+    before, trace = s.posterior(), without_seconds(s.trace())
+    timer = interrupt_after(0.2)
+    with pytest.raises(KeyboardInterrupt):
+        s.observe("(unlock human key1 shed patio)")  # seconds of planning
+    timer.join()
+    # Raised while the call was still running: the interruption was prompt.
+    assert _core._abandoned_running() >= 1
+    assert s.t == 2 and s.posterior() == before and without_seconds(s.trace()) == trace
+    _core._join_abandoned()
+    assert _core._abandoned_running() == 0
+    # The session goes on as one that was never interrupted.
+    step = s.observe("(unlock human key1 shed patio)")
+    fresh = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1)
+    for a in ("(pickup human key1 patio)", "(wait robot)"):
+        fresh.observe(a)
+    assert step["posterior"] == fresh.observe("(unlock human key1 shed patio)")["posterior"]
+
+
+def test_ctrl_c_interrupts_run_plan():
+    timer = interrupt_after(0.2)
+    with pytest.raises(KeyboardInterrupt):
+        clips_assist.run_plan(str(GARDEN), "1.1.plant-tulips", threads=1)
+    timer.join()
+    assert _core._abandoned_running() >= 1
+    _core._join_abandoned()
+    assert _core._abandoned_running() == 0
