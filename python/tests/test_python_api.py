@@ -7,7 +7,9 @@ import os
 import pathlib
 import pickle
 import signal
+import socket
 import threading
+import time
 
 import pytest
 
@@ -173,18 +175,72 @@ def interrupt_after(seconds):
     return timer
 
 
-def test_ctrl_c_interrupts_a_long_observe_and_leaves_the_session_as_it_was():
-    s = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1)
+class SilentServer:
+    """A language-model server that holds every request unanswered until
+    released, then refuses each one with HTTP 400 (not retried): a call that
+    waits on it is long for as long as the test wants, whatever the machine."""
+
+    def __init__(self):
+        self.sock = socket.socket()
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen(16)
+        self.sock.settimeout(0.05)
+        self.url = "http://127.0.0.1:%d/v1" % self.sock.getsockname()[1]
+        self.held, self.released, self.stopped = [], threading.Event(), threading.Event()
+        self.thread = threading.Thread(target=self._serve, daemon=True)
+        self.thread.start()
+
+    def _refuse(self, conn):
+        try:
+            conn.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\nConnection: close\r\n\r\n")
+        except OSError:
+            pass
+        conn.close()
+
+    def _serve(self):
+        while not self.stopped.is_set():
+            if self.released.is_set():
+                while self.held:
+                    self._refuse(self.held.pop())
+            try:
+                conn, _ = self.sock.accept()
+            except socket.timeout:
+                continue
+            self.held.append(conn)
+
+    def release(self):
+        self.released.set()
+
+    def close(self):
+        self.release()
+        time.sleep(0.1)
+        self.stopped.set()
+        self.thread.join()
+        self.sock.close()
+
+
+@pytest.fixture
+def silent_lm(monkeypatch):
+    server = SilentServer()
+    monkeypatch.setenv("CLIPS_LM_BASE_URL", server.url)
+    monkeypatch.setenv("OPENAI_API_KEY", "test-key")
+    yield server
+    server.close()
+
+
+def test_ctrl_c_interrupts_a_long_call_and_leaves_the_session_as_it_was(silent_lm):
+    s = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1, lm="openai", lm_timeout=60)
     s.observe("(pickup human key1 patio)")
     s.observe("(wait robot)")
     before, trace = s.posterior(), without_seconds(s.trace())
     timer = interrupt_after(0.2)
     with pytest.raises(KeyboardInterrupt):
-        s.observe("(unlock human key1 shed patio)")  # seconds of planning
+        s.hear("Could you bring the compost over?")  # waits on the server until released
     timer.join()
     # Raised while the call was still running: the interruption was prompt.
     assert _core._abandoned_running() >= 1
     assert s.t == 2 and s.posterior() == before and without_seconds(s.trace()) == trace
+    silent_lm.release()
     _core._join_abandoned()
     assert _core._abandoned_running() == 0
     # The session goes on as one that was never interrupted.
@@ -195,11 +251,12 @@ def test_ctrl_c_interrupts_a_long_observe_and_leaves_the_session_as_it_was():
     assert step["posterior"] == fresh.observe("(unlock human key1 shed patio)")["posterior"]
 
 
-def test_ctrl_c_interrupts_run_plan():
-    timer = interrupt_after(0.2)
+def test_ctrl_c_interrupts_run_plan(silent_lm):
+    timer = interrupt_after(0.3)
     with pytest.raises(KeyboardInterrupt):
-        clips_assist.run_plan(str(GARDEN), "1.1.plant-tulips", threads=1)
+        clips_assist.run_plan(str(GARDEN), "1.1.plant-tulips", lm="openai", threads=1)  # its instruction waits
     timer.join()
     assert _core._abandoned_running() >= 1
+    silent_lm.release()
     _core._join_abandoned()
     assert _core._abandoned_running() == 0
