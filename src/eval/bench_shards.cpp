@@ -232,6 +232,44 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   return p;
 }
 
+// What later steps index by: one goal posterior entry per goal, the true
+// goal one of the goals, probabilities within [0, 1] (NaN allowed where a
+// method had no value). A plan outcome written by `clips bench` always holds;
+// a hand-edited or damaged one is refused here, naming the field.
+void check_plan(const FieldReader& in, const PlanOutcome& p, const std::string& at) {
+  const size_t n = p.goals.size();
+  auto probability = [&](double v, const std::string& field) {
+    if (!(std::isnan(v) || (v >= -1e-9 && v <= 1 + 1e-9)))
+      in.fail(field, fmt::format("{} is not a probability (from 0 to 1)", v));
+  };
+  auto row = [&](const std::vector<double>& r, const std::string& field) {
+    if (r.size() != n)
+      in.fail(field, fmt::format("has {} entries, but the plan has {} goals (goals)", r.size(), n));
+    for (size_t g = 0; g < r.size(); ++g) probability(r[g], fmt::format("{}[{}]", field, g));
+  };
+  if (!p.error.empty() && n == 0) return;  // a plan that failed before its goals were known
+  if (n == 0) in.fail(FieldReader::join(at, "goals"), "is empty (an evaluated plan has at least one goal)");
+  std::vector<std::string> sorted = p.goals;
+  std::sort(sorted.begin(), sorted.end());
+  if (auto dup = std::adjacent_find(sorted.begin(), sorted.end()); dup != sorted.end())
+    in.fail(FieldReader::join(at, "goals"), "lists goal " + *dup + " twice");
+  if (p.true_goal < 0 || static_cast<size_t>(p.true_goal) >= n)
+    in.fail(FieldReader::join(at, "true_goal"),
+            fmt::format("{} is not the index of one of the plan's {} goals (0 to {})", p.true_goal, n, n - 1));
+  for (size_t t = 0; t < p.goal_posterior_steps.size(); ++t)
+    row(p.goal_posterior_steps[t], fmt::format("{}.goal_posterior_steps[{}]", at, t));
+  for (size_t k = 0; k < p.methods.size(); ++k) {
+    const MethodResult& m = p.methods[k];
+    const std::string mat = fmt::format("{}.methods[{}]", at, k);
+    if (m.p_true_goal) probability(*m.p_true_goal, mat + ".p_true_goal");
+    probability(m.precision, mat + ".precision");
+    probability(m.recall, mat + ".recall");
+    if (!m.goal_posterior.empty()) row(m.goal_posterior, mat + ".goal_posterior");
+    for (size_t t = 0; t < m.posterior_steps.size(); ++t)
+      row(m.posterior_steps[t], fmt::format("{}.posterior_steps[{}]", mat, t));
+  }
+}
+
 // The run's identity back into the report's fields.
 void read_identity(const FieldReader& in, const json& run, BenchReport& r) {
   const std::string at = "run";
@@ -452,7 +490,10 @@ BenchReport read_bench_part(const std::string& dir) {
   r.started_utc = in.text(j, "date", "");
   r.wall_seconds = in.real(j, "wall_seconds", "");
   r.max_rss_kb = static_cast<long>(in.integer(j, "max_rss_kb", ""));
-  for (const auto& [i, p] : in.items(in.get(j, "plans", ""), "plans")) r.plans.push_back(read_plan(in, *p, i));
+  for (const auto& [i, p] : in.items(in.get(j, "plans", ""), "plans")) {
+    r.plans.push_back(read_plan(in, *p, i));
+    check_plan(in, r.plans.back(), i);
+  }
   return r;
 }
 
