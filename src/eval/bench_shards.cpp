@@ -211,7 +211,11 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   PlanOutcome p;
   p.plan_id = in.text(j, "plan", at);
   p.goals = in.texts(j, "goals", at);
-  p.true_goal = static_cast<int>(in.integer(j, "true_goal", at));
+  const long long true_goal = in.integer(j, "true_goal", at);
+  // Checked against the goals in check_plan; here only kept from wrapping into range.
+  if (true_goal < -1 || true_goal > 1'000'000)
+    in.fail(FieldReader::join(at, "true_goal"), fmt::format("{} is not the index of one of the plan's goals", true_goal));
+  p.true_goal = static_cast<int>(true_goal);
   p.true_options = in.texts(j, "true_options", at);
   p.goal_posterior_steps = in.matrix(j, "goal_posterior_steps", at);
   // Step times came later (issue 43): parts written before have none.
@@ -287,7 +291,8 @@ void read_identity(const FieldReader& in, const json& run, BenchReport& r) {
   r.assistant_turns = in.text(run, "assistant_turns", at);
   r.chat_model = in.text(run, "chat_model", at);
   const long long count = in.integer(run, "shard_count", at);
-  if (count < 1) in.fail("run.shard_count", fmt::format("must be at least 1, got {}", count));
+  if (count < 1 || count > 1'000'000)
+    in.fail("run.shard_count", fmt::format("must be from 1 to 1000000, got {}", count));
   r.shards.count = static_cast<int>(count);
   r.selection = in.texts(run, "selection", at);
   std::vector<std::string> sorted = r.selection;
@@ -477,10 +482,15 @@ BenchReport read_bench_part(const std::string& dir) {
                                    "posteriors.csv and outcomes.json (did its `clips bench --out` finish?)",
                                    dir, name));
   const std::string file = (fs::path(dir) / "outcomes.json").string();
+  return read_bench_outcomes(read_file(file), file);
+}
+
+BenchReport read_bench_outcomes(const std::string& text, const std::string& file) {
   const FieldReader in(file);
-  const json j = json::parse(read_file(file), nullptr, false);
+  const json j = json::parse(text, nullptr, false);
   if (j.is_discarded()) throw InputError(file + ": not valid JSON");
-  if (!j.is_object() || j.value("format", "") != kFormat) in.fail("format", std::string("expected \"") + kFormat + "\"");
+  if (!j.is_object() || !j.contains("format") || j["format"] != kFormat)
+    in.fail("format", std::string("expected \"") + kFormat + "\"");
   if (in.integer(j, "version", "") != kFormatVersion)
     in.fail("version", fmt::format("this clips reads version {} only", kFormatVersion));
   BenchReport r;
