@@ -449,6 +449,16 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
     for (const auto& p : r.profiles)
       for (const auto& [key, cost] : p.costs)
         action("cost_profiles: profile " + p.name + ": costs." + key.first, key.second);
+  if (spec.scene == SceneKind::Grid) {
+    // The grid scene draws Doors-Keys-Gems maps from these fluents.
+    for (const auto& [name, arity] : {std::pair<const char*, size_t>{"walls", 0}, {"xloc", 1}, {"yloc", 1}}) {
+      const auto f = d.find_function(name);
+      if (!f || d.functions[static_cast<size_t>(*f)].arg_types.size() != arity)
+        fail("scene", std::string("\"grid\" draws Doors-Keys-Gems maps, which need the domain's functions (walls), "
+                                  "(xloc ?o) and (yloc ?o); this domain has no (") + name +
+                          (arity ? " ?o" : "") + "): use \"text\"");
+    }
+  }
   if (!spec.fewshot.file.empty()) {
     fs::path file(spec.fewshot.file);
     if (file.is_relative() && !spec.source.empty()) file = fs::path(spec.source).parent_path() / file;

@@ -276,6 +276,20 @@ TEST(PackFile, GoalAtomArgumentsCommandSizeAndCostsAreChecked) {
   e = with_atoms(R"j({"take": ["(has $0 $1)"]})j");
   EXPECT_NE(e.find("names parameter 0"), std::string::npos) << e;
 
+  // A grid scene on a domain without the map's fluents (it failed when drawn).
+  {
+    json pack = json::parse(kPantryPack);
+    pack["scene"] = "grid";
+    std::ofstream(p.dir / "pack.json") << pack.dump();
+    try {
+      find_pack(*p.domain, p.dir.string());
+      ADD_FAILURE() << "a grid scene without (walls) was accepted";
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find("scene: \"grid\" draws Doors-Keys-Gems maps"), std::string::npos)
+          << err.what();
+    }
+  }
+
   const std::string lang = R"j("language": {"salient_actions": [{"action": "get", "focal_arg": 1}], "max_command_actions": )j";
   EXPECT_EQ(error_of(R"j({"domain": "k", )j" + lang + "4}}"), "");
   e = error_of(R"j({"domain": "k", )j" + lang + "5}}");
