@@ -427,5 +427,21 @@ TEST_F(Fixture, JsonLinesModeBoundsItsLinesAndServesTheOwner) {
   EXPECT_EQ(s->handle("GET", "/api/sessions", "").status, 401);
 }
 
+// issue 46: /hear flags an instruction the model cannot read, as `clips
+// infer` warns about it.
+TEST_F(Fixture, HearFlagsAnUnreadableUtterance) {
+  auto s = make();
+  const std::string id = create(*s);
+  Reply r = s->handle("POST", "/api/sessions/" + id + "/hear", json{{"utterance", "?!?! ... ?"}}.dump());
+  ASSERT_EQ(r.status, 200) << r.body;
+  const json reading = body(r)["reading"];
+  EXPECT_EQ(reading["evidence_weight"], 0.0) << reading.dump();
+  EXPECT_NE(reading.value("warning", "").find("has no words"), std::string::npos) << reading.dump();
+  r = s->handle("POST", "/api/sessions/" + id + "/hear", json{{"utterance", "Can you get me the yellow key?"}}.dump());
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(body(r)["reading"]["evidence_weight"], 1.0) << body(r)["reading"].dump();
+  EXPECT_FALSE(body(r)["reading"].contains("warning"));
+}
+
 }  // namespace
 }  // namespace clips::serve
