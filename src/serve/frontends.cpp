@@ -30,6 +30,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Set on a worker thread when its connection's request ran past the read
+// deadline, so that the error reply says 408 rather than "malformed".
+thread_local bool t_request_timed_out = false;
+
 Reply error_json(int status, const std::string& message) {
   return Reply{status, nlohmann::json{{"error", message}, {"status", status}}.dump(), "application/json", {}};
 }
@@ -122,7 +126,10 @@ class ConnectionStream : public httplib::Stream {
 
  private:
   ssize_t receive(char* ptr, size_t size) {
-    if (!wait_for(fd_, POLLIN, read_deadline_)) return -1;
+    if (!wait_for(fd_, POLLIN, read_deadline_)) {
+      t_request_timed_out = Clock::now() >= read_deadline_;
+      return -1;
+    }
     ssize_t n;
     do n = ::recv(fd_, ptr, size, 0);
     while (n < 0 && errno == EINTR);
@@ -288,6 +295,7 @@ class GuardedServer : public httplib::Server {
       ~Slot() { c.give_back(client); }
     } slot{count_, client};
 
+    t_request_timed_out = false;
     ConnectionStream strm(sock, start + read_time_, read_time_);
     RequestHead head;
     size_t head_bytes = 0;
@@ -399,8 +407,10 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   server.Delete(any, serve);
   server.set_error_handler([&service](const httplib::Request&, httplib::Response& res) {
     if (!res.body.empty()) return;
+    if (t_request_timed_out) res.status = 408;  // the body did not arrive in time
     std::string msg;
     switch (res.status) {
+      case 408: msg = "the request did not arrive within the read timeout (--read-timeout)"; break;
       case 413:
         msg = "request body exceeds the limit of " + std::to_string(service.limits().max_body_bytes) + " bytes (--max-body)";
         break;

@@ -71,6 +71,12 @@ TEST(ServeHardening, SlowHeaderSendersNeitherFreezeHealthNorStayForever) {
   auto r = cli.Get("/api/health");
   ASSERT_TRUE(r) << "health did not answer while slow clients were connected";
   EXPECT_EQ(r->status, 200);
+  // So is one whose body stops short of its Content-Length.
+  const int short_body = connect_loopback(server.port);
+  ASSERT_GE(short_body, 0);
+  ASSERT_TRUE(send_all(short_body, "POST /api/sessions HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+                                   "Content-Length: 100\r\n\r\n{\"dataset\""));
+  slow.push_back(short_body);
   // Each slow connection is answered 408 and closed at its read timeout.
   for (int fd : slow) {
     const std::string reply = read_until_closed(fd, 30);
