@@ -4,7 +4,7 @@
 # builds for the FuzzSmoke run; the others need much more of the code base
 # under clang + ASan and are built by `make fuzz` only (target fuzz_targets_all).
 set(CLIPS_FUZZ_SMOKE_TARGETS sexpr pddl plan dataset pack utterance completions chat)
-set(CLIPS_FUZZ_TARGETS ${CLIPS_FUZZ_SMOKE_TARGETS} serve)
+set(CLIPS_FUZZ_TARGETS ${CLIPS_FUZZ_SMOKE_TARGETS} serve bench_merge)
 set(clips_fuzz_lib_sexpr clips_pddl)
 set(clips_fuzz_lib_pddl clips_pddl)
 set(clips_fuzz_lib_plan clips_pddl)
@@ -14,6 +14,7 @@ set(clips_fuzz_lib_utterance clips_lm)
 set(clips_fuzz_lib_completions clips_lm)
 set(clips_fuzz_lib_chat clips_lm)
 set(clips_fuzz_lib_serve clips_serve)
+set(clips_fuzz_lib_bench_merge clips_eval)
 
 if(CLIPS_FUZZ)
   # The request handlers without the rest of clips_serve: not the HTTP front
@@ -51,7 +52,7 @@ else()
   add_executable(test_fuzz ${CMAKE_SOURCE_DIR}/tests/fuzz/replay_test.cpp ${fuzz_srcs})
   target_include_directories(test_fuzz PRIVATE ${CMAKE_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/tests)
   target_compile_definitions(test_fuzz PRIVATE CLIPS_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
-  target_link_libraries(test_fuzz PRIVATE clips_data clips_lm clips_serve GTest::gtest GTest::gtest_main)
+  target_link_libraries(test_fuzz PRIVATE clips_data clips_lm clips_serve clips_eval GTest::gtest GTest::gtest_main)
   gtest_discover_tests(test_fuzz WORKING_DIRECTORY ${CMAKE_SOURCE_DIR} DISCOVERY_TIMEOUT 60
                        PROPERTIES TIMEOUT 120 LABELS unit ENVIRONMENT "CLIPS_LM_CACHE_DIR=${CMAKE_BINARY_DIR}/lm-cache")
   add_test(NAME FuzzSmoke COMMAND bash ${CMAKE_SOURCE_DIR}/fuzz/smoke.sh

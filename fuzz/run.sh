@@ -15,7 +15,7 @@ fuzz_dir=$(cd "$(dirname "$0")" && pwd)
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   # The fast targets first; serve (built by `make fuzz` only) last.
-  targets=(sexpr chat completions dataset pack plan utterance pddl serve)
+  targets=(sexpr chat completions dataset pack plan utterance pddl serve bench_merge)
 fi
 mkdir -p "$build/logs"
 status=0
@@ -28,6 +28,7 @@ for t in "${targets[@]}"; do
     sexpr|pddl|plan) args+=(-dict="$fuzz_dir/dict/pddl.dict") ;;
     serve) args+=(-dict="$fuzz_dir/dict/serve.dict") ;;
     pack) args+=(-dict="$fuzz_dir/dict/pack.dict") ;;
+    bench_merge) args+=(-dict="$fuzz_dir/dict/bench_merge.dict") ;;
   esac
   echo "fuzz: $build/${t}_fuzz ${args[*]}" | tee "$build/logs/$t.log"
   if "$build/${t}_fuzz" "${args[@]}" >>"$build/logs/$t.log" 2>&1; then

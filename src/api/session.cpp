@@ -272,7 +272,9 @@ Session Session::open_domain_text(const std::string& domain_pddl, const std::str
 const Step& Session::observe(const std::string& action) {
   const pddl::Task& task = *impl_->task;
   const pddl::State& s = impl_->belief->state();
-  const pddl::PlanLine line{action, SourceLoc{"action " + action, 0, 0}};
+  // The label is cut: every token's location copies it, and a 200 kB action
+  // string made that quadratic (issue 46).
+  const pddl::PlanLine line{action, SourceLoc{"action " + pddl::printable(action, 80), 0, 0}};
   std::optional<pddl::ActionId> id;
   try {
     id = task.find_action(action);

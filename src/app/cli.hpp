@@ -1,6 +1,7 @@
 #pragma once
 // The `clips` command line: one register_* function per subcommand. Each
 // subcommand is a thin layer over the library API of the same name.
+#include <chrono>
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
@@ -30,6 +31,7 @@ std::string dataset_dir(const std::string& given);
 // (CLI::PositiveNumber lets "nan" through and names its bound as 1.79769e+308).
 extern const CLI::Validator PositiveInteger;     // 1, 2, ...
 extern const CLI::Validator NonNegativeInteger;  // 0, 1, ...
+extern const CLI::Validator HttpUrl;             // http://... or https://...
 extern const CLI::Validator PositiveSeconds;     // a finite number > 0
 extern const CLI::Validator SeedValue;           // 0 .. 2^64-1 (CLI11 would wrap -1 and 2^64 silently)
 
@@ -59,6 +61,13 @@ void apply_model_flags(const LmFlags& flags, eval::ExperimentOptions& options);
 void apply_model_flags(const LmFlags& flags, inference::InferenceOptions& options);
 // The options the --lm flags say, for every subcommand alike.
 language::LanguageModelOptions lm_options(const LmFlags& flags);
+// --lm-timeout in milliseconds, rounded up (never 0, which libcurl reads as
+// "no timeout"); it also bounds each request of the multimodal chat method.
+std::chrono::milliseconds lm_timeout_ms(const LmFlags& flags);
+
+// A dataset whose stimuli.json is present but does not read is an input
+// error for infer, assist and bench too (validate reports it per plan).
+void require_stimuli(const data::Dataset& ds);
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);
 // The model for a dataset's domain (language::make_dataset_language_model).
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags, const data::Dataset& ds);

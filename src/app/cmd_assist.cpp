@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pddl/sexpr.hpp"
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "app/observations.hpp"
@@ -33,7 +34,8 @@ void register_assist(CLI::App& app) {
                              "multimodal"}));
   auto mm = std::make_shared<eval::MultimodalOptions>();
   cmd->add_option("--chat-base-url", mm->base_url,
-                  "multimodal: OpenAI-compatible chat endpoint (or $CLIPS_CHAT_BASE_URL, else the OpenAI API)");
+                  "multimodal: OpenAI-compatible chat endpoint (or $CLIPS_CHAT_BASE_URL, else the OpenAI API)")
+      ->check(HttpUrl);
   cmd->add_option("--chat-model", mm->model, "multimodal: chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
       ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
@@ -54,6 +56,7 @@ void register_assist(CLI::App& app) {
     if (adhoc && o->assist != "qmdp_offline")
       throw UsageError("with --problem, the assistant's next action is the Q_MDP choice (--assist qmdp_offline)");
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
+    require_stimuli(ds);
     if (const auto known = eval::known_methods(ds.pack());
         std::find(known.begin(), known.end(), o->method) == known.end())
       throw InputError("--method " + o->method + " does not apply to a " + ds.pack().name() + " dataset");
@@ -93,6 +96,7 @@ void register_assist(CLI::App& app) {
     eo.inference_threads = 0;  // one plan: use every core
     apply_model_flags(o->lm, eo);
     eo.multimodal = *mm;
+    eo.multimodal.http.total_timeout = lm_timeout_ms(o->lm);
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;
     if (ip && o->assist != "qmdp_offline") name += "/" + o->assist;
@@ -103,7 +107,7 @@ void register_assist(CLI::App& app) {
     // Rethrown with their own type, so the exit status tells bad input from a failing LM server.
     if (outcome.failure) std::rethrow_exception(outcome.failure);
     if (!outcome.error.empty()) throw InputError(outcome.error);
-    for (const auto& w : outcome.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
+    for (const auto& w : outcome.utterance_warnings) fmt::print(stderr, "warning: {}\n", pddl::printable(w));
     const eval::MethodResult* r = outcome.find(name);
     if (r->failure) std::rethrow_exception(r->failure);
     if (!r->error.empty()) throw InputError(name + ": " + r->error);

@@ -243,7 +243,9 @@ void register_bench(CLI::App& app) {
                                   "Write results.csv, posteriors.csv (goal posterior per plan, method, step and goal), "
                                   "summary.json and outcomes.json (every outcome at full precision, for `clips bench "
                                   "merge`) into this directory");
-  cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores)")->check(PositiveInteger);
+  cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores; at most 256)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 256));
   cmd->add_option("--seed", o->experiment.seed, "Seed for the stochastic baselines, 0..2^64-1 (default 1)")
       ->check(SeedValue);
   auto lm = std::make_shared<LmFlags>();
@@ -267,7 +269,8 @@ void register_bench(CLI::App& app) {
   auto* report_opt = cmd->add_option("--report", *report,
                   "Also write DIR/report.html with per-plan GIFs and posterior plots (renders every plan: slower)");
   cmd->add_option("--chat-base-url", o->experiment.multimodal.base_url,
-                  "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped");
+                  "Chat endpoint for the multimodal baseline (or $CLIPS_CHAT_BASE_URL); without one it is skipped")
+      ->check(HttpUrl);
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
   // Scaling curves (eval/scaling.hpp): generated datasets, one point per process.
@@ -308,6 +311,7 @@ void register_bench(CLI::App& app) {
     o->lm = lm->kind;  // with --lm-base-url, --lm-model, --lm-timeout, --lm-max-reply-mb
     o->lm_options = lm_options(*lm);
     apply_model_flags(*lm, o->experiment);
+    o->experiment.multimodal.http.total_timeout = lm_timeout_ms(*lm);
     o->experiment.particles = particles->particles;
     o->experiment.particle_seed = particles->seed;
     o->experiment.ess_threshold = particles->ess_threshold;

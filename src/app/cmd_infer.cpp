@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pddl/sexpr.hpp"
 #include "app/cli.hpp"
 #include "app/observations.hpp"
 #include "data/dataset.hpp"
@@ -69,7 +70,7 @@ void print_explanation(const inference::InferenceRun& run, int top) {
   for (const auto& st : run.steps)
     for (const auto& u : st.utterances) {
       fmt::print("\nutterance \"{}\" (step {}): log-likelihood per hypothesis, then its most probable commands\n",
-                 u.text, st.t);
+                 pddl::printable(u.text), st.t);
       for (size_t h = 0; h < u.hypotheses.size(); ++h) {
         const auto& hu = u.hypotheses[h];
         if (std::isnan(hu.log_likelihood)) continue;  // particle inference: no particle held h
@@ -141,6 +142,7 @@ void register_infer(CLI::App& app) {
   cmd->callback([o] {
     check_observation_flags(o->obs);  // before loading anything
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
+    require_stimuli(ds);
     const bool adhoc = !o->obs.problem.empty();
     const data::PlanRecord plan = adhoc ? observations_record(ds, o->obs) : ds.plan(o->obs.plan);
     const inference::Modality modality = inference::parse_modality(o->modalities);
@@ -154,7 +156,7 @@ void register_infer(CLI::App& app) {
     const inference::InferenceRun run = adhoc ? inference::run_inference_on_observations(ds, plan, *lm, opts)
                                               : inference::run_inference(ds, plan, *lm, opts);
     // Utterances the model could not read (weighted down or ignored): the user must know.
-    for (const auto& w : run.utterance_warnings) fmt::print(stderr, "warning: {}\n", w);
+    for (const auto& w : run.utterance_warnings) fmt::print(stderr, "warning: {}\n", pddl::printable(w));
     // Particle inference: the rollouts shown are of the modality's weighted hypotheses, brought up to date.
     if (o->explain) run.belief->sync_policies(modality);
     const std::string true_goal = run.true_goal >= 0 ? run.goals[run.true_goal] : "";
@@ -194,7 +196,7 @@ void register_infer(CLI::App& app) {
     for (const auto& st : run.steps) {
       fmt::print("{:>4}  {:<30}", st.t, st.t == 0 ? "(start)" : st.action);
       for (size_t g = 0; g < width.size(); ++g) fmt::print(" {:>{}.4f}", st[modality].goals[g], width[g]);
-      for (const auto& u : st.utterances) fmt::print("   <- \"{}\"", u.text);
+      for (const auto& u : st.utterances) fmt::print("   <- \"{}\"", pddl::printable(u.text));
       fmt::print("\n");
     }
     const auto& fin = run.steps.back()[modality];

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pddl/sexpr.hpp"
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
@@ -86,7 +87,7 @@ void register_listen(CLI::App& app) {
       return;
     }
     fmt::print("plan {} (problem {}), heard after {} observed actions\n", p.id, p.problem_id, p.observed.actions.size());
-    fmt::print("utterance: \"{}\"\n", result.utterance);
+    fmt::print("utterance: \"{}\"\n", pddl::printable(result.utterance));
     fmt::print("{} candidate commands, language model {}\n", n_all, lm->name());
     // "done" = the plan's completion fulfils the command at some point: handy
     // when judging whether the listener understood the instruction.

@@ -6,9 +6,12 @@
 #include <cstdlib>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <random>
 
 #include "app/cli.hpp"
+#include "app/exit_codes.hpp"
 #include "app/particle_flags.hpp"
 #include "language/listener.hpp"
 #include "serve/frontends.hpp"
@@ -16,6 +19,35 @@
 #include "util/error.hpp"
 
 namespace clips::app {
+
+namespace {
+
+std::string random_token() {
+  std::random_device rd;
+  std::string t;
+  static const char* hex = "0123456789abcdef";
+  for (int i = 0; i < 8; ++i) {
+    uint32_t r = rd();
+    for (int k = 0; k < 4; ++k, r >>= 8) {
+      t += hex[(r >> 4) & 15];
+      t += hex[r & 15];
+    }
+  }
+  return t;
+}
+
+std::string read_token(const std::string& path) {
+  std::ifstream f(path);
+  std::string t;
+  if (!f || !std::getline(f, t)) throw InputError(path + ": cannot read the owner token (--owner-token-file)");
+  while (!t.empty() && (t.back() == '\r' || t.back() == ' ')) t.pop_back();
+  if (t.size() < 16) throw InputError(path + ":1: the owner token must have at least 16 characters");
+  for (unsigned char c : t)
+    if (c <= 0x20 || c >= 0x7f) throw InputError(path + ":1: the owner token must be printable ASCII without spaces");
+  return t;
+}
+
+}  // namespace
 
 void register_serve(CLI::App& app) {
   auto* cmd = app.add_subcommand("serve", "Serve sessions over HTTP/JSON and a web page to play with the assistant");
@@ -25,6 +57,11 @@ void register_serve(CLI::App& app) {
     std::vector<std::string> datasets;
     bool stdio = false;
     int threads = 8;
+    double read_timeout = 10;
+    int max_connections = 128;
+    int max_client_connections = 64;
+    std::vector<std::string> allow_origins;
+    std::string owner_token_file;
     LmFlags lm;
     ParticleFlags particles;
     serve::ServiceLimits limits;
@@ -37,7 +74,23 @@ void register_serve(CLI::App& app) {
                   "requests name a dataset by its folder's base name and never give paths (default: "
                   "$CLIPS_DATASET/doors-keys-gems and /virtual-home, else ../shared/dataset/...)");
   cmd->add_flag("--stdio", o->stdio, "Read one JSON request per line on stdin, answer one per line on stdout");
-  cmd->add_option("--threads", o->threads, "Requests handled at once (default 8)")->check(PositiveInteger);
+  cmd->add_option("--threads", o->threads, "Session requests handled at once (default 8, at most 256)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--read-timeout", o->read_timeout,
+                  "Seconds for a request (head and body) to arrive in full after its connection opens, and again for "
+                  "its reply to be taken (default 10)")
+      ->check(CLI::Range(0.01, 3600.0));
+  cmd->add_option("--max-connections", o->max_connections, "Connections open at once (default 128; more: 503)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--max-client-connections", o->max_client_connections,
+                  "Connections open at once from one address (default 64; more: 503)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--allow-origin", o->allow_origins,
+                  "A web origin (e.g. https://example.org) whose pages may call the API, besides the page itself and "
+                  "pages on loopback (repeatable; \"*\": any)");
+  cmd->add_option("--owner-token-file", o->owner_token_file,
+                  "File whose first line is the owner token (at least 16 characters) that lists and deletes every "
+                  "session; default: a random token printed at start");
   cmd->add_option("--max-sessions", o->limits.max_sessions, "Live sessions at most (default 64; more: HTTP 503)")
       ->check(PositiveInteger);
   cmd->add_option("--max-body", o->limits.max_body_bytes, "Request body size limit in bytes (default 65536)")
@@ -60,8 +113,9 @@ void register_serve(CLI::App& app) {
       ->check(PositiveInteger);
   cmd->add_option("--session-threads", o->limits.play.belief_threads,
                   "Threads refining each session's belief (default 1, as sessions already run in parallel; 0: all "
-                  "cores, for one player at a time)")
-      ->check(NonNegativeInteger);
+                  "cores, for one player at a time; at most 64)")
+      ->check(NonNegativeInteger)
+      ->check(CLI::Range(0, 64));
   add_particle_options(cmd, o->particles);
   add_lm_options(cmd, o->lm);
   cmd->callback([o] {
@@ -102,7 +156,13 @@ void register_serve(CLI::App& app) {
     ho.host = o->host;
     ho.port = o->port;
     ho.threads = o->threads;
-    g_exit_code = serve::run_http(service, ho, std::cerr);
+    ho.read_timeout = o->read_timeout;
+    ho.max_connections = o->max_connections;
+    ho.max_client_connections = o->max_client_connections;
+    ho.allow_origins = o->allow_origins;
+    ho.owner_token = o->owner_token_file.empty() ? random_token() : read_token(o->owner_token_file);
+    const int code = serve::run_http(service, ho, std::cerr);
+    g_exit_code = code == serve::kCannotListen ? kExitCannotListen : code;
   });
 }
 

@@ -19,6 +19,7 @@ enum ExitCode : int {
   kExitLanguageModel = 6,  // the language model or chat server failed (network, HTTP, malformed reply)
   kExitOutOfMemory = 7,    // memory ran out
   kExitInternal = 8,       // an unexpected internal error (a bug: please report it)
+  kExitCannotListen = 9,   // serve: the port is in use (or the address cannot be bound)
 };
 
 // The table printed at the end of `clips --help`.

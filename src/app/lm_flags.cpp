@@ -1,6 +1,10 @@
 // Shared --lm flags of the subcommands.
+#include <algorithm>
+#include <cmath>
+
 #include "app/cli.hpp"
 #include "language/listener.hpp"
+#include "util/error.hpp"
 
 namespace clips::app {
 
@@ -8,11 +12,13 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
   cmd->add_option("--lm", f.kind, "Language model: embedded (offline, default) or openai")
       ->check(CLI::IsMember(language::language_model_kinds()));
   cmd->add_option("--lm-base-url", f.base_url,
-                  "openai: completions API base URL (default $CLIPS_LM_BASE_URL, else https://api.openai.com/v1; "
-                  "the key is read from $OPENAI_API_KEY)");
+                  "openai: completions API base URL, http:// or https:// (default $CLIPS_LM_BASE_URL, else "
+                  "https://api.openai.com/v1; the key is read from $OPENAI_API_KEY)")
+      ->check(HttpUrl);
   cmd->add_option("--lm-model", f.model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
   cmd->add_option("--lm-timeout", f.lm_timeout,
-                  "openai: seconds one request may take before it counts as timed out (default 120); a "
+                  "openai (and the multimodal method's chat server): seconds one request may take before it counts "
+                  "as timed out (default 120; rounded up to whole milliseconds); a "
                   "timed-out request is tried once more, connection failures and HTTP 429/5xx up to 4 more times")
       ->check(PositiveSeconds);
   cmd->add_option("--lm-max-reply-mb", f.lm_max_reply_mb,
@@ -93,6 +99,15 @@ language::LanguageModelOptions lm_options(const LmFlags& f) {
   o.timeout_seconds = f.lm_timeout;
   o.max_reply_mb = f.lm_max_reply_mb;
   return o;
+}
+
+void require_stimuli(const data::Dataset& ds) {
+  if (!ds.stimuli_error().empty())
+    throw InputError(ds.stimuli_error() + " (fix the file, or remove it: it is optional)");
+}
+
+std::chrono::milliseconds lm_timeout_ms(const LmFlags& f) {
+  return std::chrono::milliseconds(std::max(1LL, static_cast<long long>(std::ceil(std::min(f.lm_timeout, 1e9) * 1000))));
 }
 
 std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) { return language::make_language_model(f.kind, lm_options(f)); }

@@ -1,4 +1,5 @@
 // clips: Cooperative Language-Guided Inverse Plan Search, command line.
+#include <system_error>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -70,7 +71,8 @@ std::string exit_code_help() {
          "  5  a time, node or step limit stopped the search before it found a plan\n"
          "  6  the language model or chat server failed (connection, HTTP status, malformed reply)\n"
          "  7  out of memory\n"
-         "  8  internal error (a bug; please report it with the command line)\n";
+         "  8  internal error (a bug; please report it with the command line)\n"
+         "  9  serve: cannot listen (the port is in use, or the address cannot be bound)\n";
 }
 
 const CLI::Validator PositiveInteger(
@@ -96,6 +98,14 @@ const CLI::Validator SeedValue(
       return in + " is not a seed (an integer from 0 to 18446744073709551615)";
     },
     "SEED");
+const CLI::Validator HttpUrl(
+    [](std::string& in) -> std::string {
+      if (in.rfind("http://", 0) == 0 || in.rfind("https://", 0) == 0) {
+        if (in.size() > (in[4] == 's' ? 8u : 7u)) return {};
+      }
+      return "'" + in + "' is not an http:// or https:// URL";
+    },
+    "URL");
 const CLI::Validator PositiveSeconds(
     [](std::string& in) -> std::string {
       char* end = nullptr;
@@ -160,6 +170,12 @@ int main(int argc, char** argv) {
     return fail(kExitLanguageModel, e.what());
   } catch (const std::bad_alloc&) {
     return fail(kExitOutOfMemory, "out of memory");
+  } catch (const std::system_error& e) {
+    // A thread that cannot start (EAGAIN: the memory or process limits) is the
+    // machine's resources running out, not a bug.
+    if (e.code() == std::errc::resource_unavailable_try_again) return fail(kExitOutOfMemory, e.what());
+    std::fprintf(stderr, "clips: internal error: %s\n", e.what());
+    return kExitInternal;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clips: internal error: %s\n", e.what());
     return kExitInternal;

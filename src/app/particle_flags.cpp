@@ -49,8 +49,9 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
                   "default 0.5; 1: every step)")
       ->check(UnitInterval);
   cmd->add_option("--rejuvenation-moves", f.moves,
-                  "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none)")
-      ->check(NonNegativeInteger);
+                  "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none; at most 100)")
+      ->check(NonNegativeInteger)
+      ->check(CLI::Range(0, 100));
   cmd->add_option("--rejuvenate", f.rejuvenate,
                   "When the sweeps run besides after resampling: evidence (after every human action or utterance; "
                   "default), utterances (after steps with an utterance: cheaper, and enough for instructions that "
@@ -59,8 +60,9 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
       ->check(CLI::IsMember({"evidence", "utterances", "resampling"}));
   cmd->add_option("--proposal-groups", f.groups,
                   "Independent exploring proposals per sweep: each sweep may bring in this many new hypotheses per "
-                  "hypothesis held (default 8; fewer: cheaper, slower to find goals no particle holds)")
-      ->check(PositiveInteger);
+                  "hypothesis held (default 8, at most 64; fewer: cheaper, slower to find goals no particle holds)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 64));
   cmd->add_option("--particle-filters", f.filters,
                   "Which posteriors get particles of their own: all (one filter per modality, default) or clips "
                   "(only the CLIPS posterior; the action-only and language-only ones are reweighted from its "

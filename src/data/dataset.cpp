@@ -39,8 +39,7 @@ void check_utterance_text(const std::string& text, const SourceLoc& loc) {
 // utterances per plan keep them in the observed plan as `;` lines instead,
 // so a second non-blank line is an error, not a continuation to drop silently.
 std::string utterance_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
+  std::istringstream in(pddl::read_text_file(path));  // a regular file only
   std::string line, out;
   int line_no = 0, first = 0;
   while (std::getline(in, line)) {

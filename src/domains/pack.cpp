@@ -408,7 +408,27 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
     arity_ok(f + ".agent_arg", a, r.agent_arg);
     arity_ok(f + ".focal_arg", a, r.focal_arg);
   }
-  for (const auto& [name, atoms] : spec.language.goal_atoms) action("language.goal_atoms." + name, name);
+  for (const auto& [name, atoms] : spec.language.goal_atoms) {
+    const auto* a = action("language.goal_atoms." + name, name);
+    // Every $N must name one of the action's parameters (else `listen` fails
+    // on the first command of that action).
+    for (size_t i = 0; i < atoms.size(); ++i) {
+      const std::string f = "language.goal_atoms." + name + "[" + std::to_string(i) + "]";
+      const std::string& t = atoms[i];
+      for (size_t at = t.find('$'); at != std::string::npos; at = t.find('$', at + 1)) {
+        size_t end = at + 1;
+        while (end < t.size() && t[end] != ' ' && t[end] != '\t' && t[end] != ')' && t[end] != '(') ++end;
+        const std::string ref = t.substr(at, end - at);
+        const std::string digits = ref.substr(1);
+        if (digits.empty() || digits.size() > 4 || !std::all_of(digits.begin(), digits.end(), ::isdigit))
+          fail(f, "'" + ref + "' in \"" + t + "\" is not an argument reference ($1, $2, ...)");
+        const int pos = std::stoi(digits);
+        if (pos < 1 || pos > static_cast<int>(a->param_types.size()))
+          fail(f, "'" + ref + "' in \"" + t + "\" names parameter " + std::to_string(pos) + ", but action '" + name +
+                      "' has " + std::to_string(a->param_types.size()));
+      }
+    }
+  }
   if (!spec.language.salient_actions.empty()) {
     const auto names = spec.language.qualifiers();
     for (size_t i = 0; i < names.size(); ++i) {
@@ -433,6 +453,16 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
     for (const auto& p : r.profiles)
       for (const auto& [key, cost] : p.costs)
         action("cost_profiles: profile " + p.name + ": costs." + key.first, key.second);
+  if (spec.scene == SceneKind::Grid) {
+    // The grid scene draws Doors-Keys-Gems maps from these fluents.
+    for (const auto& [name, arity] : {std::pair<const char*, size_t>{"walls", 0}, {"xloc", 1}, {"yloc", 1}}) {
+      const auto f = d.find_function(name);
+      if (!f || d.functions[static_cast<size_t>(*f)].arg_types.size() != arity)
+        fail("scene", std::string("\"grid\" draws Doors-Keys-Gems maps, which need the domain's functions (walls), "
+                                  "(xloc ?o) and (yloc ?o); this domain has no (") + name +
+                          (arity ? " ?o" : "") + "): use \"text\"");
+    }
+  }
   if (!spec.fewshot.file.empty()) {
     fs::path file(spec.fewshot.file);
     if (file.is_relative() && !spec.source.empty()) file = fs::path(spec.source).parent_path() / file;

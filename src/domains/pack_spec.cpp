@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "domains/pack.hpp"
+#include "pddl/sexpr.hpp"
 #include "util/data_dir.hpp"
 #include "util/error.hpp"
 #include "util/json_schema.hpp"
@@ -56,12 +58,19 @@ class Fields {
       fail(field, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
     return static_cast<int>(v.get<long long>());
   }
-  double number(const json& v, const std::string& field, double lo, bool lo_open) const {
+  double number(const json& v, const std::string& field, double lo, bool lo_open,
+                double hi = std::numeric_limits<double>::infinity()) const {
     if (!v.is_number()) fail(field, "expected a number");
     const double x = v.get<double>();
-    if (!(lo_open ? x > lo : x >= lo) || !std::isfinite(x))
-      fail(field, "expected a finite number " + std::string(lo_open ? "> " : ">= ") + std::to_string(lo));
+    if (!(lo_open ? x > lo : x >= lo) || !std::isfinite(x) || x > hi)
+      fail(field, "expected a finite number " + std::string(lo_open ? "> " : ">= ") + fmt_number(lo) +
+                      (std::isfinite(hi) ? " and <= " + fmt_number(hi) : "") + ", got " + v.dump());
     return x;
+  }
+  static std::string fmt_number(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
   }
   bool boolean(const json& v, const std::string& field) const {
     if (!v.is_boolean()) fail(field, "expected true or false");
@@ -94,12 +103,19 @@ class Fields {
   std::string source_;
 };
 
+// The largest cost a profile may give an action.
+constexpr double kMaxActionCost = 1e6;
+
 model::CostProfile read_profile(const Fields& f, const json& v, const std::string& path) {
   f.only(v, path, {"name", "default", "costs", "comment"});
   model::CostProfile p;
   if (!v.contains("name")) f.fail(path + ".name", "missing");
   p.name = f.text(v["name"], path + ".name");
-  if (v.contains("default")) p.default_cost = f.number(v["default"], path + ".default", 0, false);
+  // Costs are exponentiated in the Boltzmann policies: beyond kMaxActionCost
+  // every likelihood underflows to 0 (a uniform posterior, -inf log
+  // marginal). A default of 0 makes every unlisted action free, and plans
+  // with free detours never end: the default must be > 0.
+  if (v.contains("default")) p.default_cost = f.number(v["default"], path + ".default", 0, true, kMaxActionCost);
   if (v.contains("costs")) {
     const json& c = v["costs"];
     if (!c.is_object()) f.fail(path + ".costs", "expected an object {\"<agent>\": {\"<action>\": cost}}");
@@ -108,7 +124,7 @@ model::CostProfile read_profile(const Fields& f, const json& v, const std::strin
       if (agent == "comment" && actions.is_string()) continue;
       if (!actions.is_object()) f.fail(ap, "expected an object {\"<action>\": cost}");
       for (const auto& [action, cost] : actions.items())
-        if (action != "comment" || !cost.is_string()) p.costs[{agent, action}] = f.number(cost, ap + "." + action, 0, false);
+        if (action != "comment" || !cost.is_string()) p.costs[{agent, action}] = f.number(cost, ap + "." + action, 0, false, kMaxActionCost);
     }
   }
   return p;
@@ -401,11 +417,8 @@ std::vector<std::string> pack_schema_errors(const std::string& json_text, const 
 }
 
 PackSpec load_pack_spec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot read the pack file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_pack_spec(ss.str(), path);
+  // A regular file only (a FIFO would block, /dev/zero never end).
+  return parse_pack_spec(pddl::read_text_file(path), path);
 }
 
 std::string to_string(GoalSource s) {

@@ -230,6 +230,9 @@ BenchReport run_bench(const BenchOptions& opts) {
     throw InputError(fmt::format("shard {}/{}: K must be between 1 and N", opts.shard, opts.shard_count));
   BenchReport rep;
   rep.loaded = std::make_shared<const data::Dataset>(data::Dataset::load(opts.dataset));
+  // A stimuli.json that does not read fails every plan in `validate`: the run stops here too.
+  if (!rep.loaded->stimuli_error().empty())
+    throw InputError(rep.loaded->stimuli_error() + " (fix the file, or remove it: it is optional)");
   const data::Dataset& ds0 = *rep.loaded;
   check_selection(ds0, opts);
   rep.domain = ds0.pack().name();

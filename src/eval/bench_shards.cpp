@@ -211,7 +211,11 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   PlanOutcome p;
   p.plan_id = in.text(j, "plan", at);
   p.goals = in.texts(j, "goals", at);
-  p.true_goal = static_cast<int>(in.integer(j, "true_goal", at));
+  const long long true_goal = in.integer(j, "true_goal", at);
+  // Checked against the goals in check_plan; here only kept from wrapping into range.
+  if (true_goal < -1 || true_goal > 1'000'000)
+    in.fail(FieldReader::join(at, "true_goal"), fmt::format("{} is not the index of one of the plan's goals", true_goal));
+  p.true_goal = static_cast<int>(true_goal);
   p.true_options = in.texts(j, "true_options", at);
   p.goal_posterior_steps = in.matrix(j, "goal_posterior_steps", at);
   // Step times came later (issue 43): parts written before have none.
@@ -232,6 +236,44 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   return p;
 }
 
+// What later steps index by: one goal posterior entry per goal, the true
+// goal one of the goals, probabilities within [0, 1] (NaN allowed where a
+// method had no value). A plan outcome written by `clips bench` always holds;
+// a hand-edited or damaged one is refused here, naming the field.
+void check_plan(const FieldReader& in, const PlanOutcome& p, const std::string& at) {
+  const size_t n = p.goals.size();
+  auto probability = [&](double v, const std::string& field) {
+    if (!(std::isnan(v) || (v >= -1e-9 && v <= 1 + 1e-9)))
+      in.fail(field, fmt::format("{} is not a probability (from 0 to 1)", v));
+  };
+  auto row = [&](const std::vector<double>& r, const std::string& field) {
+    if (r.size() != n)
+      in.fail(field, fmt::format("has {} entries, but the plan has {} goals (goals)", r.size(), n));
+    for (size_t g = 0; g < r.size(); ++g) probability(r[g], fmt::format("{}[{}]", field, g));
+  };
+  if (!p.error.empty() && n == 0) return;  // a plan that failed before its goals were known
+  if (n == 0) in.fail(FieldReader::join(at, "goals"), "is empty (an evaluated plan has at least one goal)");
+  std::vector<std::string> sorted = p.goals;
+  std::sort(sorted.begin(), sorted.end());
+  if (auto dup = std::adjacent_find(sorted.begin(), sorted.end()); dup != sorted.end())
+    in.fail(FieldReader::join(at, "goals"), "lists goal " + *dup + " twice");
+  if (p.true_goal < 0 || static_cast<size_t>(p.true_goal) >= n)
+    in.fail(FieldReader::join(at, "true_goal"),
+            fmt::format("{} is not the index of one of the plan's {} goals (0 to {})", p.true_goal, n, n - 1));
+  for (size_t t = 0; t < p.goal_posterior_steps.size(); ++t)
+    row(p.goal_posterior_steps[t], fmt::format("{}.goal_posterior_steps[{}]", at, t));
+  for (size_t k = 0; k < p.methods.size(); ++k) {
+    const MethodResult& m = p.methods[k];
+    const std::string mat = fmt::format("{}.methods[{}]", at, k);
+    if (m.p_true_goal) probability(*m.p_true_goal, mat + ".p_true_goal");
+    probability(m.precision, mat + ".precision");
+    probability(m.recall, mat + ".recall");
+    if (!m.goal_posterior.empty()) row(m.goal_posterior, mat + ".goal_posterior");
+    for (size_t t = 0; t < m.posterior_steps.size(); ++t)
+      row(m.posterior_steps[t], fmt::format("{}.posterior_steps[{}]", mat, t));
+  }
+}
+
 // The run's identity back into the report's fields.
 void read_identity(const FieldReader& in, const json& run, BenchReport& r) {
   const std::string at = "run";
@@ -249,7 +291,8 @@ void read_identity(const FieldReader& in, const json& run, BenchReport& r) {
   r.assistant_turns = in.text(run, "assistant_turns", at);
   r.chat_model = in.text(run, "chat_model", at);
   const long long count = in.integer(run, "shard_count", at);
-  if (count < 1) in.fail("run.shard_count", fmt::format("must be at least 1, got {}", count));
+  if (count < 1 || count > 1'000'000)
+    in.fail("run.shard_count", fmt::format("must be from 1 to 1000000, got {}", count));
   r.shards.count = static_cast<int>(count);
   r.selection = in.texts(run, "selection", at);
   std::vector<std::string> sorted = r.selection;
@@ -439,10 +482,15 @@ BenchReport read_bench_part(const std::string& dir) {
                                    "posteriors.csv and outcomes.json (did its `clips bench --out` finish?)",
                                    dir, name));
   const std::string file = (fs::path(dir) / "outcomes.json").string();
+  return read_bench_outcomes(read_file(file), file);
+}
+
+BenchReport read_bench_outcomes(const std::string& text, const std::string& file) {
   const FieldReader in(file);
-  const json j = json::parse(read_file(file), nullptr, false);
+  const json j = json::parse(text, nullptr, false);
   if (j.is_discarded()) throw InputError(file + ": not valid JSON");
-  if (!j.is_object() || j.value("format", "") != kFormat) in.fail("format", std::string("expected \"") + kFormat + "\"");
+  if (!j.is_object() || !j.contains("format") || j["format"] != kFormat)
+    in.fail("format", std::string("expected \"") + kFormat + "\"");
   if (in.integer(j, "version", "") != kFormatVersion)
     in.fail("version", fmt::format("this clips reads version {} only", kFormatVersion));
   BenchReport r;
@@ -452,7 +500,10 @@ BenchReport read_bench_part(const std::string& dir) {
   r.started_utc = in.text(j, "date", "");
   r.wall_seconds = in.real(j, "wall_seconds", "");
   r.max_rss_kb = static_cast<long>(in.integer(j, "max_rss_kb", ""));
-  for (const auto& [i, p] : in.items(in.get(j, "plans", ""), "plans")) r.plans.push_back(read_plan(in, *p, i));
+  for (const auto& [i, p] : in.items(in.get(j, "plans", ""), "plans")) {
+    r.plans.push_back(read_plan(in, *p, i));
+    check_plan(in, r.plans.back(), i);
+  }
   return r;
 }
 

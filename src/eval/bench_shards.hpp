@@ -41,6 +41,8 @@ nlohmann::ordered_json run_identity(const BenchReport& report);
 // bench_file_names() must be there, and outcomes.json well-formed. Throws
 // InputError naming the folder, the file and the field.
 BenchReport read_bench_part(const std::string& dir);
+// The outcomes.json part of that: its text, named `file` in errors.
+BenchReport read_bench_outcomes(const std::string& text, const std::string& file);
 
 struct BenchPart {
   std::string dir;     // for error messages

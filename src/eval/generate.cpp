@@ -279,9 +279,10 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       // is drawn again (the benchmark's precision and recall need its help
       // to be known); after the attempts the last one that reached the goal
       // is kept as it is.
+      const auto& the_pack = *pack;  // clang 14 cannot capture a structured binding
       auto helps = [&](const Trajectory& t) {
         for (size_t j = std::min(passive, t.actions.size()); j < t.actions.size(); ++j)
-          if (pack->option_of(task, t.actions[j], plan.tag)) return true;
+          if (the_pack.option_of(task, t.actions[j], plan.tag)) return true;
         return false;
       };
       std::optional<Trajectory> traj, fallback;

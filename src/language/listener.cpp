@@ -61,7 +61,9 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
     o.model = options.model;
     o.api_key = options.api_key;
     if (options.timeout_seconds > 0) {
-      o.http.total_timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_seconds * 1000));
+      // Rounded up: a timeout below a millisecond must not become 0, which libcurl reads as "none".
+      o.http.total_timeout = std::chrono::milliseconds(
+          std::max(1LL, static_cast<long long>(std::ceil(std::min(options.timeout_seconds, 1e9) * 1000))));
     }
     if (options.max_reply_mb > 0) o.http.max_reply_bytes = static_cast<std::size_t>(options.max_reply_mb * 1048576.0);
     inner = std::make_shared<lm::OpenAiCompletionsModel>(o);

@@ -430,7 +430,11 @@ TypeId ensure_type(Domain& d, const std::string& name) {
 
 void parse_types(Domain& d, const SExpr& sec) {
   for (auto& tn : typed_list(sec.items, 1, sec)) {
-    if (tn.name == "object") continue;
+    if (tn.name == "object") {
+      // The root type has no parent: "object - dish" would close a cycle.
+      if (tn.type != "object") fail(tn.loc, "cyclic type hierarchy: the root type 'object' cannot be a subtype of '" + tn.type + "'");
+      continue;
+    }
     TypeId parent = ensure_type(d, tn.type);
     TypeId t = ensure_type(d, tn.name);
     if (d.is_subtype(parent, t)) fail(tn.loc, "cyclic type hierarchy at '" + tn.name + "'");

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "util/utf8.hpp"
+
 namespace clips::pddl {
 
 const std::string& SExpr::head() const {
@@ -109,6 +111,19 @@ class Reader {
       sym += static_cast<char>(std::tolower(static_cast<unsigned char>(d)));
       advance();
     }
+    // Names end up in JSON output and in the language model's prompts: a
+    // byte that is not UTF-8 (a Latin-1 file) is an error here, where the
+    // file and place are known.
+    if (const size_t bad = util::invalid_utf8_at(sym); bad != std::string::npos) {
+      std::string shown;
+      for (unsigned char ch : sym) {
+        static const char kHex[] = "0123456789abcdef";
+        if (ch < 0x80 && ch >= 0x20) shown += static_cast<char>(ch);
+        else shown += std::string("\\x") + kHex[ch >> 4] + kHex[ch & 15];
+      }
+      throw SyntaxError(e.loc, "name '" + printable(shown, 80) + "' is not valid UTF-8 (byte " +
+                                   std::to_string(bad + 1) + " of the name); save the file as UTF-8");
+    }
     e.atom = std::move(sym);
     return e;
   }
@@ -147,6 +162,11 @@ std::string read_text_file(const std::string& path) {
   // An ifstream opens a directory and reads nothing, which would look like an empty file.
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(SourceLoc{path, 0, 0}, "is a directory, not a file");
+  // A FIFO would block the open until a writer comes, and a device such as
+  // /dev/zero never ends: only regular files are read.
+  const auto st = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st))
+    throw InputError(SourceLoc{path, 0, 0}, "is not a regular file (a FIFO, device or socket); give a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(SourceLoc{path, 0, 0}, "cannot open file");
   // One copy of the text in memory, not two (a stream buffer and its string).

@@ -1,16 +1,352 @@
 #include "serve/frontends.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <condition_variable>
+#include <cstring>
+#include <deque>
 #include <iostream>
+#include <map>
+#include <optional>
+#include <semaphore>
+#include <system_error>
 #include <thread>
 
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include "serve/http_guard.hpp"
+
 namespace clips::serve {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Set on a worker thread when its connection's request ran past the read
+// deadline, so that the error reply says 408 rather than "malformed".
+thread_local bool t_request_timed_out = false;
+
+Reply error_json(int status, const std::string& message) {
+  return Reply{status, nlohmann::json{{"error", message}, {"status", status}}.dump(), "application/json", {}};
+}
+
+// Waits until `fd` is ready for `events` or the deadline passes.
+bool wait_for(int fd, short events, Clock::time_point deadline) {
+  for (;;) {
+    // Rounded up: false only once the deadline has passed.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return false;
+    pollfd p{fd, events, 0};
+    const int r = poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    if (r > 0) return true;  // ready, or hung up / failed: the next call says which
+    if (r < 0 && errno != EINTR) return false;
+  }
+}
+
+std::string address_of(const sockaddr_storage& a) {
+  char buf[INET6_ADDRSTRLEN] = "";
+  if (a.ss_family == AF_INET) inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in&>(a).sin_addr, buf, sizeof buf);
+  if (a.ss_family == AF_INET6) inet_ntop(AF_INET6, &reinterpret_cast<const sockaddr_in6&>(a).sin6_addr, buf, sizeof buf);
+  return buf;
+}
+int port_of(const sockaddr_storage& a) {
+  if (a.ss_family == AF_INET) return ntohs(reinterpret_cast<const sockaddr_in&>(a).sin_port);
+  if (a.ss_family == AF_INET6) return ntohs(reinterpret_cast<const sockaddr_in6&>(a).sin6_port);
+  return -1;
+}
+
+// One connection's socket for cpp-httplib: whatever was read ahead while the
+// head was checked comes first; every read stops at the request's deadline,
+// every write at the reply's (set at its first byte).
+class ConnectionStream : public httplib::Stream {
+ public:
+  ConnectionStream(int fd, Clock::time_point read_deadline, Clock::duration write_time)
+      : fd_(fd), read_deadline_(read_deadline), write_time_(write_time) {}
+
+  bool is_readable() const override { return pos_ < ahead_.size() || wait_for(fd_, POLLIN, read_deadline_); }
+  bool is_writable() const override { return wait_for(fd_, POLLOUT, write_deadline()); }
+
+  ssize_t read(char* ptr, size_t size) override {
+    if (pos_ < ahead_.size()) {
+      const size_t n = std::min(size, ahead_.size() - pos_);
+      std::memcpy(ptr, ahead_.data() + pos_, n);
+      pos_ += n;
+      return static_cast<ssize_t>(n);
+    }
+    return receive(ptr, size);
+  }
+  ssize_t write(const char* ptr, size_t size) override {
+    if (!writing_) {
+      writing_ = true;
+      write_deadline_ = Clock::now() + write_time_;
+    }
+    if (!wait_for(fd_, POLLOUT, write_deadline_)) return -1;
+    ssize_t n;
+    do n = ::send(fd_, ptr, size, MSG_NOSIGNAL);
+    while (n < 0 && errno == EINTR);
+    return n;
+  }
+  void get_remote_ip_and_port(std::string& ip, int& port) const override {
+    sockaddr_storage a{};
+    socklen_t len = sizeof a;
+    if (getpeername(fd_, reinterpret_cast<sockaddr*>(&a), &len) == 0) {
+      ip = address_of(a);
+      port = port_of(a);
+    }
+  }
+  void get_local_ip_and_port(std::string& ip, int& port) const override {
+    sockaddr_storage a{};
+    socklen_t len = sizeof a;
+    if (getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &len) == 0) {
+      ip = address_of(a);
+      port = port_of(a);
+    }
+  }
+  socket_t socket() const override { return fd_; }
+
+  // Reads what has arrived (at most `max` more bytes) into the read-ahead;
+  // false at end of stream, on an error or past the deadline.
+  bool read_ahead(size_t max) {
+    char buf[4096];
+    const ssize_t n = receive(buf, std::min(max, sizeof buf));
+    if (n <= 0) return false;
+    ahead_.append(buf, static_cast<size_t>(n));
+    return true;
+  }
+  std::string_view ahead() const { return ahead_; }
+  bool past_deadline() const { return Clock::now() >= read_deadline_; }
+
+ private:
+  ssize_t receive(char* ptr, size_t size) {
+    if (!wait_for(fd_, POLLIN, read_deadline_)) {
+      t_request_timed_out = Clock::now() >= read_deadline_;
+      return -1;
+    }
+    ssize_t n;
+    do n = ::recv(fd_, ptr, size, 0);
+    while (n < 0 && errno == EINTR);
+    return n;
+  }
+  Clock::time_point write_deadline() const { return writing_ ? write_deadline_ : Clock::now() + write_time_; }
+
+  int fd_;
+  Clock::time_point read_deadline_;
+  Clock::duration write_time_;
+  bool writing_ = false;
+  Clock::time_point write_deadline_{};
+  std::string ahead_;
+  size_t pos_ = 0;
+};
+
+// Writes a whole reply, closes the sending side and reads (and drops) what
+// the client still sends for up to `linger`, so that the reply is not lost
+// to a reset when unread request bytes remain; then closes.
+void reply_and_close(int fd, const std::string& response, Clock::duration linger) {
+  const auto deadline = Clock::now() + std::chrono::seconds(5);
+  size_t off = 0;
+  while (off < response.size() && wait_for(fd, POLLOUT, deadline)) {
+    const ssize_t n = ::send(fd, response.data() + off, response.size() - off, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    off += static_cast<size_t>(n);
+  }
+  ::shutdown(fd, SHUT_WR);
+  const auto until = Clock::now() + linger;
+  char buf[4096];
+  size_t drained = 0;
+  while (drained < (1u << 20) && wait_for(fd, POLLIN, until)) {
+    const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    drained += static_cast<size_t>(n);
+  }
+  ::close(fd);
+}
+
+// Worker threads made as connections need them, up to a bound, and kept.
+// A connection over the limits is answered 503 at once, so a worker is
+// always free soon for the next one.
+class ConnectionPool : public httplib::TaskQueue {
+ public:
+  explicit ConnectionPool(size_t max_threads) : max_(max_threads) {}
+  ~ConnectionPool() override = default;
+
+  void enqueue(std::function<void()> fn) override {
+    {
+      std::lock_guard lock(m_);
+      jobs_.push_back(std::move(fn));
+      if (jobs_.size() > idle_ && threads_.size() < max_) {
+        try {
+          threads_.emplace_back([this] { work(); });
+        } catch (const std::system_error&) {
+          // No new thread: the job waits for a worker that exists, or, when
+          // there is none, runs here on the accepting thread.
+          if (threads_.empty()) {
+            fn = std::move(jobs_.back());
+            jobs_.pop_back();
+          }
+        }
+      }
+    }
+    cv_.notify_one();
+    if (fn) fn();
+  }
+  void shutdown() override {
+    {
+      std::lock_guard lock(m_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+    for (auto& t : threads_) t.join();
+  }
+
+ private:
+  void work() {
+    for (;;) {
+      std::function<void()> fn;
+      {
+        std::unique_lock lock(m_);
+        while (!stop_ && jobs_.empty()) {
+          ++idle_;
+          cv_.wait(lock);
+          --idle_;
+        }
+        if (jobs_.empty()) return;
+        fn = std::move(jobs_.front());
+        jobs_.pop_front();
+      }
+      fn();
+    }
+  }
+  const size_t max_;
+  std::mutex m_;
+  std::condition_variable cv_;
+  std::deque<std::function<void()>> jobs_;
+  std::vector<std::thread> threads_;
+  size_t idle_ = 0;
+  bool stop_ = false;
+};
+
+// Open connections, in all and per client address.
+class ConnectionCount {
+ public:
+  ConnectionCount(int max_total, int max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}
+  // Takes a slot; nullopt when full, else "" or the reason it is refused.
+  std::optional<std::string> take(const std::string& client) {
+    std::lock_guard lock(m_);
+    if (total_ >= max_total_)
+      return std::to_string(max_total_) + " connections are open (--max-connections); try again";
+    int& mine = per_client_[client];
+    if (mine >= max_per_client_) {
+      if (mine == 0) per_client_.erase(client);
+      return std::to_string(max_per_client_) + " connections from " + client +
+             " are open (--max-client-connections); try again";
+    }
+    ++mine;
+    ++total_;
+    return std::nullopt;
+  }
+  void give_back(const std::string& client) {
+    std::lock_guard lock(m_);
+    --total_;
+    if (--per_client_[client] <= 0) per_client_.erase(client);
+  }
+
+ private:
+  std::mutex m_;
+  const int max_total_, max_per_client_;
+  int total_ = 0;
+  std::map<std::string, int> per_client_;
+};
+
+class GuardedServer : public httplib::Server {
+ public:
+  GuardedServer(const HttpOptions& options, GuardPolicy policy)
+      : policy_(std::move(policy)),
+        read_time_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.read_timeout))),
+        count_(options.max_connections, options.max_client_connections) {}
+
+  // The listening socket once bound (to raise its backlog).
+  int listening_socket() const { return svr_sock_; }
+
+ private:
+  bool process_and_close_socket(socket_t sock) override {
+    const auto start = Clock::now();
+    sockaddr_storage peer{};
+    socklen_t len = sizeof peer;
+    const std::string client = getpeername(sock, reinterpret_cast<sockaddr*>(&peer), &len) == 0 ? address_of(peer) : "";
+    if (auto full = count_.take(client)) {
+      Reply r = error_json(503, "the server is busy: " + *full);
+      r.headers.emplace_back("Retry-After", "1");
+      reply_and_close(sock, format_response(r), std::chrono::milliseconds(100));
+      return true;
+    }
+    struct Slot {
+      ConnectionCount& c;
+      const std::string& client;
+      ~Slot() { c.give_back(client); }
+    } slot{count_, client};
+
+    t_request_timed_out = false;
+    ConnectionStream strm(sock, start + read_time_, read_time_);
+    RequestHead head;
+    size_t head_bytes = 0;
+    HeadScan scan;
+    while ((scan = scan_head(strm.ahead(), head, head_bytes)) == HeadScan::incomplete)
+      if (!strm.read_ahead(kMaxHead + 1 - std::min(kMaxHead, strm.ahead().size()))) break;
+    std::optional<Reply> reject;
+    switch (scan) {
+      case HeadScan::incomplete:
+        if (strm.past_deadline() && !strm.ahead().empty())
+          reject = error_json(408, "the request did not arrive within the read timeout");
+        break;
+      case HeadScan::request_line_too_long:
+        reject = error_json(414, "request line longer than " + std::to_string(kMaxRequestLine) + " bytes");
+        break;
+      case HeadScan::too_large:
+        reject = error_json(431, "request headers longer than " + std::to_string(kMaxHeaderLine) + " bytes a line or " +
+                                     std::to_string(kMaxHead) + " in all");
+        break;
+      case HeadScan::malformed:
+        reject = error_json(400, "malformed request line or header");
+        break;
+      case HeadScan::complete:
+        reject = screen_request(head, policy_);
+        break;
+    }
+    if (reject || scan != HeadScan::complete) {
+      if (reject) reply_and_close(sock, format_response(*reject, head.method == "HEAD"), std::chrono::seconds(1));
+      else ::close(sock);
+      return true;
+    }
+    bool closed = false;
+    process_request(strm, true, closed, [](httplib::Request&) {});
+    ::shutdown(sock, SHUT_RDWR);
+    ::close(sock);
+    return true;
+  }
+
+  GuardPolicy policy_;
+  Clock::duration read_time_;
+  ConnectionCount count_;
+};
+
+bool same_token(const std::string& given, const std::string& token) {
+  if (token.empty() || given.size() != token.size()) return false;
+  unsigned char diff = 0;
+  for (size_t i = 0; i < token.size(); ++i) diff |= static_cast<unsigned char>(given[i] ^ token[i]);
+  return diff == 0;
+}
+
+}  // namespace
 
 int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   // Signals are taken by one thread with sigwait, never by a handler, so
@@ -21,17 +357,48 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  httplib::Server server;
-  const int threads = options.threads;
-  server.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
-  // httplib refuses larger bodies before reading them (413); the service
-  // checks again so that the JSON-lines mode has the same limit.
+  GuardPolicy policy;
+  policy.listen_host = options.host;
+  policy.allow_origins = options.allow_origins;
+  policy.max_body_bytes = service.limits().max_body_bytes;
+  GuardedServer server(options, policy);
+  // Workers for every connection allowed, and a few to turn away the rest.
+  const size_t workers = static_cast<size_t>(options.max_connections) + 4;
+  server.new_task_queue = [workers] { return new ConnectionPool(workers); };
+  // SO_REUSEADDR only (cpp-httplib also sets SO_REUSEPORT, which let a second
+  // server share a port that is in use).
+  server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   server.set_payload_max_length(service.limits().max_body_bytes);
-  server.set_read_timeout(10, 0);
-  server.set_write_timeout(10, 0);
-  auto serve = [&service](const httplib::Request& req, httplib::Response& res) {
-    Reply r = service.handle(req.method, req.path, req.body);
+  server.set_keep_alive_max_count(1);  // one request a connection: each is checked before it is read
+  std::counting_semaphore<> working(std::max(1, options.threads));
+  auto serve = [&service, &options, &policy, &working](const httplib::Request& req, httplib::Response& res) {
+    Request request{req.method, req.path, req.body, false};
+    const std::string auth = req.get_header_value("Authorization");
+    request.owner = auth.compare(0, 7, "Bearer ") == 0 && same_token(auth.substr(7), options.owner_token);
+    // Session requests compute: at most --threads at once. The rest is cheap
+    // and never waits behind them.
+    const bool heavy = req.path.compare(0, 14, "/api/sessions/") == 0 || req.path == "/api/sessions";
+    if (heavy) working.acquire();
+    Reply r;
+    try {
+      r = service.handle(request);
+    } catch (...) {
+      if (heavy) working.release();
+      throw;
+    }
+    if (heavy) working.release();
     res.status = r.status;
+    for (const auto& [name, value] : r.headers) res.set_header(name.c_str(), value.c_str());
+    RequestHead head;
+    if (req.has_header("Origin")) head.headers.emplace_back("origin", req.get_header_value("Origin"));
+    if (req.has_header("Host")) head.headers.emplace_back("host", req.get_header_value("Host"));
+    if (check_origin(head, policy) == OriginVerdict::allowed_cross) {
+      res.set_header("Access-Control-Allow-Origin", req.get_header_value("Origin").c_str());
+      res.set_header("Vary", "Origin");
+    }
     res.set_content(r.body, r.content_type.c_str());
   };
   const std::string any = R"(/.*)";
@@ -40,19 +407,33 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   server.Delete(any, serve);
   server.set_error_handler([&service](const httplib::Request&, httplib::Response& res) {
     if (!res.body.empty()) return;
-    std::string msg = res.status == 413 ? "request body exceeds the limit of " +
-                                              std::to_string(service.limits().max_body_bytes) + " bytes"
-                                        : "request failed";
+    if (t_request_timed_out) res.status = 408;  // the body did not arrive in time
+    std::string msg;
+    switch (res.status) {
+      case 408: msg = "the request did not arrive within the read timeout (--read-timeout)"; break;
+      case 413:
+        msg = "request body exceeds the limit of " + std::to_string(service.limits().max_body_bytes) + " bytes (--max-body)";
+        break;
+      case 400: msg = "malformed request"; break;
+      default: msg = "request failed";
+    }
     res.set_content(nlohmann::json{{"error", msg}, {"status", res.status}}.dump(), "application/json");
   });
 
   int port = options.port;
+  errno = 0;
   if (port == 0) port = server.bind_to_any_port(options.host);
   else if (!server.bind_to_port(options.host, port)) port = -1;
   if (port < 0) {
-    log << "clips serve: error: cannot listen on " << options.host << ":" << options.port << "\n" << std::flush;
-    return 1;
+    const int err = errno;
+    log << "clips serve: error: cannot listen on " << options.host << ":" << options.port << ": "
+        << (err == EADDRINUSE ? "the port is already in use (is another clips serve running?)"
+                              : err ? std::strerror(err) : "the address cannot be bound")
+        << "\n"
+        << std::flush;
+    return kCannotListen;
   }
+  ::listen(server.listening_socket(), kListenBacklog);  // again, with the larger backlog
 
   std::mutex m;
   std::condition_variable cv;
@@ -78,6 +459,9 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
 
   if (options.host != "127.0.0.1" && options.host != "localhost" && options.host != "::1")
     log << "clips serve: note: listening on " << options.host << ", not loopback only: anyone who can reach it may use it\n";
+  if (!options.owner_token.empty())
+    log << "clips serve: owner token " << options.owner_token
+        << " (GET or DELETE /api/sessions with the header 'Authorization: Bearer TOKEN' lists or deletes every session)\n";
   log << "clips serve: listening on http://" << options.host << ":" << port << "/\n" << std::flush;
   server.listen_after_bind();  // returns after stop(), once in-flight requests are answered
 
@@ -92,22 +476,55 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   return 0;
 }
 
+namespace {
+
+// One line of `in` into `line`, at most `max` bytes; false at end of input.
+// A longer line is read to its end and dropped (`too_long` set).
+bool read_line(std::istream& in, std::string& line, size_t max, bool& too_long) {
+  line.clear();
+  too_long = false;
+  std::streambuf* buf = in.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = buf->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      return any;
+    }
+    any = true;
+    if (c == '\n') return true;
+    if (line.size() < max) line.push_back(static_cast<char>(c));
+    else too_long = true;
+  }
+}
+
+}  // namespace
+
 int run_stdio(Service& service, std::istream& in, std::ostream& out) {
   using nlohmann::json;
   std::string line;
-  while (std::getline(in, line)) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  const size_t max_line = service.limits().max_body_bytes + 4096;
+  bool too_long = false;
+  while (read_line(in, line, max_line, too_long)) {
     json reply;
+    if (too_long) {
+      const std::string msg = "request line longer than " + std::to_string(max_line) +
+                              " bytes (the body limit, --max-body, and 4096 for the envelope)";
+      reply = {{"status", 413}, {"body", {{"error", msg}, {"status", 413}}}};
+      out << reply.dump() << "\n" << std::flush;
+      continue;
+    }
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     try {
-      const json req = json::parse(line);
+      const json req = parse_json_unique(line);
       if (!req.is_object()) throw std::runtime_error("request: expected a JSON object");
       for (auto it = req.begin(); it != req.end(); ++it)
         if (it.key() != "method" && it.key() != "path" && it.key() != "body")
-          throw std::runtime_error("unknown field '" + it.key() + "' (allowed: body, method, path)");
+          throw std::runtime_error("unknown field '" + echo(it.key()) + "' (allowed: body, method, path)");
       if (!req.contains("method") || !req["method"].is_string()) throw std::runtime_error("field 'method': expected a string");
       if (!req.contains("path") || !req["path"].is_string()) throw std::runtime_error("field 'path': expected a string");
       const std::string body = req.contains("body") ? req["body"].dump() : "";
-      Reply r = service.handle(req["method"].get<std::string>(), req["path"].get<std::string>(), body);
+      Reply r = service.handle(Request{req["method"].get<std::string>(), req["path"].get<std::string>(), body, true});
       reply["status"] = r.status;
       reply["body"] = r.content_type == "application/json" ? json::parse(r.body) : json(r.body);
     } catch (const std::exception& e) {

@@ -460,6 +460,12 @@ json PlaySession::reading() const {
   if (!utterance_) return nullptr;
   json j;
   j["utterance"] = *utterance_;
+  // How much the instruction counted (1: fully; less when few of its words
+  // are ones the model reads), with the reason, as `clips infer` warns.
+  if (utterance_record_) {
+    j["evidence_weight"] = utterance_record_->evidence_weight;
+    if (!utterance_record_->warning.empty()) j["warning"] = utterance_record_->warning;
+  }
   json cmds = json::array();
   if (method_ == "literal") {
     j["source"] = "literal listener (uniform prior over commands)";

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <system_error>
 
 #include <nlohmann/json.hpp>
 
@@ -25,7 +26,7 @@ struct HttpError : std::runtime_error {
 // Invalid UTF-8 can only come from a request echoed in an error message: it
 // is replaced, never allowed to make the reply itself fail.
 Reply json_reply(int status, const json& j) {
-  return {status, j.dump(-1, ' ', false, json::error_handler_t::replace), "application/json"};
+  return {status, j.dump(-1, ' ', false, json::error_handler_t::replace), "application/json", {}};
 }
 Reply error_reply(int status, const std::string& message) {
   return json_reply(status, json{{"error", message}, {"status", status}});
@@ -38,8 +39,10 @@ json parse_body(const std::string& body, std::initializer_list<const char*> allo
     j = json::object();
   } else {
     try {
-      j = json::parse(body);
+      j = parse_json_unique(body);
     } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
+      throw HttpError(400, std::string("malformed JSON body: ") + e.what());
+    } catch (const std::invalid_argument& e) {  // a repeated key
       throw HttpError(400, std::string("malformed JSON body: ") + e.what());
     }
   }
@@ -49,7 +52,7 @@ json parse_body(const std::string& body, std::initializer_list<const char*> allo
     if (!ok.count(it.key())) {
       std::string names;
       for (const auto& n : ok) names += (names.empty() ? "" : ", ") + n;
-      throw HttpError(400, "unknown field '" + it.key() + "' (allowed: " + (names.empty() ? "none" : names) + ")");
+      throw HttpError(400, "unknown field '" + echo(it.key()) + "' (allowed: " + (names.empty() ? "none" : names) + ")");
     }
   return j;
 }
@@ -69,6 +72,20 @@ bool bool_field(const json& j, const char* name, bool fallback) {
   return j[name].get<bool>();
 }
 
+// Whether `method` is one of the comma-separated names of `allow`.
+bool method_in(const std::string& method, const std::string& allow) {
+  size_t i = 0;
+  while (i < allow.size()) {
+    size_t j = allow.find(',', i);
+    if (j == std::string::npos) j = allow.size();
+    std::string_view name(allow.data() + i, j - i);
+    while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
+    if (name == method) return true;
+    i = j + 1;
+  }
+  return false;
+}
+
 std::vector<std::string> split_path(const std::string& path) {
   std::vector<std::string> parts;
   const std::string p = path.substr(0, path.find('?'));
@@ -83,6 +100,30 @@ std::vector<std::string> split_path(const std::string& path) {
 }
 
 }  // namespace
+
+std::string echo(const std::string& text, size_t max_bytes) {
+  if (text.size() <= max_bytes) return text;
+  size_t cut = max_bytes;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside a character
+  return text.substr(0, cut) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
+json parse_json_unique(const std::string& text) {
+  // One set of keys per object being read, innermost last.
+  std::vector<std::set<std::string>> open;
+  json::parser_callback_t check = [&open](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      open.emplace_back();
+    } else if (event == json::parse_event_t::object_end) {
+      if (!open.empty()) open.pop_back();
+    } else if (event == json::parse_event_t::key && !open.empty()) {
+      const std::string& key = parsed.get_ref<const std::string&>();
+      if (!open.back().insert(key).second) throw std::invalid_argument("duplicate key '" + echo(key) + "'");
+    }
+    return true;
+  };
+  return json::parse(text, check);
+}
 
 Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits limits,
                  std::shared_ptr<lm::LanguageModel> lm, std::function<Clock::time_point()> now)
@@ -142,7 +183,7 @@ std::shared_ptr<Service::Entry> Service::find(const std::string& id) {
   std::lock_guard lock(mutex_);
   expire_locked(now_().time_since_epoch().count());
   auto it = sessions_.find(id);
-  if (it == sessions_.end()) throw HttpError(404, "no session '" + id + "' (it may have expired or been deleted)");
+  if (it == sessions_.end()) throw HttpError(404, "no session '" + echo(id) + "' (it may have expired or been deleted)");
   return it->second;
 }
 
@@ -205,7 +246,7 @@ Reply Service::create(const std::string& body) {
   const std::string method = string_field(j, "method", false, "clips");
   const auto& known = play_methods();
   if (std::find(known.begin(), known.end(), method) == known.end())
-    throw HttpError(400, "field 'method': unknown method '" + method + "' (known: clips, lang_only, action_only, literal)");
+    throw HttpError(400, "field 'method': unknown method '" + echo(method) + "' (known: clips, lang_only, action_only, literal)");
   const bool from_text = j.contains("domain");
   std::string dataset, problem, plan, domain_text, pack_text;
   Served* served = nullptr;
@@ -236,7 +277,7 @@ Reply Service::create(const std::string& body) {
     problem = string_field(j, "problem", true);
     plan = string_field(j, "plan", false);
     auto ds = datasets_.find(dataset);
-    if (ds == datasets_.end()) throw HttpError(400, "field 'dataset': no served dataset '" + dataset + "'");
+    if (ds == datasets_.end()) throw HttpError(400, "field 'dataset': no served dataset '" + echo(dataset) + "'");
     served = &ds->second;
   }
   {
@@ -264,6 +305,9 @@ Reply Service::create(const std::string& body) {
     throw;
   }
   entry->last_used = now_().time_since_epoch().count();
+  entry->created = entry->last_used;
+  entry->dataset = dataset;
+  entry->problem = from_text ? entry->session->state().value("problem", "") : problem;
   json state = entry->session->state();
   std::string id;
   {
@@ -284,7 +328,7 @@ Reply Service::on_session(const std::string& method, const std::string& id, cons
     {
       std::lock_guard lock(mutex_);
       auto it = sessions_.find(id);
-      if (it == sessions_.end()) throw HttpError(404, "no session '" + id + "'");
+      if (it == sessions_.end()) throw HttpError(404, "no session '" + echo(id) + "'");
       gone = std::move(it->second);
       sessions_.erase(it);
     }
@@ -297,7 +341,7 @@ Reply Service::on_session(const std::string& method, const std::string& id, cons
   }
   auto entry = find(id);
   std::lock_guard busy(entry->mutex);
-  if (!entry->session) throw HttpError(404, "no session '" + id + "' (deleted)");
+  if (!entry->session) throw HttpError(404, "no session '" + echo(id) + "' (deleted)");
   entry->last_used = now_().time_since_epoch().count();
   PlaySession& s = *entry->session;
   auto with_id = [&](json j) {
@@ -339,37 +383,118 @@ Reply Service::on_session(const std::string& method, const std::string& id, cons
       return with_id(s.state());
     }
   }
-  throw HttpError(404, "no route " + method + " /api/sessions/" + id + (op.empty() ? "" : "/" + op));
+  throw HttpError(404, "no route " + echo(method, 16) + " /api/sessions/" + echo(id) + (op.empty() ? "" : "/" + echo(op)));
 }
 
-Reply Service::handle(const std::string& method, const std::string& path, const std::string& body) {
+Reply Service::list_sessions() {
+  const int64_t now = now_().time_since_epoch().count();
+  const auto seconds = [](int64_t ticks) {
+    return std::chrono::duration<double>(Clock::duration(ticks)).count();
+  };
+  json out = json::array();
+  {
+    std::lock_guard lock(mutex_);
+    expire_locked(now);
+    for (const auto& [id, e] : sessions_) {
+      std::unique_lock busy(e->mutex, std::try_to_lock);
+      json s = {{"id", id},
+                {"dataset", e->dataset.empty() ? json(nullptr) : json(e->dataset)},
+                {"problem", e->problem},
+                {"age_seconds", seconds(now - e->created)},
+                {"idle_seconds", seconds(now - e->last_used.load())},
+                {"busy", !busy.owns_lock()}};
+      if (busy.owns_lock() && e->session) s["method"] = e->session->method();
+      out.push_back(std::move(s));
+    }
+  }
+  return json_reply(200, json{{"sessions", std::move(out)}, {"max_sessions", limits_.max_sessions}});
+}
+
+Reply Service::delete_all_sessions() {
+  std::map<std::string, std::shared_ptr<Entry>> gone;
+  {
+    std::lock_guard lock(mutex_);
+    gone.swap(sessions_);
+  }
+  json ids = json::array();
+  for (auto& [id, e] : gone) {
+    std::lock_guard wait_for_requests(e->mutex);  // a request in flight finishes first
+    e->session.reset();
+    ids.push_back(id);
+  }
+  gone.clear();
+  malloc_trim(0);
+  return json_reply(200, json{{"deleted", std::move(ids)}});
+}
+
+std::string Service::allowed_methods(const std::string& path) {
+  const auto parts = split_path(path);
+  if (parts.empty() || parts[0] != "api") {
+    const auto& assets = web_assets();
+    if (parts.size() <= 1 && assets.count(parts.empty() ? "/index.html" : "/" + parts.back())) return "GET, HEAD";
+    return "";
+  }
+  if (parts.size() == 2 && (parts[1] == "health" || parts[1] == "datasets")) return "GET, HEAD";
+  if (parts.size() == 2 && parts[1] == "sessions") return "GET, HEAD, POST, DELETE";
+  if (parts.size() == 3 && parts[1] == "sessions") return "GET, HEAD, DELETE";
+  if (parts.size() == 4 && parts[1] == "sessions") {
+    const std::string& op = parts[3];
+    if (op == "posterior" || op == "trace") return "GET, HEAD";
+    if (op == "act" || op == "hear" || op == "assist" || op == "undo" || op == "reset" || op == "method") return "POST";
+  }
+  return "";
+}
+
+Reply Service::handle(const Request& request) {
+  const std::string method = request.method == "HEAD" ? "GET" : request.method;  // the front end drops the body
+  const std::string& path = request.path;
+  const std::string& body = request.body;
   try {
     if (body.size() > limits_.max_body_bytes)
       throw HttpError(413, "request body of " + std::to_string(body.size()) + " bytes exceeds the limit of " +
-                               std::to_string(limits_.max_body_bytes));
+                               std::to_string(limits_.max_body_bytes) + " bytes (--max-body)");
+    const std::string allow = allowed_methods(path);
+    if (allow.empty()) throw HttpError(404, "no route " + echo(method, 16) + " " + echo(path));
+    if (!method_in(method, allow)) {
+      Reply r = error_reply(405, echo(method, 16) + " " + echo(path) + ": allowed methods are " + allow);
+      r.headers.emplace_back("Allow", allow);
+      return r;
+    }
     const auto parts = split_path(path);
     if (parts.empty() || parts[0] != "api") {
-      if (method != "GET") throw HttpError(405, method + " " + path + ": only GET serves the page");
-      const auto& assets = web_assets();
-      auto it = assets.find(parts.empty() ? "/index.html" : "/" + parts.back());
-      if (parts.size() > 1 || it == assets.end()) throw HttpError(404, "no page " + path);
-      return {200, std::string(it->second.body), it->second.content_type};
+      const auto& it = web_assets().find(parts.empty() ? "/index.html" : "/" + parts.back());
+      return {200, std::string(it->second.body), it->second.content_type, {}};
     }
-    if (parts.size() == 2 && parts[1] == "health" && method == "GET") {
+    if (parts.size() == 2 && parts[1] == "health") {
       std::lock_guard lock(mutex_);
       return json_reply(200, json{{"sessions", sessions_.size()}, {"max_sessions", limits_.max_sessions}});
     }
-    if (parts.size() == 2 && parts[1] == "datasets" && method == "GET") return datasets();
-    if (parts.size() == 2 && parts[1] == "sessions" && method == "POST") return create(body);
-    if (parts.size() >= 3 && parts.size() <= 4 && parts[1] == "sessions")
-      return on_session(method, parts[2], parts.size() == 4 ? parts[3] : "", body);
-    throw HttpError(404, "no route " + method + " " + path);
+    if (parts.size() == 2 && parts[1] == "datasets") return datasets();
+    if (parts.size() == 2 && parts[1] == "sessions") {
+      if (method == "POST") return create(body);
+      if (!request.owner) {
+        Reply r = error_reply(401, "listing or deleting every session needs the owner token "
+                                   "(header 'Authorization: Bearer TOKEN'; clips serve prints it at start)");
+        r.headers.emplace_back("WWW-Authenticate", "Bearer");
+        return r;
+      }
+      return method == "GET" ? list_sessions() : delete_all_sessions();
+    }
+    return on_session(method, parts[2], parts.size() == 4 ? parts[3] : "", body);
   } catch (const HttpError& e) {
     return error_reply(e.status, e.what());
   } catch (const ConflictError& e) {
     return error_reply(409, e.what());
   } catch (const InputError& e) {
     return error_reply(400, e.what());
+  } catch (const lm::LmError& e) {
+    // The language model is another server behind this one: a gateway error.
+    const bool timed_out = std::string_view(e.what()).find("timed out") != std::string_view::npos;
+    return error_reply(timed_out ? 504 : 502, std::string("language model failed: ") + e.what());
+  } catch (const std::system_error& e) {
+    if (e.code() != std::errc::resource_unavailable_try_again)
+      return error_reply(500, std::string("internal error: ") + e.what());
+    return error_reply(503, std::string("the server is out of resources: ") + e.what());
   } catch (const std::exception& e) {
     return error_reply(500, std::string("internal error: ") + e.what());
   }

@@ -36,7 +36,27 @@ struct Reply {
   int status = 200;
   std::string body;
   std::string content_type = "application/json";
+  std::vector<std::pair<std::string, std::string>> headers;  // extra headers (e.g. Allow on a 405)
 };
+
+// One request as the handlers see it. `owner`: the request proved it comes
+// from whoever started the server (HTTP: the owner token; stdio: always),
+// which may list and delete every session.
+struct Request {
+  std::string method;
+  std::string path;
+  std::string body;
+  bool owner = false;
+};
+
+// At most `max_bytes` bytes of `text` (cut at a UTF-8 character boundary,
+// with a note of the full length), for echoing request values in errors.
+std::string echo(const std::string& text, size_t max_bytes = 64);
+
+// Parses a JSON text, rejecting an object that repeats a key (anywhere in
+// the text): throws nlohmann::json::exception or std::invalid_argument
+// naming the repeated key.
+nlohmann::json parse_json_unique(const std::string& text);
 
 // A static file of the web page (embedded in the binary at build time).
 struct Asset {
@@ -64,7 +84,14 @@ class Service {
   // corpus). Models are built at a domain's first session and kept.
   void set_domain_language_model(DomainLanguageModel f) { domain_lm_ = std::move(f); }
 
-  Reply handle(const std::string& method, const std::string& path, const std::string& body);
+  Reply handle(const Request& request);
+  Reply handle(const std::string& method, const std::string& path, const std::string& body) {
+    return handle(Request{method, path, body, false});
+  }
+
+  // The methods a path answers to ("GET, HEAD", "POST", ...; HEAD with
+  // every GET), or "" when the path names nothing.
+  static std::string allowed_methods(const std::string& path);
 
   // Deletes sessions idle for longer than limits.idle_seconds (not those in
   // use right now); returns how many went.
@@ -77,6 +104,8 @@ class Service {
     std::mutex mutex;  // serialises this session's requests
     std::unique_ptr<PlaySession> session;
     std::atomic<int64_t> last_used{0};  // Clock ticks
+    int64_t created = 0;                 // Clock ticks
+    std::string dataset, problem;        // as created ("" dataset: PDDL text)
   };
   // A served folder: its dataset and, once a session needed it, its model.
   struct Served {
@@ -89,6 +118,8 @@ class Service {
   std::shared_ptr<lm::LanguageModel> dataset_lm(Served& served);
   std::shared_ptr<lm::LanguageModel> text_lm(const PlaySetup& setup, const std::string& key);
   Reply datasets() const;
+  Reply list_sessions();
+  Reply delete_all_sessions();
   Reply on_session(const std::string& method, const std::string& id, const std::string& op, const std::string& body);
   std::string new_id();
   size_t expire_locked(int64_t now);

@@ -1,12 +1,28 @@
 #include "util/worker_pool.hpp"
 
 #include <algorithm>
+#include <string>
+#include <system_error>
 
 namespace clips::util {
 
 WorkerPool::WorkerPool(int threads) {
   int t = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (int i = 1; i < t; ++i) workers_.emplace_back([this] { worker_loop(); });
+  try {
+    for (int i = 1; i < t; ++i) workers_.emplace_back([this] { worker_loop(); });
+  } catch (const std::system_error& e) {
+    // The threads already started must be stopped and joined here (the
+    // destructor does not run for an object whose constructor threw).
+    const size_t started = workers_.size() + 1;
+    {
+      std::lock_guard lock(m_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& w : workers_) w.join();
+    throw std::system_error(e.code(), "cannot start thread " + std::to_string(started) + " of " + std::to_string(t) +
+                                          " (ask for fewer threads)");
+  }
 }
 
 WorkerPool::~WorkerPool() {

@@ -118,6 +118,24 @@ TEST(Session, UnknownActionsAndObjectsAreInputErrorsNamingThem) {
   EXPECT_THROW(clips::Session::open_dataset(examples_dkg(), "e1", o), clips::InputError);
 }
 
+// issue 46: a 200 kB action text is an input error at once; every token's
+// location used to copy the whole text (quadratic: 4 GB).
+TEST(Session, AHugeActionTextIsAnInputErrorWithAShortLabel) {
+  auto s = clips::Session::open_dataset(examples_dkg(), "e1");
+  std::string huge = "(left";
+  while (huge.size() < 200000) huge += " human";
+  huge += ")";
+  try {
+    s.observe(huge);
+    FAIL() << "a 200 kB action was accepted";
+  } catch (const clips::InputError& e) {
+    EXPECT_LT(std::string(e.what()).size(), 2000u);
+    EXPECT_NE(std::string(e.what()).find("action (left human human"), std::string::npos)
+        << std::string(e.what()).substr(0, 300);
+  }
+  EXPECT_EQ(s.t(), 0);
+}
+
 TEST(Session, AssistWeighsTheCandidatesWithTheGoalPosterior) {
   auto s = clips::Session::open_dataset(examples_dkg(), "e1.1.keys");
   for (const char* a : {"(left human)", "(wait robot)", "(left human)", "(wait robot)"}) s.observe(a);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -220,6 +221,46 @@ TEST_F(BenchShardTest, MissingFileIsRefused) {
   const auto r = run(merge_command(dir("missing-file").string(), {broken}));
   EXPECT_EQ(r.status, 3) << r.out;
   EXPECT_TRUE(contains(r.out, broken.string() + ": posteriors.csv is missing")) << r.out;
+}
+
+// issue 46: a damaged outcomes.json (goals empty or too few for the
+// posteriors, the true goal out of range, ragged posteriors, a probability
+// of 1e308) is refused naming the field, never a crash or a silent merge.
+TEST_F(BenchShardTest, MalformedOutcomesAreRefusedNamingTheField) {
+  struct Case {
+    std::string name;
+    std::function<void(json&)> edit;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {"goals-empty", [](json& p) { p["goals"] = json::array(); }, "plans[0].goals: is empty"},
+      {"one-goal", [](json& p) { p["goals"] = json::array({"gem1"}); }, "plans[0].true_goal:"},
+      {"one-goal-true-0",
+       [](json& p) {
+         p["goals"] = json::array({"gem1"});
+         p["true_goal"] = 0;
+       },
+       "plans[0].goal_posterior_steps[0]: has"},
+      {"true-goal-99", [](json& p) { p["true_goal"] = 99; }, "plans[0].true_goal: 99 is not the index"},
+      {"true-goal-minus-1", [](json& p) { p["true_goal"] = -1; }, "plans[0].true_goal: -1 is not the index"},
+      {"ragged", [](json& p) { p["methods"][0]["posterior_steps"][1].erase(0); },
+       "plans[0].methods[0].posterior_steps[1]: has"},
+      {"ragged-plan", [](json& p) { p["goal_posterior_steps"][0].push_back(0.5); },
+       "plans[0].goal_posterior_steps[0]: has"},
+      {"p-1e308", [](json& p) { p["methods"][0]["p_true_goal"] = 1e308; },
+       "plans[0].methods[0].p_true_goal: 1e+308 is not a probability"},
+      {"duplicate-goal", [](json& p) { p["goals"][1] = p["goals"][0]; }, "plans[0].goals: lists goal"},
+  };
+  for (const auto& c : cases) {
+    const fs::path edited = copy_of(1, "bad-" + c.name);
+    json outcomes = json::parse(read_text(edited / "outcomes.json"));
+    ASSERT_GE(outcomes["plans"][0]["goals"].size(), 2u);
+    c.edit(outcomes["plans"][0]);
+    std::ofstream(edited / "outcomes.json") << outcomes.dump();
+    const auto r = run(merge_command(dir("merged-" + c.name).string(), {edited}, "--allow-partial"));
+    EXPECT_EQ(r.status, 3) << c.name << ": " << r.out;
+    EXPECT_TRUE(contains(r.out, edited.string() + "/outcomes.json: " + c.message)) << c.name << ": " << r.out;
+  }
 }
 
 TEST(BenchShardCli, MergeTakesNoBenchOptions) {

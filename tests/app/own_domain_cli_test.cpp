@@ -75,15 +75,23 @@ TEST(CliOwnDomain, AssistTakesTurnsWithIdle) {
 }
 
 TEST(CliOwnDomain, ValidateNamesWhatBenchWouldStopAt) {
-  // A goal atom naming a missing argument: the literal listener's goal.
+  // A goal atom naming a missing argument: refused when the pack loads
+  // (issue 46; it used to pass and fail in `listen`).
   {
     GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holding $1 $7)"); });
     const auto r = run(clips_binary() + " validate --dataset " + c.ds);
+    EXPECT_EQ(r.status, 3) << r.out;
+    EXPECT_TRUE(contains(r.out, "language.goal_atoms.take[0]: '$7' in \"(holding $1 $7)\" names parameter 7")) << r.out;
+  }
+  // A goal atom naming a predicate the domain lacks: the literal listener's
+  // goal, which the bench rehearsal sets up and reports.
+  {
+    GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holdin $1 $2)"); });
+    const auto r = run(clips_binary() + " validate --dataset " + c.ds);
     EXPECT_EQ(r.status, 1) << r.out;
     EXPECT_TRUE(contains(r.out, "validated 2 plans, 0 failed")) << r.out;
-    EXPECT_TRUE(contains(r.out, "FAIL  bench set-up: ")) << r.out;
-    EXPECT_TRUE(contains(r.out, "(holding $1 $7)' refers to a missing argument")) << r.out;
-    EXPECT_TRUE(contains(r.out, "language.goal_atoms.take")) << r.out;
+    EXPECT_TRUE(contains(r.out, "FAIL  bench set-up: literal")) << r.out;
+    EXPECT_TRUE(contains(r.out, "unknown predicate 'holdin'")) << r.out;
   }
   // No goal atoms for a salient action: they come from its effects, and every
   // method, the literal listener included, is set up.
@@ -123,16 +131,16 @@ TEST(CliOwnDomain, ValidateNamesWhatBenchWouldStopAt) {
 // rows stay in results.csv and summary.json counts what ran; the exit status
 // says that something failed (1).
 TEST(CliOwnDomain, OneFailingMethodLeavesTheOthersRows) {
-  GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holding $1 $7)"); });
+  GardenCopy c([](std::string t) { return replaced(t, "(holding $1 $2)", "(holdin $1 $2)"); });
   const std::string out = (fs::path(c.ds).parent_path() / "out").string();
   const auto r = run(clips_binary() + " bench --no-progress -j 1 --methods clips,literal --dataset " + c.ds +
                      " --out " + out);
-  EXPECT_TRUE(contains(r.out, "literal failed on 1.1.basil: goal atom '(holding $1 $7)'")) << r.out;
+  EXPECT_TRUE(contains(r.out, "literal failed on 1.1.basil: <goal>:1:62: unknown predicate 'holdin'")) << r.out;
   const std::string csv = testing::read_text(fs::path(out) / "results.csv");
   for (const char* plan : {"1.1.basil", "1.2.tomato"}) {
     EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",clips,0\\.[0-9]+,[^\n]*,,garden\n")))
         << plan << "\n" << csv;
-    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",literal,[^\n]*missing argument")))
+    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",literal,[^\n]*unknown predicate")))
         << plan << "\n" << csv;
   }
   const auto summary = nlohmann::json::parse(testing::read_text(fs::path(out) / "summary.json"));

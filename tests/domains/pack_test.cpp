@@ -12,6 +12,8 @@
 
 #include "paper_languages.hpp"
 #include "data/dataset.hpp"
+#include <nlohmann/json.hpp>
+
 #include "language/commands/term.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
@@ -20,6 +22,7 @@ namespace clips::domains {
 namespace {
 
 namespace fs = std::filesystem;
+using nlohmann::json;
 
 std::string error_of(const std::string& json) {
   try {
@@ -247,6 +250,59 @@ TEST(PackFile, AMissingFewShotFileNamesTheField) {
     EXPECT_NE(std::string(e.what()).find("fewshot.file: no file"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("examples.tsv"), std::string::npos) << e.what();
   }
+}
+
+// issue 46: what passed the pack reader and failed (or hung) later.
+TEST(PackFile, GoalAtomArgumentsCommandSizeAndCostsAreChecked) {
+  Pantry p;
+  auto with_atoms = [&](const std::string& atoms) {
+    json pack = json::parse(kPantryPack);
+    pack["language"]["goal_atoms"] = json::parse(atoms);
+    std::ofstream(p.dir / "pack.json") << pack.dump();
+    try {
+      find_pack(*p.domain, p.dir.string());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(with_atoms(R"j({"take": ["(has $1 $2)"], "give": ["(has $2 $3)"]})j"), "");
+  std::string e = with_atoms(R"j({"take": ["(has $1 $2)"], "give": ["(has $2 $3)", "(has $1 $7)"]})j");
+  EXPECT_NE(e.find("language.goal_atoms.give[1]"), std::string::npos) << e;
+  EXPECT_NE(e.find("'$7'"), std::string::npos) << e;
+  EXPECT_NE(e.find("has 3"), std::string::npos) << e;
+  e = with_atoms(R"j({"take": ["(has $1 $x)"]})j");
+  EXPECT_NE(e.find("is not an argument reference"), std::string::npos) << e;
+  e = with_atoms(R"j({"take": ["(has $0 $1)"]})j");
+  EXPECT_NE(e.find("names parameter 0"), std::string::npos) << e;
+
+  // A grid scene on a domain without the map's fluents (it failed when drawn).
+  {
+    json pack = json::parse(kPantryPack);
+    pack["scene"] = "grid";
+    std::ofstream(p.dir / "pack.json") << pack.dump();
+    try {
+      find_pack(*p.domain, p.dir.string());
+      ADD_FAILURE() << "a grid scene without (walls) was accepted";
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find("scene: \"grid\" draws Doors-Keys-Gems maps"), std::string::npos)
+          << err.what();
+    }
+  }
+
+  const std::string lang = R"j("language": {"salient_actions": [{"action": "get", "focal_arg": 1}], "max_command_actions": )j";
+  EXPECT_EQ(error_of(R"j({"domain": "k", )j" + lang + "4}}"), "");
+  e = error_of(R"j({"domain": "k", )j" + lang + "5}}");
+  EXPECT_NE(e.find("max_command_actions: 5 is more than 4"), std::string::npos) << e;
+
+  for (const char* bad : {"0", "1e308", "-1", "1e7"}) {
+    e = error_of(std::string(R"j({"domain": "k", "cost_profiles": [{"profiles": [{"name": "c", "default": )j") + bad + "}]}]}");
+    EXPECT_NE(e.find(".default: expected a finite number > 0 and <= 1e+06"), std::string::npos) << bad << ": " << e;
+  }
+  e = error_of(R"j({"domain": "k", "cost_profiles": [{"profiles": [{"name": "c", "costs": {"human": {"move": 1e300}}}]}]})j");
+  EXPECT_NE(e.find("costs.human.move"), std::string::npos) << e;
+  EXPECT_EQ(error_of(R"j({"domain": "k", "cost_profiles": [{"profiles": [{"name": "c", "default": 2, "costs": {"human": {"wait": 0}}}]}]})j"),
+            "");
 }
 
 TEST(PackFile, SceneColoursAreHexByType) {

@@ -23,6 +23,7 @@ CLIPS_FUZZ_DECLARE(completions);
 CLIPS_FUZZ_DECLARE(chat);
 CLIPS_FUZZ_DECLARE(serve);
 CLIPS_FUZZ_DECLARE(pack);
+CLIPS_FUZZ_DECLARE(bench_merge);
 
 namespace fs = std::filesystem;
 
@@ -43,7 +44,7 @@ const Case kTargets[] = {
     {"plan", clips_fuzz_plan},           {"dataset", clips_fuzz_dataset},
     {"utterance", clips_fuzz_utterance}, {"completions", clips_fuzz_completions},
     {"chat", clips_fuzz_chat},           {"serve", clips_fuzz_serve},
-    {"pack", clips_fuzz_pack},
+    {"pack", clips_fuzz_pack},           {"bench_merge", clips_fuzz_bench_merge},
 };
 
 // Runs every file of `dir` (if it exists) through `run`; returns how many.

@@ -15,65 +15,13 @@
 #include <nlohmann/json.hpp>
 
 #include "serve/kitchen_folder.hpp"
+#include "serve/server_process.hpp"
 
 namespace {
 
 using nlohmann::json;
 
-// The server binary with its stderr on a pipe; the port is read from the
-// "listening on" line.
-struct ServerProcess {
-  pid_t pid = -1;
-  int port = -1;
-  FILE* err = nullptr;
-
-  // `args` after "serve --port 0" (default: the repo's mDKG example, --max-body 1024).
-  explicit ServerProcess(std::vector<std::string> extra_env = {}, std::vector<std::string> args = {}) {
-    if (args.empty())
-      args = {"--dataset", std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems", "--max-body", "1024"};
-    const std::string bin = std::string(CLIPS_BINARY_DIR) + "/clips";
-    std::vector<std::string> argv_s = {bin, "serve", "--port", "0"};
-    argv_s.insert(argv_s.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : argv_s) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    int fds[2];
-    if (pipe(fds) != 0) return;
-    pid = fork();
-    if (pid == 0) {
-      dup2(fds[1], 2);
-      close(fds[0]);
-      for (auto& e : extra_env) putenv(e.data());
-      execv(bin.c_str(), argv.data());
-      _exit(127);
-    }
-    close(fds[1]);
-    err = fdopen(fds[0], "r");
-    char line[512];
-    const std::regex re("listening on http://127\\.0\\.0\\.1:(\\d+)/");
-    while (fgets(line, sizeof line, err)) {
-      std::cmatch m;
-      if (std::regex_search(line, m, re)) {
-        port = std::stoi(m[1]);
-        break;
-      }
-    }
-  }
-  int stop() {
-    kill(pid, SIGTERM);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    pid = -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
-  ~ServerProcess() {
-    if (pid > 0) {
-      kill(pid, SIGKILL);
-      waitpid(pid, nullptr, 0);
-    }
-    if (err) fclose(err);
-  }
-};
+using clips::serve::testing::ServerProcess;
 
 TEST(ServeLoopback, AnswersJsonAndLimitsBodies) {
   ServerProcess server;

@@ -397,5 +397,51 @@ TEST_F(Fixture, JsonLinesModeUsesTheSameHandlers) {
   EXPECT_EQ(replies[3]["status"], 404);
 }
 
+// issue 46: a line longer than the body limit and 4 KiB is answered 413
+// without being kept (a 3 GB line ended the server with no reply); the next
+// line is served; stdin is the owner, who may list every session; duplicate
+// keys in the envelope are refused.
+TEST_F(Fixture, JsonLinesModeBoundsItsLinesAndServesTheOwner) {
+  ServiceLimits limits;
+  limits.max_body_bytes = 1024;
+  auto s = make(limits);
+  const std::string huge = "{\"method\":\"GET\",\"path\":\"/api/health\",\"body\":\"" + std::string(200000, 'x') + "\"}";
+  std::istringstream in(huge + "\n"
+                        "{\"method\":\"POST\",\"path\":\"/api/sessions\",\"body\":{\"dataset\":\"doors-keys-gems\",\"problem\":\"e1\"}}\n"
+                        "{\"method\":\"GET\",\"path\":\"/api/sessions\"}\n"
+                        "{\"method\":\"GET\",\"method\":\"POST\",\"path\":\"/api/health\"}\n");
+  std::ostringstream out;
+  EXPECT_EQ(run_stdio(*s, in, out), 0);
+  std::istringstream lines(out.str());
+  std::vector<json> replies;
+  for (std::string line; std::getline(lines, line);) replies.push_back(json::parse(line));
+  ASSERT_EQ(replies.size(), 4u) << out.str().substr(0, 500);
+  EXPECT_EQ(replies[0]["status"], 413);
+  EXPECT_NE(replies[0]["body"]["error"].get<std::string>().find("5120 bytes"), std::string::npos) << replies[0];
+  EXPECT_EQ(replies[1]["status"], 201);
+  EXPECT_EQ(replies[2]["status"], 200);
+  EXPECT_EQ(replies[2]["body"]["sessions"].size(), 1u);
+  EXPECT_EQ(replies[3]["status"], 400);
+  EXPECT_NE(replies[3]["body"]["error"].get<std::string>().find("duplicate key 'method'"), std::string::npos);
+  // Over HTTP without the owner token, the list is refused.
+  EXPECT_EQ(s->handle("GET", "/api/sessions", "").status, 401);
+}
+
+// issue 46: /hear flags an instruction the model cannot read, as `clips
+// infer` warns about it.
+TEST_F(Fixture, HearFlagsAnUnreadableUtterance) {
+  auto s = make();
+  const std::string id = create(*s);
+  Reply r = s->handle("POST", "/api/sessions/" + id + "/hear", json{{"utterance", "?!?! ... ?"}}.dump());
+  ASSERT_EQ(r.status, 200) << r.body;
+  const json reading = body(r)["reading"];
+  EXPECT_EQ(reading["evidence_weight"], 0.0) << reading.dump();
+  EXPECT_NE(reading.value("warning", "").find("has no words"), std::string::npos) << reading.dump();
+  r = s->handle("POST", "/api/sessions/" + id + "/hear", json{{"utterance", "Can you get me the yellow key?"}}.dump());
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(body(r)["reading"]["evidence_weight"], 1.0) << body(r)["reading"].dump();
+  EXPECT_FALSE(body(r)["reading"].contains("warning"));
+}
+
 }  // namespace
 }  // namespace clips::serve

@@ -2,7 +2,14 @@
 // propagate, and a pool is reusable.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <atomic>
+#include <cstdio>
+#include <string>
+#include <system_error>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -61,6 +68,43 @@ TEST(WorkerPool, SingleThreadRunsInOrderOnTheCaller) {
     order.push_back(i);
   });
   EXPECT_EQ(order, (std::vector<size_t>{0, 1, 2, 3, 4}));
+}
+
+// issue 46: when a thread cannot start (here: the address space is too
+// small for its stack), the constructor throws std::system_error naming the
+// thread, after joining the ones it started; it neither deadlocks nor ends
+// the process. Run in a child process, whose address space is limited.
+TEST(WorkerPool, FailingThreadCreationIsAnError) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "sanitizers reserve address space of their own";
+#else
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // Room for what is mapped now and a few thread stacks, not for 200.
+    long pages = 0;
+    if (FILE* f = fopen("/proc/self/statm", "r")) {
+      if (fscanf(f, "%ld", &pages) != 1) pages = 0;
+      fclose(f);
+    }
+    const rlim_t now = static_cast<rlim_t>(pages) * static_cast<rlim_t>(sysconf(_SC_PAGESIZE));
+    const rlimit lim{now + (64u << 20), now + (64u << 20)};
+    if (pages == 0 || setrlimit(RLIMIT_AS, &lim) != 0) _exit(3);
+    try {
+      WorkerPool pool(200);
+      _exit(1);  // every thread started: the limit did not bite
+    } catch (const std::system_error& e) {
+      const std::string what = e.what();
+      _exit(what.find("cannot start thread") != std::string::npos ? 0 : 2);
+    } catch (...) {
+      _exit(4);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: no thread failed; 2: another message; 3: no limit; 4: another exception";
+#endif
 }
 
 }  // namespace

@@ -167,8 +167,16 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
   if (doc.contains("speaker")) read_party(r, doc["speaker"], "speaker", c.speaker, c.speaker_pronoun);
   if (doc.contains("listener"))
     read_party(r, doc["listener"], "listener", c.listener, c.listener_pronoun);
-  if (doc.contains("max_command_actions"))
+  if (doc.contains("max_command_actions")) {
     c.max_command_actions = r.positive_int(doc["max_command_actions"], "max_command_actions");
+    // Commands are enumerated as sets of grounded salient actions: their
+    // number grows as (actions)^k, and 5 already runs for minutes (8: out of memory).
+    if (c.max_command_actions > kMaxCommandActions)
+      r.fail("max_command_actions", std::to_string(c.max_command_actions) + " is more than " +
+                                        std::to_string(kMaxCommandActions) +
+                                        " (commands are every set of up to this many actions: larger sets "
+                                        "cannot be enumerated in useful time)");
+  }
   if (doc.contains("max_action_types"))
     c.max_action_types = r.positive_int(doc["max_action_types"], "max_action_types");
   if (doc.contains("max_qualifier_values_per_action_type"))

@@ -43,6 +43,9 @@ enum class GoalVariables {
   LowercasedName      // VH quirk: ?Plate2 becomes the constant plate2
 };
 
+// The largest max_command_actions a pack may ask for (the paper's packs use 3 and 4).
+inline constexpr int kMaxCommandActions = 4;
+
 struct LanguageConfig {
   std::string domain;
   std::vector<SalientActionRule> salient_actions;
@@ -59,7 +62,7 @@ struct LanguageConfig {
   std::string speaker_pronoun = "me";
   std::string listener_pronoun = "you";
 
-  int max_command_actions = 3;  // K
+  int max_command_actions = 3;  // K, at most kMaxCommandActions
   // Commands with more than this many actions may use at most this many
   // distinct (agent, action name) pairs (the reference checks n > 2 only).
   int max_action_types = 2;

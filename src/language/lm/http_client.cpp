@@ -194,6 +194,9 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
     char errbuf[CURL_ERROR_SIZE] = {0};
     CURL* h = lease.h;
     curl_easy_setopt(h, CURLOPT_URL, url.c_str());
+    // HTTP(S) only: a file:// (or any other) base URL is refused by libcurl.
+    curl_easy_setopt(h, CURLOPT_PROTOCOLS_STR, "http,https");
+    curl_easy_setopt(h, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
     curl_easy_setopt(h, CURLOPT_POST, 1L);
     curl_easy_setopt(h, CURLOPT_POSTFIELDS, body.data());
     curl_easy_setopt(h, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(body.size()));
