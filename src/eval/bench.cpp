@@ -200,11 +200,13 @@ std::string multimodal_model(const ExperimentOptions& e) {
   return env && *env ? env : "default";
 }
 
+}  // namespace
+
 // The embedded model trains (or loads from its cache) one model per prompt
 // block of few-shot examples, on first use and under a lock: score one
 // example under the speaker model's block, the literal listener's and the
 // empty prompt's.
-void warm_up(lm::LanguageModel& lm, const data::Dataset& ds) {
+void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds) {
   std::vector<lm::ScoreRequest> batch;
   try {
     auto add = [&](const std::vector<commands::FewShotExample>& examples) {
@@ -221,8 +223,6 @@ void warm_up(lm::LanguageModel& lm, const data::Dataset& ds) {
     // Only a warm-up: a pack without examples loads when it is first used.
   }
 }
-
-}  // namespace
 
 BenchReport run_bench(const BenchOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
@@ -258,7 +258,7 @@ BenchReport run_bench(const BenchOptions& opts) {
   // that is model loading, not a step of the first plan to hear an
   // instruction, so it happens before the plans start (their step times are
   // reported). Other backends are not called for it.
-  if (rep.lm.find("embedded") != std::string::npos) warm_up(*lm, ds0);
+  if (rep.lm.find("embedded") != std::string::npos) warm_up_language_model(*lm, ds0);
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);
   rep.qa_floor = assist::to_string(opts.experiment.qa_floor);
