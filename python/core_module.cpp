@@ -27,7 +27,10 @@
 
 #include "clips/clips.hpp"
 #include "data/dataset.hpp"
+#include "api/session_internals.hpp"
 #include "eval/bench.hpp"
+#include "eval/scenes.hpp"
+#include "render/render.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 
@@ -350,6 +353,19 @@ struct Event {
   bool utterance = false;
   std::string text;
 };
+
+// The state as `clips render` draws it, PNG-encoded.
+std::string scene_png(const clips::domains::Pack& pack, const clips::pddl::Task& task, const clips::pddl::State& s) {
+  switch (pack.spec().scene) {
+    case clips::domains::SceneKind::Grid:
+      return clips::render::encode_png(clips::render::render_png(clips::eval::dkg_scene(clips::domains::DkgWorld(task), s)));
+    case clips::domains::SceneKind::Cards:
+      return clips::render::encode_png(
+          clips::render::render_png(clips::eval::vh_scene(pack, clips::domains::VhWorld(task), s)));
+    case clips::domains::SceneKind::Text: break;
+  }
+  throw clips::InputError("the " + pack.name() + " pack's scene is text: there is no picture (print the session)");
+}
 
 struct PySession {
   Opener opener;
@@ -676,6 +692,17 @@ PYBIND11_MODULE(_core, m) {
       .def(
           "state", [](PySession& ps) { return engine(ps).state(); },
           "state() -> str\n\nThe current state, printable (an ASCII map for Doors-Keys-Gems).")
+      .def(
+          "scene_png",
+          [](PySession& ps) {
+            const clips::Session& s = engine(ps);
+            const std::string png = scene_png(clips::SessionInternals::pack(s), clips::SessionInternals::task(s),
+                                              clips::SessionInternals::state(s));
+            return py::bytes(png);
+          },
+          "scene_png() -> bytes\n\nThe current state drawn as a PNG image (the grid of Doors-Keys-Gems, the "
+          "fixtures of a card scene), as `clips render` draws it. A pack whose scene is text has no picture: "
+          "InputError (print the session instead).")
       .def("__str__", [](PySession& ps) { return engine(ps).state(); })
       .def("__repr__",
            [](PySession& ps) {

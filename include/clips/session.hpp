@@ -190,6 +190,7 @@ class Session {
 
  private:
   struct Impl;
+  friend struct SessionInternals;  // in-tree front ends that draw the state
   explicit Session(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

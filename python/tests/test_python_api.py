@@ -260,3 +260,16 @@ def test_ctrl_c_interrupts_run_plan(silent_lm):
     silent_lm.release()
     _core._join_abandoned()
     assert _core._abandoned_running() == 0
+
+
+def test_a_live_session_draws_its_scene_as_png_bytes():
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1)
+    before = s.scene_png()
+    assert isinstance(before, bytes) and before.startswith(b"\x89PNG\r\n\x1a\n") and len(before) > 1000
+    s.observe("(left human)")
+    after = s.scene_png()
+    assert after.startswith(b"\x89PNG") and after != before  # the human moved
+    # A text scene has no picture.
+    garden = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1)
+    with pytest.raises(clips_assist.InputError, match="scene is text"):
+        garden.scene_png()

@@ -2,6 +2,7 @@
 // Belief (inference/) for the posterior, assist::qmdp_decision / pibar_decision
 // for the assistant's choice.
 #include "clips/session.hpp"
+#include "api/session_internals.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -390,5 +391,9 @@ std::string Session::action_name(int action_id) const {
 std::string library_version() { return CLIPS_VERSION_STRING; }
 
 std::string data_directory() { return util::data_dir(); }
+
+const pddl::Task& SessionInternals::task(const Session& s) { return *s.impl_->task; }
+const pddl::State& SessionInternals::state(const Session& s) { return s.impl_->belief->state(); }
+const domains::Pack& SessionInternals::pack(const Session& s) { return *s.impl_->pack; }
 
 }  // namespace clips

@@ -34,11 +34,21 @@ void png_quiet(png_structp, png_const_charp) {}
 
 }  // namespace
 
-void write_png(const Image& image, const std::filesystem::path& path) {
+namespace {
+
+void append_bytes(png_structp png, png_bytep data, png_size_t n) {
+  auto* out = static_cast<std::string*>(png_get_io_ptr(png));
+  out->append(reinterpret_cast<const char*>(data), n);
+}
+void no_flush(png_structp) {}
+
+}  // namespace
+
+std::string encode_png(const Image& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
-    throw std::invalid_argument("write_png: image has no pixels or a wrong buffer size");
-  File f = open_file(path, "wb");
+    throw std::invalid_argument("encode_png: image has no pixels or a wrong buffer size");
+  std::string bytes;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, png_keep_error, png_quiet);
   if (!png) throw std::runtime_error("png_create_write_struct failed");
   png_infop info = png_create_info_struct(png);
@@ -46,9 +56,8 @@ void write_png(const Image& image, const std::filesystem::path& path) {
     png_structp* p; png_infop* i;
     ~Guard() { png_destroy_write_struct(p, i); }
   } guard{&png, &info};
-  if (setjmp(png_jmpbuf(png)))
-    throw std::runtime_error("libpng writing " + path.string() + ": " + png_error_message);
-  png_init_io(png, f.get());
+  if (setjmp(png_jmpbuf(png))) throw std::runtime_error("libpng: " + png_error_message);
+  png_set_write_fn(png, &bytes, append_bytes, no_flush);
   // Renderings are opaque: drop the alpha channel then (a quarter less data).
   bool opaque = true;
   for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4) opaque = image.rgba[i] == 0xFF;
@@ -65,7 +74,14 @@ void write_png(const Image& image, const std::filesystem::path& path) {
   for (int y = 0; y < image.height; ++y)
     png_write_row(png, &image.rgba[static_cast<std::size_t>(y) * image.width * 4]);
   png_write_end(png, nullptr);
-  if (std::fflush(f.get()) != 0) throw std::runtime_error("cannot write " + path.string());
+  return bytes;
+}
+
+void write_png(const Image& image, const std::filesystem::path& path) {
+  const std::string bytes = encode_png(image);
+  File f = open_file(path, "wb");
+  if (std::fwrite(bytes.data(), 1, bytes.size(), f.get()) != bytes.size() || std::fflush(f.get()) != 0)
+    throw std::runtime_error("cannot write " + path.string());
 }
 
 Image read_png(const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace clips::render {
@@ -34,6 +35,8 @@ struct Image {
 // Writes an 8-bit RGBA PNG. Uses fast zlib settings: frames are written often.
 // Throws std::runtime_error on I/O failure.
 void write_png(const Image& image, const std::filesystem::path& path);
+// The same PNG as bytes (for a caller that keeps the picture in memory).
+std::string encode_png(const Image& image);
 
 // Reads any PNG libpng understands, converted to 8-bit RGBA.
 Image read_png(const std::filesystem::path& path);
