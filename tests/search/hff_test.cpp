@@ -8,8 +8,8 @@
 
 #include "data/dataset.hpp"
 #include "heuristics/basic.hpp"
-#include "pddl/parser.hpp"
 #include "test_paths.hpp"
+#include "vault_task.hpp"
 
 using namespace clips;
 
@@ -139,35 +139,13 @@ TEST(HFF, CountsTheTurnsOfAFrozenAssistant) {
   EXPECT_EQ(plain.name(), "hff-plain");
 }
 
-namespace {
-
-// A vault behind a locked door; the key can be lost for good.
-const char* kVaultDomain = R"(
-(define (domain vault)
-  (:requirements :strips :negative-preconditions)
-  (:predicates (inside) (locked) (has-key) (key-here) (lost))
-  (:action take :precondition (and (key-here) (not (lost))) :effect (and (has-key) (not (key-here))))
-  (:action lose :precondition (has-key) :effect (and (not (has-key)) (lost)))
-  (:action unlock :precondition (and (has-key) (locked)) :effect (not (locked)))
-  (:action enter :precondition (not (locked)) :effect (inside)))
-)";
-const char* kVaultProblem = R"(
-(define (problem vault-1) (:domain vault)
-  (:init (locked) (key-here))
-  (:goal (inside)))
-)";
-
-}  // namespace
-
 // A negative precondition some action makes true is an atom of its own: the
 // locked door costs its key and its unlocking (h = h* = 3, where ignoring the
 // negation gives 1), and once the key is lost for good the goal is out of
 // reach (h = inf, where ignoring it still gives 1: A* would then search every
 // reachable state before giving up).
 TEST(HFF, NegativePreconditionsAreAtomsOfTheirOwn) {
-  auto d = std::make_shared<const pddl::Domain>(pddl::parse_domain(kVaultDomain, "<vault>"));
-  auto p = std::make_shared<const pddl::Problem>(pddl::parse_problem(*d, kVaultProblem, "<vault-1>"));
-  auto task = std::make_shared<const pddl::Task>(d, p);
+  auto task = clips::testing::vault_task();
   model::Specification spec(task, "(inside)", model::unit_profile());
   heuristics::FFHeuristic with, without(/*turns=*/true, /*negations=*/false);
   EXPECT_EQ(with.name(), "hff");
@@ -177,17 +155,11 @@ TEST(HFF, NegativePreconditionsAreAtomsOfTheirOwn) {
   without.prepare(spec, s0);
   EXPECT_DOUBLE_EQ(with.estimate(s0.data()), 3);
   EXPECT_DOUBLE_EQ(without.estimate(s0.data()), 1);
-  auto act = [&](const pddl::State& s, const std::string& name) {
-    for (pddl::ActionId a : task->applicable_actions(s))
-      if (task->action_name(a) == name) return task->apply(s, a);
-    ADD_FAILURE() << name << " not applicable";
-    return s;
-  };
-  const pddl::State held = act(s0, "(take)");
+  const pddl::State held = clips::testing::after(*task, s0, {"(take)"});
   EXPECT_DOUBLE_EQ(with.estimate(held.data()), 2);
-  const pddl::State lost = act(held, "(lose)");
+  const pddl::State lost = clips::testing::after(*task, held, {"(lose)"});
   EXPECT_EQ(with.estimate(lost.data()), kInf);
   EXPECT_DOUBLE_EQ(without.estimate(lost.data()), 1);
-  const pddl::State open = act(held, "(unlock)");
+  const pddl::State open = clips::testing::after(*task, held, {"(unlock)"});
   EXPECT_DOUBLE_EQ(with.estimate(open.data()), 1);
 }

@@ -19,6 +19,7 @@
 #include "pddl/parser.hpp"
 #include "search/astar.hpp"
 #include "test_paths.hpp"
+#include "vault_task.hpp"
 
 using namespace clips;
 
@@ -155,16 +156,7 @@ TEST(LmCut, MutexGoalsAreDeadEnds) {
 // their own, LM-cut sees the unlock the door needs (3 = h*) and the dead end
 // once the key is gone (inf); without, it sees neither (1 and 1).
 TEST(LmCut, NegativePreconditionsFindTheLockedDoor) {
-  auto task = task_of(R"(
-(define (domain vault)
-  (:requirements :strips :negative-preconditions)
-  (:predicates (inside) (locked) (has-key) (key-here) (lost))
-  (:action take :precondition (and (key-here) (not (lost))) :effect (and (has-key) (not (key-here))))
-  (:action lose :precondition (has-key) :effect (and (not (has-key)) (lost)))
-  (:action unlock :precondition (and (has-key) (locked)) :effect (not (locked)))
-  (:action enter :precondition (not (locked)) :effect (inside)))
-)",
-                      "(define (problem vault-1) (:domain vault) (:init (locked) (key-here)) (:goal (inside)))");
+  auto task = clips::testing::vault_task();
   model::Specification spec(task, "(inside)", model::unit_profile());
   const pddl::State s0 = task->initial_state();
   heuristics::LmCutHeuristic with, without(/*turns=*/true, /*negations=*/false);
@@ -174,13 +166,7 @@ TEST(LmCut, NegativePreconditionsFindTheLockedDoor) {
   EXPECT_DOUBLE_EQ(with.estimate(s0.data()), 3);
   EXPECT_DOUBLE_EQ(optimal_cost(spec, s0), 3);
   EXPECT_DOUBLE_EQ(without.estimate(s0.data()), 1);
-  pddl::State lost = s0;
-  for (const char* name : {"(take)", "(lose)"})
-    for (pddl::ActionId a : task->applicable_actions(lost))
-      if (task->action_name(a) == name) {
-        lost = task->apply(lost, a);
-        break;
-      }
+  const pddl::State lost = clips::testing::after(*task, s0, {"(take)", "(lose)"});
   EXPECT_EQ(with.estimate(lost.data()), model::kInf);
   EXPECT_EQ(optimal_cost(spec, lost), model::kInf);
   EXPECT_DOUBLE_EQ(without.estimate(lost.data()), 1);
