@@ -14,7 +14,7 @@
 # parameterised tests are named Instance/Suite.Test/Param.
 # A test missing here that needs the dataset would skip under `ctest -L unit`.
 
-set(CLIPS_DATASET_TESTS_app "CliPlan.RunTimeLimitStopsRtaaAndAstar:CliPlan.JsonReportsTheTimeLimitStatus:BenchFilesTest.PaperColumnBesideThePapersDataset:BenchFilesTest.ACopyWithOtherProblemsIsNotThePapers:CliObservations.OnThePapersDataset")
+set(CLIPS_DATASET_TESTS_app "CliPlan.RunTimeLimitStopsRtaaAndAstar:CliPlan.WeightedSearchFindsAPlanForEveryGem:CliPlan.JsonReportsTheTimeLimitStatus:BenchFilesTest.PaperColumnBesideThePapersDataset:BenchFilesTest.ACopyWithOtherProblemsIsNotThePapers:CliObservations.OnThePapersDataset")
 set(CLIPS_DATASET_TESTS_api "Session.ReplayMatchesClipsInferOnThePapersDataset")
 set(CLIPS_DATASET_TESTS_commands "FewShotFile.SharedReferenceFileLoadsAndAgrees")
 set(CLIPS_DATASET_TESTS_data "DatasetInput.*Vh*:DatasetInput.SharedDatasetsStillValidate")

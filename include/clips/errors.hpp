@@ -10,6 +10,8 @@
 //                                   false in the current state (an InputError)
 //   clips::LanguageModelError       the language model failed (unreachable
 //                                   server, malformed reply)
+//   clips::LimitError               a budget stopped the work: a time limit,
+//                                   or memory refused before it ran out
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +35,16 @@ class InputError : public std::runtime_error {
  public:
   InputError(const SourceLoc& loc, const std::string& what);
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
+};
+
+class LimitError : public std::runtime_error {
+ public:
+  enum class Kind { Time, Memory };
+  LimitError(Kind kind, const std::string& what) : std::runtime_error(what), kind_(kind) {}
+  Kind kind() const noexcept { return kind_; }
+
+ private:
+  Kind kind_;
 };
 
 }  // namespace clips

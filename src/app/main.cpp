@@ -164,6 +164,8 @@ int main(int argc, char** argv) {
     return kExitUsage;
   } catch (const clips::InputError& e) {
     return fail(kExitInput, e.what());
+  } catch (const clips::LimitError& e) {
+    return fail(e.kind() == clips::LimitError::Kind::Time ? kExitLimit : kExitOutOfMemory, e.what());
   } catch (const clips::lm::LmError& e) {
     return fail(kExitLanguageModel, e.what());
   } catch (const clips::eval::MultimodalError& e) {

@@ -240,14 +240,14 @@ void check_utterance(const std::string& text, const SourceLoc& loc) { check_utte
 
 std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
                                                  std::shared_ptr<const pddl::Domain> domain,
-                                                 const std::string& problem_path, int64_t max_ground_actions) {
+                                                 const std::string& problem_path, const GroundingLimits& limits) {
   const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
   // A domain as parsed (not through load_domain_with_pack) gets the pack's additions here.
   domain = domains::prepare_domain(pack.spec(), std::move(domain));
   auto prob = std::make_shared<pddl::Problem>(pddl::load_problem(*domain, problem_path, with_goal));
   domains::prepare_problem(pack.spec(), *domain, *prob);
   pddl::GroundingOptions go = pack.spec().grounding;
-  go.max_ground_actions = max_ground_actions;
+  limits.apply(go);
   auto t = std::make_shared<const pddl::Task>(std::move(domain), std::move(prob), go);
   pack.check_problem(*t, problem_path);
   return t;
@@ -256,13 +256,13 @@ std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
 std::shared_ptr<const pddl::Task> ground_problem_text(const domains::Pack& pack,
                                                       std::shared_ptr<const pddl::Domain> domain,
                                                       const std::string& problem_text, const std::string& source,
-                                                      int64_t max_ground_actions) {
+                                                      const GroundingLimits& limits) {
   const bool with_goal = pack.spec().goals.source == domains::GoalSource::ProblemGoal;
   domain = domains::prepare_domain(pack.spec(), std::move(domain));
   auto prob = std::make_shared<pddl::Problem>(pddl::parse_problem(*domain, problem_text, source, with_goal));
   domains::prepare_problem(pack.spec(), *domain, *prob);
   pddl::GroundingOptions go = pack.spec().grounding;
-  go.max_ground_actions = max_ground_actions;
+  limits.apply(go);
   auto t = std::make_shared<const pddl::Task>(std::move(domain), std::move(prob), go);
   pack.check_problem(*t, source);
   return t;
@@ -525,7 +525,7 @@ std::shared_ptr<const pddl::Task> Dataset::task(const std::string& problem_id) c
   // A failure leaves the slot empty: the next caller tries again (and fails
   // with the same error).
   if (debug_load()) std::fprintf(stderr, "dataset: grounding problem %s\n", problem_id.c_str());
-  auto t = ground_problem(*pack_, domain_, problem_path(problem_id), max_ground_actions_);
+  auto t = ground_problem(*pack_, domain_, problem_path(problem_id), grounding_limits_);
   slot->task = t;
   return t;
 }

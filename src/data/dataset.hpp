@@ -16,6 +16,7 @@
 // utterance files, a missing problem file) does not stop the load: the plan is
 // set aside with its error (broken_plans()), which is raised only when that
 // plan is asked for, so every other plan stays usable.
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -28,6 +29,21 @@
 #include "pddl/task.hpp"
 
 namespace clips::data {
+
+// What a caller bounds when a problem is grounded: the number of ground
+// actions, and a wall-clock deadline (pddl::GroundingOptions).
+struct GroundingLimits {
+  int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions;
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  std::string deadline_label = "time limit";
+  GroundingLimits() = default;
+  GroundingLimits(int64_t max_actions) : max_ground_actions(max_actions) {}  // NOLINT: a size alone converts
+  void apply(pddl::GroundingOptions& o) const {
+    o.max_ground_actions = max_ground_actions;
+    o.deadline = deadline;
+    o.deadline_label = deadline_label;
+  }
+};
 
 struct PlanRecord {
   std::string id;          // file stem, e.g. "2.1.keys" or "1.1.stew_chicken"
@@ -87,9 +103,9 @@ class Dataset {
   // The problems of problems/*.pddl (file stems), with or without plans, in
   // the plans' order (numeric id, letter suffix, then name).
   const std::vector<std::string>& problem_ids() const { return problem_ids_; }
-  // Raises or lowers GroundingOptions::max_ground_actions for tasks grounded
-  // after the call (clips plan --max-ground-actions).
-  void set_max_ground_actions(int64_t n) { max_ground_actions_ = n; }
+  // The grounding limits (size, deadline) of tasks grounded after the call
+  // (clips plan --max-ground-actions, --max-seconds).
+  void set_grounding_limits(const GroundingLimits& l) { grounding_limits_ = l; }
 
   // The candidate goals of a plan's problem, in the paper's order, and the
   // index of the plan's true goal among them.
@@ -112,7 +128,7 @@ class Dataset {
   std::map<std::string, std::vector<std::string>> goal_sets_;   // problem -> labels
   std::map<std::string, StimulusInfo> stimuli_;
   std::string stimuli_error_;  // a malformed stimuli.json: raised by stimulus()
-  int64_t max_ground_actions_ = pddl::GroundingOptions::kDefaultMaxGroundActions;
+  GroundingLimits grounding_limits_;
   // Grounded tasks, one slot per problem, each with its own lock. Shared by
   // copies of the Dataset (the tasks are immutable).
   struct TaskSlot {
@@ -155,13 +171,13 @@ void check_utterance(const std::string& text, const SourceLoc& loc);
 std::shared_ptr<const pddl::Task> ground_problem(const domains::Pack& pack,
                                                  std::shared_ptr<const pddl::Domain> domain,
                                                  const std::string& problem_path,
-                                                 int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions);
+                                                 const GroundingLimits& limits = {});
 // The same for a problem given as PDDL text; `source` names it in errors
 // ("problem:3:5: ...").
 std::shared_ptr<const pddl::Task> ground_problem_text(const domains::Pack& pack,
                                                       std::shared_ptr<const pddl::Domain> domain,
                                                       const std::string& problem_text, const std::string& source,
-                                                      int64_t max_ground_actions = pddl::GroundingOptions::kDefaultMaxGroundActions);
+                                                      const GroundingLimits& limits = {});
 // For a domain and problem given as text rather than as files. The pack of
 // a domain: parsed from `pack_json` (errors name `source`) and checked
 // against the domain, or, when it is empty, found by the domain's name (the

@@ -2,13 +2,16 @@
 // the compilation of conditions into expression pools, which grounding shares
 // with Task::compile.
 #include <algorithm>
+#include <chrono>
 #include <limits>
+#include <optional>
 #include <set>
 #include <string>
 
 #include "pddl/parser.hpp"
 #include "pddl/task.hpp"
 #include "pddl/task_inline.hpp"
+#include "util/memory.hpp"
 
 namespace clips::pddl {
 
@@ -45,6 +48,11 @@ class ConditionCompiler {
   virtual ~ConditionCompiler() = default;
 
  protected:
+  // Every kTupleCheckInterval tuples of an enumeration (`visited` so far in
+  // it), the grounder checks its budgets; a finished task's compiler does not.
+  static constexpr uint64_t kTupleCheckInterval = 4096;
+  virtual void on_tuples(uint64_t /*visited*/) {}
+
   // The bit of a dynamic ground atom, -1 when it is folded (static). A finished
   // task answers from its tables; the Grounder interns new ones.
   virtual int atom_bit(PredId pred, const std::vector<ObjectId>& args) {
@@ -75,9 +83,10 @@ class ConditionCompiler {
     }
     std::vector<size_t> idx(types.size(), 0);
     std::vector<ObjectId> tuple(types.size());
-    for (;;) {
+    for (uint64_t visited = 1;; ++visited) {
       for (size_t i = 0; i < types.size(); ++i) tuple[i] = doms[i][idx[i]];
       f(tuple);
+      if (visited % kTupleCheckInterval == 0) on_tuples(visited);
       // odometer increment: last position fastest unless first_fastest
       size_t n = types.size();
       size_t k = 0;
@@ -351,7 +360,10 @@ class ConditionCompiler {
 // change; pass 2 compiles everything with the rest folded as static.
 class Grounder : public ConditionCompiler {
  public:
-  explicit Grounder(Task& t) : ConditionCompiler(t, t.pool_), t_(t) {}
+  explicit Grounder(Task& t) : ConditionCompiler(t, t.pool_), t_(t) {
+    if (t.opts_.check_memory)
+      if (auto h = util::memory_headroom()) headroom_ = *h;
+  }
 
   void run() {
     eval_init();
@@ -626,9 +638,44 @@ class Grounder : public ConditionCompiler {
         ground_one(si, {});
         continue;
       }
+      schema_ = si;
+      schema_tuples_ = 1;
+      for (TypeId ty : s.param_types) schema_tuples_ = saturating_mul(schema_tuples_, objects_of(ty).size());
+      actions_before_schema_ = static_cast<int64_t>(t_.actions_.size());
       for_each_tuple(s.param_types, [&](const std::vector<ObjectId>& args) { ground_one(si, args); },
                      t_.opts_.first_param_fastest);
+      schema_ = -1;
     }
+  }
+
+  // The budgets, checked while enumerating: the deadline, and memory. For
+  // memory, the ground actions made so far, and those the current schema is
+  // on course to make (its kept share of the tuples visited, projected over
+  // all its tuples once a fiftieth of them are seen), must fit in the
+  // headroom the process had when grounding began.
+  void on_tuples(uint64_t visited) override {
+    const GroundingOptions& o = t_.opts_;
+    if (o.deadline != std::chrono::steady_clock::time_point::max() && std::chrono::steady_clock::now() >= o.deadline)
+      throw LimitError(LimitError::Kind::Time,
+                       printable(o.deadline_label + " reached while grounding" +
+                                 (schema_ >= 0 ? " action '" + d_.actions[schema_].name + "'" : std::string()) + " (" +
+                                 std::to_string(t_.actions_.size()) + " ground actions made so far)"));
+    if (!headroom_ || schema_ < 0) return;
+    const int64_t made = static_cast<int64_t>(t_.actions_.size());
+    int64_t projected = made;
+    if (static_cast<int64_t>(visited) * 50 >= schema_tuples_) {
+      const double kept = static_cast<double>(made - actions_before_schema_) / static_cast<double>(visited);
+      projected = actions_before_schema_ + static_cast<int64_t>(kept * static_cast<double>(schema_tuples_));
+    }
+    const int64_t need = saturating_mul(projected, GroundingOptions::kBytesPerGroundAction);
+    if (need <= headroom_->bytes) return;
+    throw LimitError(LimitError::Kind::Memory,
+                     printable("action '" + d_.actions[schema_].name + "' is on course to about " +
+                               std::to_string(projected) + " ground actions (" + std::to_string(made) +
+                               " made so far), about " + util::format_bytes(need) + ", but only " +
+                               util::format_bytes(headroom_->bytes) + " is left (" + headroom_->bound +
+                               "): stopped before memory ran out; lower the number of objects, or add static "
+                               "preconditions that rule out parameter combinations"));
   }
 
   // ------------------------------------------------------------ size limits
@@ -772,6 +819,9 @@ class Grounder : public ConditionCompiler {
 
   Task& t_;
   int pass_ = 1;
+  std::optional<util::MemoryHeadroom> headroom_;
+  int schema_ = -1;  // the schema being grounded, -1 between schemas
+  int64_t schema_tuples_ = 0, actions_before_schema_ = 0;
   std::map<std::vector<int>, InitValue> init_;
   std::map<std::vector<int>, SourceLoc> init_locs_;  // where each initial value was given
   std::set<std::vector<int>> modified_atoms_, modified_fluents_;

@@ -21,7 +21,9 @@
 // them, because callers set them on copies of states (e.g. `frozen` in the
 // assistance simulations). Before it materialises the ground actions of a
 // schema, the grounder bounds their number and refuses (InputError naming the
-// action and the count) above GroundingOptions::max_ground_actions.
+// action and the count) above GroundingOptions::max_ground_actions. While it
+// enumerates, it stops at GroundingOptions::deadline and before memory runs
+// out (LimitError, naming the action and the counts).
 // Runtime queries live in task.cpp, successor generation in successor.cpp.
 //
 // Threads: a Task is immutable once its constructor returns. Every const
@@ -30,6 +32,7 @@
 // at once on one shared Task; none of them writes to the task. A
 // CompiledCondition is likewise immutable and shareable; it must not outlive
 // its Task.
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -53,9 +56,19 @@ struct GroundingOptions {
   bool objects_by_name = false;             // order objects by name instead of declaration
   // Refuse to ground an action schema whose ground actions may number more than
   // this (an upper bound from the parameters' object counts after pruning by
-  // static unary preconditions). About 0.5 kB each: the default is ~1 GB.
+  // static unary preconditions). About 1 kB each: the default is ~2 GB.
   int64_t max_ground_actions = kDefaultMaxGroundActions;
   static constexpr int64_t kDefaultMaxGroundActions = 2'000'000;
+  // Grounding past `deadline` throws LimitError(Time) with a message starting
+  // with `deadline_label`.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  std::string deadline_label = "time limit";
+  // Refuse (LimitError(Memory)) a grounding on course to need more memory than
+  // the process has left (util::memory_headroom), at kBytesPerGroundAction
+  // each: measured 1.0-1.1 kB per ground action of a 3-parameter schema,
+  // task and heuristic tables included.
+  bool check_memory = true;
+  static constexpr int64_t kBytesPerGroundAction = 1024;
 };
 
 struct BitMatrix {

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
+
+#include "util/memory.hpp"
 
 namespace clips::search {
 
@@ -12,6 +15,7 @@ std::string to_string(SearchStatus s) {
     case SearchStatus::Failure: return "failure";
     case SearchStatus::MaxNodes: return "max_nodes";
     case SearchStatus::MaxTime: return "max_time";
+    case SearchStatus::MaxMemory: return "max_memory";
   }
   return "?";
 }
@@ -78,6 +82,7 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
   // heuristic gets it too, for estimates that are long by themselves.
   const clock::time_point deadline = effective_deadline(opts, t0);
   const bool timed = deadline != clock::time_point::max();
+  const bool memory_capped = opts.max_memory_bytes != std::numeric_limits<int64_t>::max();
   std::optional<heuristics::ScopedDeadline> heur_deadline;
   if (timed) heur_deadline.emplace(heur, deadline);
 
@@ -116,6 +121,9 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
     if (r.expanded >= opts.max_nodes) return finish(SearchStatus::MaxNodes, top.node);
     if (timed && ((r.expanded & 255) == 0 || heur.timed_out()) && clock::now() >= deadline)
       return finish(SearchStatus::MaxTime, top.node);
+    if (memory_capped && r.expanded % SearchOptions::kMemoryCheckInterval == 0 &&
+        util::resident_bytes() > opts.max_memory_bytes)
+      return finish(SearchStatus::MaxMemory, top.node);
     if (opts.fail_fast && top.f == model::kInf) return finish(SearchStatus::Failure, top.node);
     pop();
     const int id = top.node;
@@ -141,6 +149,11 @@ const SearchResult& astar(const model::Specification& spec, heuristics::Heuristi
         push(cid, true);
         if (timed && ((r.generated & 63) == 0 || heur.timed_out()) && clock::now() >= deadline)
           return finish(SearchStatus::MaxTime, id);
+        // Wide tasks generate thousands of children per expansion: also read
+        // the memory every kMemoryCheckInterval * 16 generated nodes.
+        if (memory_capped && r.generated % (SearchOptions::kMemoryCheckInterval * 16) == 0 &&
+            util::resident_bytes() > opts.max_memory_bytes)
+          return finish(SearchStatus::MaxMemory, id);
         continue;
       }
       SearchNode& c = nodes_ref[cid];

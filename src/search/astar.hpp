@@ -19,7 +19,7 @@
 
 namespace clips::search {
 
-enum class SearchStatus { Success, Failure, MaxNodes, MaxTime };
+enum class SearchStatus { Success, Failure, MaxNodes, MaxTime, MaxMemory };
 std::string to_string(SearchStatus s);
 
 struct SearchOptions {
@@ -28,6 +28,11 @@ struct SearchOptions {
   // Wall-clock deadline shared by several searches (e.g. a whole RTAA* run of
   // `clips plan`): reaching it ends a search with MaxTime, like max_seconds.
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  // The process's resident memory (util::resident_bytes) above this ends a
+  // search with MaxMemory; read every kMemoryCheckInterval expansions (A*:
+  // and every 16 times as many generated nodes).
+  int64_t max_memory_bytes = std::numeric_limits<int64_t>::max();
+  static constexpr size_t kMemoryCheckInterval = 4096;
   bool fail_fast = true;     // stop when the best frontier node has f = +inf
   bool prune = true;         // ask the heuristic which actions to expand
   double h_weight = 1.0;     // f = g + w*h (w > 1: weighted A*)

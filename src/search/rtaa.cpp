@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include "util/memory.hpp"
 
 namespace clips::search {
 
@@ -145,6 +148,12 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
       terminal = id;
       break;
     }
+    if (opts.max_memory_bytes != std::numeric_limits<int64_t>::max() &&
+        expanded % SearchOptions::kMemoryCheckInterval == 0 && util::resident_bytes() > opts.max_memory_bytes) {
+      status = SearchStatus::MaxMemory;
+      terminal = id;
+      break;
+    }
     if (opts.fail_fast && top.f == kInf) {
       terminal = id;
       break;
@@ -276,7 +285,8 @@ RefineStats Policy::refine_successors(const pddl::State& s, const SearchOptions&
       ++st.searches;
       SearchStatus status;
       st.expanded += search_and_update(cid, opts, prune, *ws, status);
-      if (status == SearchStatus::MaxNodes || status == SearchStatus::MaxTime) ++st.stopped_by_budget;
+      if (status == SearchStatus::MaxNodes || status == SearchStatus::MaxTime || status == SearchStatus::MaxMemory)
+        ++st.stopped_by_budget;
     }
     best = std::max(best, -spec_->cost(a) + value(child.data()));
   }

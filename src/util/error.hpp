@@ -20,4 +20,16 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
+// A budget stopped the work before it finished: a wall-clock limit, or memory
+// that would run out (refused before it did). Not a fault in the input.
+class LimitError : public std::runtime_error {
+ public:
+  enum class Kind { Time, Memory };
+  LimitError(Kind kind, const std::string& what) : std::runtime_error(what), kind_(kind) {}
+  Kind kind() const noexcept { return kind_; }
+
+ private:
+  Kind kind_;
+};
+
 }  // namespace clips

@@ -105,6 +105,23 @@ TEST(CliPlan, RunTimeLimitStopsRtaaAndAstar) {
   }
 }
 
+// Every gem of problem 2 for the human: optimal A* stops at its node budget
+// (16.7 million expansions) and says how to get a plan anyway; that advice
+// works: weighted A* with h_FF finds one within a second.
+TEST(CliPlan, WeightedSearchFindsAPlanForEveryGem) {
+  if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not found";
+  const std::string base = clips_binary() + " plan --dataset " + clips::paths::dkg_dataset() +
+                           " --problem 2 --goal '(forall (?g - gem) (has human ?g))'";
+  auto stopped = run(base + " --max-nodes 20000");
+  EXPECT_EQ(stopped.status, 5) << stopped.out;
+  EXPECT_TRUE(contains(stopped.out, "try --heuristic hff --weight 5")) << stopped.out;
+  auto r = run(base + " --heuristic hff --weight 5 --json");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "\"status\":\"success\"")) << r.out;
+  EXPECT_TRUE(contains(r.out, "\"weight\":5")) << r.out;
+  EXPECT_TRUE(contains(r.out, "(pickup human gem1)") && contains(r.out, "(pickup human gem4)")) << r.out;
+}
+
 TEST(CliPlan, JsonReportsTheTimeLimitStatus) {
   if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not found";
   auto r = run(clips_binary() + " plan --dataset " + clips::paths::dkg_dataset() +

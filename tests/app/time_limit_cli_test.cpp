@@ -22,10 +22,10 @@ using testing::run;
 struct WideFiles {
   testing::TempDir dir{"wide"};
   std::string domain = (dir.path / "domain.pddl").string();
-  std::string problem = (dir.path / "p15.pddl").string();
-  WideFiles() {
+  std::string problem = (dir.path / "p.pddl").string();
+  explicit WideFiles(int objects = 15, int links = 5) {
     std::ofstream(domain) << clips::testing::wide_domain_pddl();
-    std::ofstream(problem) << clips::testing::wide_problem_pddl(15, 5);
+    std::ofstream(problem) << clips::testing::wide_problem_pddl(objects, links);
   }
 };
 
@@ -73,6 +73,54 @@ TEST(CliPlanLimits, UnreachableGoalSaysNoPlanExists) {
   EXPECT_TRUE(contains(r.out, "status failure")) << r.out;
   EXPECT_TRUE(contains(r.out, "no plan exists")) << r.out;
   EXPECT_FALSE(contains(r.out, "limit")) << r.out;
+}
+
+// Grounding is part of the run: with 120 objects the wide action has 1.7
+// million ground actions (about 15 s to ground here), and a raised
+// --max-ground-actions lets it through; --max-seconds still holds.
+TEST(CliPlanLimits, GroundingCountsInMaxSeconds) {
+  WideFiles f(120, 1);
+  testing::RunResult r;
+  const double secs = timed_run("--domain " + f.domain + " --problem " + f.problem +
+                                    " --max-ground-actions 100000000 --max-seconds 1",
+                                r);
+  EXPECT_LT(secs, 10) << r.out;
+  EXPECT_EQ(r.status, 5) << r.out;
+  EXPECT_TRUE(contains(r.out, "--max-seconds limit of 1 s reached while grounding action 'join'")) << r.out;
+}
+
+// 8 million ground actions need about 8 GB: under a 1.5 GB address-space
+// limit grounding stops early, saying why, instead of dying of bad_alloc
+// (exit 7, memory) once the memory is gone.
+TEST(CliPlanLimits, GroundingStopsBeforeMemoryRunsOut) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "sanitizers reserve more address space than the limit";
+#endif
+  WideFiles f(200, 1);
+  testing::RunResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  r = run("ulimit -v 1500000; " + clips_binary() + " plan --domain " + f.domain + " --problem " + f.problem +
+          " --max-ground-actions 100000000");
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_LT(secs, 30) << r.out;
+  EXPECT_EQ(r.status, 7) << r.out;
+  EXPECT_TRUE(contains(r.out, "action 'join' is on course to about")) << r.out;
+  EXPECT_TRUE(contains(r.out, "address-space limit")) << r.out;
+  EXPECT_TRUE(contains(r.out, "stopped before memory ran out")) << r.out;
+}
+
+// A blind search on a 30-object wide task holds millions of states within
+// seconds: --max-memory ends it with its own status, not "no plan exists".
+TEST(CliPlanLimits, MaxMemoryStopsTheSearch) {
+  WideFiles f(30, 6);
+  testing::RunResult r;
+  const double secs =
+      timed_run("--domain " + f.domain + " --problem " + f.problem + " --heuristic blind --max-memory 200 --json", r);
+  EXPECT_LT(secs, 60) << r.out;
+  EXPECT_EQ(r.status, 5) << r.out;
+  EXPECT_TRUE(contains(r.out, "\"status\":\"max_memory\"")) << r.out;
+  EXPECT_TRUE(contains(r.out, "memory limit of 200 MiB reached")) << r.out;
+  EXPECT_FALSE(contains(r.out, "no plan exists")) << r.out;
 }
 
 }  // namespace
