@@ -5,7 +5,6 @@
 #include <limits>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 #include "heuristics/basic.hpp"
 #include "model/spec.hpp"
@@ -180,6 +179,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
   const auto& acts = d.candidates;
   std::vector<double>& qa = d.values;
   qa.assign(acts.size(), 0.0);
+  std::vector<std::vector<double>> floored(live.size(), std::vector<double>(acts.size()));  // per live hypothesis
   for (size_t k = 0; k < live.size(); ++k) {
     const Hypothesis* h = live[k];
     const auto& qs = qvals[k];
@@ -189,6 +189,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       const double floor = -((setup.horizon - t) * wait_cost + spec.cost(acts[i]));
       const double q = setup.qa_floor == QaFloor::Horizon ? std::max(qs[i].q, floor)
                                                            : (qs[i].q == -kInf ? floor : qs[i].q);
+      floored[k][i] = q;
       qa[i] += h->weight * q;
     }
   }
@@ -208,9 +209,20 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
     for (ActionId a : acts)
       if (const double c = top->policy->spec().cost(a); c > 0) cheapest = std::min(cheapest, c);
     const double tol = setup.tie_tolerance * (cheapest < kInf ? cheapest : 1.0);
+    // A tie is a choice that matters little whichever goal is true: the
+    // expected value within tol of the best, and also the belief-weighted
+    // mean of |Q_h(a) - Q_h(best)| (values that only average out, one goal's
+    // gain against another's loss, are not a tie).
+    double live_weight = 0;
+    for (const Hypothesis* h : live) live_weight += h->weight;
+    auto spread = [&](size_t i) {
+      double v = 0;
+      for (size_t k = 0; k < live.size(); ++k) v += live[k]->weight * std::abs(floored[k][i] - floored[k][best]);
+      return live_weight > 0 ? v / live_weight : 0.0;
+    };
     std::vector<size_t> tied;
     for (size_t i = 0; i < acts.size(); ++i)
-      if (qa[i] >= qa[best] - tol) tied.push_back(i);
+      if (qa[i] >= qa[best] - tol && spread(i) <= tol) tied.push_back(i);
     if (tied.size() > 1) {
       const RequestMatcher match(setup);
       // Request scores closer than this are noise of the sampled

@@ -5,6 +5,8 @@
 // action whatever was asked.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
 #include "data/dataset.hpp"
@@ -91,4 +93,54 @@ TEST(RequestRule, ThePapersRuleIgnoresTheRequestInATie) {
   Garden g;
   EXPECT_EQ(g.decide(assist::AssistRule::Paper, {"(take bot basil1 barn)"}, {}),
             g.decide(assist::AssistRule::Paper, {"(take bot tomato1 shed)"}, {}));
+}
+
+// Two goals at even odds, the tomato behind the shed and the basil in the
+// barn: walking to either building is one goal's gain and the other's loss.
+// Their expected values are equal, but that is not a tie (the choice matters
+// whichever goal is true), so the request does not decide it. (In mDKG 17.1
+// such an averaged tie made the assistant wait where unlocking was right.)
+TEST(RequestRule, ValuesThatOnlyAverageOutAreNotATie) {
+  Garden g;
+  const pddl::State start = g.task->apply(g.task->initial_state(), g.act("(idle gardener)"));
+  // The gardener's walks cost 3, the bot's 1: fetching the wanted seed is
+  // the bot's best move, the other building its worst.
+  model::CostProfile costs = model::unit_profile();
+  costs.costs[{"gardener", "move"}] = 3;
+  auto policy_for = [&](const std::string& goal) {
+    auto spec = std::make_shared<model::Specification>(g.task, goal, costs);
+    auto p = std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
+    p->refine(start, search::SearchOptions{});
+    return p;
+  };
+  auto request = std::make_shared<assist::Request>();
+  assist::RequestedCommand c;
+  c.probability = 1;
+  c.text = "fetch the basil";
+  c.assistant_part.push_back(g.act("(take bot basil1 barn)"));
+  request->push_back(c);
+  assist::AssistSetup setup;
+  setup.task = g.task;
+  setup.set_turns(g.dp.pack->roles());
+  setup.start = start;
+  setup.observed_steps = 1;
+  setup.horizon = 30;
+  assist::set_request_rule(setup, assist::AssistRule::Request, g.dp.pack->language());
+
+  std::vector<assist::Hypothesis> split = {{0.5, policy_for("(planted tomato1)"), request},
+                                           {0.5, policy_for("(planted basil1)"), request}};
+  const assist::Decision d = assist::qmdp_decision(setup, split, start, 1);
+  const auto shed = std::find(d.candidates.begin(), d.candidates.end(), g.act("(move bot bed shed)"));
+  const auto barn = std::find(d.candidates.begin(), d.candidates.end(), g.act("(move bot bed barn)"));
+  ASSERT_NE(shed, d.candidates.end());
+  ASSERT_NE(barn, d.candidates.end());
+  EXPECT_NEAR(d.values[shed - d.candidates.begin()], d.values[barn - d.candidates.begin()], 1e-9);
+  EXPECT_TRUE(d.request_scores.empty()) << "an averaged tie was broken by the request";
+  EXPECT_FALSE(d.broke_tie);
+
+  // The same request with one goal that needs both buildings: a true tie, the request breaks it.
+  std::vector<assist::Hypothesis> one = {{1.0, policy_for("(and (planted tomato1) (planted basil1))"), request}};
+  const assist::Decision e = assist::qmdp_decision(setup, one, start, 1);
+  EXPECT_EQ(e.request_scores.size(), e.candidates.size());
+  EXPECT_EQ(g.task->action_name(e.action), "(move bot bed barn)");
 }
