@@ -10,6 +10,10 @@
 //                                   false in the current state (an InputError)
 //   clips::LanguageModelError       the language model failed (unreachable
 //                                   server, malformed reply)
+//   clips::TimeLimitError           a call's wall-clock limit (CallLimits)
+//                                   passed; the session is as before the call
+//   clips::CancelledError           a call was cancelled (CallLimits); the
+//                                   session is as before the call
 #include <stdexcept>
 #include <string>
 
@@ -54,6 +58,20 @@ class InapplicableActionError : public InputError {
 class LanguageModelError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// A call stopped by its CallLimits (clips/types.hpp) before it was done.
+class CallStoppedError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+class TimeLimitError : public CallStoppedError {
+ public:
+  using CallStoppedError::CallStoppedError;
+};
+class CancelledError : public CallStoppedError {
+ public:
+  using CallStoppedError::CallStoppedError;
 };
 
 }  // namespace clips
