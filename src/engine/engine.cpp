@@ -1,4 +1,5 @@
 #include "engine/engine.hpp"
+#include "engine/hypotheses.hpp"
 #include "engine/runs.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -612,10 +614,8 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
   setup.refine_options.max_seconds = m.options.search_seconds;
   setup.refine_options.deadline = b.deadline();
   // The hypotheses with copies of their policies: deciding never changes the belief.
-  std::vector<assist::Hypothesis> hyps;
-  for (size_t h = 0; h < post.hypotheses.size(); ++h)
-    hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief->policies()[h]), nullptr});
-  if (method != Method::ActionOnly) assist::attach_requests(hyps, assist::last_requests(task, m.records, hyps.size()));
+  std::vector<assist::Hypothesis> hyps = assistant_hypotheses(
+      std::as_const(*belief), post, requests_for(task, m.records, post.hypotheses.size(), mod));
   // The decision's model timestep; past the horizon the floor counts one wait.
   const int t = std::min(belief->t() + 1, setup.horizon - 1);
   // The refinements qmdp_decision / pibar_decision would make, here, so that
