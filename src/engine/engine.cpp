@@ -246,6 +246,27 @@ Problem text_problem(const std::string& domain_pddl, const std::string& problem_
   return s;
 }
 
+Problem generated_problem(const std::string& domain_dir, const domains::GenerateParams& params, uint64_t seed,
+                          int attempts) {
+  const fs::path dir(domain_dir), dom = dir / "domain.pddl";
+  if (!fs::exists(dom)) throw InputError("domain folder '" + domain_dir + "' has no domain.pddl");
+  auto [domain, pack] = domains::load_domain_with_pack(dom.string(), domain_dir);
+  util::Rng rng(seed);
+  for (int i = 0; i < attempts; ++i) {
+    const auto drawn = pack->generate_problem(params, rng);
+    if (!drawn) continue;
+    Problem s;
+    s.pack = pack;
+    s.task = data::ground_problem_text(*pack, domain, drawn->pddl, "<generated problem>");
+    s.problem = s.task->problem().name;
+    s.goals = data::text_problem_goals(*pack, *s.task, "<generated problem>");
+    s.profiles = pack->default_profiles();
+    return s;
+  }
+  throw InputError("the " + pack->name() + " pack drew no problem with these counts in " + std::to_string(attempts) +
+                   " attempts");
+}
+
 // ---- the engine ---------------------------------------------------------------------
 
 struct Engine::Impl {

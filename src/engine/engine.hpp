@@ -71,6 +71,13 @@ struct TextLabels {
 Problem text_problem(const std::string& domain_pddl, const std::string& problem_pddl, const std::string& pack_json,
                      const TextLabels& labels = {}, int64_t max_ground_actions = 0, const GoalChoice& goals = {});
 
+// A problem drawn at random by the pack of a domain folder (as `clips
+// generate` draws them: Pack::generate_problem, e.g. counts {"gem": 3,
+// "key": 2, "door": 1} for Doors-Keys-Gems), from `seed`. InputError when the
+// pack cannot generate, or no draw of `attempts` gave a layout.
+Problem generated_problem(const std::string& domain_dir, const domains::GenerateParams& params, uint64_t seed,
+                          int attempts = 100);
+
 // How the latest instruction was read (for explanations): for the inference
 // methods, commands weighted by the goal posterior; for the literal listener,
 // its ranking.

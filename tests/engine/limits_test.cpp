@@ -179,3 +179,32 @@ TEST(EngineUndo, UndoTakesBackTheLastHumanActionAndWhatFollowed) {
 
 }  // namespace
 }  // namespace clips::engine
+
+namespace clips::engine {
+namespace {
+
+TEST(EngineOpeners, AGeneratedProblemPlays) {
+  domains::GenerateParams params;
+  params.counts = {{"gem", 3}, {"key", 2}, {"door", 1}};
+  params.problem_name = "drawn";
+  const std::string dkg = paths::source_dir() + "/data/domains/doors-keys-gems";
+  Engine e(generated_problem(dkg, params, 7), SessionOptions{});
+  EXPECT_EQ(e.problem().problem, "drawn");
+  EXPECT_EQ(e.goal_labels(), (std::vector<std::string>{"gem1", "gem2", "gem3"}));
+  // The same seed draws the same problem.
+  Engine again(generated_problem(dkg, params, 7), SessionOptions{});
+  EXPECT_EQ(e.pack().describe_state(e.task(), e.state()), again.pack().describe_state(again.task(), again.state()));
+  ASSERT_FALSE(e.assistant_turn());
+  const auto acts = e.applicable_actions();
+  ASSERT_FALSE(acts.empty());
+  const Step& s = e.observe(acts.front().action);
+  EXPECT_EQ(s.t, 1);
+  double sum = 0;
+  for (double p : s.posterior.goal_probabilities) sum += p;
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  params.counts = {{"gem", 0}};
+  EXPECT_THROW(generated_problem(dkg, params, 7), InputError);
+}
+
+}  // namespace
+}  // namespace clips::engine
