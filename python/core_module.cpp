@@ -31,7 +31,7 @@
 #include "eval/bench.hpp"
 #include "eval/scenes.hpp"
 #include "render/render.hpp"
-#include "inference/belief.hpp"
+#include "engine/runs.hpp"
 #include "language/listener.hpp"
 
 namespace py = pybind11;
@@ -93,12 +93,6 @@ std::vector<std::string> list_option(const char* name, py::handle v) {
   return cast_option<std::vector<std::string>>(name, v, "a list of str");
 }
 
-clips::Method parse_method(const std::string& m) {
-  if (m == "clips" || m == "both") return clips::Method::Clips;
-  if (m == "language" || m == "language-only" || m == "utterance") return clips::Method::LanguageOnly;
-  if (m == "action" || m == "action-only") return clips::Method::ActionOnly;
-  throw clips::InputError("unknown method '" + m + "' (expected clips, language or action)");
-}
 
 clips::Assistance parse_assistance(const std::string& a) {
   if (a == "qmdp") return clips::Assistance::QMdp;
@@ -121,8 +115,9 @@ std::string number(double v) { return py::str(py::float_(v)); }
 const std::vector<SessionOption>& session_option_table() {
   using O = clips::SessionOptions;
   static const std::vector<SessionOption> table = {
-      {"method", "clips, language or action: the evidence the posterior and the assistance use",
-       [](O& o, py::handle v) { o.method = parse_method(text_option("method", v)); },
+      {"method", "clips, lang_only, action_only or literal (also read: language, action): the evidence the posterior "
+                 "uses and how the assistant decides",
+       [](O& o, py::handle v) { o.method = clips::parse_method(text_option("method", v)); },
        [](const O&) { return quoted("clips"); }},
       {"assistance", "qmdp or pibar",
        [](O& o, py::handle v) { o.assistance = parse_assistance(text_option("assistance", v)); },
@@ -382,11 +377,18 @@ std::shared_ptr<clips::Session> open_engine(const Opener& op, const clips::Sessi
   return std::make_shared<clips::Session>(clips::Session::open_domain_text(op.a, op.b, op.c, o));
 }
 
-void apply(clips::Session& s, const Event& e) {
+void apply(clips::Session& s, const Event& e, const clips::CallLimits& limits = {}) {
   if (e.utterance)
-    s.hear(e.text);
+    s.hear(e.text, limits);
   else
-    s.observe(e.text);
+    s.observe(e.text, limits);
+}
+
+// A call's time_limit keyword (None: no limit) as the engine's CallLimits.
+clips::CallLimits call_limits(const py::object& time_limit) {
+  clips::CallLimits limits;
+  if (!time_limit.is_none()) limits.seconds = float_option("time_limit", time_limit, 0, 1e9);
+  return limits;
 }
 
 // The session's engine, replayed first if a call on it was interrupted.
@@ -421,12 +423,13 @@ py::dict given_options(const py::kwargs& kwargs, std::initializer_list<const cha
 }
 
 // One call that changes the session (observe, hear), off the calling thread.
-py::dict step_call(PySession& ps, Event e) {
+// A call stopped by its time limit leaves the session (and its log) as it was.
+py::dict step_call(PySession& ps, Event e, clips::CallLimits limits = {}) {
   engine(ps);
   auto shared = ps.engine;
   try {
-    clips::Step st = interruptible([shared, e] {
-      apply(*shared, e);
+    clips::Step st = interruptible([shared, e, limits] {
+      apply(*shared, e, limits);
       return shared->trace().back();
     });
     if (!e.utterance) e.text = st.action;  // an id becomes its action's text
@@ -451,7 +454,7 @@ py::dict run_plan(const std::string& dataset, const std::string& plan_id, const 
     auto lm = clips::language::make_language_model(lm_kind);
     clips::inference::InferenceOptions o;
     o.threads = static_cast<int>(threads);
-    return clips::inference::run_inference(ds, plan, *lm, o);
+    return clips::engine::run_observations(ds, plan, *lm, o, /*known_truth=*/true);
   });
   py::dict d;
   d["plan"] = run.plan_id;
@@ -563,7 +566,15 @@ PYBIND11_MODULE(_core, m) {
   inapplicable.attr("__doc__") = "An action whose precondition is false in the current state (an InputError).";
   auto& lm_error = py::register_exception<clips::LanguageModelError>(m, "LanguageModelError", PyExc_RuntimeError);
   lm_error.attr("__doc__") = "The language model failed (e.g. the completions server did not answer).";
-  for (py::handle e : std::initializer_list<py::handle>{input_error, inapplicable, lm_error})
+  auto& time_limit_error = py::register_exception<clips::TimeLimitError>(m, "TimeLimitError", PyExc_RuntimeError);
+  time_limit_error.attr("__doc__") =
+      "A call's time_limit passed before it was done; the session is exactly as it was before the call.";
+  auto& memory_limit_error =
+      py::register_exception<clips::MemoryLimitError>(m, "MemoryLimitError", PyExc_MemoryError);
+  memory_limit_error.attr("__doc__") =
+      "Refused before memory ran out: e.g. a problem with more ground actions than this process has memory for.";
+  for (py::handle e :
+       std::initializer_list<py::handle>{input_error, inapplicable, lm_error, time_limit_error, memory_limit_error})
     e.attr("__module__") = "clips_assist";
   // Internal language-model failures reach Python as the same type.
   static PyObject* lm_error_type = lm_error.ptr();
@@ -636,38 +647,42 @@ PYBIND11_MODULE(_core, m) {
               .c_str())
       .def(
           "observe",
-          [](PySession& ps, py::object action) {
+          [](PySession& ps, py::object action, py::object time_limit) {
+            const clips::CallLimits limits = call_limits(time_limit);
             // A str is PDDL text, an int (not a bool) an id of applicable_actions().
-            if (py::isinstance<py::str>(action)) return step_call(ps, Event{false, py::cast<std::string>(action)});
+            if (py::isinstance<py::str>(action))
+              return step_call(ps, Event{false, py::cast<std::string>(action)}, limits);
             if (py::isinstance<py::bool_>(action) || !py::hasattr(action, "__index__"))
               throw py::type_error("observe(): expected the action as PDDL text (str) or an action id (int), got " +
                                    type_name(action));
             const long long id = py::cast<long long>(action.attr("__index__")());
             if (id < INT_MIN || id > INT_MAX) throw clips::InputError("unknown action id " + std::to_string(id));
             const std::string text = engine(ps).action_name(static_cast<int>(id));
-            return step_call(ps, Event{false, text});
+            return step_call(ps, Event{false, text}, limits);
           },
-          py::arg("action"),
-          "observe(action) -> dict\n\n"
+          py::arg("action"), py::kw_only(), py::arg("time_limit") = py::none(),
+          "observe(action, *, time_limit=None) -> dict\n\n"
           "An action of either agent in the current state: PDDL text ('(left human)') or an id of "
           "applicable_actions(). Returns the new step (as trace()[-1]). Raises InputError for text naming no action "
-          "or an unknown id, InapplicableActionError when its precondition is false; the session is then unchanged.")
+          "or an unknown id, InapplicableActionError when its precondition is false, TimeLimitError when the call "
+          "takes longer than time_limit seconds; the session is then unchanged.")
       .def(
           "hear",
-          [](PySession& ps, py::object utterance) {
+          [](PySession& ps, py::object utterance, py::object time_limit) {
             if (!py::isinstance<py::str>(utterance))
               throw py::type_error("hear(): expected the utterance as str, got " + type_name(utterance));
-            return step_call(ps, Event{true, py::cast<std::string>(utterance)});
+            return step_call(ps, Event{true, py::cast<std::string>(utterance)}, call_limits(time_limit));
           },
-          py::arg("utterance"),
-          "hear(utterance) -> dict\n\n"
+          py::arg("utterance"), py::kw_only(), py::arg("time_limit") = py::none(),
+          "hear(utterance, *, time_limit=None) -> dict\n\n"
           "An utterance heard in the current state (the human's instruction to the assistant). Returns the current "
-          "step with the new posterior. Raises InputError for empty text, LanguageModelError when the model fails.")
+          "step with the new posterior. Raises InputError for empty text, LanguageModelError when the model fails, "
+          "TimeLimitError when the call takes longer than time_limit seconds (the session is then unchanged).")
       .def(
           "posterior",
           [](PySession& ps, std::optional<std::string> method) {
             clips::Session& s = engine(ps);
-            return to_dict(method ? s.posterior(parse_method(*method)) : s.posterior());
+            return to_dict(method ? s.posterior(clips::parse_method(*method)) : s.posterior());
           },
           py::arg("method") = py::none(),
           "posterior(method=None) -> dict\n\n"
@@ -675,20 +690,22 @@ PYBIND11_MODULE(_core, m) {
           "'log_marginal_likelihood': float} under the session's method, or another ('clips', 'language', 'action').")
       .def(
           "assist",
-          [](PySession& ps) {
+          [](PySession& ps, py::object time_limit) {
+            const clips::CallLimits limits = call_limits(time_limit);
             engine(ps);
             auto shared = ps.engine;
             try {
-              return to_dict(interruptible([shared] { return shared->assist(); }));
+              return to_dict(interruptible([shared, limits] { return shared->assist(limits); }));
             } catch (py::error_already_set&) {
               ps.engine.reset();
               throw;
             }
           },
-          "assist() -> dict\n\n"
+          py::kw_only(), py::arg("time_limit") = py::none(),
+          "assist(*, time_limit=None) -> dict\n\n"
           "The assistant's next action under the session's assistance rule: {'assistant_turn', 'action' (None when "
           "the human is to move), 'id', 'candidates': [{'id', 'action', 'value'}], 'unanimous', 'goal_weights'}. The "
-          "posterior is not changed.")
+          "posterior is not changed. TimeLimitError when the decision takes longer than time_limit seconds.")
       .def(
           "state", [](PySession& ps) { return engine(ps).state(); },
           "state() -> str\n\nThe current state, printable (an ASCII map for Doors-Keys-Gems).")

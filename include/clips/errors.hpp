@@ -10,8 +10,12 @@
 //                                   false in the current state (an InputError)
 //   clips::LanguageModelError       the language model failed (unreachable
 //                                   server, malformed reply)
-//   clips::LimitError               a budget stopped the work: a time limit,
-//                                   or memory refused before it ran out
+//   clips::TimeLimitError           a wall-clock limit passed (CallLimits);
+//                                   the session is as before the call
+//   clips::CancelledError           a call was cancelled (CallLimits); the
+//                                   session is as before the call
+//   clips::MemoryLimitError         refused before memory ran out (e.g. a
+//                                   problem too large to ground here)
 #include <stdexcept>
 #include <string>
 
@@ -37,14 +41,26 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
-class LimitError : public std::runtime_error {
+// A call stopped before it was done: by its wall-clock limit (CallLimits,
+// `--max-seconds`/`--time-limit`, grounding included) or its cancellation.
+class CallStoppedError : public std::runtime_error {
  public:
-  enum class Kind { Time, Memory };
-  LimitError(Kind kind, const std::string& what) : std::runtime_error(what), kind_(kind) {}
-  Kind kind() const noexcept { return kind_; }
+  using std::runtime_error::runtime_error;
+};
+class TimeLimitError : public CallStoppedError {
+ public:
+  using CallStoppedError::CallStoppedError;
+};
+class CancelledError : public CallStoppedError {
+ public:
+  using CallStoppedError::CallStoppedError;
+};
 
- private:
-  Kind kind_;
+// Work refused because memory would run out (grounding a task too large for
+// what the process has left), before it did.
+class MemoryLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 }  // namespace clips

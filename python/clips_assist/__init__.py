@@ -13,7 +13,9 @@ for the assistant's next action::
     print(s.posterior()["goals"], s.assist()["action"])
 
 Long calls run without the GIL; Ctrl-C interrupts them (KeyboardInterrupt) and
-leaves the session as it was.
+leaves the session as it was. observe, hear and assist also take
+time_limit=SECONDS: past it they raise TimeLimitError, and the session is as it
+was before the call.
 """
 import atexit as _atexit
 import os as _os
@@ -23,6 +25,8 @@ from ._core import (
     InputError,
     LanguageModelError,
     Session,
+    TimeLimitError,
+    MemoryLimitError,
     __version__,
     data_directory,
     run_bench,
@@ -35,6 +39,8 @@ __all__ = [
     "InputError",
     "LanguageModelError",
     "Session",
+    "TimeLimitError",
+    "MemoryLimitError",
     "__version__",
     "data_directory",
     "example_dataset",

@@ -332,3 +332,45 @@ def test_the_package_under_test_is_the_expected_one():
     in-tree run against build/python."""
     expected = os.environ.get("CLIPS_ASSIST_EXPECTED_DIR") or str(BINARY_DIR / "python" / "clips_assist")
     assert pathlib.Path(clips_assist.__file__).resolve().parent == pathlib.Path(expected).resolve()
+
+
+def test_one_method_name_table():
+    """issue 44: the method keyword reads the one table (clips, lang_only, action_only,
+    literal) and the older spellings (language, action, both, utterance) alike."""
+    def final(method):
+        s = clips_assist.Session.open_dataset(EXAMPLES, "e1", method=method)
+        s.observe("(left human)")
+        s.hear("Can you get me the yellow key?")
+        return s.posterior()
+
+    assert final("lang_only") == final("language") == final("utterance")
+    assert final("action_only") == final("action")
+    assert final("clips") == final("both") == final("literal")
+    assert final("lang_only") != final("action_only")
+    with pytest.raises(clips_assist.InputError, match="lang_only"):
+        clips_assist.Session.open_dataset(EXAMPLES, "e1", method="lang-only-please")
+
+
+def test_a_time_limit_stops_a_call_and_leaves_the_session_unchanged():
+    """issue 44: a call past its time_limit raises TimeLimitError; the session is as before it,
+    and the next call gives what a session that never saw the stopped one gives."""
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    s.observe("(left human)")
+    before = (s.t, s.posterior(), [st["posterior"] for st in s.trace()])
+    assert issubclass(clips_assist.TimeLimitError, RuntimeError)
+    with pytest.raises(clips_assist.TimeLimitError, match="time limit of 0 s"):
+        s.observe("(wait robot)", time_limit=0)
+    with pytest.raises(clips_assist.TimeLimitError):
+        s.hear("Can you get me the yellow key?", time_limit=0)
+    assert (s.t, s.posterior(), [st["posterior"] for st in s.trace()]) == before
+    s.observe("(wait robot)", time_limit=600)
+    s.observe("(left human)")
+    with pytest.raises(clips_assist.TimeLimitError):
+        s.assist(time_limit=0)
+    reference = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    for a in ["(left human)", "(wait robot)", "(left human)"]:
+        reference.observe(a)
+    assert s.posterior() == reference.posterior()
+    assert s.assist(time_limit=600) == reference.assist()
+    with pytest.raises(clips_assist.InputError, match="time_limit"):
+        s.observe("(wait robot)", time_limit=-1)

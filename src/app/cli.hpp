@@ -4,8 +4,11 @@
 #include <chrono>
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "clips/errors.hpp"
+#include "clips/types.hpp"
 #include "data/dataset.hpp"
 #include "eval/experiment.hpp"
 #include "language/listener.hpp"
@@ -34,6 +37,26 @@ extern const CLI::Validator NonNegativeInteger;  // 0, 1, ...
 extern const CLI::Validator HttpUrl;             // http://... or https://...
 extern const CLI::Validator PositiveSeconds;     // a finite number > 0
 extern const CLI::Validator SeedValue;           // 0 .. 2^64-1 (CLI11 would wrap -1 and 2^64 silently)
+
+// --time-limit SECONDS of infer and assist: a wall-clock limit on `what`
+// (the session engine's CallLimits); reaching it exits with kExitLimit.
+void add_time_limit_option(CLI::App* cmd, std::optional<double>& seconds, const std::string& what);
+std::string time_limit_message(const std::string& command, double seconds);
+// With --time-limit: problems the dataset grounds from now on stop at it too
+// (grounding a large problem can take longer than the inference after it).
+void bound_grounding(data::Dataset& ds, const std::string& command, const std::optional<double>& seconds);
+// Runs `f` with the limit; a TimeLimitError becomes one naming the command and
+// the limit ("infer: stopped: --time-limit of 2 s reached ...").
+template <typename F>
+auto with_time_limit(const std::string& command, const std::optional<double>& seconds, F&& f) {
+  CallLimits limits;
+  if (seconds) limits.seconds = *seconds;
+  try {
+    return f(limits);
+  } catch (const TimeLimitError& e) {
+    throw TimeLimitError(time_limit_message(command, *seconds));
+  }
+}
 
 // The language-model flags every subcommand that scores utterances shares:
 // --lm embedded|openai, --lm-base-url, --lm-model (key from $OPENAI_API_KEY).

@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,7 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "app/observations.hpp"
+#include "engine/json.hpp"
 #include "eval/experiment.hpp"
 #include "language/listener.hpp"
 
@@ -24,6 +26,7 @@ void register_assist(CLI::App& app) {
     bool json = false;
     bool explain = false;
     uint64_t seed = 1;
+    std::optional<double> time_limit;
   };
   auto o = std::make_shared<Opts>();
   add_dataset_option(cmd, o->dataset, "Dataset directory");
@@ -43,6 +46,7 @@ void register_assist(CLI::App& app) {
   add_speaker_model_options(cmd, o->lm);
   add_assistance_options(cmd, o->lm);
   cmd->add_option("--seed", o->seed, "Seed for the literal listeners' sampling, 0..2^64-1 (default 1)")->check(SeedValue);
+  add_time_limit_option(cmd, o->time_limit, "the whole run (inference, then the decision or the assistance episode)");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->add_flag("--explain", o->explain,
                 "Also print each decision where actions tied in value: the tied actions with their values and how "
@@ -56,6 +60,7 @@ void register_assist(CLI::App& app) {
     if (adhoc && o->assist != "qmdp_offline")
       throw UsageError("with --problem, the assistant's next action is the Q_MDP choice (--assist qmdp_offline)");
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
+    bound_grounding(ds, "assist", o->time_limit);
     require_stimuli(ds);
     if (const auto known = eval::known_methods(ds.pack());
         std::find(known.begin(), known.end(), o->method) == known.end())
@@ -66,8 +71,10 @@ void register_assist(CLI::App& app) {
       eval::ExperimentOptions eo;
       eo.inference_threads = 0;
       apply_model_flags(o->lm, eo);
-      const eval::LiveDecision d = eval::decide_next_action(ds, obs, *lm, eo, o->method);
-      const auto& goals = d.inference.goals;
+      const eval::LiveDecision d = with_time_limit("assist", o->time_limit, [&](const CallLimits& limits) {
+        return eval::decide_next_action(ds, obs, lm, eo, o->method, limits);
+      });
+      const auto& goals = d.goals;
       if (o->json) {
         nlohmann::ordered_json j;
         j["problem"] = obs.problem_id;
@@ -77,6 +84,9 @@ void register_assist(CLI::App& app) {
         j["action"] = d.action ? nlohmann::ordered_json(*d.action) : nlohmann::ordered_json();
         j["goals"] = goals;
         j["goal_posterior"] = d.goal_posterior;
+        // The engine's one JSON form of the posterior and the decision (engine/json.hpp).
+        j["posterior"] = engine::to_json(d.posterior, parse_method(o->method));
+        j["decision"] = engine::to_json(d.decision);
         fmt::print("{}\n", j.dump());
       } else {
         fmt::print("problem {} after {} observed action{} (method {})\n", obs.problem_id, obs.observed.actions.size(),
@@ -97,6 +107,10 @@ void register_assist(CLI::App& app) {
     apply_model_flags(o->lm, eo);
     eo.multimodal = *mm;
     eo.multimodal.http.total_timeout = lm_timeout_ms(o->lm);
+    const auto started = std::chrono::steady_clock::now();
+    if (o->time_limit)
+      eo.deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(*o->time_limit));
     bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
     std::string name = o->method;
     if (ip && o->assist != "qmdp_offline") name += "/" + o->assist;
@@ -104,6 +118,9 @@ void register_assist(CLI::App& app) {
     eo.methods = {"clips"};
     if (name != "clips") eo.methods.push_back(name);
     auto outcome = eval::evaluate_plan(ds, p, *lm, eo);
+    // A search cut at the deadline leaves numbers that depend on the clock.
+    if (o->time_limit && std::chrono::steady_clock::now() >= eo.deadline)
+      throw TimeLimitError(time_limit_message("assist", *o->time_limit));
     // Rethrown with their own type, so the exit status tells bad input from a failing LM server.
     if (outcome.failure) std::rethrow_exception(outcome.failure);
     if (!outcome.error.empty()) throw InputError(outcome.error);

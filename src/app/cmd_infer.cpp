@@ -11,7 +11,7 @@
 #include "app/observations.hpp"
 #include "data/dataset.hpp"
 #include "app/particle_flags.hpp"
-#include "inference/belief.hpp"
+#include "engine/runs.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 
@@ -116,13 +116,24 @@ void register_infer(CLI::App& app) {
     size_t max_nodes = size_t{1} << 18;
     std::string heuristic;
     ParticleFlags particles;
+    std::optional<double> time_limit;
   };
   auto o = std::make_shared<Opts>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl)");
   add_observation_options(cmd, o->obs);
   cmd->add_option("--modalities", o->modalities,
-                  "Which evidence the reported posterior uses: both (CLIPS, default), utterance or action")
-      ->check(CLI::IsMember({"both", "utterance", "action"}));
+                  "Which evidence the reported posterior uses, by method name: clips (default; also both), lang_only "
+                  "(also utterance, language) or action_only (also action)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            try {
+              if (parse_method(v) == Method::Literal) return std::string("literal has no posterior of its own");
+              return std::string();
+            } catch (const InputError& e) {
+              return std::string(e.what());
+            }
+          },
+          "METHOD"));
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)")
@@ -131,6 +142,7 @@ void register_infer(CLI::App& app) {
                   "Heuristic of the refinements (default: the domain pack's inference heuristic; an unknown name "
                   "lists the pack's heuristics)");
   add_particle_options(cmd, o->particles);
+  add_time_limit_option(cmd, o->time_limit, "the whole inference");
   cmd->add_flag("--explain", o->explain,
                 "Also show, per utterance and hypothesis (goal x cost profile), its likelihood and most probable "
                 "commands, and each hypothesis' rolled-out joint plan at the end");
@@ -142,10 +154,11 @@ void register_infer(CLI::App& app) {
   cmd->callback([o] {
     check_observation_flags(o->obs);  // before loading anything
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
+    bound_grounding(ds, "infer", o->time_limit);
     require_stimuli(ds);
     const bool adhoc = !o->obs.problem.empty();
     const data::PlanRecord plan = adhoc ? observations_record(ds, o->obs) : ds.plan(o->obs.plan);
-    const inference::Modality modality = inference::parse_modality(o->modalities);
+    const inference::Modality modality = engine::modality_of(parse_method(o->modalities));
     auto lm = make_lm(o->lm, ds);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
@@ -153,8 +166,10 @@ void register_infer(CLI::App& app) {
     opts.threads = 0;  // one plan: use every core
     apply_model_flags(o->lm, opts);
     apply_particle_flags(o->particles, opts);
-    const inference::InferenceRun run = adhoc ? inference::run_inference_on_observations(ds, plan, *lm, opts)
-                                              : inference::run_inference(ds, plan, *lm, opts);
+    const inference::InferenceRun run =
+        with_time_limit("infer", o->time_limit, [&](const CallLimits& limits) {
+          return engine::run_observations(ds, plan, *lm, opts, /*known_truth=*/!adhoc, limits);
+        });
     // Utterances the model could not read (weighted down or ignored): the user must know.
     for (const auto& w : run.utterance_warnings) fmt::print(stderr, "warning: {}\n", pddl::printable(w));
     // Particle inference: the rollouts shown are of the modality's weighted hypotheses, brought up to date.

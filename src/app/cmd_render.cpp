@@ -10,7 +10,7 @@
 #include "app/exit_codes.hpp"
 #include "eval/experiment.hpp"
 #include "eval/scenes.hpp"
-#include "inference/belief.hpp"
+#include "engine/runs.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 
@@ -93,7 +93,7 @@ void register_render(CLI::App& app) {
       inference::InferenceOptions io;
       apply_model_flags(o->lm, io);
       io.threads = 0;
-      auto inf = inference::run_inference(ds, p, *lm, io);
+      auto inf = engine::run_observations(ds, p, *lm, io, /*known_truth=*/true);
       run.goals = inf.goals;
       for (auto& st : inf.steps) run.observed_posterior.push_back(st[inference::Modality::Both].goals);
     }

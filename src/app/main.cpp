@@ -1,4 +1,5 @@
 // clips: Cooperative Language-Guided Inverse Plan Search, command line.
+#include <fmt/core.h>
 #include <system_error>
 #include <cerrno>
 #include <cmath>
@@ -114,6 +115,25 @@ const CLI::Validator PositiveSeconds(
       return in + " is not a positive number of seconds";
     },
     "SECONDS>0");
+void add_time_limit_option(CLI::App* cmd, std::optional<double>& seconds, const std::string& what) {
+  cmd->add_option("--time-limit", seconds,
+                  "Wall-clock limit in seconds for " + what + " (default: none); reaching it exits with status 5")
+      ->check(PositiveSeconds);
+}
+
+void bound_grounding(data::Dataset& ds, const std::string& command, const std::optional<double>& seconds) {
+  if (!seconds || *seconds >= 1e9) return;
+  data::GroundingLimits limits;
+  limits.deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(*seconds));
+  limits.deadline_label = fmt::format("{}: stopped: --time-limit of {:g} s", command, *seconds);
+  ds.set_grounding_limits(limits);
+}
+
+std::string time_limit_message(const std::string& command, double seconds) {
+  return fmt::format("{}: stopped: --time-limit of {:g} s reached before the answer was complete", command, seconds);
+}
+
 }  // namespace clips::app
 
 int main(int argc, char** argv) {
@@ -164,8 +184,12 @@ int main(int argc, char** argv) {
     return kExitUsage;
   } catch (const clips::InputError& e) {
     return fail(kExitInput, e.what());
-  } catch (const clips::LimitError& e) {
-    return fail(e.kind() == clips::LimitError::Kind::Time ? kExitLimit : kExitOutOfMemory, e.what());
+  } catch (const clips::CallStoppedError& e) {
+    // --time-limit / --max-seconds (grounding included), and the session
+    // engine's call limits.
+    return fail(kExitLimit, e.what());
+  } catch (const clips::MemoryLimitError& e) {
+    return fail(kExitOutOfMemory, e.what());
   } catch (const clips::lm::LmError& e) {
     return fail(kExitLanguageModel, e.what());
   } catch (const clips::eval::MultimodalError& e) {

@@ -74,4 +74,17 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f) {
       ->check(CLI::IsMember({"support", "weights"}));
 }
 
+void apply_particle_flags(const ParticleFlags& flags, SessionOptions& options) {
+  inference::InferenceOptions checked;
+  inference::apply_particle_settings(flags, checked);  // an InputError names a bad value
+  options.particles = flags.particles;
+  options.particle_seed = flags.seed;
+  options.ess_threshold = flags.ess_threshold;
+  options.rejuvenation_moves = flags.moves;
+  options.rejuvenate = flags.rejuvenate;
+  options.proposal_groups = flags.groups;
+  options.particle_filters = flags.filters;
+  options.particle_estimate = flags.estimate;
+}
+
 }  // namespace clips::app

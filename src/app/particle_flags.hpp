@@ -6,7 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "inference/belief.hpp"
+#include "clips/types.hpp"
+#include "engine/runs.hpp"  // the inference options the flags set
 
 namespace clips::app {
 
@@ -19,5 +20,7 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& flags);
 inline void apply_particle_flags(const ParticleFlags& flags, inference::InferenceOptions& options) {
   inference::apply_particle_settings(flags, options);
 }
+// The same into a session engine's options (checked as above).
+void apply_particle_flags(const ParticleFlags& flags, SessionOptions& options);
 
 }  // namespace clips::app

@@ -78,11 +78,15 @@ const double kLog10 = std::log(10.0);
 // at most half the largest weight: the same as the spec's whenever some
 // hypothesis weighs 0.04 or more, as one always does with up to 25
 // hypotheses (the paper's 8, the example domains' goal sets).
+}  // namespace
+
 double live_threshold(const std::vector<Hypothesis>& belief, double threshold) {
   double top = 0;
   for (const Hypothesis& h : belief) top = std::max(top, h.weight);
   return std::min(threshold, top / 2);
 }
+
+namespace {
 
 // How much of the request the assistant's part of `plan` carries out, and
 // how much of what the principal said they would do it takes over. Actions

@@ -180,6 +180,10 @@ struct Decision {
   std::string request_command;
   bool broke_tie = false;
 };
+// The weight at or above which a hypothesis takes part in a decision: the
+// setup's weight_threshold, at most half the largest weight. qmdp_decision and
+// pibar_decision refine exactly these hypotheses (when setup.refine).
+double live_threshold(const std::vector<Hypothesis>& belief, double threshold);
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t);
 // The salient-argument table of AssistSetup::salient_args for a command language.
 std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config);

@@ -7,6 +7,7 @@
 #include "assist/request.hpp"
 #include "assist/setup.hpp"
 #include "data/validate.hpp"
+#include "engine/runs.hpp"
 #include "domains/pack.hpp"
 #include "eval/methods.hpp"
 #include "inference/belief.hpp"
@@ -51,6 +52,7 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   io.utterance_timing = opts.utterance_timing;
   io.assistant_turns = opts.assistant_turns;
   if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
+  io.refine.deadline = opts.deadline;
   io.particles = opts.particles;
   io.particle_seed = opts.particle_seed;
   io.ess_threshold = opts.ess_threshold;
@@ -94,6 +96,7 @@ assist::AssistSetup assistance_setup(const data::Dataset& ds, const data::PlanRe
   setup.option_of = [&pack, task, tag = p.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
   setup.qa_floor = opts.qa_floor;
   setup.follow_plan_by_index = df.principal_follows_completed_plan;
+  setup.refine_options.deadline = opts.deadline;
   return setup;
 }
 
@@ -281,40 +284,24 @@ BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& p,
   return out;
 }
 
-LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations, lm::LanguageModel& lm,
-                                const ExperimentOptions& opts, const std::string& method) {
-  if (method != "clips" && method != "lang_only" && method != "action_only")
+LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations,
+                                std::shared_ptr<lm::LanguageModel> lm, const ExperimentOptions& opts,
+                                const std::string& method, const CallLimits& limits) {
+  const clips::Method m = clips::parse_method(method);
+  if (m == clips::Method::Literal)
     throw InputError("--method " + method + " cannot assist from ad-hoc observations (clips, lang_only or action_only)");
-  auto task = ds.task(observations.problem_id);
-  const domains::Roles& df = ds.pack().roles();
-  const inference::InferenceOptions io = inference_options(opts);
+  SessionOptions so;
+  so.method = m;
+  so.qa_floor = assist::to_string(opts.qa_floor);
+  if (opts.assist_rule) so.assist_rule = assist::to_string(*opts.assist_rule);
+  engine::Engine e = engine::engine_over_observations(ds, observations, std::move(lm), inference_options(opts), so, limits);
   LiveDecision out;
-  out.inference = inference::run_inference_on_observations(ds, observations, lm, io);
-  const Modality mod = method == "clips" ? Modality::Both : method == "lang_only" ? Modality::UtteranceOnly
-                                                                                   : Modality::ActionOnly;
-  out.inference.belief->sync_policies(mod);  // particle inference: bring the weighted policies up to date
-  const inference::Belief& belief = *out.inference.belief;
-  const auto& post = out.inference.final_posterior(mod);
-  out.goal_posterior = post.goals;
-
-  assist::AssistSetup setup = assist::setup_for(ds.pack(), task, belief, opts.assist_rule);
-  setup.observed_steps = static_cast<int>(out.inference.steps.size()) - 1;
-  setup.qa_floor = opts.qa_floor;
-  if (setup.observed_steps >= setup.horizon)
-    throw InputError("the observations are " + std::to_string(setup.observed_steps) + " actions long, at or past the "
-                     "assistance horizon of " + std::to_string(setup.horizon) + " steps");
-  std::vector<assist::Hypothesis> hyps;
-  for (size_t h = 0; h < post.hypotheses.size(); ++h)
-    hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h]), nullptr});
-  if (mod != Modality::ActionOnly)
-    assist::attach_requests(hyps, assist::last_requests(*task, out.inference.steps, hyps.size()));
-  if (!assist::assistant_turn(setup, setup.start)) {
-    out.next_actor = df.principal;
-    return out;
-  }
-  const assist::Decision d = assist::qmdp_decision(setup, hyps, setup.start, setup.observed_steps + 1);
-  out.next_actor = df.assistant;
-  out.action = task->action_name(d.action);
+  out.goals = e.goal_labels();
+  out.posterior = e.posterior();
+  out.goal_posterior = out.posterior.goal_probabilities;
+  out.decision = e.assist(limits);
+  out.next_actor = e.active_agent();
+  if (out.decision.assistant_turn) out.action = out.decision.action;
   return out;
 }
 

@@ -2,6 +2,7 @@
 // The experiment runner behind `clips bench` and `clips assist`: for one
 // dataset plan, run inference once (three modalities), assistance for every
 // method, and score each run with the paper's metrics (clips-spec.md 10).
+#include <chrono>
 #include <exception>
 #include <functional>
 #include <map>
@@ -11,6 +12,7 @@
 
 #include "data/dataset.hpp"
 #include "assist/assist.hpp"
+#include "clips/types.hpp"
 #include "eval/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
@@ -104,6 +106,9 @@ struct ExperimentOptions {
   // Node budget of each lookahead search of inference and assistance
   // (InferenceOptions::refine.max_nodes); 0: the default, 2^18.
   size_t refine_max_nodes = 0;
+  // Wall-clock deadline of the whole run (`clips assist --time-limit`): every
+  // search of inference and of the assistance episodes ends there. max(): none.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   // Called with the inference run before assistance starts (timings, budget
   // stops: `clips bench --scaling`).
   std::function<void(const inference::InferenceRun&)> on_inference;
@@ -117,14 +122,19 @@ std::vector<std::string> known_methods(const domains::Pack& pack);
 // plan (built by the caller; see inference::run_inference_on_observations),
 // then one Q_MDP decision of the assistant in the state they lead to, with the
 // posterior of `method` (clips, lang_only or action_only).
+// Driven by the session engine (src/engine), as clips::Session and the
+// server decide; `limits` bound the whole call (inference and decision).
 struct LiveDecision {
-  inference::InferenceRun inference;
+  std::vector<std::string> goals;     // candidate goal labels
   std::string next_actor;             // who acts next in the final state
   std::optional<std::string> action;  // the assistant's choice; nullopt on the principal's turn
   std::vector<double> goal_posterior; // the weights behind it, per goal
+  AssistDecision decision;            // the whole decision (engine/json.hpp writes it)
+  Posterior posterior;                // the method's posterior after the observations
 };
-LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations, lm::LanguageModel& lm,
-                                const ExperimentOptions& opts, const std::string& method);
+LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations,
+                                std::shared_ptr<lm::LanguageModel> lm, const ExperimentOptions& opts,
+                                const std::string& method, const CallLimits& limits = {});
 
 // Runs every requested method on one plan. Thread-safe for distinct Datasets.
 PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,

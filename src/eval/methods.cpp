@@ -4,6 +4,7 @@
 
 #include "assist/literal.hpp"
 #include "assist/request.hpp"
+#include "engine/hypotheses.hpp"
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
 #include "language/commands/utterance_merge.hpp"
@@ -52,10 +53,7 @@ class OnlineAdapter : public assist::OnlineBelief {
   void rebuild() {
     belief_.sync_policies(modality_);  // particle inference: weighted policies up to date
     auto post = belief_.posterior(modality_);
-    hyps_.clear();
-    for (size_t h = 0; h < post.hypotheses.size(); ++h)
-      hyps_.push_back({post.hypotheses[h], std::shared_ptr<search::Policy>(&belief_.policies()[h], [](auto*) {}), nullptr});
-    assist::attach_requests(hyps_, requests_);
+    hyps_ = engine::assistant_hypotheses(belief_, post, requests_, engine::PolicyUse::Share);
   }
   inference::Belief belief_;
   Modality modality_;
@@ -78,13 +76,9 @@ class InferenceMethod : public Method {
     r.p_true_goal = post.goals.at(inf.true_goal);
     r.goal_posterior = post.goals;
     for (const auto& st : inf.steps) r.posterior_steps.push_back(st[modality_].goals);
-    std::vector<assist::Hypothesis> hyps;
-    for (size_t h = 0; h < post.hypotheses.size(); ++h)
-      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h]), nullptr});
     // A method that listens reads what the instruction asked for.
-    std::vector<std::shared_ptr<const assist::Request>> requests(hyps.size());
-    if (modality_ != Modality::ActionOnly) requests = assist::last_requests(*ctx.task, inf.steps, hyps.size());
-    assist::attach_requests(hyps, requests);
+    const auto requests = engine::requests_for(*ctx.task, inf.steps, post.hypotheses.size(), modality_);
+    std::vector<assist::Hypothesis> hyps = engine::assistant_hypotheses(belief, post, requests);
     switch (policy_) {
       case AssistPolicy::QmdpOffline:
         score_assistance(ctx, assist::qmdp_offline(ctx.setup, hyps, ctx.true_hypothesis), r);

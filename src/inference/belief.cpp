@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -185,7 +186,12 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, Refin
   // Each hypothesis owns its policy and heuristic, so the refinements are
   // independent and may run on several threads.
   budget_stops_.resize(policies_.size(), 0);
+  std::atomic<bool> stopped{false};
   auto refine_one = [&](size_t h, pddl::ActionId toward) {
+    if (stop_ && (stopped || stop_())) {
+      stopped = true;
+      return;
+    }
     budget_stops_[h] += (toward >= 0 ? policies_[h].refine_toward(s, toward, options_.refine)
                                      : policies_[h].refine_step(s, options_.refine))
                             .stopped_by_budget;
@@ -215,6 +221,7 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, Refin
   } else {
     for (const auto& [h, toward] : work) refine_one(h, toward);
   }
+  if (stopped) throw Interrupted("stopped between refinements");
 }
 
 double Belief::score_action(int h, const pddl::State& s, pddl::ActionId action) {

@@ -42,7 +42,10 @@
 // each refinement is done at most once per hypothesis). Hypotheses no
 // particle holds keep stale policies; see sync_policies for assistance.
 #include <array>
+#include <chrono>
+#include <functional>
 #include <limits>
+#include <stdexcept>
 #include <map>
 #include <memory>
 #include <optional>
@@ -175,6 +178,13 @@ struct Hypothesis {
   std::shared_ptr<const model::Specification> spec;
 };
 
+// A step stopped by Belief::set_call_bounds' stop test before its work was
+// done. The belief is then half-updated: callers run steps on a copy.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Normalised posteriors of one modality.
 struct Posterior {
   std::vector<double> hypotheses;  // in Belief::hypotheses() order
@@ -283,6 +293,14 @@ class Belief {
   void sync_policies(Modality m);
   // The same for the given hypotheses.
   void sync_policies(const std::vector<int>& hs);
+  // Bounds of the calls that follow (the session engine's per-call limits,
+  // src/engine): every search ends at `deadline` (as SearchOptions::deadline),
+  // and once `stop` returns true no further refinement starts and the step
+  // throws Interrupted. time_point::max() and an empty `stop`: no bounds.
+  void set_call_bounds(std::chrono::steady_clock::time_point deadline, std::function<bool()> stop) {
+    options_.refine.deadline = deadline;
+    stop_ = std::move(stop);
+  }
   // Refinements of single hypotheses so far (the cost that particles save).
   size_t refinements() const { return refinements_; }
   // Threads the refinements of a step run on (1: sequential).
@@ -364,6 +382,7 @@ class Belief {
   std::vector<data::GoalSpec> goals_;
   std::vector<model::CostProfile> profiles_;
   InferenceOptions options_;
+  std::function<bool()> stop_;  // set_call_bounds
   bool search_ = true;
   double noise_ = 0;  // utterance noise ε (InferenceOptions::utterance_noise)
   // The robust log-likelihood of one hypothesis (see utterance_noise).

@@ -656,7 +656,7 @@ class Grounder : public ConditionCompiler {
   void on_tuples(uint64_t visited) override {
     const GroundingOptions& o = t_.opts_;
     if (o.deadline != std::chrono::steady_clock::time_point::max() && std::chrono::steady_clock::now() >= o.deadline)
-      throw LimitError(LimitError::Kind::Time,
+      throw TimeLimitError(
                        printable(o.deadline_label + " reached while grounding" +
                                  (schema_ >= 0 ? " action '" + d_.actions[schema_].name + "'" : std::string()) + " (" +
                                  std::to_string(t_.actions_.size()) + " ground actions made so far)"));
@@ -669,7 +669,7 @@ class Grounder : public ConditionCompiler {
     }
     const int64_t need = saturating_mul(projected, GroundingOptions::kBytesPerGroundAction);
     if (need <= headroom_->bytes) return;
-    throw LimitError(LimitError::Kind::Memory,
+    throw MemoryLimitError(
                      printable("action '" + d_.actions[schema_].name + "' is on course to about " +
                                std::to_string(projected) + " ground actions (" + std::to_string(made) +
                                " made so far), about " + util::format_bytes(need) + ", but only " +

@@ -23,7 +23,7 @@
 // schema, the grounder bounds their number and refuses (InputError naming the
 // action and the count) above GroundingOptions::max_ground_actions. While it
 // enumerates, it stops at GroundingOptions::deadline and before memory runs
-// out (LimitError, naming the action and the counts).
+// out (TimeLimitError, MemoryLimitError: naming the action and counts).
 // Runtime queries live in task.cpp, successor generation in successor.cpp.
 //
 // Threads: a Task is immutable once its constructor returns. Every const
@@ -59,11 +59,11 @@ struct GroundingOptions {
   // static unary preconditions). About 1 kB each: the default is ~2 GB.
   int64_t max_ground_actions = kDefaultMaxGroundActions;
   static constexpr int64_t kDefaultMaxGroundActions = 2'000'000;
-  // Grounding past `deadline` throws LimitError(Time) with a message starting
+  // Grounding past `deadline` throws TimeLimitError with a message starting
   // with `deadline_label`.
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   std::string deadline_label = "time limit";
-  // Refuse (LimitError(Memory)) a grounding on course to need more memory than
+  // Refuse (MemoryLimitError) a grounding on course to need more memory than
   // the process has left (util::memory_headroom), at kBytesPerGroundAction
   // each: measured 1.0-1.1 kB per ground action of a 3-parameter schema,
   // task and heuristic tables included.

@@ -5,34 +5,28 @@
 #include <algorithm>
 #include <cmath>
 
-#include "assist/assist.hpp"
-#include "assist/request.hpp"
-#include "assist/setup.hpp"
+#include "engine/json.hpp"
 #include "eval/scenes.hpp"
 #include "pddl/parser.hpp"
-#include "search/astar.hpp"
 #include "util/error.hpp"
 
 namespace clips::serve {
 
-using inference::Modality;
+using engine::number_or_null;
 using nlohmann::json;
 
-const std::vector<std::string>& play_methods() {
-  static const std::vector<std::string> m = {"clips", "lang_only", "action_only", "literal"};
-  return m;
-}
+const std::vector<std::string>& play_methods() { return method_names(); }
 
 namespace {
 
-void check_method(const std::string& method) {
-  const auto& m = play_methods();
-  if (std::find(m.begin(), m.end(), method) == m.end())
-    throw InputError("field 'method': unknown method '" + method + "' (known: clips, lang_only, action_only, literal)");
+// The method's canonical name (an older spelling is read too).
+Method checked_method(const std::string& method) {
+  try {
+    return parse_method(method);
+  } catch (const InputError& e) {
+    throw InputError(std::string("field 'method': ") + e.what());
+  }
 }
-
-// JSON has no infinity: dead ends are sent as null.
-json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 std::string kind_name(render::ObjectKind k) {
   switch (k) {
@@ -74,38 +68,23 @@ void check_roles(const pddl::Task& task, const domains::Pack& pack) {
 PlaySetup dataset_setup(std::shared_ptr<const data::Dataset> ds, std::string name, const std::string& problem,
                         const std::string& plan_id) {
   check_problem_id(*ds, name, problem);
-  PlaySetup s;
-  s.dataset = std::move(name);
-  s.problem = problem;
-  s.pack = ds->pack_ptr();
+  const data::PlanRecord* plan = nullptr;
   for (const auto& p : ds->plans()) {
     if (p.problem_id != problem) continue;
-    if (plan_id.empty() ? s.plan == nullptr : p.id == plan_id) s.plan = &p;
+    if (plan_id.empty() ? plan == nullptr : p.id == plan_id) plan = &p;
   }
-  if (!s.plan && !plan_id.empty())
-    throw InputError("field 'plan': no plan '" + plan_id + "' on problem '" + problem + "'");
+  if (!plan && !plan_id.empty()) throw InputError("field 'plan': no plan '" + plan_id + "' on problem '" + problem + "'");
   try {
-    s.task = ds->task(problem);
+    ds->task(problem);
   } catch (const InputError& e) {
     throw InputError(std::string("field 'problem': ") + e.what());
   }
-  if (s.plan) {
-    s.goals = ds->candidate_goals(*s.plan);
-    s.true_goal = ds->true_goal_index(*s.plan);
-    s.profiles = inference::plan_cost_profiles(*s.pack, *s.plan).profiles;
-  } else {
-    // No recorded plan: the pack's goal rule for the problem, its default profiles.
-    data::PlanRecord only;
-    only.id = only.problem_id = problem;
-    try {
-      s.goals = ds->candidate_goals(only);
-    } catch (const InputError& e) {
-      throw InputError("field 'problem': problem '" + problem + "' has no candidate goals: " + e.what());
-    }
-    s.profiles = s.pack->default_profiles();
+  try {
+    return engine::dataset_problem(std::move(ds), std::move(name), problem, plan);
+  } catch (const InputError& e) {
+    if (plan) throw;
+    throw InputError("field 'problem': problem '" + problem + "' has no candidate goals: " + e.what());
   }
-  s.owner = std::move(ds);
-  return s;
 }
 
 PlaySetup text_setup(const std::string& domain_pddl, const std::string& problem_pddl, const std::string& pack_json,
@@ -150,95 +129,61 @@ PlaySetup text_setup(const std::string& domain_pddl, const std::string& problem_
   return s;
 }
 
-PlaySession::PlaySession(PlaySetup setup, const std::string& method, std::shared_ptr<lm::LanguageModel> lm,
-                         PlayLimits limits)
-    : ds_(std::move(setup.owner)),
-      dataset_name_(std::move(setup.dataset)),
-      problem_(std::move(setup.problem)),
-      plan_(setup.plan),
-      task_(std::move(setup.task)),
-      pack_(std::move(setup.pack)),
-      goals_(std::move(setup.goals)),
-      profiles_(std::move(setup.profiles)),
-      true_goal_(setup.true_goal),
-      method_(method),
-      lm_(std::move(lm)),
-      limits_(limits) {
-  check_method(method_);
-  if (goals_.empty()) throw InputError("field 'problem': problem '" + problem_ + "' has no candidate goal");
-  principal_ = pack_->roles().principal;
-  assistant_ = pack_->roles().assistant;
-  horizon_ = pack_->roles().horizon;
+namespace {
+
+// The engine of a session, after the server's own checks of the problem.
+engine::Engine play_engine(PlaySetup setup, Method method, std::shared_ptr<lm::LanguageModel> lm,
+                           const PlayLimits& limits) {
+  if (setup.goals.empty()) throw InputError("field 'problem': problem '" + setup.problem + "' has no candidate goal");
   try {
-    check_roles(*task_, *pack_);
+    check_roles(*setup.task, *setup.pack);
   } catch (const InputError& e) {
     throw InputError(std::string("field 'problem': ") + e.what());
   }
-  switch (pack_->spec().scene) {
-    case domains::SceneKind::Grid: dkg_.emplace(*task_); break;
-    case domains::SceneKind::Cards: vh_.emplace(*task_); break;
-    case domains::SceneKind::Text: text_.emplace(task_, *pack_); break;
+  if (limits.belief_threads < 0)
+    throw InputError("belief_threads (--session-threads) must be >= 0 (0: all cores), got " +
+                     std::to_string(limits.belief_threads));
+  SessionOptions o = limits.belief;
+  o.method = method;
+  o.max_nodes = limits.inference_nodes;
+  o.assist_max_nodes = limits.assist_nodes;
+  o.search_seconds = limits.search_seconds;
+  o.threads = limits.belief_threads;
+  o.goals.clear();
+  o.cost_profiles.clear();
+  return engine::Engine(std::move(setup), std::move(o), std::move(lm));
+}
+
+}  // namespace
+
+PlaySession::PlaySession(PlaySetup setup, const std::string& method, std::shared_ptr<lm::LanguageModel> lm,
+                         PlayLimits limits)
+    : dataset_name_(setup.dataset),
+      problem_(setup.problem),
+      plan_(setup.plan),
+      true_goal_(setup.true_goal),
+      principal_(setup.pack->roles().principal),
+      assistant_(setup.pack->roles().assistant),
+      method_(method_name(checked_method(method))),
+      limits_(limits),
+      engine_(play_engine(std::move(setup), checked_method(method), std::move(lm), limits)) {
+  switch (engine_.pack().spec().scene) {
+    case domains::SceneKind::Grid: dkg_.emplace(engine_.task()); break;
+    case domains::SceneKind::Cards: vh_.emplace(engine_.task()); break;
+    case domains::SceneKind::Text: text_.emplace(engine_.task_ptr(), engine_.pack()); break;
   }
-  options_ = limits_.belief;
-  options_.refine.max_nodes = limits_.inference_nodes;
-  options_.refine.max_seconds = limits_.search_seconds;
-  if (limits_.belief_threads < 0) throw InputError("belief_threads (--session-threads) must be >= 0 (0: all cores), got " + std::to_string(limits_.belief_threads));
-  options_.threads = limits_.belief_threads;
-  rebuild({});
-}
-
-void PlaySession::rebuild(const std::vector<Event>& events) {
-  belief_ = std::make_unique<inference::Belief>(task_, pack_, goals_, profiles_, options_);
-  last_ = belief_->start(task_->initial_state());
-  events_.clear();
-  history_.clear();
-  previous_.reset();
-  // Decisions stay with the events they followed.
-  std::erase_if(decisions_, [&](const Decided& d) { return d.events > events.size(); });
-  utterance_.reset();
-  utterance_state_.reset();
-  utterance_record_.reset();
-  literal_.reset();
-  push_history("start");
-  for (const auto& e : events) {
-    if (e.utterance) apply_utterance(e.text);
-    else apply_action(*task_->find_action(e.text));
-  }
-}
-
-void PlaySession::push_history(const std::string& label) {
-  HistoryPoint h;
-  h.label = label;
-  for (Modality m : inference::kModalities) h.goals[static_cast<int>(m)] = last_[m].goals;
-  history_.push_back(std::move(h));
-}
-
-void PlaySession::apply_action(pddl::ActionId a) {
-  previous_ = belief_->state();
-  last_ = belief_->observe(a);
-  events_.push_back({false, task_->action_name(a)});
-  push_history(task_->action_name(a));
-}
-
-void PlaySession::apply_utterance(const std::string& text) {
-  last_ = belief_->hear({text}, *lm_, std::move(last_));
-  events_.push_back({true, text});
-  utterance_ = text;
-  utterance_state_ = belief_->state();
-  utterance_record_ = last_.utterances.empty() ? std::nullopt : std::optional(last_.utterances.back());
-  literal_.reset();
-  push_history("\"" + text + "\"");
 }
 
 void PlaySession::act(const std::string& action) {
-  const auto a = task_->find_action(action);
+  const pddl::Task& task = engine_.task();
+  const auto a = task.find_action(action);
   if (!a) throw InputError("field 'action': '" + action + "' is not an action of problem " + problem_);
-  if (!task_->applicable(*a, belief_->state().data()))
-    throw ConflictError("action " + task_->action_name(*a) + " is not applicable now (" + active_agent() +
-                        "'s turn at step " + std::to_string(belief_->t()) + ")");
-  if (belief_->t() >= limits_.max_steps)
+  if (!task.applicable(*a, engine_.state().data()))
+    throw ConflictError("action " + task.action_name(*a) + " is not applicable now (" + engine_.active_agent() +
+                        "'s turn at step " + std::to_string(engine_.t()) + ")");
+  if (engine_.t() >= limits_.max_steps)
     throw ConflictError("the session has reached its limit of " + std::to_string(limits_.max_steps) + " steps");
-  apply_action(*a);
+  engine_.observe(*a);
 }
 
 void PlaySession::hear(const std::string& utterance) {
@@ -247,176 +192,82 @@ void PlaySession::hear(const std::string& utterance) {
   if (utterance.size() > limits_.max_utterance_bytes)
     throw InputError("field 'utterance': longer than " + std::to_string(limits_.max_utterance_bytes) + " bytes");
   if (utterance.find('\n') != std::string::npos) throw InputError("field 'utterance': must be one line");
-  apply_utterance(utterance);
-}
-
-Modality PlaySession::modality() const {
-  if (method_ == "lang_only") return Modality::UtteranceOnly;
-  if (method_ == "action_only") return Modality::ActionOnly;
-  return Modality::Both;  // clips; literal shows the CLIPS belief beside its own reading
-}
-
-std::string PlaySession::active_agent() const { return pack_->roles().active_agent(*task_, belief_->state()); }
-
-std::optional<std::string> PlaySession::reached_goal() const {
-  for (const auto& h : belief_->hypotheses())
-    if (h.spec->is_goal(belief_->state())) return goals_[h.goal].label;
-  return std::nullopt;
-}
-
-const language::ListenerResult& PlaySession::literal_reading() const {
-  if (!literal_) {
-    auto setup = language::literal_listener_setup(pack_);
-    literal_ = language::literal_listener(*task_, *utterance_state_, *utterance_, setup, *lm_);
+  try {
+    engine_.hear(utterance);
+  } catch (const InputError& e) {
+    throw InputError(std::string("field 'utterance': ") + e.what());
   }
-  return *literal_;
 }
 
 json PlaySession::assist(bool apply) {
-  const pddl::State& s = belief_->state();
-  if (active_agent() != assistant_)
-    throw ConflictError("it is the " + active_agent() + "'s turn, not the assistant's");
-  if (apply && belief_->t() >= limits_.max_steps)
+  const pddl::Task& task = engine_.task();
+  if (!engine_.assistant_turn())
+    throw ConflictError("it is the " + engine_.active_agent() + "'s turn, not the assistant's");
+  if (apply && engine_.t() >= limits_.max_steps)
     throw ConflictError("the session has reached its limit of " + std::to_string(limits_.max_steps) + " steps");
   {
     bool any = false;
-    for (pddl::ActionId a : task_->applicable_actions(s)) {
-      const auto& args = task_->action(a).args;
-      any |= !args.empty() && task_->object_name(args[0]) == assistant_;
+    for (pddl::ActionId a : task.applicable_actions(engine_.state())) {
+      const auto& args = task.action(a).args;
+      any |= !args.empty() && task.object_name(args[0]) == assistant_;
     }
     if (!any) throw ConflictError("the assistant (" + assistant_ + ") has no applicable action");
   }
-  json d;
-  d["method"] = method_;
-  pddl::ActionId chosen = -1;
-  const int t = std::min(belief_->t() + 1, horizon_ - 1);
-  if (method_ == "literal") {
-    // The literal listener follows the most probable command for the latest
-    // instruction: plan for its goal jointly, take the assistant's first step.
-    chosen = pack_->roles().noop(*task_, assistant_);
-    d["reason"] = "no instruction yet: wait";
-    if (utterance_) {
-      const auto& ranked = literal_reading();
-      if (!ranked.commands.empty()) {
-        const auto& config = pack_->language();
-        const auto& top = ranked.commands.front();
-        auto spec = std::make_shared<model::Specification>(task_, top.command.to_goal_formula(config), profiles_[0]);
-        std::unique_ptr<heuristics::Heuristic> h = pack_->make_heuristic(pack_->spec().literal.planning_heuristic, *task_);
-        search::SearchOptions so;
-        so.max_nodes = limits_.assist_nodes;
-        so.max_seconds = limits_.search_seconds;
-        auto r = search::plan(*spec, *h, s, so);
-        d["command"] = top.command.display_form();
-        d["command_probability"] = top.prob;
-        if (r.status == search::SearchStatus::Success && !r.plan.empty() &&
-            task_->applicable(r.plan.front(), s.data())) {
-          chosen = r.plan.front();
-          d["reason"] = "first step of a plan for the most probable command";
-        } else {
-          d["reason"] = r.plan.empty() && r.status == search::SearchStatus::Success
-                            ? "the command is already done: wait"
-                            : "no plan for the command within the budget: wait";
-        }
-      }
-    }
-    d["candidates"] = json::array();
-  } else {
-    assist::AssistSetup setup = assist::setup_for(*pack_, task_, *belief_);
-    setup.start = s;
-    setup.refine_options.max_nodes = limits_.assist_nodes;
-    setup.refine_options.max_seconds = limits_.search_seconds;
-    belief_->sync_policies(modality());  // particle inference: the weighted policies up to date
-    const auto post = belief_->posterior(modality());
-    std::vector<assist::Hypothesis> hyps;
-    for (size_t h = 0; h < post.hypotheses.size(); ++h)
-      hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief_->policies()[h]), nullptr});
-    if (modality() != inference::Modality::ActionOnly && utterance_record_)
-      assist::attach_requests(hyps, assist::requests_from(*task_, *utterance_record_));
-    auto q = assist::qmdp_decision(setup, hyps, s, t);
-    chosen = q.action;
-    d["unanimous"] = q.unanimous;
-    d["reason"] = q.broke_tie ? "tied at the best value; this one carries out the request \"" + q.request_command + "\""
-                  : q.unanimous ? "every likely goal agrees" : "highest expected value over the goal posterior";
-    json cands = json::array();
-    for (size_t i = 0; i < q.candidates.size(); ++i)
-      cands.push_back({{"action", task_->action_name(q.candidates[i])}, {"value", number_or_null(q.values[i])}});
-    d["candidates"] = std::move(cands);
-  }
-  d["action"] = task_->action_name(chosen);
+  const AssistDecision dec = engine_.assist();
+  json d = engine::to_json(dec);
   d["applied"] = apply;
-  d["t"] = belief_->t();  // the step it was decided at
-  if (apply) apply_action(chosen);
-  decisions_.push_back({events_.size(), apply, d});
+  d["t"] = engine_.t();  // the step it was decided at
+  if (apply) engine_.observe(static_cast<pddl::ActionId>(dec.id));
+  decisions_.push_back({engine_.events().size(), apply, d});
   return d;
 }
 
 void PlaySession::undo() {
-  int last_human = -1;
-  for (int i = static_cast<int>(events_.size()) - 1; i >= 0 && last_human < 0; --i) {
-    if (events_[i].utterance) continue;
-    const auto a = task_->find_action(events_[i].text);
-    const auto& ga = task_->action(*a);
-    if (!ga.args.empty() && task_->object_name(ga.args[0]) == principal_) last_human = i;
-  }
-  if (last_human < 0) throw ConflictError("nothing to undo: no human action yet");
-  std::vector<Event> keep(events_.begin(), events_.begin() + last_human);
-  rebuild(keep);
+  if (!engine_.undo()) throw ConflictError("nothing to undo: no human action yet");
+  // Decisions stay with the events they followed.
+  std::erase_if(decisions_, [&](const Decided& d) { return d.events > engine_.events().size(); });
 }
 
 void PlaySession::reset() {
   decisions_.clear();
-  rebuild({});
+  engine_.reset();
 }
 
 // A method switch keeps the decisions: each names the method that made it.
 void PlaySession::set_method(const std::string& method) {
-  check_method(method);
-  method_ = method;
+  const Method m = checked_method(method);
+  engine_.set_method(m);
+  method_ = method_name(m);
 }
 
 json PlaySession::decision() const {
+  const size_t events = engine_.events().size();
   for (auto it = decisions_.rbegin(); it != decisions_.rend(); ++it)
-    if (it->applied ? it->events <= events_.size() : it->events == events_.size()) return it->decision;
+    if (it->applied ? it->events <= events : it->events == events) return it->decision;
   return nullptr;
 }
 
-json PlaySession::posterior_json(Modality m) const {
-  const auto post = belief_->posterior(m);
-  json j;
-  j["modality"] = inference::to_string(m);
-  json goals = json::array();
-  for (size_t g = 0; g < goals_.size(); ++g)
-    goals.push_back({{"goal", goals_[g].label},
-                     {"colour", eval::goal_colour(*task_, *pack_, goals_[g].label)},
-                     {"p", post.goals[g]}});
-  j["goals"] = std::move(goals);
-  json profiles = json::array();
-  for (size_t c = 0; c < profiles_.size(); ++c) profiles.push_back({{"profile", profiles_[c].name}, {"p", post.profiles[c]}});
-  j["profiles"] = std::move(profiles);
-  json hyps = json::array();
-  for (size_t h = 0; h < belief_->hypotheses().size(); ++h) {
-    const auto& hy = belief_->hypotheses()[h];
-    hyps.push_back({{"goal", goals_[hy.goal].label}, {"profile", profiles_[hy.profile].name}, {"p", post.hypotheses[h]}});
-  }
-  j["hypotheses"] = std::move(hyps);
-  j["log_marginal"] = number_or_null(post.log_marginal);
+json PlaySession::posterior() const {
+  json j = engine::to_json(engine_.posterior(), engine_.method());
+  // The colour each goal is drawn in (the page's bars and chart).
+  for (auto& g : j["goals"]) g["colour"] = eval::goal_colour(engine_.task(), engine_.pack(), g["goal"].get<std::string>());
   return j;
 }
 
-json PlaySession::posterior() const { return posterior_json(modality()); }
-
 json PlaySession::trace() const {
   json steps = json::array();
-  const int m = static_cast<int>(modality());
-  for (const auto& h : history_) steps.push_back({{"event", h.label}, {"goals", h.goals[m]}});
+  for (const auto& h : engine_.history()) steps.push_back({{"event", h.label}, {"goals", h.goals}});
   json events = json::array();
-  for (const auto& e : events_) events.push_back({{"kind", e.utterance ? "utterance" : "action"}, {"text", e.text}});
-  return {{"modality", inference::to_string(modality())}, {"steps", std::move(steps)}, {"events", std::move(events)}};
+  for (const auto& e : engine_.events()) events.push_back({{"kind", e.utterance ? "utterance" : "action"}, {"text", e.text}});
+  return {{"method", method_},
+          {"modality", engine::evidence_name(engine_.method())},
+          {"steps", std::move(steps)},
+          {"events", std::move(events)}};
 }
 
 json PlaySession::scene() const {
-  const pddl::State& s = belief_->state();
-  if (text_) return text_->draw(s, previous_ ? &*previous_ : nullptr, active_agent());
+  const pddl::State& s = engine_.state();
+  if (text_) return text_->draw(s, engine_.previous_state(), engine_.active_agent());
   json j;
   if (dkg_) {
     const auto g = eval::dkg_scene(*dkg_, s);
@@ -442,7 +293,7 @@ json PlaySession::scene() const {
     j["objects"] = std::move(objs);
     j["active"] = g.active_agent;
   } else {
-    const auto h = eval::vh_scene(*pack_, *vh_, s);
+    const auto h = eval::vh_scene(engine_.pack(), *vh_, s);
     j["kind"] = "home";
     json fixtures = json::array();
     for (const auto& f : h.fixtures) fixtures.push_back({{"name", f.name}, {"piles", f.piles}});
@@ -457,68 +308,51 @@ json PlaySession::scene() const {
 }
 
 json PlaySession::reading() const {
-  if (!utterance_) return nullptr;
+  const auto r = engine_.reading();
+  if (!r) return nullptr;
   json j;
-  j["utterance"] = *utterance_;
+  j["utterance"] = r->utterance;
   // How much the instruction counted (1: fully; less when few of its words
   // are ones the model reads), with the reason, as `clips infer` warns.
-  if (utterance_record_) {
-    j["evidence_weight"] = utterance_record_->evidence_weight;
-    if (!utterance_record_->warning.empty()) j["warning"] = utterance_record_->warning;
+  if (r->scored) {
+    j["evidence_weight"] = r->evidence_weight;
+    if (!r->warning.empty()) j["warning"] = r->warning;
   }
+  if (!r->source.empty()) j["source"] = r->source;
   json cmds = json::array();
-  if (method_ == "literal") {
-    j["source"] = "literal listener (uniform prior over commands)";
-    const auto& r = literal_reading();
-    for (size_t i = 0; i < r.commands.size() && i < 5; ++i)
-      cmds.push_back({{"command", r.commands[i].command.display_form()}, {"p", r.commands[i].prob}});
-  } else if (utterance_record_) {
-    // P(command | u) = Σ_h P(h | data) P(command | u, h): the commands each
-    // goal would have the assistant do, weighted by the current posterior.
-    j["source"] = "speaker model, commands weighted by the goal posterior";
-    const auto post = belief_->posterior(method_ == "action_only" ? Modality::Both : modality());
-    std::map<std::string, double> mass;
-    double empty = 0;
-    for (size_t h = 0; h < utterance_record_->hypotheses.size() && h < post.hypotheses.size(); ++h) {
-      const auto& hu = utterance_record_->hypotheses[h];
-      if (hu.commands.empty()) empty += post.hypotheses[h];
-      for (const auto& c : hu.commands) mass[c.command] += post.hypotheses[h] * c.posterior;
-    }
-    std::vector<std::pair<std::string, double>> ranked(mass.begin(), mass.end());
-    if (empty > 0) ranked.emplace_back("(no command: the human needs no help)", empty);
-    std::stable_sort(ranked.begin(), ranked.end(), [](auto& a, auto& b) { return a.second > b.second; });
-    for (size_t i = 0; i < ranked.size() && i < 5; ++i) cmds.push_back({{"command", ranked[i].first}, {"p", ranked[i].second}});
-  }
+  for (const auto& [c, p] : r->commands) cmds.push_back({{"command", c}, {"p", p}});
   j["commands"] = std::move(cmds);
   return j;
 }
 
 json PlaySession::state() const {
+  const pddl::Task& task = engine_.task();
+  const domains::Pack& pack = engine_.pack();
   json j;
   j["dataset"] = dataset_name_.empty() ? json(nullptr) : json(dataset_name_);
-  j["domain"] = pack_->name();
+  j["domain"] = pack.name();
   j["problem"] = problem_;
   j["plan"] = plan_ ? json(plan_->id) : json(nullptr);
   j["method"] = method_;
-  j["t"] = belief_->t();
-  j["turn"] = active_agent();
+  j["t"] = engine_.t();
+  const std::string turn = engine_.active_agent();
+  j["turn"] = turn;
   j["principal"] = principal_;
   j["assistant"] = assistant_;
   // The principal's no-op ("(wait human)"), for a key that waits; null when the domain has none.
-  const auto noop = task_->find_action("(" + pack_->roles().noop_action + " " + principal_ + ")");
-  j["noop_action"] = noop ? json(task_->action_name(*noop)) : json(nullptr);
-  const auto reached = reached_goal();
-  j["reached_goal"] = reached ? json(*reached) : json(nullptr);
-  j["true_goal"] = true_goal_ >= 0 ? json(goals_.at(true_goal_).label) : json(nullptr);
+  const auto noop = task.find_action("(" + pack.roles().noop_action + " " + principal_ + ")");
+  j["noop_action"] = noop ? json(task.action_name(*noop)) : json(nullptr);
+  const auto reached = engine_.reached_goal();
+  j["reached_goal"] = reached ? json(engine_.goal_labels().at(*reached)) : json(nullptr);
+  j["true_goal"] = true_goal_ >= 0 ? json(engine_.goal_labels().at(true_goal_)) : json(nullptr);
   j["scene"] = scene();
   json acts = json::array();
-  if (active_agent() == principal_)
-    for (pddl::ActionId a : task_->applicable_actions(belief_->state())) acts.push_back(task_->action_name(a));
+  if (turn == principal_)
+    for (pddl::ActionId a : task.applicable_actions(engine_.state())) acts.push_back(task.action_name(a));
   j["actions"] = std::move(acts);
   j["posterior"] = posterior();
   json hist = json::array();
-  const int m = static_cast<int>(modality());
-  for (const auto& h : history_) hist.push_back({{"event", h.label}, {"goals", h.goals[m]}});
+  for (const auto& h : engine_.history()) hist.push_back({{"event", h.label}, {"goals", h.goals}});
   j["history"] = std::move(hist);
   j["reading"] = reading();
   j["decision"] = decision();
@@ -527,17 +361,17 @@ json PlaySession::state() const {
   j["observed_utterances"] = json::array();
   if (plan_) {
     for (const auto& a : plan_->observed.actions)
-      if (const auto id = task_->find_action(a.text); id && task_->object_name(task_->action(*id).args.at(0)) == principal_)
-        moves.push_back(task_->action_name(*id));
+      if (const auto id = task.find_action(a.text); id && task.object_name(task.action(*id).args.at(0)) == principal_)
+        moves.push_back(task.action_name(*id));
     for (const auto& u : plan_->observed.utterances) j["observed_utterances"].push_back(u.text);
   }
   j["observed_moves"] = std::move(moves);
-  j["searches_stopped_by_budget"] = belief_->searches_stopped_by_budget();
+  j["searches_stopped_by_budget"] = engine_.searches_stopped_by_budget();
   // Exact or particle inference, and the policy refinements done so far
   // (hypotheses × steps when exact; fewer where particles leave some out).
-  j["inference"] = {{"particles", options_.particles},
-                    {"refinements", belief_->refinements()},
-                    {"threads", belief_->refine_threads()}};
+  j["inference"] = {{"particles", engine_.options().particles},
+                    {"refinements", engine_.refinements()},
+                    {"threads", engine_.refine_threads()}};
   return j;
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // One interactive game on a problem of any pack: a person plays the human,
 // the assistant infers their goal from what they do and say and acts by the
-// chosen method. A thin adapter over the internals the CLI uses
-// (inference::Belief, assist::qmdp_decision, the literal listener); every
-// reply is plain JSON for the server. The problem comes from a loaded
-// dataset (with or without a recorded plan) or from PDDL text.
+// chosen method. A thin driver over the session engine (src/engine), which
+// owns the belief, the decisions and the trace; this file adds the server's
+// own limits, the scene and the replies as plain JSON. The problem comes from
+// a loaded dataset (with or without a recorded plan) or from PDDL text.
 //
 // Not thread-safe: the server serialises each session's requests.
 #include <map>
@@ -18,8 +18,7 @@
 #include "data/dataset.hpp"
 #include "domains/dkg_world.hpp"
 #include "domains/vh_world.hpp"
-#include "inference/belief.hpp"
-#include "language/listener.hpp"
+#include "engine/engine.hpp"
 #include "language/lm/language_model.hpp"
 #include "serve/text_scene.hpp"
 
@@ -48,27 +47,16 @@ struct PlayLimits {
   // not depend on it).
   int belief_threads = 1;
   // Every other belief option (particle inference and its settings; exact
-  // enumeration by default). Its budgets and thread count are replaced by
-  // the ones above.
-  inference::InferenceOptions belief;
+  // enumeration by default). Its method, budgets and thread count are
+  // replaced by the ones above.
+  SessionOptions belief;
 };
 
 // The methods a player may switch between (names as in `clips assist`).
 const std::vector<std::string>& play_methods();
 
-// What a session plays: a grounded problem, its pack, the candidate goals and
-// cost profiles, and the reference plan when there is one.
-struct PlaySetup {
-  std::string dataset;  // the served dataset's name; "" for PDDL text
-  std::string problem;  // the problem's id in the dataset, or its PDDL name
-  std::shared_ptr<const data::Dataset> owner;  // keeps `plan` alive (null for text)
-  const data::PlanRecord* plan = nullptr;      // the reference plan; null: none
-  std::shared_ptr<const pddl::Task> task;
-  domains::PackPtr pack;
-  std::vector<data::GoalSpec> goals;
-  std::vector<model::CostProfile> profiles;
-  int true_goal = -1;  // index in goals; -1: unknown (no reference plan)
-};
+// What a session plays (the engine's problem).
+using PlaySetup = engine::Problem;
 
 // A problem of a loaded dataset. `plan_id` picks the reference plan (cost
 // profiles, true goal, the observed moves offered as hints); empty: the
@@ -112,55 +100,23 @@ class PlaySession {
   nlohmann::json posterior() const;
   nlohmann::json trace() const;
   const std::string& method() const { return method_; }
-  int steps() const { return belief_->t(); }
+  int steps() const { return engine_.t(); }
 
  private:
-  struct Event {
-    bool utterance = false;
-    std::string text;  // action name or utterance
-  };
-  struct HistoryPoint {
-    std::string label;  // what moved the belief ("start", an action, a quoted utterance)
-    std::array<std::vector<double>, 3> goals;  // per modality
-  };
-
-  void rebuild(const std::vector<Event>& events);
-  void apply_action(pddl::ActionId a);
-  void apply_utterance(const std::string& text);
-  void push_history(const std::string& label);
-  inference::Modality modality() const;
-  std::string active_agent() const;
-  std::optional<std::string> reached_goal() const;
   nlohmann::json scene() const;
   nlohmann::json decision() const;
   nlohmann::json reading() const;
-  nlohmann::json posterior_json(inference::Modality m) const;
-  const language::ListenerResult& literal_reading() const;
 
-  std::shared_ptr<const data::Dataset> ds_;
   std::string dataset_name_, problem_;
   const data::PlanRecord* plan_ = nullptr;  // null: no reference plan
-  std::shared_ptr<const pddl::Task> task_;
-  domains::PackPtr pack_;
-  std::vector<data::GoalSpec> goals_;
-  std::vector<model::CostProfile> profiles_;
   int true_goal_ = -1;
   std::string principal_, assistant_;
-  int horizon_ = 100;
   std::string method_;
-  std::shared_ptr<lm::LanguageModel> lm_;
   PlayLimits limits_;
-  inference::InferenceOptions options_;
   std::optional<domains::DkgWorld> dkg_;
   std::optional<domains::VhWorld> vh_;
   std::optional<TextScene> text_;
-
-  std::unique_ptr<inference::Belief> belief_;
-  inference::StepRecord last_;
-  std::vector<Event> events_;
-  std::vector<HistoryPoint> history_;
-  // The state before the last action (what changed, for text scenes).
-  std::optional<pddl::State> previous_;
+  engine::Engine engine_;
   // The assist results still in the history, oldest first, each with the
   // number of events the history had after it (an applied decision's action
   // is the last of them). The state shows the latest applied one whose
@@ -172,11 +128,6 @@ class PlaySession {
     nlohmann::json decision;
   };
   std::vector<Decided> decisions_;
-  // The latest instruction and the state it was heard in (the literal listener reads it there).
-  std::optional<std::string> utterance_;
-  std::optional<pddl::State> utterance_state_;
-  std::optional<inference::UtteranceRecord> utterance_record_;
-  mutable std::optional<language::ListenerResult> literal_;  // computed on demand
 };
 
 }  // namespace clips::serve

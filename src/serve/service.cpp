@@ -487,9 +487,9 @@ Reply Service::handle(const Request& request) {
     return error_reply(409, e.what());
   } catch (const InputError& e) {
     return error_reply(400, e.what());
-  } catch (const LimitError& e) {
-    // A budget of this server (time, or memory it would not have): not the
-    // client's fault, and trying later or smaller may work.
+  } catch (const MemoryLimitError& e) {
+    // Memory this server would not have: not the client's fault, and trying
+    // later or smaller may work.
     return error_reply(503, e.what());
   } catch (const lm::LmError& e) {
     // The language model is another server behind this one: a gateway error.

@@ -20,16 +20,26 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
-// A budget stopped the work before it finished: a wall-clock limit, or memory
-// that would run out (refused before it did). Not a fault in the input.
-class LimitError : public std::runtime_error {
+// A call stopped before it was done: by its wall-clock limit (CallLimits,
+// `--max-seconds`/`--time-limit`, grounding included) or its cancellation.
+class CallStoppedError : public std::runtime_error {
  public:
-  enum class Kind { Time, Memory };
-  LimitError(Kind kind, const std::string& what) : std::runtime_error(what), kind_(kind) {}
-  Kind kind() const noexcept { return kind_; }
+  using std::runtime_error::runtime_error;
+};
+class TimeLimitError : public CallStoppedError {
+ public:
+  using CallStoppedError::CallStoppedError;
+};
+class CancelledError : public CallStoppedError {
+ public:
+  using CallStoppedError::CallStoppedError;
+};
 
- private:
-  Kind kind_;
+// Work refused because memory would run out (grounding a task too large for
+// what the process has left), before it did.
+class MemoryLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 }  // namespace clips

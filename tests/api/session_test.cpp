@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <thread>
@@ -172,6 +173,35 @@ TEST(Session, AssistWeighsTheCandidatesWithTheGoalPosterior) {
   double total = 0;
   for (const auto& c : dp.candidates) total += c.value;
   EXPECT_NEAR(total, 1.0, 1e-12);  // pi-bar values are the mixture's probabilities
+}
+
+TEST(Session, CallLimitsUndoResetAndGoalsThroughThePublicApi) {
+  // issue 44: a robot's controller bounds and cancels calls; a stopped call
+  // leaves the session as it was.
+  auto s = clips::Session::open_dataset(examples_dkg(), "e1");
+  s.observe("(left human)");
+  const auto before = s.posterior();
+  clips::CallLimits none_left;
+  none_left.seconds = 0;
+  EXPECT_THROW(s.observe("(wait robot)", none_left), clips::TimeLimitError);
+  std::atomic<bool> stop{true};
+  clips::CallLimits cancelled;
+  cancelled.cancel = &stop;
+  EXPECT_THROW(s.hear("Can you get me the yellow key?", cancelled), clips::CancelledError);
+  EXPECT_EQ(s.t(), 1);
+  EXPECT_EQ(s.trace().size(), 2u);
+  EXPECT_EQ(s.posterior().goal_probabilities, before.goal_probabilities);
+  EXPECT_EQ(s.posterior().log_marginal_likelihood, before.log_marginal_likelihood);
+  s.observe("(wait robot)");
+  EXPECT_TRUE(s.undo());  // the human's move and the robot's wait after it
+  EXPECT_EQ(s.t(), 0);
+  EXPECT_FALSE(s.undo());
+  s.observe("(left human)");
+  s.reset();
+  EXPECT_EQ(s.t(), 0);
+  EXPECT_EQ(s.trace().size(), 1u);
+  EXPECT_FALSE(s.goal_holds("gem1"));
+  EXPECT_THROW(s.goal_holds("gem9"), clips::InputError);
 }
 
 TEST(Session, MethodsReadTheirOwnEvidence) {

@@ -125,3 +125,27 @@ TEST(CliPlanLimits, MaxMemoryStopsTheSearch) {
 
 }  // namespace
 }  // namespace clips::eval
+
+// issue 44: `clips infer` and `clips assist` take a wall-clock limit on the
+// whole call (the session engine's CallLimits). A limit far below what any
+// inference takes stops every run: exit 5 and a message naming the limit.
+namespace clips::eval {
+namespace {
+
+TEST(CliCallLimits, InferAndAssistStopAtTheirTimeLimit) {
+  const std::string data = std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems";
+  const std::string adhoc = " --dataset " + data + " --problem e1 --actions '(left human) (wait robot) (left human)'";
+  for (const std::string& cmd : {"infer --plan e1.1.keys --dataset " + data, "infer" + adhoc, "assist" + adhoc,
+                                 "assist --plan e1.1.keys --dataset " + data}) {
+    const testing::RunResult r = testing::run(testing::clips_binary() + " " + cmd + " --time-limit 0.000001");
+    EXPECT_EQ(r.status, 5) << cmd << "\n" << r.out;
+    EXPECT_TRUE(testing::contains(r.out, "--time-limit of 1e-06 s reached")) << cmd << "\n" << r.out;
+    // A generous limit lets the run finish.
+    const testing::RunResult ok = testing::run(testing::clips_binary() + " " + cmd + " --time-limit 600 --json");
+    EXPECT_EQ(ok.status, 0) << cmd << "\n" << ok.out;
+  }
+  EXPECT_EQ(testing::run(testing::clips_binary() + " infer" + adhoc + " --time-limit -1").status, 2);
+}
+
+}  // namespace
+}  // namespace clips::eval

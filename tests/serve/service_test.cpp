@@ -294,7 +294,7 @@ TEST_F(Fixture, ParticleSessionsRefineOnlyWhatTheParticlesHold) {
   lim.play.belief.particles = 2;
   lim.play.belief.ess_threshold = 1.0;  // resample every step: the particles drop hypotheses
   lim.play.belief.rejuvenation_moves = 0;
-  lim.play.belief.particle_filters = inference::ParticleFilters::Clips;
+  lim.play.belief.particle_filters = "clips";
   auto few = make(lim);
   const json p = play(*few);
   EXPECT_EQ(e["inference"]["particles"], 0);

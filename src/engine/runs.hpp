@@ -1,0 +1,30 @@
+#pragma once
+// Whole runs over recorded observations (a dataset plan, or actions and an
+// utterance given on the command line) under the same per-call limits as the
+// engine's calls: `clips infer`, `clips assist --problem` and Python's
+// run_plan go through here; the bench's numbers come from the same
+// inference::run_inference (src/inference), unbounded.
+#include "clips/types.hpp"
+#include "engine/engine.hpp"
+#include "inference/belief.hpp"
+
+namespace clips::engine {
+
+// The belief's evidence modality of a method (literal: the CLIPS one).
+inference::Modality modality_of(Method m);
+
+// inference::run_inference (known_truth) or run_inference_on_observations,
+// bounded by `limits`: every search ends at the deadline, and a run that
+// reached it throws TimeLimitError (its numbers would depend on where the
+// clock cut it); a cancellation is seen before and after the run.
+inference::InferenceRun run_observations(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,
+                                         inference::InferenceOptions options, bool known_truth,
+                                         const CallLimits& limits = {});
+
+// An engine over observations that are not a dataset plan: the run above,
+// adopted (Engine::adopt), ready for assist().
+Engine engine_over_observations(const data::Dataset& ds, const data::PlanRecord& observations,
+                                std::shared_ptr<lm::LanguageModel> lm, const inference::InferenceOptions& inference,
+                                SessionOptions options, const CallLimits& limits = {});
+
+}  // namespace clips::engine

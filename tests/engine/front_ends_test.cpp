@@ -1,0 +1,164 @@
+// One plan through every front end of the session engine: the CLI (`clips
+// infer --json`, `clips assist --json`), the C++ session API, Python and the
+// server's request handlers (as `clips serve --stdio` answers them) give the
+// same posteriors step by step and the same decision.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "clips/clips.hpp"
+#include "language/listener.hpp"
+#include "serve/service.hpp"
+#include "test_paths.hpp"
+
+namespace {
+
+using nlohmann::json;
+
+const std::string kDataset = clips::paths::examples_dir() + "/doors-keys-gems";
+const std::vector<std::string> kActions = {"(left human)", "(wait robot)", "(left human)"};
+const std::string kUtterance = "Can you get me the yellow key?";
+
+std::string stdout_of(const std::string& command) {
+  std::string out;
+  FILE* p = popen((command + " 2>/dev/null").c_str(), "r");
+  if (!p) return out;
+  std::array<char, 4096> buf{};
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  pclose(p);
+  return out;
+}
+
+std::string cli_observations() {
+  std::string actions;
+  for (const auto& a : kActions) actions += (actions.empty() ? "" : " ") + a;
+  return " --dataset " + kDataset + " --problem e1 --actions '" + actions + "' --utterance '" + kUtterance +
+         "' --utterance-step " + std::to_string(kActions.size());
+}
+
+void expect_near_all(const std::vector<double>& a, const std::vector<double>& b, const std::string& where) {
+  ASSERT_EQ(a.size(), b.size()) << where;
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-9) << where << " [" << i << "]";
+}
+
+// What every front end reports: the goal posterior after each step (the last
+// one with the utterance heard), and the decision then.
+struct FrontEndRun {
+  std::vector<std::vector<double>> steps;
+  std::vector<std::string> goals;
+  std::string action;
+  std::vector<std::pair<std::string, double>> candidates;
+};
+
+FrontEndRun session_run() {
+  auto s = clips::Session::open_dataset(kDataset, "e1");
+  for (const auto& a : kActions) s.observe(a);
+  s.hear(kUtterance);
+  FrontEndRun r;
+  for (const auto& st : s.trace()) r.steps.push_back(st.posterior.goal_probabilities);
+  r.goals = s.posterior().goals;
+  const auto d = s.assist();
+  r.action = d.action;
+  for (const auto& c : d.candidates) r.candidates.push_back({c.action, c.value});
+  return r;
+}
+
+FrontEndRun cli_run() {
+  const std::string clips = std::string(CLIPS_BINARY_DIR) + "/clips";
+  const json infer = json::parse(stdout_of(clips + " infer --json" + cli_observations()));
+  const json assist = json::parse(stdout_of(clips + " assist --json" + cli_observations()));
+  FrontEndRun r;
+  for (const auto& st : infer["steps"]) r.steps.push_back(st["posterior"].get<std::vector<double>>());
+  r.goals = infer["goals"].get<std::vector<std::string>>();
+  // The engine's JSON of the decision.
+  EXPECT_EQ(assist["decision"]["method"], "clips");
+  r.action = assist["decision"]["action"].get<std::string>();
+  for (const auto& c : assist["decision"]["candidates"]) r.candidates.push_back({c["action"], c["value"]});
+  std::vector<double> last;
+  for (const auto& g : assist["posterior"]["goals"]) last.push_back(g["p"]);
+  expect_near_all(last, r.steps.back(), "assist --json posterior");
+  return r;
+}
+
+FrontEndRun server_run() {
+  auto lm = clips::language::make_language_model("embedded");
+  clips::serve::Service service({kDataset}, {}, lm);
+  auto call = [&](const std::string& method, const std::string& path, const json& body) {
+    const auto reply = service.handle(method, path, body.is_null() ? "" : body.dump());
+    EXPECT_LT(reply.status, 300) << path << ": " << reply.body;
+    return json::parse(reply.body);
+  };
+  const json created = call("POST", "/api/sessions", {{"dataset", "doors-keys-gems"}, {"problem", "e1"}});
+  const std::string id = created["id"];
+  for (const auto& a : kActions) call("POST", "/api/sessions/" + id + "/act", {{"action", a}});
+  const json state = call("POST", "/api/sessions/" + id + "/hear", {{"utterance", kUtterance}});
+  FrontEndRun r;
+  // One history point per update: the start, each action, the utterance.
+  const auto& history = state["history"];
+  EXPECT_EQ(history.size(), kActions.size() + 2);
+  for (size_t i = 0; i < history.size(); ++i)
+    if (i != kActions.size()) r.steps.push_back(history[i]["goals"].get<std::vector<double>>());
+  for (const auto& g : state["posterior"]["goals"]) r.goals.push_back(g["goal"]);
+  EXPECT_TRUE(state["posterior"].contains("log_marginal_likelihood"));
+  const json d = call("POST", "/api/sessions/" + id + "/assist", {{"apply", false}})["decision"];
+  r.action = d["action"];
+  for (const auto& c : d["candidates"]) r.candidates.push_back({c["action"], c["value"]});
+  return r;
+}
+
+FrontEndRun python_run() {
+  const std::string script = std::string(CLIPS_BINARY_DIR) + "/front_ends_test.py";
+  {
+    std::string actions;
+    for (const auto& a : kActions) actions += "\"" + a + "\", ";
+    std::ofstream f(script);
+    f << "import json, clips_assist\n"
+      << "s = clips_assist.Session.open_dataset(\"" << kDataset << "\", \"e1\")\n"
+      << "for a in [" << actions << "]:\n    s.observe(a)\n"
+      << "s.hear(\"" << kUtterance << "\")\n"
+      << "goals = list(s.posterior()[\"goals\"])\n"
+      << "steps = [[st[\"posterior\"][\"goals\"][g] for g in goals] for st in s.trace()]\n"
+      << "d = s.assist()\n"
+      << "print(json.dumps({\"goals\": goals, \"steps\": steps, \"action\": d[\"action\"],\n"
+      << "                  \"candidates\": [[c[\"action\"], c[\"value\"]] for c in d[\"candidates\"]]}))\n";
+  }
+  const json j = json::parse(stdout_of("PYTHONPATH=" + std::string(CLIPS_BINARY_DIR) + "/python /usr/bin/python3 " + script));
+  FrontEndRun r;
+  r.goals = j["goals"].get<std::vector<std::string>>();
+  r.steps = j["steps"].get<std::vector<std::vector<double>>>();
+  r.action = j["action"];
+  for (const auto& c : j["candidates"]) r.candidates.push_back({c[0], c[1]});
+  return r;
+}
+
+void expect_same(const FrontEndRun& a, const FrontEndRun& b, const std::string& name) {
+  EXPECT_EQ(a.goals, b.goals) << name;
+  ASSERT_EQ(a.steps.size(), b.steps.size()) << name;
+  for (size_t t = 0; t < a.steps.size(); ++t) expect_near_all(a.steps[t], b.steps[t], name + " step " + std::to_string(t));
+  EXPECT_EQ(a.action, b.action) << name;
+  ASSERT_EQ(a.candidates.size(), b.candidates.size()) << name;
+  for (size_t i = 0; i < a.candidates.size(); ++i) {
+    EXPECT_EQ(a.candidates[i].first, b.candidates[i].first) << name;
+    EXPECT_NEAR(a.candidates[i].second, b.candidates[i].second, 1e-9) << name << " " << a.candidates[i].first;
+  }
+}
+
+TEST(FrontEnds, CliSessionPythonAndServerAgreeStepByStep) {
+  const FrontEndRun session = session_run();
+  ASSERT_EQ(session.steps.size(), kActions.size() + 1);
+  ASSERT_FALSE(session.action.empty());
+  // The utterance moved the posterior (the runs compare something).
+  EXPECT_GT(std::abs(session.steps.back()[0] - session.steps[kActions.size() - 1][0]) +
+                std::abs(session.steps.back()[1] - session.steps[kActions.size() - 1][1]),
+            1e-3);
+  expect_same(session, cli_run(), "cli");
+  expect_same(session, server_run(), "server");
+  expect_same(session, python_run(), "python");
+}
+
+}  // namespace
