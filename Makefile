@@ -6,7 +6,7 @@ DATASET ?= $(if $(CLIPS_DATASET),$(CLIPS_DATASET),../shared/dataset)
 # ccache (when installed) shares objects between checkouts beside this one.
 export CCACHE_BASEDIR ?= $(abspath $(CURDIR)/..)
 
-# libFuzzer targets (clang-14) build into their own folder; see README "Fuzzing".
+# libFuzzer targets (clang-14) build into their own folder; see docs/testing.md, "Fuzzing".
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 2
@@ -75,7 +75,7 @@ test-tsan: deps
 	@nice -n 10 cmake --build build-tsan -j $(JOBS)
 	@cd build-tsan && ctest --output-on-failure -j $(JOBS) $(SAN_CTEST_ARGS)
 
-# The Debian package (README, "Installing"): build-deb/clips-assist_<version>_<arch>.deb.
+# The Debian package (docs/library.md, "Installing"): build-deb/clips-assist_<version>_<arch>.deb.
 deb: deps
 	@cmake -S . -B build-deb -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr -DCLIPS_BUILD_TESTS=OFF \
 	  -DCLIPS_BUILD_BENCH=OFF -DCLIPS_SOURCE_DATA=OFF -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null

@@ -3,17 +3,19 @@
 # CLIPS_FUZZ_SMOKE_TARGETS are the ones `make fuzz-build` (and so `make test`)
 # builds for the FuzzSmoke run; the others need much more of the code base
 # under clang + ASan and are built by `make fuzz` only (target fuzz_targets_all).
-set(CLIPS_FUZZ_SMOKE_TARGETS sexpr pddl plan dataset pack utterance completions chat)
-set(CLIPS_FUZZ_TARGETS ${CLIPS_FUZZ_SMOKE_TARGETS} serve bench_merge)
+set(CLIPS_FUZZ_SMOKE_TARGETS sexpr pddl plan dataset goalset pack utterance completions chat)
+set(CLIPS_FUZZ_TARGETS ${CLIPS_FUZZ_SMOKE_TARGETS} serve stdio bench_merge)
 set(clips_fuzz_lib_sexpr clips_pddl)
 set(clips_fuzz_lib_pddl clips_pddl)
 set(clips_fuzz_lib_plan clips_pddl)
 set(clips_fuzz_lib_dataset clips_data)
+set(clips_fuzz_lib_goalset clips_data)
 set(clips_fuzz_lib_pack clips_domains)
 set(clips_fuzz_lib_utterance clips_lm)
 set(clips_fuzz_lib_completions clips_lm)
 set(clips_fuzz_lib_chat clips_lm)
 set(clips_fuzz_lib_serve clips_serve)
+set(clips_fuzz_lib_stdio clips_serve)
 set(clips_fuzz_lib_bench_merge clips_eval)
 
 if(CLIPS_FUZZ)
@@ -21,10 +23,17 @@ if(CLIPS_FUZZ)
   # end, and of clips_eval only the scenes the session state shows (not the
   # experiments, benchmarks and reports).
   add_library(clips_fuzz_serve STATIC ${CMAKE_SOURCE_DIR}/src/serve/service.cpp
-              ${CMAKE_SOURCE_DIR}/src/serve/play_session.cpp ${CMAKE_SOURCE_DIR}/src/eval/scenes.cpp
+              ${CMAKE_SOURCE_DIR}/src/serve/play_session.cpp ${CMAKE_SOURCE_DIR}/src/serve/text_scene.cpp
+              ${CMAKE_SOURCE_DIR}/src/eval/scenes.cpp
               ${CMAKE_BINARY_DIR}/web_assets.cpp)
   target_link_libraries(clips_fuzz_serve PUBLIC clips_assist clips_render clips_data)
   set(clips_fuzz_lib_serve clips_fuzz_serve)
+  # The JSON-lines front end: the handlers and the front ends' file (which
+  # holds the HTTP server too, so cpp-httplib comes along).
+  add_library(clips_fuzz_stdio STATIC ${CMAKE_SOURCE_DIR}/src/serve/frontends.cpp
+              ${CMAKE_SOURCE_DIR}/src/serve/http_guard.cpp)
+  target_link_libraries(clips_fuzz_stdio PUBLIC clips_fuzz_serve PkgConfig::HTTPLIB)
+  set(clips_fuzz_lib_stdio clips_fuzz_stdio)
   set(fuzz_bins)
   set(fuzz_smoke_bins)
   foreach(t ${CLIPS_FUZZ_TARGETS})

@@ -15,7 +15,7 @@ fuzz_dir=$(cd "$(dirname "$0")" && pwd)
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   # The fast targets first; serve (built by `make fuzz` only) last.
-  targets=(sexpr chat completions dataset pack plan utterance pddl serve bench_merge)
+  targets=(sexpr chat completions dataset goalset pack plan utterance pddl serve stdio bench_merge)
 fi
 mkdir -p "$build/logs"
 status=0
@@ -27,6 +27,8 @@ for t in "${targets[@]}"; do
   case $t in
     sexpr|pddl|plan) args+=(-dict="$fuzz_dir/dict/pddl.dict") ;;
     serve) args+=(-dict="$fuzz_dir/dict/serve.dict") ;;
+    stdio) args+=(-dict="$fuzz_dir/dict/stdio.dict") ;;
+    goalset) args+=(-dict="$fuzz_dir/dict/goalset.dict") ;;
     pack) args+=(-dict="$fuzz_dir/dict/pack.dict") ;;
     bench_merge) args+=(-dict="$fuzz_dir/dict/bench_merge.dict") ;;
   esac

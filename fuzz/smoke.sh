@@ -30,6 +30,7 @@ for t in $targets; do
   dict=()
   [ "$t" = pddl ] || [ "$t" = sexpr ] || [ "$t" = plan ] && dict=(-dict="$fuzz_dir/dict/pddl.dict")
   [ "$t" = pack ] && dict=(-dict="$fuzz_dir/dict/pack.dict")
+  [ "$t" = goalset ] && dict=(-dict="$fuzz_dir/dict/goalset.dict")
   if ! "$bin_dir/${t}_fuzz" "$scratch/$t" "$fuzz_dir/corpus/$t" "${dict[@]}" -max_total_time="$seconds" \
       -rss_limit_mb=2048 -timeout=1 -artifact_prefix="$scratch/$t/" -print_final_stats=1 \
       >"$scratch/$t.log" 2>&1; then

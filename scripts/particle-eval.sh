@@ -18,7 +18,7 @@
 # inference, the reference, refines 2*GEMS policies every step, and behind
 # doors its lookahead searches hit the node budget (docs/scaling), which
 # would make the reference itself a budget artefact and the run take hours.
-# The numbers in README.md ("Particle inference") come from
+# The numbers in docs/particles.md come from
 #   PROBLEMS=3 PLANS=2 SEEDS=2 scripts/particle-eval.sh 32   (14x14 by default)
 #   PROBLEMS=3 PLANS=1 SEEDS=2 SIZE=16x16 scripts/particle-eval.sh 64
 set -euo pipefail

@@ -76,7 +76,7 @@ struct SessionOptions {
   int particles = 0;
   uint64_t particle_seed = 1;
   // Particle tuning, as `clips infer`'s options of the same names
-  // (README.md, "Particle inference"); unused when particles is 0.
+  // (docs/particles.md); unused when particles is 0.
   double ess_threshold = 0.5;              // resample below this share of the particles, in [0, 1]
   int rejuvenation_moves = 2;              // Metropolis-Hastings sweeps after each resampling, >= 0
   std::string rejuvenate = "evidence";     // when else they run: "evidence", "utterances" or "resampling"

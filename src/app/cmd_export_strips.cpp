@@ -1,6 +1,6 @@
 // `clips export-strips`: write a dataset problem (any pack) as a plain-STRIPS
 // domain + problem with integer action costs, for external classical planners
-// (Fast Downward: see README, "Checking plans with Fast Downward").
+// (Fast Downward: see docs/cli.md, "Exporting STRIPS").
 #include <fmt/core.h>
 
 #include <filesystem>

@@ -44,7 +44,7 @@ void register_generate(CLI::App& app) {
       "generate",
       "Write a dataset of random problems and plans sampled from the human model, with known true goals "
       "(doors-keys-gems): problems/ (PDDL and map pictures), plans/, utterances/ and generation.json (each plan's "
-      "goal, tag, command and utterance); see README.md, \"Generating datasets\"");
+      "goal, tag, command and utterance); see docs/cli.md, \"Generating datasets\"");
   struct Opts {
     std::string domain = "doors-keys-gems", domain_file, size = "9x9", out, temperature = "0.5";
     int gems = 4, keys = 2, doors = 2, problems = 1, plans = 2, max_steps = 0;

@@ -1,7 +1,7 @@
 #pragma once
 // Exit statuses of `clips`, one per kind of outcome, so that scripts can tell
 // a typo from bad data, "no plan exists" from "ran out of budget", and a
-// failing language-model server from a bug. README.md has the table; the
+// failing language-model server from a bug. docs/cli.md has the table; the
 // --help footer repeats it. Modelled on how Fast Downward documents its own
 // statuses: the low numbers are results, the rest name what stopped the run.
 #include <stdexcept>

@@ -195,12 +195,27 @@ std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const
   return out;
 }
 
+namespace {
+
+bool goal_label_is_file_name(const std::string& label) {
+  return !label.empty() && label[0] != '.' && label.find_first_of("/\\") == std::string::npos;
+}
+
+}  // namespace
+
 std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
                                         const std::map<std::string, std::string>& goal_defs) {
   std::vector<std::string> labels;
   std::map<std::string, int> seen;  // label -> line
   for (auto& [line_no, label] : lines_of(text)) {
     const SourceLoc loc{path, line_no, 1};
+    // A label names its file goals/definitions/<label>.pddl and is written
+    // into every JSON output: a plain file name in UTF-8 (its bytes are not
+    // echoed when they are not UTF-8).
+    if (const std::string bad = util::utf8_problem(label); !bad.empty())
+      throw InputError(loc, "goal label is " + bad);
+    if (!goal_label_is_file_name(label))
+      throw InputError(loc, "goal label '" + label + "' must be a file name: no '/' or '\\', no leading '.'");
     if (!goal_defs.count(label))
       throw InputError(loc, "goal '" + label + "' has no file goals/definitions/" + label + ".pddl");
     // A repeated label would be a second, identical hypothesis sharing its probability.
@@ -295,6 +310,7 @@ std::vector<GoalSpec> folder_goal_set(const std::string& dir_in, const std::stri
   const std::string text = pddl::read_text_file(set.string());
   // Read only the definitions the set names.
   for (auto& [line_no, label] : lines_of(text)) {
+    if (!goal_label_is_file_name(label)) continue;  // refused by parse_goal_set: nothing read outside definitions/
     const fs::path def = defs / (label + ".pddl");
     if (fs::exists(def)) texts[label] = pddl::read_text_file(def.string());
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 
 #include "heuristics/basic.hpp"
 #include "heuristics/lmcut.hpp"
@@ -427,6 +428,18 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
           fail(f, "'" + ref + "' in \"" + t + "\" names parameter " + std::to_string(pos) + ", but action '" + name +
                       "' has " + std::to_string(a->param_types.size()));
       }
+      // Expanded as the listener will expand it (else a malformed template,
+      // "(not (holding $1 $2)) extra)", fails there as an internal error).
+      commands::LanguageConfig one = spec.language;
+      one.goal_atoms = {{name, {t}}};
+      commands::Command probe;
+      probe.actions.push_back({name, {}});
+      for (size_t k = 0; k < a->param_types.size(); ++k) probe.actions[0].args.push_back("x" + std::to_string(k + 1));
+      try {
+        (void)probe.to_goal_formula(one);
+      } catch (const std::invalid_argument& e) {
+        fail(f, "\"" + t + "\" is not an atom template (" + e.what() + ")");
+      }
     }
   }
   if (!spec.language.salient_actions.empty()) {
@@ -531,6 +544,15 @@ void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain) {
     if (atoms.empty()) continue;
     spec.language.goal_atoms[rule.action] = std::move(atoms);
     spec.derived_goal_atoms.push_back(rule.action);
+  }
+  // A salient action the listener may hear needs its goal atoms (else the
+  // first command naming it fails as an internal error).
+  for (size_t i = 0; i < spec.language.salient_actions.size(); ++i) {
+    const auto& r = spec.language.salient_actions[i];
+    if (!spec.language.goal_atoms.count(r.action))
+      throw InputError(spec.source + ": language.salient_actions[" + std::to_string(i) + "]: action '" + r.action +
+                       "' has no language.goal_atoms, and none can be derived: no effect of it names its focal_arg " +
+                       std::to_string(r.focal_arg));
   }
 }
 

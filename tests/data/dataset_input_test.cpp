@@ -198,6 +198,50 @@ TEST_F(DatasetInput, VhGoalDefinitionErrorsNameTheirFile) {
   EXPECT_TRUE(named);
 }
 
+// Goal labels are file names written into every JSON output (issue 46): a
+// label that is not UTF-8 made `infer --json` fail with an internal error
+// (nlohmann type_error 316, exit 8); one with a path walked out of
+// goals/definitions/. Both are refused at load, naming the set's file and line.
+fs::path kitchen_copy() {
+  fs::path dir = scratch() / "kitchen";
+  fs::copy(paths::source_dir() + "/data/datasets/kitchen", dir, fs::copy_options::recursive);
+  return dir;
+}
+
+TEST_F(DatasetInput, GoalLabelThatIsNotUtf8IsRefusedWithFileAndLine) {
+  fs::path dir = kitchen_copy();
+  const std::string label = "kuchen\xfc";
+  write(dir / "goals/definitions" / (label + ".pddl"), "(made cake)\n");
+  write(dir / "goals/sets/1.txt", "pancakes\ncustard\nomelette\ncake\n" + label + "\n");
+  const std::string error = load_error(dir);
+  EXPECT_THAT(error, HasSubstr("goals/sets/1.txt:5:1: goal label is not valid UTF-8 (byte 0xfc at offset 6)"));
+  EXPECT_EQ(error.find('\xfc'), std::string::npos) << "the bad byte is echoed";
+  // The folder reader (a problem outside a loaded dataset) says the same.
+  try {
+    folder_goal_set(dir.string(), "1");
+    ADD_FAILURE() << "folder_goal_set accepted the label";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("goals/sets/1.txt:5:1: goal label is not valid UTF-8"));
+  }
+}
+
+TEST_F(DatasetInput, GoalLabelWithAPathIsRefused) {
+  fs::path dir = kitchen_copy();
+  // domain.pddl exists two folders up from goals/definitions/: never read as a goal.
+  write(dir / "goals/sets/1.txt", "pancakes\n../../domain\n");
+  EXPECT_THAT(load_error(dir),
+              HasSubstr("goals/sets/1.txt:2:1: goal label '../../domain' must be a file name: no '/' or '\\', no leading '.'"));
+  try {
+    folder_goal_set(dir.string(), "1");
+    ADD_FAILURE() << "folder_goal_set accepted the label";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("goals/sets/1.txt:2:1: goal label '../../domain' must be a file name"));
+  }
+  // A plain label still loads.
+  write(dir / "goals/sets/1.txt", "pancakes\ncustard\n");
+  EXPECT_EQ(folder_goal_set(dir.string(), "1").size(), 2u);
+}
+
 // ---- 3: an utterance file holds exactly one utterance
 
 TEST_F(DatasetInput, MultiLineUtteranceFileIsRejected) {

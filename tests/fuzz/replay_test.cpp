@@ -18,10 +18,12 @@ CLIPS_FUZZ_DECLARE(sexpr);
 CLIPS_FUZZ_DECLARE(pddl);
 CLIPS_FUZZ_DECLARE(plan);
 CLIPS_FUZZ_DECLARE(dataset);
+CLIPS_FUZZ_DECLARE(goalset);
 CLIPS_FUZZ_DECLARE(utterance);
 CLIPS_FUZZ_DECLARE(completions);
 CLIPS_FUZZ_DECLARE(chat);
 CLIPS_FUZZ_DECLARE(serve);
+CLIPS_FUZZ_DECLARE(stdio);
 CLIPS_FUZZ_DECLARE(pack);
 CLIPS_FUZZ_DECLARE(bench_merge);
 
@@ -45,6 +47,7 @@ const Case kTargets[] = {
     {"utterance", clips_fuzz_utterance}, {"completions", clips_fuzz_completions},
     {"chat", clips_fuzz_chat},           {"serve", clips_fuzz_serve},
     {"pack", clips_fuzz_pack},           {"bench_merge", clips_fuzz_bench_merge},
+    {"goalset", clips_fuzz_goalset},     {"stdio", clips_fuzz_stdio},
 };
 
 // Runs every file of `dir` (if it exists) through `run`; returns how many.
