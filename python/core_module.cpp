@@ -244,6 +244,7 @@ py::dict to_dict(const clips::Step& s) {
   d["agent"] = s.agent;
   d["evidence"] = s.evidence;
   d["utterances"] = s.utterances;
+  d["utterance_warnings"] = s.utterance_warnings;
   d["posterior"] = to_dict(s.posterior);
   d["seconds"] = s.seconds;
   return d;

@@ -150,6 +150,9 @@ struct Step {
   std::string agent;   // who acted ("" at t = 0)
   bool evidence = false;  // a human action (the assistant's are interventions)
   std::vector<std::string> utterances;
+  // For utterances heard here whose words the model mostly could not read
+  // (weighted toward uniform, or ignored): why, one line each.
+  std::vector<std::string> utterance_warnings;
   Posterior posterior;     // the session's method
   double seconds = 0;      // inference time of this step
 };

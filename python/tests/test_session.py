@@ -374,3 +374,17 @@ def test_a_time_limit_stops_a_call_and_leaves_the_session_unchanged():
     assert s.assist(time_limit=600) == reference.assist()
     with pytest.raises(clips_assist.InputError, match="time_limit"):
         s.observe("(wait robot)", time_limit=-1)
+
+
+def test_hear_flags_an_utterance_the_model_cannot_read():
+    # As `clips infer` warns on stderr: the step says why the words counted
+    # for little, and a readable instruction carries no warning.
+    s = clips_assist.Session.open_dataset(str(EXAMPLES), "e1")
+    s.observe("(left human)")
+    s.observe("(wait robot)")
+    step = s.hear("Kannst du mir den roten Schlüssel geben?")
+    assert len(step["utterance_warnings"]) == 1
+    assert "Kannst du mir" in step["utterance_warnings"][0]
+    assert s.trace()[-1]["utterance_warnings"] == step["utterance_warnings"]
+    readable = s.hear("Can you get me the yellow key?")
+    assert readable["utterance_warnings"] == step["utterance_warnings"]  # the same step: only the first is flagged

@@ -349,7 +349,10 @@ struct Engine::Impl {
     s.action = r.action;
     if (!r.action.empty()) s.agent = agent_of(r.action);
     s.evidence = r.evidence;
-    for (const auto& u : r.utterances) s.utterances.push_back(u.text);
+    for (const auto& u : r.utterances) {
+      s.utterances.push_back(u.text);
+      if (!u.warning.empty()) s.utterance_warnings.push_back(u.warning);
+    }
     s.posterior = convert(r[modality_of(options.method)]);
     s.seconds = r.seconds;
     return s;

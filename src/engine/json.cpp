@@ -38,6 +38,7 @@ json to_json(const Step& s, Method m) {
           {"agent", s.agent},
           {"evidence", s.evidence},
           {"utterances", s.utterances},
+          {"utterance_warnings", s.utterance_warnings},
           {"posterior", to_json(s.posterior, m)},
           {"seconds", s.seconds}};
 }
