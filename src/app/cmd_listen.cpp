@@ -10,6 +10,7 @@
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "language/listener.hpp"
+#include "language/lm/readability.hpp"
 #include "util/error.hpp"
 #include "util/utf8.hpp"
 
@@ -75,11 +76,23 @@ void register_listen(CLI::App& app) {
     auto lm = make_lm(o->lm, ds);
     const auto result = language::literal_listener(*task, s_T, utterance, setup, *lm);
 
+    // As infer warns: a ranking of words the model mostly cannot read is
+    // close to the prior, and must not be taken for a reading.
+    const double readable = lm::read_utterance(utterance).share();
+    std::string warning;
+    if (readable < 0.5)
+      warning = fmt::format("the language model can read {:.0f}% of the utterance's words; this ranking says little "
+                            "about what was asked",
+                            100 * readable);
+    if (!warning.empty()) fmt::print(stderr, "warning: {}\n", warning);
+
     const size_t n_all = result.commands.size();
     const size_t shown = o->top >= 0 ? std::min(n_all, static_cast<size_t>(o->top)) : (o->json ? n_all : std::min<size_t>(n_all, 10));
     if (o->json) {
       nlohmann::ordered_json j;  // keeps "utterance" before "commands"
       j["utterance"] = result.utterance;
+      j["readable_share"] = readable;
+      if (!warning.empty()) j["warning"] = warning;
       j["commands"] = nlohmann::ordered_json::array();
       for (size_t i = 0; i < shown; ++i)
         j["commands"].push_back({{"command", result.commands[i].command.display_form()}, {"prob", result.commands[i].prob}});

@@ -48,8 +48,9 @@ TEST_F(ListenCli, JsonShape) {
   // Exactly one JSON object on stdout.
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_TRUE(j.is_object());
-  EXPECT_EQ(j.size(), 2u);
+  EXPECT_EQ(j.size(), 3u);  // utterance, readable_share, commands (no warning: every word is readable)
   EXPECT_EQ(j.at("utterance"), "Can you pass me the red key?");  // the literal utterance file
+  EXPECT_EQ(j.at("readable_share"), 1.0);
   const auto& cmds = j.at("commands");
   ASSERT_TRUE(cmds.is_array());
   ASSERT_EQ(cmds.size(), 5u);
@@ -67,6 +68,18 @@ TEST_F(ListenCli, JsonShape) {
   }
   // Display form: variables keep their '?'.
   EXPECT_NE(cmds[0].at("command").get<std::string>().find("?key1"), std::string::npos);
+}
+
+// As `clips infer` warns: words the model mostly cannot read give a ranking
+// near the prior, and listen says so (stderr, and "warning" in --json).
+TEST_F(ListenCli, UnreadableUtteranceIsFlagged) {
+  const CliRun r = run("listen " + dataset() + " --plan 2.1.keys --json --top 3 --utterance '?!?! ... ?'");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("readable_share"), 0.0);
+  EXPECT_NE(j.value("warning", "").find("can read 0% of the utterance's words"), std::string::npos) << r.out;
+  const CliRun table = run("listen " + dataset() + " --plan 2.1.keys --top 3 --utterance 'Kannst du mir den roten Schlüssel geben?'", true);
+  EXPECT_NE(table.out.find("warning: the language model can read"), std::string::npos) << table.out;
 }
 
 TEST_F(ListenCli, AllCommandsSumToOne) {
