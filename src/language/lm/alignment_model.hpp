@@ -134,6 +134,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <shared_mutex>
 #include <string>
 #include <unordered_map>
@@ -247,6 +248,9 @@ class AlignmentModel {
   // A token unknown to the vocabulary, read as the word it misspells, if any.
   std::string respell(const std::string& w) const;
   std::string respelled(const std::string& w) const;  // respell(), memoised
+  // The qualifier value an out-of-vocabulary word names by WordNet ("big" ->
+  // large, "tiny" -> small, "wood" -> wooden), or "" if none or several do.
+  std::string attribute_synonym(const std::string& w) const;
   void mark_modifiers(EncodedUtterance& u) const;
   void mark_pronoun_antecedents(EncodedUtterance& u) const;
 
@@ -277,6 +281,8 @@ class AlignmentModel {
   // against, and each repair scans the vocabulary.
   mutable std::shared_mutex respell_mutex_;
   mutable std::unordered_map<std::string, std::string> respelled_;
+  mutable std::once_flag synonyms_once_;
+  mutable std::unordered_map<std::string, std::string> attribute_synonyms_;
 };
 
 }  // namespace clips::lm

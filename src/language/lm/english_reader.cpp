@@ -91,6 +91,7 @@ std::string AlignmentModel::respell(const std::string& w) const {
     if (known(two)) return two;
     if (const std::string one = shorten_runs(w, 1); known(one)) return one;
   }
+  if (std::string v = attribute_synonym(w); !v.empty()) return v;
   if (wn.knows(w)) return w;
   int best = -1;
   bool best_full = false;
@@ -110,6 +111,53 @@ std::string AlignmentModel::respell(const std::string& w) const {
     }
   }
   return best >= 0 ? words_[static_cast<size_t>(best)] : w;
+}
+
+// Qualifier values are few and a domain names them one way ("large"), while
+// people say "big", "huge", "tiny", "wood". Each value's WordNet relatives
+// (adjective_relatives: its own sense's words, then similar adjectives) and
+// its derivational neighbours by English suffixes (wood/wooden, metal/
+// metallic) are read as the value. A word close to two values equally
+// ("medium"-like words between sizes) is left alone, and so is a word whose
+// dominant sense is not an adjective ("cherry" is a fruit before a red).
+std::string AlignmentModel::attribute_synonym(const std::string& w) const {
+  std::call_once(synonyms_once_, [this] {
+    WordNetLexicon& wn = WordNetLexicon::instance();
+    struct Best {
+      int strength = 0;
+      std::string value;
+      bool ambiguous = false;
+    };
+    std::unordered_map<std::string, Best> best;
+    auto offer = [&](const std::string& word, int strength, const std::string& value) {
+      if (word.size() < 3 || word_ids_.count(word) != 0 || is_function_word(word)) return;
+      Best& b = best[word];
+      if (strength > b.strength) {
+        b = Best{strength, value, false};
+      } else if (strength == b.strength && value != b.value) {
+        b.ambiguous = true;
+      }
+    };
+    static constexpr std::string_view kSuffixes[] = {"en", "n", "ic", "lic", "y", "ish"};
+    for (size_t id = 0; id < attribute_word_.size() && id < words_.size(); ++id) {
+      if (!attribute_word_[id]) continue;
+      const std::string& value = words_[id];
+      for (const auto& [word, strength] : wn.adjective_relatives(value))
+        if (wn.word_class(word).adjective_like) offer(word, strength, value);
+      for (std::string_view suffix : kSuffixes) {
+        if (value.size() > suffix.size() + 2 && value.compare(value.size() - suffix.size(), suffix.size(), suffix) == 0) {
+          const std::string stem = value.substr(0, value.size() - suffix.size());
+          if (wn.knows(stem)) offer(stem, 1, value);
+        }
+        const std::string derived = value + std::string(suffix);
+        if (wn.knows(derived)) offer(derived, 1, value);
+      }
+    }
+    for (auto& [word, b] : best)
+      if (!b.ambiguous) attribute_synonyms_.emplace(word, b.value);
+  });
+  auto it = attribute_synonyms_.find(w);
+  return it == attribute_synonyms_.end() ? std::string() : it->second;
 }
 
 std::string AlignmentModel::respelled(const std::string& w) const {

@@ -516,6 +516,42 @@ std::vector<std::string> WordNetLexicon::qualifier_words(const std::string& pred
   return out;
 }
 
+std::vector<std::pair<std::string, int>> WordNetLexicon::adjective_relatives(const std::string& value) {
+  static std::map<std::string, std::vector<std::pair<std::string, int>>> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(value); it != memo.end()) return it->second;
+  std::vector<std::pair<std::string, int>> out;
+  // WordNet marks syntactic positions after adjectives ("metal(p)"): drop them.
+  auto plain = [](const char* raw) {
+    std::string w = lower_word(raw);
+    if (const size_t paren = w.find('('); paren != std::string::npos) w.resize(paren);
+    for (char c : w)
+      if (c < 'a' || c > 'z') return std::string();
+    return w;
+  };
+  auto add = [&](const std::string& w, int strength) {
+    if (w.empty() || w == value) return;
+    for (auto& [x, s] : out)
+      if (x == w) {
+        s = std::max(s, strength);
+        return;
+      }
+    out.emplace_back(w, strength);
+  };
+  std::string buf = value;
+  // The dominant sense only: later senses are figurative ("large" as in
+  // "at large", "small" as in "small voice") and would map everyday words to
+  // the wrong value.
+  if (SynsetPtr head = findtheinfo_ds(buf.data(), ADJ, SIMPTR, 1); head != nullptr) {
+    for (int k = 0; k < head->wcount; ++k) add(plain(head->words[k]), 3);
+    for (SynsetPtr sim = head->ptrlist; sim != nullptr; sim = sim->nextss)
+      for (int k = 0; k < sim->wcount; ++k) add(plain(sim->words[k]), 2);
+    free_syns(head);
+  }
+  memo.emplace(value, out);
+  return out;
+}
+
 std::vector<std::string> WordNetLexicon::verb_phrases(const std::string& action) {
   static std::map<std::string, std::vector<std::string>> memo;
   std::lock_guard<std::mutex> lock(wordnet_mutex());

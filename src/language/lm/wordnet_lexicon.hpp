@@ -47,6 +47,13 @@ class WordNetLexicon {
   // them as adjectives. Empty if WordNet does not know the kind as a noun.
   std::vector<std::string> qualifier_words(const std::string& predicate);
 
+  // Words a speaker may use for a qualifier value, with how close each is:
+  // 3 for the words of the value's dominant adjective sense ("large" -> big),
+  // 2 for the heads of the adjective senses similar to it ("large" -> huge,
+  // "small" -> tiny). Lower-case single words only; the value itself is left
+  // out. Empty when WordNet does not know the value as an adjective.
+  std::vector<std::pair<std::string, int>> adjective_relatives(const std::string& value);
+
   // Phrases a speaker may use for an action name ("pickup" -> "pick up",
   // "get", "grab", ...) and for a type name ("plank" -> "plank", "board"),
   // most typical first; for the generated corpus (domain_corpus.hpp). The
