@@ -198,6 +198,23 @@ TEST(DomainCorpus, QualifierSynonymsReadAsTheDomainsValues) {
   EXPECT_GT(score(m, small, "pass me the little one"), score(m, big, "pass me the little one") + 1.0);
 }
 
+// The domain's own type hierarchy is world knowledge too: planks, legs and
+// brackets are declared `part`s, hammers and screwdrivers `tool`s, and the
+// generated corpus sometimes names an object by such a supertype. WordNet
+// does not call a leg or a bracket a part.
+TEST(DomainCorpus, DeclaredSupertypesNameTheirObjects) {
+  const AlignmentModel& m = *model_for(1);
+  for (const char* part : {"leg1", "bracket1", "plank1"})
+    for (const char* tool : {"hammer1", "screwdriver1"}) {
+      const std::string p = std::string("(handover you me ") + part + ")";
+      const std::string t = std::string("(handover you me ") + tool + ")";
+      EXPECT_GT(score(m, p, "could you pass me the part"), score(m, t, "could you pass me the part") + 1.0)
+          << part << " vs " << tool;
+      EXPECT_GT(score(m, t, "could you pass me a tool"), score(m, p, "could you pass me a tool") + 1.0)
+          << tool << " vs " << part;
+    }
+}
+
 // Colour binding, generalised: a size said of a noun of another type does not
 // count for an object of this type ("the big hammer" is no big plank).
 TEST(DomainCorpus, SizeBindsToItsNounLikeAColour) {
