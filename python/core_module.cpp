@@ -29,7 +29,7 @@
 #include "data/dataset.hpp"
 #include "api/session_internals.hpp"
 #include "eval/bench.hpp"
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "render/render.hpp"
 #include "engine/json.hpp"
 #include "engine/options.hpp"

@@ -17,9 +17,9 @@
 #include "app/scaling_cli.hpp"
 #include "app/particle_flags.hpp"
 #include "eval/bench.hpp"
-#include "eval/particle_eval.hpp"
+#include "studies/particle_eval.hpp"
 #include "eval/bench_shards.hpp"
-#include "eval/report.hpp"
+#include "report/report.hpp"
 #include "util/data_dir.hpp"
 
 namespace clips::app {
@@ -257,7 +257,7 @@ void register_bench(CLI::App& app) {
       ->check(HttpUrl);
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
-  // Scaling curves (eval/scaling.hpp): generated datasets, one point per process.
+  // Scaling curves (studies/scaling.hpp): generated datasets, one point per process.
   auto sc = std::make_shared<ScalingCli>();
   cmd->add_flag("--scaling", sc->run,
                 "Scaling curves instead of a dataset: time per belief step and assistance decision, max RSS and "

@@ -13,7 +13,7 @@
 #include "data/dataset.hpp"
 #include "assist/assist.hpp"
 #include "clips/types.hpp"
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"

@@ -15,7 +15,7 @@
 
 #include "assist/assist.hpp"
 #include "data/dataset.hpp"
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "language/lm/language_model.hpp"
 

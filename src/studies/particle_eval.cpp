@@ -1,4 +1,4 @@
-#include "eval/particle_eval.hpp"
+#include "studies/particle_eval.hpp"
 
 #include <fmt/core.h>
 

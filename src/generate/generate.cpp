@@ -1,4 +1,4 @@
-#include "eval/generate.hpp"
+#include "generate/generate.hpp"
 
 #include <fmt/core.h>
 
