@@ -16,7 +16,7 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f, const std::set<std::s
     // gives the message every front end gives for a bad value.
     auto* o = cmd->add_option_function<std::string>(
         engine::cli_flag(option), [&f, name](const std::string& text) { engine::set_particle_option(f, name, text); },
-        option.help);
+        option.kind == engine::ParticleOption::Kind::Choice ? option.help : option.help + " [" + option.takes + "]");
     o->check(CLI::Validator(
         [name](std::string& text) {
           ParticleOptions scratch;
@@ -27,9 +27,13 @@ void add_particle_options(CLI::App* cmd, ParticleFlags& f, const std::set<std::s
             return std::string(e.what());
           }
         },
-        option.kind == engine::ParticleOption::Kind::Choice  ? "CHOICE"
-        : option.kind == engine::ParticleOption::Kind::Real ? "X"
-                                                             : "N"));
+        ""));
+    std::string type = option.kind == engine::ParticleOption::Kind::Real ? "X" : "N";
+    if (option.kind == engine::ParticleOption::Kind::Choice) {
+      type.clear();
+      for (const auto& c : option.choices) type += (type.empty() ? "" : "|") + c;
+    }
+    o->type_name(type);
   }
 }
 
