@@ -26,7 +26,7 @@ if(CLIPS_FUZZ)
               ${CMAKE_SOURCE_DIR}/src/serve/play_session.cpp ${CMAKE_SOURCE_DIR}/src/serve/text_scene.cpp
               ${CMAKE_SOURCE_DIR}/src/scenes/scenes.cpp
               ${CMAKE_BINARY_DIR}/web_assets.cpp)
-  target_link_libraries(clips_fuzz_serve PUBLIC clips_assist clips_render clips_data)
+  target_link_libraries(clips_fuzz_serve PUBLIC clips_engine clips_render clips_data)
   set(clips_fuzz_lib_serve clips_fuzz_serve)
   # The JSON-lines front end: the handlers and the front ends' file (which
   # holds the HTTP server too, so cpp-httplib comes along).

@@ -106,7 +106,7 @@ constexpr long long kMaxThreads = 1024;
 
 struct SessionOption {
   const char* name;
-  const char* help;
+  std::string help;
   std::function<void(clips::SessionOptions&, py::handle)> set;
   std::function<std::string(const clips::SessionOptions&)> show;  // the default, as Python would write it
 };
@@ -136,7 +136,7 @@ std::vector<SessionOption> particle_option_rows() {
   std::vector<SessionOption> rows;
   for (const auto& po : clips::engine::particle_option_table()) {
     const bool choice = po.kind == clips::engine::ParticleOption::Kind::Choice;
-    rows.push_back({po.name.c_str(), po.takes.c_str(),
+    rows.push_back({po.name.c_str(), po.brief + "; " + po.takes,
                     [po](clips::SessionOptions& o, py::handle v) {
                       clips::engine::set_particle_option(o, po.name, particle_option_text(po, v));
                     },

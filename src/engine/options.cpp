@@ -61,18 +61,20 @@ std::string one_of(const std::vector<std::string>& choices) {
 }
 
 template <typename T>
-Row integer_row(std::string name, long long lo, long long hi, std::string help, T ParticleOptions::*field) {
+Row integer_row(std::string name, long long lo, long long hi, std::string brief, std::string help,
+                T ParticleOptions::*field) {
   ParticleOption o{std::move(name), ParticleOption::Kind::Integer, fmt::format("an integer from {} to {}", lo, hi),
-                   std::move(help), {}};
+                   std::move(brief), std::move(help), {}};
   return {o, [o, lo, hi, field](ParticleOptions& p, const std::string& t) {
             p.*field = static_cast<T>(parse_integer<long long>(o, t, lo, hi));
           },
           [field](const ParticleOptions& p) { return std::to_string(p.*field); }};
 }
 
-Row choice_row(std::string name, std::vector<std::string> choices, std::string help,
+Row choice_row(std::string name, std::vector<std::string> choices, std::string brief, std::string help,
                std::string ParticleOptions::*field) {
-  ParticleOption o{std::move(name), ParticleOption::Kind::Choice, one_of(choices), std::move(help), choices};
+  ParticleOption o{std::move(name), ParticleOption::Kind::Choice, one_of(choices), std::move(brief), std::move(help),
+                   choices};
   return {o, [o, field](ParticleOptions& p, const std::string& t) { p.*field = parse_choice(o, t); },
           [field](const ParticleOptions& p) { return p.*field; }};
 }
@@ -80,13 +82,14 @@ Row choice_row(std::string name, std::vector<std::string> choices, std::string h
 const std::vector<Row>& rows() {
   static const std::vector<Row> table = [] {
     std::vector<Row> t;
-    t.push_back(integer_row("particles", 0, kMaxParticles,
+    t.push_back(integer_row("particles", 0, kMaxParticles, "particles per filter (0: exact enumeration)",
                             "Particle inference with N particles per modality (sequential Monte Carlo over goal x "
                             "cost profile; only the hypotheses particles hold are refined). 0: exact enumeration "
                             "(default)",
                             &ParticleOptions::particles));
     {
       ParticleOption o{"particle_seed", ParticleOption::Kind::Integer, "an integer from 0 to 18446744073709551615",
+                       "the particle filters' seed",
                        "Seed of the particle filters (default 1); results are a function of it", {}};
       t.push_back({o,
                    [o](ParticleOptions& p, const std::string& text) {
@@ -96,32 +99,34 @@ const std::vector<Row>& rows() {
     }
     {
       ParticleOption o{"ess_threshold", ParticleOption::Kind::Real, "a number from 0 to 1",
+                       "resample below this share of the particles",
                        "Resample when the effective sample size falls below this share of the particles (default "
                        "0.5; 1: every step)",
                        {}};
       t.push_back({o, [o](ParticleOptions& p, const std::string& text) { p.ess_threshold = parse_real(o, text, 0, 1); },
                    [](const ParticleOptions& p) { return fmt::format("{}", p.ess_threshold); }});
     }
-    t.push_back(integer_row("rejuvenation_moves", 0, 100,
+    t.push_back(integer_row("rejuvenation_moves", 0, 100, "Metropolis-Hastings sweeps after each resampling",
                             "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none)",
                             &ParticleOptions::rejuvenation_moves));
-    t.push_back(choice_row("rejuvenate", {"evidence", "utterances", "resampling"},
+    t.push_back(choice_row("rejuvenate", {"evidence", "utterances", "resampling"}, "when else the sweeps run",
                            "When the sweeps run besides after resampling: evidence (after every human action or "
                            "utterance; default), utterances (after steps with an utterance: cheaper, and enough for "
                            "instructions that point away from the goals the actions favoured) or resampling (never "
                            "else: cheapest, but the particles can stay on goals that new evidence turns against)",
                            &ParticleOptions::rejuvenate));
-    t.push_back(integer_row("proposal_groups", 1, 64,
+    t.push_back(integer_row("proposal_groups", 1, 64, "exploring proposals per sweep",
                             "Independent exploring proposals per sweep: each sweep may bring in this many new "
                             "hypotheses per hypothesis held (default 8; fewer: cheaper, slower to find goals no "
                             "particle holds)",
                             &ParticleOptions::proposal_groups));
-    t.push_back(choice_row("particle_filters", {"all", "clips"},
+    t.push_back(choice_row("particle_filters", {"all", "clips"}, "one filter per method, or the CLIPS one only",
                            "Which posteriors get particles of their own: all (one filter per modality, default) or "
                            "clips (only the CLIPS posterior; the action-only and language-only ones are reweighted "
                            "from its particles: much cheaper, but rough where they disagree with CLIPS)",
                            &ParticleOptions::particle_filters));
     t.push_back(choice_row("particle_estimate", {"support", "weights"},
+                           "exact weights on the held hypotheses, or weighted counts",
                            "How particles give the posterior: support (the exact posterior over the hypotheses the "
                            "particles hold, default: no counting noise) or weights (the weighted particle counts)",
                            &ParticleOptions::particle_estimate));

@@ -23,7 +23,8 @@ struct ParticleOption {
   std::string name;   // the field, Python keyword and JSON name: "ess_threshold"
   Kind kind;
   std::string takes;  // what it takes, as errors say it: "a number from 0 to 1"
-  std::string help;   // one line for --help and Python's docstrings
+  std::string brief;  // a few words, for Python's docstrings
+  std::string help;   // what --help says
   std::vector<std::string> choices;  // Kind::Choice
 };
 
