@@ -219,7 +219,8 @@ Problem domain_problem(const std::string& domain_dir, const std::string& problem
   if (pack->spec().goals.source == domains::GoalSource::GoalSets && goals.conditions.empty()) {
     s.goals = data::folder_goal_set(domain_dir, s.problem);
   } else {
-    s.goals = chosen_goals(goals, [&] { return pack->problem_goals(*s.task, problem_file); });
+    // An init-capture: clang 14 (the fuzz build) cannot capture a structured binding.
+    s.goals = chosen_goals(goals, [&, pk = pack] { return pk->problem_goals(*s.task, problem_file); });
   }
   s.profiles = pack->default_profiles();
   return s;

@@ -69,7 +69,9 @@ PlayLimits with_inference(PlayLimits play, const json& j) {
   const json& inf = j["inference"];
   if (!inf.is_object()) throw HttpError(400, "field 'inference': expected an object of particle options");
   try {
-    for (const auto& [name, value] : inf.items()) {
+    for (auto it = inf.begin(); it != inf.end(); ++it) {
+      const std::string& name = it.key();
+      const json& value = it.value();
       // A choice is a JSON string; a number is read from its JSON text.
       const auto& table = engine::particle_option_table();
       const bool choice = std::any_of(table.begin(), table.end(), [&](const engine::ParticleOption& o) {
