@@ -20,13 +20,13 @@ set(clips_fuzz_lib_bench_merge clips_eval)
 
 if(CLIPS_FUZZ)
   # The request handlers without the rest of clips_serve: not the HTTP front
-  # end, and of clips_eval only the scenes the session state shows (not the
+  # end, and the scenes the session state shows (clips_scenes; not the
   # experiments, benchmarks and reports).
   add_library(clips_fuzz_serve STATIC ${CMAKE_SOURCE_DIR}/src/serve/service.cpp
               ${CMAKE_SOURCE_DIR}/src/serve/play_session.cpp ${CMAKE_SOURCE_DIR}/src/serve/text_scene.cpp
-              ${CMAKE_SOURCE_DIR}/src/eval/scenes.cpp
+              ${CMAKE_SOURCE_DIR}/src/scenes/scenes.cpp
               ${CMAKE_BINARY_DIR}/web_assets.cpp)
-  target_link_libraries(clips_fuzz_serve PUBLIC clips_assist clips_render clips_data)
+  target_link_libraries(clips_fuzz_serve PUBLIC clips_engine clips_render clips_data)
   set(clips_fuzz_lib_serve clips_fuzz_serve)
   # The JSON-lines front end: the handlers and the front ends' file (which
   # holds the HTTP server too, so cpp-httplib comes along).

@@ -29,8 +29,10 @@
 #include "data/dataset.hpp"
 #include "api/session_internals.hpp"
 #include "eval/bench.hpp"
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "render/render.hpp"
+#include "engine/json.hpp"
+#include "engine/options.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
 
@@ -104,7 +106,7 @@ constexpr long long kMaxThreads = 1024;
 
 struct SessionOption {
   const char* name;
-  const char* help;
+  std::string help;
   std::function<void(clips::SessionOptions&, py::handle)> set;
   std::function<std::string(const clips::SessionOptions&)> show;  // the default, as Python would write it
 };
@@ -112,9 +114,44 @@ struct SessionOption {
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 std::string number(double v) { return py::str(py::float_(v)); }
 
+// A particle option of the engine's table (engine/options.hpp) as Python
+// passes it: an int, a float or a str, turned into the text the table parses,
+// so that a bad value gives the CLI's and the server's message.
+std::string particle_option_text(const clips::engine::ParticleOption& po, py::handle v) {
+  const char* name = po.name.c_str();
+  using Kind = clips::engine::ParticleOption::Kind;
+  if (po.kind == Kind::Choice) return text_option(name, v);
+  if (py::isinstance<py::bool_>(v))
+    throw py::type_error(std::string("option '") + name + "': expected " + (po.kind == Kind::Real ? "float" : "int") +
+                         ", got bool");
+  if (po.kind == Kind::Integer) {
+    if (!py::isinstance<py::int_>(v) && !py::hasattr(v, "__index__"))
+      throw py::type_error(std::string("option '") + name + "': expected int, got " + type_name(v));
+    return py::str(py::int_(py::reinterpret_borrow<py::object>(v)));
+  }
+  return py::repr(py::float_(cast_option<double>(name, v, "float")));
+}
+
+std::vector<SessionOption> particle_option_rows() {
+  std::vector<SessionOption> rows;
+  for (const auto& po : clips::engine::particle_option_table()) {
+    const bool choice = po.kind == clips::engine::ParticleOption::Kind::Choice;
+    rows.push_back({po.name.c_str(), po.brief + "; " + po.takes,
+                    [po](clips::SessionOptions& o, py::handle v) {
+                      clips::engine::set_particle_option(o, po.name, particle_option_text(po, v));
+                    },
+                    [name = po.name, choice](const clips::SessionOptions& o) {
+                      const std::string text = clips::engine::particle_option_text(o, name);
+                      return choice ? quoted(text) : text;
+                    }});
+  }
+  return rows;
+}
+
 const std::vector<SessionOption>& session_option_table() {
   using O = clips::SessionOptions;
-  static const std::vector<SessionOption> table = {
+  static const std::vector<SessionOption> table = [] {
+    std::vector<SessionOption> t = {
       {"method", "clips, lang_only, action_only or literal (also read: language, action): the evidence the posterior "
                  "uses and how the assistant decides",
        [](O& o, py::handle v) { o.method = clips::parse_method(text_option("method", v)); },
@@ -149,37 +186,15 @@ const std::vector<SessionOption>& session_option_table() {
       {"threads", "threads refining the hypotheses, 0 to 1024 (0: all cores)",
        [](O& o, py::handle v) { o.threads = static_cast<int>(int_option("threads", v, 0, kMaxThreads)); },
        [](const O& o) { return std::to_string(o.threads); }},
-      {"particles", "particle inference with this many particles (0: exact enumeration)",
-       [](O& o, py::handle v) { o.particles = static_cast<int>(int_option("particles", v, 0)); },
-       [](const O& o) { return std::to_string(o.particles); }},
-      {"particle_seed", "the particle filter's seed",
-       [](O& o, py::handle v) {
-         if (py::isinstance<py::bool_>(v)) throw py::type_error("option 'particle_seed': expected int, got bool");
-         o.particle_seed = cast_option<uint64_t>("particle_seed", v, "an int from 0 to 2**64-1");
-       },
-       [](const O& o) { return std::to_string(o.particle_seed); }},
-      {"ess_threshold", "resample below this share of the particles, in [0, 1]",
-       [](O& o, py::handle v) { o.ess_threshold = float_option("ess_threshold", v); },
-       [](const O& o) { return number(o.ess_threshold); }},
-      {"rejuvenation_moves", "Metropolis-Hastings sweeps after each resampling",
-       [](O& o, py::handle v) { o.rejuvenation_moves = static_cast<int>(int_option("rejuvenation_moves", v, 0)); },
-       [](const O& o) { return std::to_string(o.rejuvenation_moves); }},
-      {"rejuvenate", "when else the sweeps run: evidence, utterances or resampling",
-       [](O& o, py::handle v) { o.rejuvenate = text_option("rejuvenate", v); },
-       [](const O& o) { return quoted(o.rejuvenate); }},
-      {"proposal_groups", "exploring proposals per sweep",
-       [](O& o, py::handle v) { o.proposal_groups = static_cast<int>(int_option("proposal_groups", v, 1)); },
-       [](const O& o) { return std::to_string(o.proposal_groups); }},
-      {"particle_filters", "all (one filter per method) or clips",
-       [](O& o, py::handle v) { o.particle_filters = text_option("particle_filters", v); },
-       [](const O& o) { return quoted(o.particle_filters); }},
-      {"particle_estimate", "support or weights",
-       [](O& o, py::handle v) { o.particle_estimate = text_option("particle_estimate", v); },
-       [](const O& o) { return quoted(o.particle_estimate); }},
       {"assistant_turns", "refinement at the assistant's turns: taken or all (as --assistant-turns)",
        [](O& o, py::handle v) { o.assistant_turns = text_option("assistant_turns", v); },
        [](const O& o) { return quoted(o.assistant_turns); }},
-  };
+    };
+    // The particle options, from the engine's one table, before assistant_turns.
+    auto particles = particle_option_rows();
+    t.insert(t.end() - 1, particles.begin(), particles.end());
+    return t;
+  }();
   return table;
 }
 
@@ -216,60 +231,35 @@ std::string path_arg(const char* name, py::handle v) {
   throw py::type_error(std::string("argument '") + name + "': expected str or os.PathLike, got " + type_name(v));
 }
 
-py::dict to_dict(const clips::Posterior& p) {
-  py::dict goals, profiles;
-  for (size_t g = 0; g < p.goals.size(); ++g) goals[py::str(p.goals[g])] = p.goal_probabilities[g];
-  for (size_t c = 0; c < p.cost_profiles.size(); ++c)
-    profiles[py::str(p.cost_profiles[c])] = p.cost_profile_probabilities[c];
-  py::list hyps;
-  for (const auto& h : p.hypotheses) {
-    py::dict d;
-    d["goal"] = h.goal;
-    d["cost_profile"] = h.cost_profile;
-    d["weight"] = h.weight;
-    hyps.append(d);
+// The engine's one JSON form (src/engine/json.hpp) as Python objects: the
+// Python dicts are that JSON, so they cannot drift from the server's or the
+// CLI's (null, e.g. an impossible observation's log marginal, is None).
+py::object from_json(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::null: return py::none();
+    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(j.get<int64_t>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<uint64_t>());
+    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::json::value_t::string: return py::str(j.get_ref<const std::string&>());
+    case nlohmann::json::value_t::array: {
+      py::list l;
+      for (const auto& x : j) l.append(from_json(x));
+      return l;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict d;
+      for (const auto& [k, v] : j.items()) d[py::str(k)] = from_json(v);
+      return d;
+    }
+    default: break;
   }
-  py::dict d;
-  d["goals"] = goals;
-  d["cost_profiles"] = profiles;
-  d["hypotheses"] = hyps;
-  d["log_marginal_likelihood"] = p.log_marginal_likelihood;
-  return d;
+  throw std::logic_error("from_json: unexpected JSON value");
 }
 
-py::dict to_dict(const clips::Step& s) {
-  py::dict d;
-  d["t"] = s.t;
-  d["action"] = s.action;
-  d["agent"] = s.agent;
-  d["evidence"] = s.evidence;
-  d["utterances"] = s.utterances;
-  d["utterance_warnings"] = s.utterance_warnings;
-  d["posterior"] = to_dict(s.posterior);
-  d["seconds"] = s.seconds;
-  return d;
-}
-
-py::dict to_dict(const clips::AssistDecision& a) {
-  py::dict d;
-  d["assistant_turn"] = a.assistant_turn;
-  d["action"] = a.assistant_turn ? py::object(py::str(a.action)) : py::object(py::none());
-  d["id"] = a.id;
-  py::list cands;
-  for (const auto& c : a.candidates) {
-    py::dict cd;
-    cd["id"] = c.id;
-    cd["action"] = c.action;
-    cd["value"] = c.value;
-    cands.append(cd);
-  }
-  d["candidates"] = cands;
-  d["unanimous"] = a.unanimous;
-  py::dict weights;
-  for (size_t g = 0; g < a.goals.size(); ++g) weights[py::str(a.goals[g])] = a.goal_weights[g];
-  d["goal_weights"] = weights;
-  return d;
-}
+py::object to_py(const clips::Posterior& p, clips::Method m) { return from_json(clips::engine::to_json(p, m)); }
+py::object to_py(const clips::Step& s, clips::Method m) { return from_json(clips::engine::to_json(s, m)); }
+py::object to_py(const clips::AssistDecision& a) { return from_json(clips::engine::to_json(a)); }
 
 // ---- long calls: off the calling thread, interruptible ------------------------
 //
@@ -370,6 +360,9 @@ struct PySession {
   std::vector<Event> log;
   // Null after an interrupted call; rebuilt from opener + options + log.
   std::shared_ptr<clips::Session> engine;
+  // The running call's cancellation flag (null between calls): cancel(),
+  // from another Python thread, raises it. Read and written under the GIL.
+  std::shared_ptr<std::atomic<bool>> cancel_flag;
 };
 
 std::shared_ptr<clips::Session> open_engine(const Opener& op, const clips::SessionOptions& o) {
@@ -405,7 +398,7 @@ clips::Session& engine(PySession& ps) {
 }
 
 PySession open_session(Opener op, py::dict options, clips::SessionOptions parsed, std::vector<Event> log = {}) {
-  PySession ps{std::move(op), std::move(options), std::move(parsed), std::move(log), nullptr};
+  PySession ps{std::move(op), std::move(options), std::move(parsed), std::move(log), nullptr, nullptr};
   engine(ps);
   return ps;
 }
@@ -423,28 +416,45 @@ py::dict given_options(const py::kwargs& kwargs, std::initializer_list<const cha
   return d;
 }
 
-// One call that changes the session (observe, hear), off the calling thread.
-// A call stopped by its time limit leaves the session (and its log) as it was.
-py::dict step_call(PySession& ps, Event e, clips::CallLimits limits = {}) {
+// One call on the session's engine, off the calling thread, with a fresh
+// cancellation flag that cancel() raises. On Ctrl-C the flag is raised too
+// (the abandoned worker stops at its next check) and the engine is dropped,
+// to be replayed from the log before the next call.
+template <typename F>
+auto session_call(PySession& ps, clips::CallLimits limits, F f) -> decltype(f(std::declval<clips::Session&>(), limits)) {
   engine(ps);
   auto shared = ps.engine;
+  auto flag = std::make_shared<std::atomic<bool>>(false);
+  limits.cancel = flag.get();
+  ps.cancel_flag = flag;
+  struct Done {
+    PySession& ps;
+    ~Done() { ps.cancel_flag.reset(); }
+  } done{ps};
   try {
-    clips::Step st = interruptible([shared, e, limits] {
-      apply(*shared, e, limits);
-      return shared->trace().back();
-    });
-    if (!e.utterance) e.text = st.action;  // an id becomes its action's text
-    ps.log.push_back(std::move(e));
-    return to_dict(st);
+    return interruptible([shared, flag, limits, f] { return f(*shared, limits); });
   } catch (py::error_already_set&) {
-    ps.engine.reset();  // interrupted: the worker keeps the old engine; replay before the next call
+    flag->store(true);
+    ps.engine.reset();
     throw;
   }
 }
 
+// One call that changes the session (observe, hear). A call stopped by its
+// time limit or cancelled leaves the session (and its log) as it was.
+py::object step_call(PySession& ps, Event e, clips::CallLimits limits = {}) {
+  clips::Step st = session_call(ps, limits, [e](clips::Session& s, const clips::CallLimits& l) {
+    apply(s, e, l);
+    return s.trace().back();
+  });
+  if (!e.utterance) e.text = st.action;  // an id becomes its action's text
+  ps.log.push_back(std::move(e));
+  return to_py(st, ps.parsed.method);
+}
+
 // A dataset plan, as `clips infer --json` (every step, all three methods):
 // steps[t]["action"] is the action observed at t ("" at t = 0) and
-// steps[t]["posterior"] the goal probabilities of each method, in goals' order.
+// steps[t]["posterior"] each inference method's posterior by its name.
 py::dict run_plan(const std::string& dataset, const std::string& plan_id, const std::string& lm_kind, long long threads) {
   if (threads < 0 || threads > kMaxThreads)
     throw clips::InputError("threads must be an int in [0, " + std::to_string(kMaxThreads) + "], got " +
@@ -470,15 +480,11 @@ py::dict run_plan(const std::string& dataset, const std::string& plan_id, const 
     py::list us;
     for (const auto& u : st.utterances) us.append(u.text);
     s["utterances"] = us;
+    // Each inference method's posterior, keyed by its name, in the engine's JSON form.
     py::dict posterior;
-    for (auto m : clips::inference::kModalities) {
-      const char* name = m == clips::inference::Modality::Both          ? "clips"
-                         : m == clips::inference::Modality::UtteranceOnly ? "language"
-                                                                          : "action";
-      posterior[name] = st[m].goals;
-    }
+    for (auto m : {clips::Method::Clips, clips::Method::LanguageOnly, clips::Method::ActionOnly})
+      posterior[py::str(clips::method_name(m))] = to_py(clips::engine::posterior_of(run, st, m), m);
     s["posterior"] = posterior;
-    s["log_marginal_likelihood"] = st[clips::inference::Modality::Both].log_marginal;
     s["seconds"] = st.seconds;
     steps.append(s);
   }
@@ -570,12 +576,16 @@ PYBIND11_MODULE(_core, m) {
   auto& time_limit_error = py::register_exception<clips::TimeLimitError>(m, "TimeLimitError", PyExc_RuntimeError);
   time_limit_error.attr("__doc__") =
       "A call's time_limit passed before it was done; the session is exactly as it was before the call.";
+  auto& cancelled_error = py::register_exception<clips::CancelledError>(m, "CancelledError", PyExc_RuntimeError);
+  cancelled_error.attr("__doc__") =
+      "A call stopped by Session.cancel() (from another thread); the session is exactly as it was before the call.";
   auto& memory_limit_error =
       py::register_exception<clips::MemoryLimitError>(m, "MemoryLimitError", PyExc_MemoryError);
   memory_limit_error.attr("__doc__") =
       "Refused before memory ran out: e.g. a problem with more ground actions than this process has memory for.";
   for (py::handle e :
-       std::initializer_list<py::handle>{input_error, inapplicable, lm_error, time_limit_error, memory_limit_error})
+       std::initializer_list<py::handle>{input_error, inapplicable, lm_error, time_limit_error, cancelled_error,
+                                        memory_limit_error})
     e.attr("__module__") = "clips_assist";
   // Internal language-model failures reach Python as the same type.
   static PyObject* lm_error_type = lm_error.ptr();
@@ -683,30 +693,74 @@ PYBIND11_MODULE(_core, m) {
           "posterior",
           [](PySession& ps, std::optional<std::string> method) {
             clips::Session& s = engine(ps);
-            return to_dict(method ? s.posterior(clips::parse_method(*method)) : s.posterior());
+            const clips::Method m = method ? clips::parse_method(*method) : ps.parsed.method;
+            return to_py(s.posterior(m), m);
           },
           py::arg("method") = py::none(),
           "posterior(method=None) -> dict\n\n"
-          "{'goals': {label: p}, 'cost_profiles': {name: p}, 'hypotheses': [{'goal', 'cost_profile', 'weight'}], "
-          "'log_marginal_likelihood': float} under the session's method, or another ('clips', 'language', 'action').")
+          "The posterior in the engine's JSON form (as `clips infer --json` and the server write it): {'method', "
+          "'modality', 'goals': [{'goal', 'p'}], 'cost_profiles': [{'cost_profile', 'p'}], 'hypotheses': [{'goal', "
+          "'cost_profile', 'p'}], 'log_marginal_likelihood': float, None when nothing explains the observations}, "
+          "under the session's method or another ('clips', 'lang_only', 'action_only').")
       .def(
           "assist",
           [](PySession& ps, py::object time_limit) {
-            const clips::CallLimits limits = call_limits(time_limit);
-            engine(ps);
-            auto shared = ps.engine;
-            try {
-              return to_dict(interruptible([shared, limits] { return shared->assist(limits); }));
-            } catch (py::error_already_set&) {
-              ps.engine.reset();
-              throw;
-            }
+            return to_py(session_call(ps, call_limits(time_limit),
+                                      [](clips::Session& s, const clips::CallLimits& l) { return s.assist(l); }));
           },
           py::kw_only(), py::arg("time_limit") = py::none(),
           "assist(*, time_limit=None) -> dict\n\n"
-          "The assistant's next action under the session's assistance rule: {'assistant_turn', 'action' (None when "
-          "the human is to move), 'id', 'candidates': [{'id', 'action', 'value'}], 'unanimous', 'goal_weights'}. The "
-          "posterior is not changed. TimeLimitError when the decision takes longer than time_limit seconds.")
+          "The assistant's next action under the session's assistance rule, in the engine's JSON form: {'method', "
+          "'assistant_turn', 'action' (None when the human is to move), 'id', 'reason', 'unanimous', 'candidates': "
+          "[{'id', 'action', 'value'}], 'goals', 'goal_weights'} (+ 'command', 'command_probability' for literal). "
+          "The posterior is not changed. TimeLimitError when the decision takes longer than time_limit seconds.")
+      .def(
+          "undo",
+          [](PySession& ps, py::object time_limit) {
+            const bool undone = session_call(ps, call_limits(time_limit),
+                                             [](clips::Session& s, const clips::CallLimits& l) { return s.undo(l); });
+            if (undone) {
+              ps.log.clear();
+              for (const auto& [utterance, text] : clips::SessionInternals::events(*ps.engine))
+                ps.log.push_back(Event{utterance, text});
+            }
+            return undone;
+          },
+          py::kw_only(), py::arg("time_limit") = py::none(),
+          "undo(*, time_limit=None) -> bool\n\n"
+          "Takes back the human's last action with everything after it (the assistant's actions, utterances); "
+          "False, and nothing changes, when there is none. The posterior is recomputed by replaying what is left: "
+          "TimeLimitError past time_limit, CancelledError on cancel(), the session then unchanged.")
+      .def(
+          "reset",
+          [](PySession& ps) {
+            session_call(ps, {}, [](clips::Session& s, const clips::CallLimits&) {
+              s.reset();
+              return true;
+            });
+            ps.log.clear();
+          },
+          "reset() -> None\n\nBack to the initial state with nothing observed or heard (t = 0).")
+      .def(
+          "goal_holds",
+          [](PySession& ps, py::object goal) {
+            if (!py::isinstance<py::str>(goal))
+              throw py::type_error("goal_holds(): expected the goal's label as str, got " + type_name(goal));
+            return engine(ps).goal_holds(py::cast<std::string>(goal));
+          },
+          py::arg("goal"),
+          "goal_holds(goal) -> bool\n\nWhether the candidate goal with this label (e.g. 'gem2', as posterior()'s "
+          "goals name it) holds in the current state; InputError for a label that is not a candidate.")
+      .def(
+          "cancel",
+          [](PySession& ps) {
+            if (!ps.cancel_flag) return false;
+            ps.cancel_flag->store(true);
+            return true;
+          },
+          "cancel() -> bool\n\nAsks the call running on this session (observe, hear, assist, undo), from another "
+          "thread, to stop: it raises CancelledError and leaves the session exactly as it was before it. True when "
+          "a call was running; a call started afterwards is not affected.")
       .def(
           "state", [](PySession& ps) { return engine(ps).state(); },
           "state() -> str\n\nThe current state, printable (an ASCII map for Doors-Keys-Gems).")
@@ -737,7 +791,7 @@ PYBIND11_MODULE(_core, m) {
           "trace",
           [](PySession& ps) {
             py::list out;
-            for (const auto& st : engine(ps).trace()) out.append(to_dict(st));
+            for (const auto& st : engine(ps).trace()) out.append(to_py(st, ps.parsed.method));
             return out;
           },
           "trace() -> list[dict]\n\n"
@@ -805,8 +859,8 @@ PYBIND11_MODULE(_core, m) {
         "run_plan(dataset, plan, *, lm='embedded', threads=0) -> dict\n\n"
         "Goal inference over one dataset plan, as `clips infer`: {'plan', 'goals', 'true_goal', 'cost_profiles', "
         "'steps', 'seconds'}; steps[t] has 't', 'action' (the action observed at t, '' at t = 0), 'utterances', "
-        "'posterior' ({'clips': [...], 'language': [...], 'action': [...]}, each method's goal probabilities in "
-        "goals' order), 'log_marginal_likelihood' and 'seconds'.");
+        "'posterior' ({'clips': ..., 'lang_only': ..., 'action_only': ...}, each method's posterior as "
+        "posterior() gives it) and 'seconds'.");
   m.def("run_bench", &run_bench, py::arg("dataset"), py::kw_only(), py::arg("methods") = std::vector<std::string>{},
         py::arg("plans") = std::vector<std::string>{}, py::arg("jobs") = 0, py::arg("seed") = 1,
         py::arg("lm") = "embedded",

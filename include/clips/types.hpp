@@ -41,7 +41,26 @@ struct LanguageModelOptions {
   double timeout_seconds = 120;      // openai: per request
 };
 
-struct SessionOptions {
+// Particle inference over goal x cost profile (sequential Monte Carlo; only
+// the hypotheses particles hold are refined), tuned as docs/particles.md
+// says. The one particle options type: the session's options, `clips infer`,
+// `clips bench` and `clips serve` flags, Python keywords and the server's
+// JSON all fill this struct, and one table (src/engine/options.hpp) names its
+// fields (CLI flags are the names with '-' for '_'), parses and checks them.
+struct ParticleOptions {
+  int particles = 0;                       // particles per filter, 0 to 1,000,000; 0: exact enumeration
+  uint64_t particle_seed = 1;              // results are a function of it
+  double ess_threshold = 0.5;              // resample below this share of the particles, 0 to 1
+  int rejuvenation_moves = 2;              // Metropolis-Hastings sweeps after each resampling, 0 to 100
+  std::string rejuvenate = "evidence";     // when else they run: "evidence", "utterances" or "resampling"
+  int proposal_groups = 8;                 // exploring proposals per sweep, 1 to 64
+  std::string particle_filters = "all";    // "all" (one filter per modality) or "clips" (the CLIPS one only)
+  std::string particle_estimate = "support";  // "support" (exact weights on the held hypotheses) or "weights"
+};
+
+// A session's options; the particle ones (unused when `particles` is 0) are
+// inherited, so `options.particles = 64` reads as before.
+struct SessionOptions : ParticleOptions {
   Method method = Method::Clips;
   Assistance assistance = Assistance::QMdp;
   LanguageModelOptions language_model;
@@ -70,21 +89,8 @@ struct SessionOptions {
   // Threads refining the hypotheses of one step. 0: all cores (results do
   // not depend on it); 1 when many sessions run at once (`clips serve` does).
   int threads = 0;
-  // Particle inference over goal x cost profile (sequential Monte Carlo with
-  // this many particles; only the hypotheses particles hold are refined).
-  // 0: exact enumeration. Results are a function of particle_seed.
-  int particles = 0;
-  uint64_t particle_seed = 1;
-  // Particle tuning, as `clips infer`'s options of the same names
-  // (docs/particles.md); unused when particles is 0.
-  double ess_threshold = 0.5;              // resample below this share of the particles, in [0, 1]
-  int rejuvenation_moves = 2;              // Metropolis-Hastings sweeps after each resampling, >= 0
-  std::string rejuvenate = "evidence";     // when else they run: "evidence", "utterances" or "resampling"
-  int proposal_groups = 8;                 // exploring proposals per sweep, >= 1
-  std::string particle_filters = "all";    // "all" (one filter per modality) or "clips" (the CLIPS one only)
-  std::string particle_estimate = "support";  // "support" (exact weights on the held hypotheses) or "weights"
   // What is refined at the assistant's turns: "taken" (one lookahead, from
-  // the state its action led to) or "all" (the spec's REFINE, every
+  // the state its action led to) or "all" (the paper's REFINE, every
   // successor); as `clips infer --assistant-turns`.
   std::string assistant_turns = "taken";
 };

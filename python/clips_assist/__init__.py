@@ -10,17 +10,22 @@ for the assistant's next action::
     s = clips_assist.Session.open_dataset(clips_assist.example_dataset(), "e1")
     s.observe("(left human)")
     s.hear("Can you get me the yellow key?")
-    print(s.posterior()["goals"], s.assist()["action"])
+    print(clips_assist.goal_probabilities(s.posterior()), s.assist()["action"])
+
+Posteriors, steps and decisions are the engine's JSON form as plain dicts, the
+same the server and ``clips infer --json`` write (docs/api.md).
 
 Long calls run without the GIL; Ctrl-C interrupts them (KeyboardInterrupt) and
 leaves the session as it was. observe, hear and assist also take
 time_limit=SECONDS: past it they raise TimeLimitError, and the session is as it
-was before the call.
+was before the call. Session.cancel(), from another thread, stops the running
+call the same way (CancelledError).
 """
 import atexit as _atexit
 import os as _os
 
 from ._core import (
+    CancelledError,
     InapplicableActionError,
     InputError,
     LanguageModelError,
@@ -35,6 +40,7 @@ from ._core import (
 from ._core import _join_abandoned
 
 __all__ = [
+    "CancelledError",
     "InapplicableActionError",
     "InputError",
     "LanguageModelError",
@@ -44,6 +50,7 @@ __all__ = [
     "__version__",
     "data_directory",
     "example_dataset",
+    "goal_probabilities",
     "run_bench",
     "run_plan",
 ]
@@ -68,3 +75,8 @@ def example_dataset(name: str = "doors-keys-gems") -> str:
         raise InputError(f"no example dataset '{name}' in {_os.path.join(root, 'examples')} "
                          "(set CLIPS_DATA_DIR to the installed share/clips-assist folder)")
     return path
+
+
+def goal_probabilities(posterior: dict) -> dict:
+    """{goal label: probability} of a posterior dict (its ``goals`` list), in the goals' order."""
+    return {g["goal"]: g["p"] for g in posterior["goals"]}

@@ -78,9 +78,11 @@ def test_run_plan_keeps_each_steps_action_text():
                 if line.strip() and not line.strip().startswith(";")]
     assert [st["action"] for st in run["steps"]] == [""] + observed
     for st in run["steps"]:
-        assert set(st["posterior"]) == {"clips", "language", "action"}
-        for probs in st["posterior"].values():
-            assert len(probs) == len(run["goals"]) and sum(probs) == pytest.approx(1.0)
+        assert set(st["posterior"]) == {"clips", "lang_only", "action_only"}  # the method names
+        for method, post in st["posterior"].items():
+            assert post["method"] == method
+            assert [g["goal"] for g in post["goals"]] == run["goals"]
+            assert sum(g["p"] for g in post["goals"]) == pytest.approx(1.0)
 
 
 def test_repr_names_the_session():
@@ -273,3 +275,99 @@ def test_a_live_session_draws_its_scene_as_png_bytes():
     garden = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1)
     with pytest.raises(clips_assist.InputError, match="scene is text"):
         garden.scene_png()
+
+
+# ---- parity with the C++ Session: undo, reset, goal_holds, cancel (issue 44) ----
+
+def whole_plan(plan):
+    """The observed actions, then the rest of the plan to the goal."""
+    return [line.strip() for part in ("observed", "completed")
+            for line in (EXAMPLES / "plans" / part / f"{plan}.pddl").read_text().splitlines()
+            if line.strip() and not line.strip().startswith(";")]
+
+
+def test_undo_takes_back_the_humans_last_action_with_what_followed():
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    start = (s.posterior(), without_seconds(s.trace()))
+    assert s.undo() is False and s.t == 0  # nothing to take back
+    s.observe("(left human)")
+    s.observe("(wait robot)")
+    after_two = (s.posterior(), without_seconds(s.trace()))
+    s.observe("(left human)")
+    s.hear("Can you get me the yellow key?")
+    s.observe("(wait robot)")
+    # The human's last action goes, with the utterance and the robot's wait after it.
+    assert s.undo() is True
+    assert s.t == 2 and s.active_agent == "human"
+    assert (s.posterior(), without_seconds(s.trace())) == after_two
+    # The replay log follows: a copy (pickled log, replayed) is the same session.
+    again = pickle.loads(pickle.dumps(s))
+    assert again.t == 2 and again.posterior() == s.posterior()
+    with pytest.raises(clips_assist.TimeLimitError):
+        s.undo(time_limit=0)
+    assert s.t == 2 and s.posterior() == after_two[0]
+    # The human's first action goes with the robot's wait after it.
+    assert s.undo() is True
+    assert s.t == 0 and (s.posterior(), without_seconds(s.trace())) == start
+
+
+def test_reset_goes_back_to_the_start():
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1")
+    start = (s.posterior(), without_seconds(s.trace()))
+    s.observe("(left human)")
+    s.hear("Can you get me the yellow key?")
+    assert s.reset() is None
+    assert s.t == 0 and (s.posterior(), without_seconds(s.trace())) == start
+    assert pickle.loads(pickle.dumps(s)).t == 0  # the log is empty too
+    s.observe("(left human)")
+    assert s.t == 1
+
+
+def test_goal_holds_names_a_candidate_goal():
+    plan = whole_plan("e1.1.keys")
+    s = clips_assist.Session.open_dataset(EXAMPLES, "e1.1.keys")
+    labels = [g["goal"] for g in s.posterior()["goals"]]
+    assert "gem3" in labels
+    for a in plan[:-1]:
+        s.observe(a)
+    assert not any(s.goal_holds(g) for g in labels)
+    s.observe(plan[-1])  # (pickup human gem3)
+    assert [g for g in labels if s.goal_holds(g)] == ["gem3"]
+    with pytest.raises(clips_assist.InputError, match="no candidate goal 'gem9'"):
+        s.goal_holds("gem9")
+    with pytest.raises(TypeError):
+        s.goal_holds(3)
+
+
+def test_cancel_from_another_thread_stops_a_long_call_and_leaves_the_session_as_it_was(silent_lm):
+    s = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1, lm="openai", lm_timeout=60)
+    s.observe("(pickup human key1 patio)")
+    s.observe("(wait robot)")
+    before, trace = s.posterior(), without_seconds(s.trace())
+    assert s.cancel() is False  # no call is running
+    assert issubclass(clips_assist.CancelledError, RuntimeError)
+    cancelled = []
+
+    def controller():
+        # Until the call is running (hear waits on the silent server), then stop it.
+        deadline = time.monotonic() + 120
+        while not s.cancel():
+            assert time.monotonic() < deadline, "hear() never started"
+            time.sleep(0.01)
+        cancelled.append(True)
+        silent_lm.release()  # the model's request fails now; the cancellation is what is reported
+
+    thread = threading.Thread(target=controller)
+    thread.start()
+    with pytest.raises(clips_assist.CancelledError, match="cancelled"):
+        s.hear("Could you bring the compost over?")
+    thread.join()
+    assert cancelled == [True]
+    assert s.t == 2 and s.posterior() == before and without_seconds(s.trace()) == trace
+    assert s.cancel() is False
+    # The next call works, as on a session that never saw the cancelled one.
+    step = s.observe("(unlock human key1 shed patio)")
+    fresh = clips_assist.Session.open_dataset(GARDEN, "1.1.plant-tulips", threads=1)
+    for a in ("(pickup human key1 patio)", "(wait robot)"):
+        fresh.observe(a)
+    assert step["posterior"] == fresh.observe("(unlock human key1 shed patio)")["posterior"]

@@ -41,7 +41,7 @@ def replay(dataset, plan):
         if t in (0, T):
             for u in said.get(t, []):
                 s.hear(u)
-        out.append(list(s.posterior()["goals"].values()))
+        out.append([g["p"] for g in s.posterior()["goals"]])
         if t not in (0, T):
             for u in said.get(t, []):
                 s.hear(u)
@@ -57,12 +57,14 @@ def check_against_cli(dataset, plan):
     got = replay(dataset, plan)
     assert len(got) == len(infer["steps"])
     for t, (mine, theirs) in enumerate(zip(got, infer["steps"])):
-        assert mine == pytest.approx(theirs["posterior"], abs=1e-9), f"{plan} t={t}"
+        assert mine == pytest.approx([g["p"] for g in theirs["posterior"]["goals"]], abs=1e-9), f"{plan} t={t}"
     # run_plan gives the same numbers without a session.
     run = clips_assist.run_plan(str(dataset), plan)
     assert len(run["steps"]) == len(infer["steps"])
     for mine, theirs in zip(run["steps"], infer["steps"]):
-        assert mine["posterior"]["clips"] == pytest.approx(theirs["posterior"], abs=1e-9)
+        assert [g["p"] for g in mine["posterior"]["clips"]["goals"]] == pytest.approx(
+            [g["p"] for g in theirs["posterior"]["goals"]], abs=1e-9)
+        assert mine["posterior"]["clips"].keys() == theirs["posterior"].keys()  # one JSON form
 
 
 def test_session_reproduces_clips_infer_on_the_papers_dataset():
@@ -83,12 +85,15 @@ def test_posterior_assist_and_trace_are_plain_python_values():
     s.hear("Can you get me the yellow key?")
     s.observe("(left human)")
     post = s.posterior()
-    assert sum(post["goals"].values()) == pytest.approx(1.0)
-    assert max(post["goals"], key=post["goals"].get) == "gem3"  # the yellow key's side (problems/e1.txt)
+    goals = clips_assist.goal_probabilities(post)
+    assert sum(goals.values()) == pytest.approx(1.0)
+    assert max(goals, key=goals.get) == "gem3"  # the yellow key's side (problems/e1.txt)
     assert len(post["hypotheses"]) == 8
+    assert sum(h["p"] for h in post["hypotheses"]) == pytest.approx(1.0)
+    assert post["method"] == "clips" and post["log_marginal_likelihood"] < 0
     decision = s.assist()
     assert decision["assistant_turn"] and "robot" in decision["action"]
-    assert decision["goal_weights"] == post["goals"]
+    assert dict(zip(decision["goals"], decision["goal_weights"])) == goals
     assert decision["action"] in [c["action"] for c in decision["candidates"]]
     assert [st["t"] for st in s.trace()] == [0, 1, 2, 3]
     assert s.trace()[2]["utterances"] == ["Can you get me the yellow key?"]
@@ -121,7 +126,7 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
         s.observe("(left human)")
         s.observe("(wait robot)")
         s.hear("Can you get me the yellow key?")
-        return s.posterior()["goals"]
+        return clips_assist.goal_probabilities(s.posterior())
 
     exact = run()
     many = run(particles=2000, particle_seed=3)
@@ -139,11 +144,11 @@ def test_particle_sessions_are_seeded_and_close_to_exact():
                 rejuvenate="utterances", particle_estimate="weights")
     assert tuned != many
     assert sum(abs(tuned[g] - exact[g]) for g in exact) / 2 < 0.05
-    with pytest.raises(clips_assist.InputError, match="particle estimate 'counts'"):
+    with pytest.raises(clips_assist.InputError, match="particle_estimate must be one of support, weights, got 'counts'"):
         clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_estimate="counts")
-    with pytest.raises(clips_assist.InputError, match="particle filters 'some'"):
+    with pytest.raises(clips_assist.InputError, match="particle_filters must be one of all, clips, got 'some'"):
         clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=10, particle_filters="some")
-    with pytest.raises(clips_assist.InputError, match="ESS threshold"):
+    with pytest.raises(clips_assist.InputError, match="ess_threshold must be a number from 0 to 1, got 2.0"):
         clips_assist.Session.open_dataset(str(EXAMPLES), "e1", particles=10, ess_threshold=2.0)
 
 
@@ -155,7 +160,7 @@ def test_assistant_turns_option():
         for action in ("(left human)", "(left robot)", "(left human)", "(right robot)"):
             s.observe(action)
         s.hear("Can you get me the yellow key?")
-        return s.posterior()["goals"]
+        return clips_assist.goal_probabilities(s.posterior())
 
     taken, every = run(), run(assistant_turns="all")
     assert taken.keys() == every.keys()
@@ -258,9 +263,9 @@ def test_open_domain_options_reach_the_session():
     s = clips_assist.Session.open_domain(**path, **good)
     s.observe("(move human bench rack)")
     post = s.posterior()
-    assert list(post["goals"]) == ["(made table)", "(made stool)"]  # goals
-    assert list(post["cost_profiles"]) == ["unit"]  # cost_profiles
-    assert sum(post["goals"].values()) == pytest.approx(1.0)
+    assert [g["goal"] for g in post["goals"]] == ["(made table)", "(made stool)"]  # goals
+    assert [c["cost_profile"] for c in post["cost_profiles"]] == ["unit"]  # cost_profiles
+    assert sum(g["p"] for g in post["goals"]) == pytest.approx(1.0)
     again = clips_assist.Session.open_domain(**path, **good)
     again.observe("(move human bench rack)")
     assert again.posterior() == post  # particles are a function of particle_seed
@@ -301,7 +306,8 @@ def test_open_domain_from_pddl_text_matches_the_files(tmp_path):
     assert from_text.domain == "kitchen"
     post = play(from_text)
     assert post == play(clips_assist.Session.open_domain(folder, folder / "problems" / "1.pddl", threads=1))
-    assert max(post["goals"], key=post["goals"].get) == "cake"  # flour and milk (docs/domains.md)
+    goals = clips_assist.goal_probabilities(post)
+    assert max(goals, key=goals.get) == "cake"  # flour and milk (docs/domains.md)
     # A folder without plans/ opens as a dataset too.
     assert play(clips_assist.Session.open_dataset(folder, "1", threads=1)) == post
 
@@ -345,7 +351,12 @@ def test_one_method_name_table():
 
     assert final("lang_only") == final("language") == final("utterance")
     assert final("action_only") == final("action")
-    assert final("clips") == final("both") == final("literal")
+    assert final("clips") == final("both")
+    assert final("lang_only")["method"] == "lang_only" and final("action")["method"] == "action_only"
+    # The literal listener's posterior is the CLIPS one, under its own name.
+    literal = final("literal")
+    assert literal["method"] == "literal"
+    assert {**literal, "method": "clips"} == final("clips")
     assert final("lang_only") != final("action_only")
     with pytest.raises(clips_assist.InputError, match="lang_only"):
         clips_assist.Session.open_dataset(EXAMPLES, "e1", method="lang-only-please")

@@ -120,5 +120,10 @@ std::string data_directory() { return util::data_dir(); }
 const pddl::Task& SessionInternals::task(const Session& s) { return s.impl_->engine.task(); }
 const pddl::State& SessionInternals::state(const Session& s) { return s.impl_->engine.state(); }
 const domains::Pack& SessionInternals::pack(const Session& s) { return s.impl_->engine.pack(); }
+std::vector<std::pair<bool, std::string>> SessionInternals::events(const Session& s) {
+  std::vector<std::pair<bool, std::string>> out;
+  for (const auto& e : s.impl_->engine.events()) out.emplace_back(e.utterance, e.text);
+  return out;
+}
 
 }  // namespace clips

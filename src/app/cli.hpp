@@ -65,7 +65,7 @@ struct LmFlags {
   std::string base_url, model;
   double lm_timeout = 120;  // seconds per HTTP attempt (openai)
   double lm_max_reply_mb = 16;  // largest reply accepted (openai)
-  std::string speaker_rule = "paper";  // CLIPS speaker commands: paper or code (spec 13 item 2)
+  std::string speaker_rule = "paper";  // CLIPS speaker commands: paper or code (the reference's)
   std::string utterance_timing = "after";  // state explaining an utterance: after (s_k) or before (s_{k-1})
   std::string assistant_turns = "taken";  // refinement at the assistant's turns (inference::AssistantTurns)
   std::string qa_floor = "dead-ends";      // Q_MDP floor: dead-ends or horizon (assist::QaFloor)

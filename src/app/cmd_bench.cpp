@@ -17,9 +17,9 @@
 #include "app/scaling_cli.hpp"
 #include "app/particle_flags.hpp"
 #include "eval/bench.hpp"
-#include "eval/particle_eval.hpp"
+#include "studies/particle_eval.hpp"
 #include "eval/bench_shards.hpp"
-#include "eval/report.hpp"
+#include "report/report.hpp"
 #include "util/data_dir.hpp"
 
 namespace clips::app {
@@ -179,19 +179,7 @@ void register_particles(CLI::App* bench) {
       ->delimiter(',')
       ->check(PositiveInteger);
   cmd->add_option("--seeds", o->seeds, "Particle seeds 1..S run per count and plan (default 3)")->check(PositiveInteger);
-  cmd->add_option("--ess-threshold", o->ess_threshold, "As for `clips infer` (default 0.5)")->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--rejuvenation-moves", o->rejuvenation_moves, "As for `clips infer` (default 2)")
-      ->check(NonNegativeInteger);
-  auto rejuvenate = std::make_shared<std::string>("evidence");
-  cmd->add_option("--rejuvenate", *rejuvenate, "As for `clips infer`: evidence (default), utterances or resampling")
-      ->check(CLI::IsMember({"evidence", "utterances", "resampling"}));
-  cmd->add_option("--proposal-groups", o->proposal_groups, "As for `clips infer` (default 8)")->check(PositiveInteger);
-  auto filters = std::make_shared<std::string>("all");
-  cmd->add_option("--particle-filters", *filters, "As for `clips infer`: all (default) or clips")
-      ->check(CLI::IsMember({"all", "clips"}));
-  auto estimate = std::make_shared<std::string>("support");
-  cmd->add_option("--particle-estimate", *estimate, "As for `clips infer`: support (default) or weights")
-      ->check(CLI::IsMember({"support", "weights"}));
+  add_particle_options(cmd, o->tuning, {"particles", "particle_seed"});  // as for `clips infer`
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
   add_lm_options(cmd, *lm);
@@ -202,10 +190,6 @@ void register_particles(CLI::App* bench) {
       if (opt->count() > 0)
         throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench particles`");
     reject_empty(out_opt, *out);
-    if (!(o->ess_threshold >= 0 && o->ess_threshold <= 1)) throw UsageError("--ess-threshold must be between 0 and 1");
-    o->rejuvenate = inference::parse_rejuvenation(*rejuvenate);
-    o->particle_filters = inference::parse_particle_filters(*filters);
-    o->particle_estimate = inference::parse_particle_estimate(*estimate);
     o->dataset = dataset_dir(o->dataset);
     const auto ds = data::Dataset::load(o->dataset);
     o->language_model = make_lm(*lm, ds);
@@ -273,7 +257,7 @@ void register_bench(CLI::App& app) {
       ->check(HttpUrl);
   cmd->add_option("--chat-model", o->experiment.multimodal.model, "Chat model (or $CLIPS_CHAT_MODEL)");
   cmd->add_flag("--no-progress", [o](int64_t) { o->progress = false; }, "No progress output on stderr");
-  // Scaling curves (eval/scaling.hpp): generated datasets, one point per process.
+  // Scaling curves (studies/scaling.hpp): generated datasets, one point per process.
   auto sc = std::make_shared<ScalingCli>();
   cmd->add_flag("--scaling", sc->run,
                 "Scaling curves instead of a dataset: time per belief step and assistance decision, max RSS and "
@@ -312,14 +296,7 @@ void register_bench(CLI::App& app) {
     o->lm_options = lm_options(*lm);
     apply_model_flags(*lm, o->experiment);
     o->experiment.multimodal.http.total_timeout = lm_timeout_ms(*lm);
-    o->experiment.particles = particles->particles;
-    o->experiment.particle_seed = particles->seed;
-    o->experiment.ess_threshold = particles->ess_threshold;
-    o->experiment.rejuvenation_moves = particles->moves;
-    o->experiment.rejuvenate = inference::parse_rejuvenation(particles->rejuvenate);
-    o->experiment.proposal_groups = particles->groups;
-    o->experiment.particle_filters = inference::parse_particle_filters(particles->filters);
-    o->experiment.particle_estimate = inference::parse_particle_estimate(particles->estimate);
+    o->experiment.particles = *particles;  // checked by the flags' table
     o->experiment.all_assistance = *assist == "all";
     o->experiment.methods = *methods;
     if (!shard->empty()) {

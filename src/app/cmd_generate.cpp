@@ -1,5 +1,5 @@
 // `clips generate`: a dataset of random problems and sampled plans with known
-// true goals (eval/generate.hpp), in the layout the other subcommands load.
+// true goals (generate/generate.hpp), in the layout the other subcommands load.
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
@@ -11,7 +11,7 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "domains/pack.hpp"
-#include "eval/generate.hpp"
+#include "generate/generate.hpp"
 #include "util/data_dir.hpp"
 #include "util/error.hpp"
 

@@ -1,4 +1,4 @@
-// `clips infer`: goal inference over one dataset plan (clips-spec.md 8).
+// `clips infer`: goal inference over one dataset plan, or over actions and an utterance (docs/cli.md).
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include "app/observations.hpp"
 #include "data/dataset.hpp"
 #include "app/particle_flags.hpp"
+#include "engine/json.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
@@ -149,8 +150,9 @@ void register_infer(CLI::App& app) {
   cmd->add_option("--top", o->top, "With --explain: commands shown per hypothesis (default 3)")
       ->check(PositiveInteger);
   cmd->add_flag("--json", o->json,
-                "Print {goals, true_goal, steps: [{t, posterior}]} as one JSON object (true_goal is null for "
-                "--problem observations)");
+                "Print {goals, true_goal, steps: [{t, action, posterior}]} as one JSON object, each posterior in "
+                "the engine's form ({goals: [{goal, p}], cost_profiles, hypotheses, log_marginal_likelihood}; "
+                "docs/api.md); true_goal is null for --problem observations");
   cmd->callback([o] {
     check_observation_flags(o->obs);  // before loading anything
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
@@ -158,7 +160,8 @@ void register_infer(CLI::App& app) {
     require_stimuli(ds);
     const bool adhoc = !o->obs.problem.empty();
     const data::PlanRecord plan = adhoc ? observations_record(ds, o->obs) : ds.plan(o->obs.plan);
-    const inference::Modality modality = engine::modality_of(parse_method(o->modalities));
+    const Method method = parse_method(o->modalities);
+    const inference::Modality modality = engine::modality_of(method);
     auto lm = make_lm(o->lm, ds);
     inference::InferenceOptions opts;
     opts.refine.max_nodes = o->max_nodes;
@@ -178,15 +181,19 @@ void register_infer(CLI::App& app) {
     if (o->json) {
       nlohmann::json j;
       j["plan"] = adhoc ? nlohmann::json() : nlohmann::json(run.plan_id);
+      j["method"] = method_name(method);
       j["modality"] = inference::to_string(modality);
       j["goals"] = run.goals;
       j["true_goal"] = adhoc ? nlohmann::json() : nlohmann::json(true_goal);
       if (adhoc) j["problem"] = plan.problem_id;
       j["steps"] = nlohmann::json::array();
       for (const auto& st : run.steps) {
-        // seconds: this step's wall time (refinements, scoring), to find the slow ones.
-        nlohmann::json step = {
-            {"t", st.t}, {"action", st.action}, {"seconds", st.seconds}, {"posterior", st[modality].goals}};
+        // seconds: this step's wall time (refinements, scoring), to find the slow ones. The posterior is
+        // the engine's JSON form (engine/json.hpp), as the server and Python write it.
+        nlohmann::json step = {{"t", st.t},
+                               {"action", st.action},
+                               {"seconds", st.seconds},
+                               {"posterior", engine::to_json(engine::posterior_of(run, st, method), method)}};
         if (o->explain && !st.utterances.empty()) step["utterances"] = explain_json(run, st, o->top);
         j["steps"].push_back(std::move(step));
       }

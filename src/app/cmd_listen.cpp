@@ -1,4 +1,4 @@
-// `clips listen`: the literal listener (spec 9.7; VH spec 7.1-7.2) on a
+// `clips listen`: the literal listener on a
 // dataset plan: which command does an instruction ask for, in the state where
 // it is spoken?
 #include <fmt/core.h>

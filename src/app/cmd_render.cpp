@@ -9,7 +9,7 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "eval/experiment.hpp"
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"

@@ -40,7 +40,7 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
                   "Refinement at the assistant's turns, where no action is scored: taken (default; one lookahead, "
                   "from the state its action led to; with an utterance there or after the last action, hypotheses "
                   "whose plan from the state is stored are not searched further, since that plan explains it) or "
-                  "all (the spec's REFINE, from every successor). The same posteriors unless a search hits its "
+                  "all (the paper's REFINE, from every successor). The same posteriors unless a search hits its "
                   "node budget; taken searches less")
       ->check(CLI::IsMember({"taken", "all"}));
   cmd->add_option("--speaker-plans", f.speaker_plans,
@@ -58,11 +58,11 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
 void add_assistance_options(CLI::App* cmd, LmFlags& f) {
   cmd->add_option("--qa-floor", f.qa_floor,
                   "Which Q-values Q_MDP floors at the cost of waiting to the horizon: dead-ends (default; only "
-                  "unreachable goals, the spec's stated purpose) or horizon (every value, the reference formula)")
+                  "unreachable goals, the floor's stated purpose) or horizon (every value, the reference formula)")
       ->check(CLI::IsMember({"dead-ends", "horizon"}));
   cmd->add_option("--assist-rule", f.assist_rule,
                   "How Q_MDP picks among actions of equal expected value: request (the one that carries out what "
-                  "the instruction most probably asked for) or paper (the spec's rule, for the paper's tables); "
+                  "the instruction most probably asked for) or paper (the paper's rule, for the paper's tables); "
                   "default: the pack's assistance_rule")
       ->check(CLI::IsMember({"paper", "request"}));
 }

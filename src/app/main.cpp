@@ -13,7 +13,7 @@
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 #include "language/lm/language_model.hpp"
 #include "util/error.hpp"
 #include "util/version.hpp"

@@ -1,25 +1,27 @@
 #pragma once
-// The particle-inference options shared by `clips infer` and `clips bench`
-// (inference::InferenceOptions::particles and friends; belief.hpp).
+// The particle-inference flags of `clips infer`, `clips bench` (and `bench
+// particles`) and `clips serve`: one flag per row of the engine's option
+// table (engine/options.hpp), filling clips::ParticleOptions.
 #include <CLI/CLI.hpp>
 
-#include <cstdint>
+#include <set>
 #include <string>
 
 #include "clips/types.hpp"
-#include "engine/runs.hpp"  // the inference options the flags set
+
+namespace clips::inference {
+struct InferenceOptions;
+}
 
 namespace clips::app {
 
-using ParticleFlags = inference::ParticleSettings;
+using ParticleFlags = ParticleOptions;
 
 // --particles, --particle-seed, --ess-threshold, --rejuvenation-moves, --rejuvenate,
-// --proposal-groups, --particle-filters, --particle-estimate.
-void add_particle_options(CLI::App* cmd, ParticleFlags& flags);
-// Copies the flags into the inference options (inference::apply_particle_settings).
-inline void apply_particle_flags(const ParticleFlags& flags, inference::InferenceOptions& options) {
-  inference::apply_particle_settings(flags, options);
-}
+// --proposal-groups, --particle-filters, --particle-estimate (but those named in `skip`).
+void add_particle_options(CLI::App* cmd, ParticleFlags& flags, const std::set<std::string>& skip = {});
+// Copies the flags into the inference options (engine::apply_particle_options).
+void apply_particle_flags(const ParticleFlags& flags, inference::InferenceOptions& options);
 // The same into a session engine's options (checked as above).
 void apply_particle_flags(const ParticleFlags& flags, SessionOptions& options);
 

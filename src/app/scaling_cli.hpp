@@ -1,12 +1,12 @@
 #pragma once
-// `clips bench --scaling` (eval/scaling.hpp): the driver runs every point in
+// `clips bench --scaling` (studies/scaling.hpp): the driver runs every point in
 // a child process (`clips bench --scaling-point AXIS:VALUE`, which prints one
 // CSV line) so that max RSS is per point, and writes DIR/scaling.csv and
 // DIR/scaling.svg after every point.
 #include <cstdint>
 #include <string>
 
-#include "eval/scaling.hpp"
+#include "studies/scaling.hpp"
 
 namespace clips::app {
 

@@ -143,7 +143,7 @@ struct Placed {
 };
 
 std::string problem_text(const GenerateParams& params, const Layout& map, std::vector<Placed> objects) {
-  // Row-major scan order numbers the objects of each kind (spec 2.5).
+  // Row-major scan order numbers the objects of each kind, as in the paper's maps.
   std::stable_sort(objects.begin(), objects.end(), [](const Placed& a, const Placed& b) { return a.cell < b.cell; });
   std::vector<std::string> doors, keys, gems;
   std::ostringstream facts;
@@ -188,7 +188,7 @@ std::string problem_text(const GenerateParams& params, const Layout& map, std::v
   return o.str();
 }
 
-// The map as the paper's .txt pictures draw it (spec 2.5).
+// The map as the paper's .txt pictures draw it.
 std::string picture(const Layout& map, const std::vector<Placed>& objects) {
   std::vector<std::string> rows(static_cast<size_t>(map.height()), std::string(static_cast<size_t>(map.width()), '.'));
   for (int c = 0; c < map.width() * map.height(); ++c)

@@ -14,7 +14,7 @@
 // coloured so that each gem's doors can be opened with the keys there are
 // (keys are used up). Objects are numbered in row-major scan order and gems
 // coloured by number (gem1 red, gem2 yellow, gem3 blue, gem4 green, gem5 red
-// again, ...), as in the paper's maps (clips-spec.md 2.4-2.5). Solvability by search is left to
+// again, ...), as in the paper's maps. Solvability by search is left to
 // the caller.
 #include <optional>
 

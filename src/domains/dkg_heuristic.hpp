@@ -1,18 +1,18 @@
 #pragma once
 // Heuristics for Doors-Keys-Gems.
 //
-//   DkgMstHeuristic       the reference's DoorsKeysMSTHeuristic (clips-spec.md
-//                         5.5) with its action pruning (5.6). Inference
-//                         likelihoods depend on its exact values, so it is a
-//                         faithful reimplementation, quirks included; it is
-//                         neither proven admissible nor consistent (13.17).
+//   DkgMstHeuristic       the reference's DoorsKeysMSTHeuristic with its
+//                         action pruning. Inference likelihoods depend on its
+//                         exact values, so it is a faithful reimplementation,
+//                         quirks included; it is neither proven admissible
+//                         nor consistent.
 //   DkgDistanceHeuristic  a simple admissible and consistent bound for
 //                         (has agent item) goals, for tests and for callers
 //                         that need optimality guarantees.
 //
 // Both take an optional shared DkgMapAnalysis (goal-independent, built once
 // per problem). Without one, the first prepare() builds it from its root
-// state (clips-spec.md 5.4: from the state of the first planning call).
+// state (the state of the first planning call, as the reference does).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -59,7 +59,7 @@ DkgMinCosts dkg_min_costs(const model::Specification& spec, const DkgMapAnalysis
 ObjMask dkg_idle_items(const DkgMapAnalysis& map);
 
 // Which pickups and handovers of non-key items A* expands.
-//   Reference  all of them (clips-spec.md 5.6).
+//   Reference  all of them (as the reference).
 //   Idle       not those of an item the goal does not name and no other
 //              action uses, by an agent for whom waiting costs no more
 //              (prepare() explains why no plan's cost is lost).

@@ -207,7 +207,7 @@ std::shared_ptr<const DkgMapAnalysis> DkgMapAnalysis::build(std::shared_ptr<cons
     }
   }
 
-  // MST edge admission by room labels (spec 5.5), per cell pair, so the
+  // MST edge admission by room labels (as the reference), per cell pair, so the
   // heuristic reads one table entry per object pair: same label or
   // neighbouring labels; for two doors also a common neighbouring room.
   m->edge_.assign(static_cast<size_t>(N) * N, kNoPath);

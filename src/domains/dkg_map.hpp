@@ -1,6 +1,6 @@
 #pragma once
 // Goal-independent analysis of a Doors-Keys-Gems map for the MST heuristic
-// (clips-spec.md 5.5 (a) and (b)): room labels, the room graph, door
+// (the reference's DoorsKeysMSTHeuristic): room labels, the room graph, door
 // unlockers, all-pairs cell distances, and the NECESSARY / PATHSETS /
 // RECURSIVE key-and-door analysis.
 //
@@ -8,7 +8,7 @@
 // call starts from (s_0 for inference, s_T for assistance) and is immutable
 // afterwards, so hypotheses and threads may share it through a shared_ptr.
 //
-// Objects are numbered as the spec orders them: agents sorted by name, then
+// Objects are numbered as the reference orders them: agents sorted by name, then
 // items (keys and gems) sorted by name, then doors sorted by name. Sets of
 // objects are ObjMask bit masks over these indices (dkg_mask.hpp), so a map
 // holds at most kObjMaskBits (128) objects.
@@ -50,7 +50,7 @@ class DkgMapAnalysis {
   const pddl::Task& task() const { return *task_; }
   const std::shared_ptr<const pddl::Task>& task_ptr() const { return task_; }
 
-  // ---- objects (spec order)
+  // ---- objects (the reference's order)
   int num_objects() const { return static_cast<int>(objects_.size()); }
   int num_agents() const { return num_agents_; }
   int num_items() const { return num_items_; }

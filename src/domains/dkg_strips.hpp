@@ -4,7 +4,7 @@
 // STRIPS domain + problem with integer action costs, so that off-the-shelf
 // classical planners (Fast Downward, VAL, ...) can solve or check it.
 //
-// What the compilation does (clips-spec.md sections 3-4):
+// What the compilation does (the domain and its turn-taking, docs/domains.md):
 //   * every grid cell that matters is an object c_X_Y; walls disappear into the
 //     static movement facts (up-of ?from ?to) etc., which exist only when ?to
 //     is an in-grid non-wall cell;

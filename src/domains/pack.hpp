@@ -126,7 +126,7 @@ struct OptionRule {
 };
 
 // How the CLIPS speaker model rolls the policy forward to find what the
-// speaker would say (spec 7.2; VH spec 6.1).
+// speaker would say (docs/architecture.md, the utterance model).
 struct RolloutSettings {
   enum class Kind { Greedy, WeightedAStar };
   Kind kind = Kind::Greedy;
@@ -136,7 +136,7 @@ struct RolloutSettings {
   // Greedy: which joint plans the speaker may have in mind. Tied: every
   // plan the policy values equally (ties broken every way, each way weighted
   // as a uniform random tie-break; search/tied_rollouts.hpp); Single: the one
-  // greedy rollout (clips-spec 7.2; the paper packs, for their tables).
+  // greedy rollout (the paper packs, for their tables).
   enum class Plans { Single, Tied };
   Plans plans = Plans::Tied;
 };
@@ -207,7 +207,7 @@ struct PackSpec {
   std::vector<OptionRule> options;  // empty: every salient action of the assistant, on its focal object
   // How Q_MDP breaks ties between equally good assistant actions
   // (assist::AssistRule): "request" (toward what the principal asked for) or
-  // "paper" (spec 9.3 as written; the paper packs, for their tables).
+  // "paper" (the paper's rule as written; the paper packs, for their tables).
   std::string assistance_rule = "request";
   // Salient actions whose language.goal_atoms were derived from the domain's
   // effects (derive_goal_atoms), for `clips validate` to report.

@@ -1,5 +1,5 @@
 #pragma once
-// The VirtualHome value function (clips-spec-virtual-home.md 4.1-4.2): VH
+// The VirtualHome value function: VH
 // replaces real-time search by an analytic lower bound h_g that counts the
 // goal items still to be moved and the fixtures still to be visited. The
 // inference policies use V_g = -h_g with no search at all (n_iters = 0), and
@@ -45,7 +45,7 @@ class VhValueHeuristic : public heuristics::Heuristic {
 namespace clips::domains {
 
 // VH heuristic plus the action filter used by the literal listener's A*
-// (clips-spec-virtual-home.md 4.3). The filter is fixed per planning call from
+// (as the reference's). The filter is fixed per planning call from
 // the root state: nograb flags never change during a search, and fixtures that
 // hold goal items at the root are a superset of those holding them later.
 class VhPlanningHeuristic : public VhValueHeuristic {

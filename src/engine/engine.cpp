@@ -1,5 +1,6 @@
 #include "engine/engine.hpp"
 #include "engine/hypotheses.hpp"
+#include "engine/options.hpp"
 #include "engine/runs.hpp"
 
 #include <algorithm>
@@ -133,15 +134,7 @@ inference::InferenceOptions inference_options(const SessionOptions& o) {
   io.refine.max_seconds = o.search_seconds;
   io.threads = o.threads;
   io.assistant_turns = inference::parse_assistant_turns(o.assistant_turns);
-  inference::apply_particle_settings({.particles = o.particles,
-                                      .seed = o.particle_seed,
-                                      .ess_threshold = o.ess_threshold,
-                                      .moves = o.rejuvenation_moves,
-                                      .rejuvenate = o.rejuvenate,
-                                      .groups = o.proposal_groups,
-                                      .filters = o.particle_filters,
-                                      .estimate = o.particle_estimate},
-                                     io);
+  apply_particle_options(o, io);
   return io;
 }
 
@@ -226,7 +219,8 @@ Problem domain_problem(const std::string& domain_dir, const std::string& problem
   if (pack->spec().goals.source == domains::GoalSource::GoalSets && goals.conditions.empty()) {
     s.goals = data::folder_goal_set(domain_dir, s.problem);
   } else {
-    s.goals = chosen_goals(goals, [&] { return pack->problem_goals(*s.task, problem_file); });
+    // An init-capture: clang 14 (the fuzz build) cannot capture a structured binding.
+    s.goals = chosen_goals(goals, [&, pk = pack] { return pk->problem_goals(*s.task, problem_file); });
   }
   s.profiles = pack->default_profiles();
   return s;
@@ -335,6 +329,11 @@ struct Engine::Impl {
       work(*copy);
     } catch (const inference::Interrupted&) {
       b.cancelled();
+    } catch (...) {
+      // Cancelled while it waited (e.g. on a language model server that then
+      // failed): the caller asked for the call to stop, so that is the error.
+      if (b.stop_requested()) b.cancelled();
+      throw;
     }
     // A cancellation that came during the work (after the last refinement)
     // still drops it: the caller asked for the call not to happen.
@@ -359,17 +358,7 @@ struct Engine::Impl {
   }
 
   Posterior convert(const inference::Posterior& p) const {
-    Posterior out;
-    out.goals = goal_labels;
-    out.goal_probabilities = p.goals;
-    out.cost_profiles = profile_names;
-    out.cost_profile_probabilities = p.profiles;
-    for (size_t h = 0; h < p.hypotheses.size(); ++h) {
-      const auto& hy = belief->hypotheses()[h];
-      out.hypotheses.push_back({goal_labels[hy.goal], profile_names[hy.profile], p.hypotheses[h]});
-    }
-    out.log_marginal_likelihood = p.log_marginal;
-    return out;
+    return to_posterior(p, *belief, goal_labels, profile_names);
   }
 
   Point point(const std::string& label, const inference::Belief& b) const {

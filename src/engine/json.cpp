@@ -48,10 +48,11 @@ json to_json(const AssistDecision& d) {
   j["method"] = d.method;
   j["assistant_turn"] = d.assistant_turn;
   j["action"] = d.assistant_turn ? json(d.action) : json(nullptr);
+  j["id"] = d.id;
   j["reason"] = d.reason;
   j["unanimous"] = d.unanimous;
   json cands = json::array();
-  for (const auto& c : d.candidates) cands.push_back({{"action", c.action}, {"value", number_or_null(c.value)}});
+  for (const auto& c : d.candidates) cands.push_back({{"id", c.id}, {"action", c.action}, {"value", number_or_null(c.value)}});
   j["candidates"] = std::move(cands);
   if (!d.command.empty()) {
     j["command"] = d.command;

@@ -1,7 +1,8 @@
 #pragma once
 // The one JSON form of the engine's nouns (docs/decisions.md, "One posterior
-// serializer"): the server's replies, `clips assist --problem --json` and the
-// cross-front-end tests write posteriors, steps and decisions with these.
+// serializer"): the server's replies, `clips infer --json`, `clips assist
+// --json` and Python's dicts (converted from this JSON) write posteriors,
+// steps and decisions with these.
 //
 //   posterior  {"method": "clips", "modality": "both",
 //               "goals": [{"goal": "gem1", "p": 0.25}, ...],
@@ -9,8 +10,8 @@
 //               "hypotheses": [{"goal": "gem1", "cost_profile": "C3", "p": 0.125}, ...],
 //               "log_marginal_likelihood": -3.2}            (null for -inf)
 //   step       {"t", "action", "agent", "evidence", "utterances", "posterior", "seconds"}
-//   decision   {"method", "assistant_turn", "action", "reason", "unanimous",
-//               "candidates": [{"action", "value"}], "goals", "goal_weights"}
+//   decision   {"method", "assistant_turn", "action", "id", "reason", "unanimous",
+//               "candidates": [{"id", "action", "value"}], "goals", "goal_weights"}
 //               (+ "command", "command_probability" for literal)
 #include <nlohmann/json.hpp>
 

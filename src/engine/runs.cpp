@@ -20,6 +20,25 @@ inference::Modality modality_of(Method m) {
   return inference::Modality::Both;
 }
 
+Posterior to_posterior(const inference::Posterior& p, const inference::Belief& belief,
+                       const std::vector<std::string>& goals, const std::vector<std::string>& profiles) {
+  Posterior out;
+  out.goals = goals;
+  out.goal_probabilities = p.goals;
+  out.cost_profiles = profiles;
+  out.cost_profile_probabilities = p.profiles;
+  for (size_t h = 0; h < p.hypotheses.size(); ++h) {
+    const auto& hy = belief.hypotheses()[h];
+    out.hypotheses.push_back({goals.at(hy.goal), profiles.at(hy.profile), p.hypotheses[h]});
+  }
+  out.log_marginal_likelihood = p.log_marginal;
+  return out;
+}
+
+Posterior posterior_of(const inference::InferenceRun& run, const inference::StepRecord& step, Method m) {
+  return to_posterior(step[modality_of(m)], *run.belief, run.goals, run.profiles);
+}
+
 inference::InferenceRun run_observations(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,
                                          inference::InferenceOptions options, bool known_truth,
                                          const CallLimits& limits) {

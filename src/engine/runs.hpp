@@ -13,6 +13,14 @@ namespace clips::engine {
 // The belief's evidence modality of a method (literal: the CLIPS one).
 inference::Modality modality_of(Method m);
 
+// The one conversion of a belief's posterior into the public value type
+// (which engine/json.hpp writes): labels from `goals` and `profiles`, the
+// hypotheses in `belief`'s order.
+Posterior to_posterior(const inference::Posterior& p, const inference::Belief& belief,
+                       const std::vector<std::string>& goals, const std::vector<std::string>& profiles);
+// One step of a run, under a method.
+Posterior posterior_of(const inference::InferenceRun& run, const inference::StepRecord& step, Method m);
+
 // inference::run_inference (known_truth) or run_inference_on_observations,
 // bounded by `limits`: every search ends at the deadline, and a run that
 // reached it throws TimeLimitError (its numbers would depend on where the

@@ -7,6 +7,7 @@
 #include "assist/request.hpp"
 #include "assist/setup.hpp"
 #include "data/validate.hpp"
+#include "engine/options.hpp"
 #include "engine/runs.hpp"
 #include "domains/pack.hpp"
 #include "eval/methods.hpp"
@@ -53,14 +54,7 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   io.assistant_turns = opts.assistant_turns;
   if (opts.refine_max_nodes > 0) io.refine.max_nodes = opts.refine_max_nodes;
   io.refine.deadline = opts.deadline;
-  io.particles = opts.particles;
-  io.particle_seed = opts.particle_seed;
-  io.ess_threshold = opts.ess_threshold;
-  io.rejuvenation_moves = opts.rejuvenation_moves;
-  io.rejuvenate = opts.rejuvenate;
-  io.proposal_groups = opts.proposal_groups;
-  io.particle_filters = opts.particle_filters;
-  io.particle_estimate = opts.particle_estimate;
+  engine::apply_particle_options(opts.particles, io);
   return io;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The experiment runner behind `clips bench` and `clips assist`: for one
 // dataset plan, run inference once (three modalities), assistance for every
-// method, and score each run with the paper's metrics (clips-spec.md 10).
+// method, and score each run with the paper's metrics (eval/metrics.hpp).
 #include <chrono>
 #include <exception>
 #include <functional>
@@ -13,7 +13,7 @@
 #include "data/dataset.hpp"
 #include "assist/assist.hpp"
 #include "clips/types.hpp"
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
 #include "language/lm/language_model.hpp"
@@ -76,7 +76,7 @@ struct ExperimentOptions {
   std::vector<std::string> methods;  // empty: all default methods of the domain
   bool all_assistance = false;       // add qmdp_online and pibar for the IP methods
   uint64_t seed = 1;
-  // The CLIPS speaker model's command rule (spec 13 item 2).
+  // The CLIPS speaker model's command rule (paper or the reference code's).
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   // Which plans the speaker model may mean; nullopt: the pack's.
   std::optional<domains::RolloutSettings::Plans> speaker_plans;
@@ -91,15 +91,8 @@ struct ExperimentOptions {
   // Threads per inference (InferenceOptions::threads): 1 when plans already
   // run in parallel (`clips bench`), 0 (all cores) for a single plan.
   int inference_threads = 1;
-  // Particle inference (InferenceOptions::particles etc.); 0: exact.
-  int particles = 0;
-  uint64_t particle_seed = 1;
-  double ess_threshold = 0.5;
-  int rejuvenation_moves = 2;
-  inference::Rejuvenation rejuvenate = inference::Rejuvenation::Evidence;
-  int proposal_groups = 8;
-  inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
-  inference::ParticleEstimate particle_estimate = inference::ParticleEstimate::Support;
+  // Particle inference (the one particle options type); particles 0: exact.
+  ParticleOptions particles;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
   MultimodalOptions multimodal;

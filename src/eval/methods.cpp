@@ -42,7 +42,7 @@ class OnlineAdapter : public assist::OnlineBelief {
     rebuild();
   }
   void observe(const pddl::State& pre, pddl::ActionId a) override {
-    // Paper semantics for language-only (spec 13.10): no action evidence online.
+    // Paper semantics for language-only: no action evidence online.
     if (modality_ == Modality::UtteranceOnly) return;
     belief_.observe(a, pre);
     rebuild();
@@ -119,7 +119,7 @@ class LiteralMethod : public Method {
     if (utt.empty()) throw InputError("plan " + p.id + " has no utterance for the literal listener");
     auto ranked = language::literal_listener(task, s_T, utt, lsetup, ctx.lm);
     if (p.observed.utterances.size() > 1) {
-      // Several utterances (VH spec 7.3): every one is heard in s_T; rankings
+      // Several utterances (VirtualHome): every one is heard in s_T; rankings
       // are merged (most probable prefix of the first, then each later one).
       auto to_cmd = [](const language::ListenerResult& lr) {
         std::vector<commands::RankedCommand> v;

@@ -5,7 +5,7 @@
 //
 //   clips | lang_only | action_only          inference in one modality, then
 //     [/qmdp_offline | /qmdp_online | /pibar]  an assistance policy (default offline Q_MDP)
-//   literal_efficient | literal_naive | literal   the literal listener (clips-spec 9)
+//   literal_efficient | literal_naive | literal   the literal listener
 //   multimodal                                    a multimodal chat model (issue 8)
 //
 // Method names are an interface (results.csv, summary.json): keep them stable.
@@ -15,7 +15,7 @@
 
 #include "assist/assist.hpp"
 #include "data/dataset.hpp"
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "language/lm/language_model.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Per-plan metrics (clips-spec.md section 10) and their aggregation.
+// Per-plan metrics (the paper's; docs/results.md) and their aggregation.
 #include <map>
 #include <optional>
 #include <string>

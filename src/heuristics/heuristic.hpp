@@ -5,7 +5,7 @@
 // precompute step per planning call (`prepare`) kept out of the hot path.
 //
 // A heuristic may also prune goal-irrelevant actions during search
-// (clips-spec.md 5.6): A* asks keep() for each applicable action it expands.
+// (the reference's action pruning): A* asks keep() for each applicable action it expands.
 #include <chrono>
 #include <string>
 

@@ -125,18 +125,6 @@ void check_options(const InferenceOptions& o) {
     throw InputError(fmt::format("proposal groups must be 1 or more, not {}", o.proposal_groups));
 }
 
-void apply_particle_settings(const ParticleSettings& f, InferenceOptions& o) {
-  o.particles = f.particles;
-  o.particle_seed = f.seed;
-  o.ess_threshold = f.ess_threshold;
-  o.rejuvenation_moves = f.moves;
-  o.rejuvenate = parse_rejuvenation(f.rejuvenate);
-  o.proposal_groups = f.groups;
-  o.particle_filters = parse_particle_filters(f.filters);
-  o.particle_estimate = parse_particle_estimate(f.estimate);
-  check_options(o);
-}
-
 bool Belief::is_speaker_action(pddl::ActionId a) const {
   // The acting agent is the first argument of every action; without a known
   // speaker object every action counts as evidence.

@@ -157,21 +157,6 @@ struct InferenceOptions {
 // particle count, ESS threshold outside [0, 1], negative moves).
 void check_options(const InferenceOptions& options);
 
-// The particle options with their choices as text, as the CLI and the public
-// session API take them (`clips infer --particles ...`, clips::SessionOptions).
-struct ParticleSettings {
-  int particles = 0;  // 0: exact enumeration
-  uint64_t seed = 1;
-  double ess_threshold = 0.5;
-  int moves = 2;
-  std::string rejuvenate = "evidence";  // or "utterances", "resampling"
-  int groups = 8;
-  std::string filters = "all";  // or "clips"
-  std::string estimate = "support";  // or "weights"
-};
-// Copies them into `options` and checks them (InputError names a bad value).
-void apply_particle_settings(const ParticleSettings& settings, InferenceOptions& options);
-
 struct Hypothesis {
   int goal = 0;     // index into Belief::goals()
   int profile = 0;  // index into Belief::profiles()

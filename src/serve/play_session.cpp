@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "engine/json.hpp"
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
 

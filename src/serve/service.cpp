@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/options.hpp"
 #include "util/error.hpp"
 
 namespace clips::serve {
@@ -55,6 +56,36 @@ json parse_body(const std::string& body, std::initializer_list<const char*> allo
       throw HttpError(400, "unknown field '" + echo(it.key()) + "' (allowed: " + (names.empty() ? "none" : names) + ")");
     }
   return j;
+}
+
+// More particles than a shared server gives one session.
+constexpr int kMaxSessionParticles = 10'000;
+
+// The server's play limits with a session's "inference" object applied: its
+// particle options, read by the engine's one table (engine/options.hpp) as
+// `clips serve --particles ...` and Python's keywords are.
+PlayLimits with_inference(PlayLimits play, const json& j) {
+  if (!j.contains("inference")) return play;
+  const json& inf = j["inference"];
+  if (!inf.is_object()) throw HttpError(400, "field 'inference': expected an object of particle options");
+  try {
+    for (auto it = inf.begin(); it != inf.end(); ++it) {
+      const std::string& name = it.key();
+      const json& value = it.value();
+      // A choice is a JSON string; a number is read from its JSON text.
+      const auto& table = engine::particle_option_table();
+      const bool choice = std::any_of(table.begin(), table.end(), [&](const engine::ParticleOption& o) {
+        return o.name == name && o.kind == engine::ParticleOption::Kind::Choice;
+      });
+      engine::set_particle_option(play.belief, name, choice && value.is_string() ? value.get<std::string>() : value.dump());
+    }
+  } catch (const InputError& e) {
+    throw HttpError(400, std::string("field 'inference': ") + e.what());
+  }
+  if (play.belief.particles > kMaxSessionParticles)
+    throw HttpError(400, "field 'inference': particles must be at most " + std::to_string(kMaxSessionParticles) +
+                             " on this server, got " + std::to_string(play.belief.particles));
+  return play;
 }
 
 std::string string_field(const json& j, const char* name, bool required, const std::string& fallback = "") {
@@ -242,7 +273,8 @@ std::shared_ptr<lm::LanguageModel> Service::text_lm(const PlaySetup& setup, cons
 }
 
 Reply Service::create(const std::string& body) {
-  const json j = parse_body(body, {"dataset", "domain", "method", "pack", "plan", "problem"});
+  const json j = parse_body(body, {"dataset", "domain", "inference", "method", "pack", "plan", "problem"});
+  const PlayLimits play = with_inference(limits_.play, j);
   const std::string method = string_field(j, "method", false, "clips");
   const auto& known = play_methods();
   if (std::find(known.begin(), known.end(), method) == known.end())
@@ -293,11 +325,11 @@ Reply Service::create(const std::string& body) {
     if (from_text) {
       PlaySetup setup = text_setup(domain_text, problem, pack_text, limits_.play);
       auto lm = text_lm(setup, domain_text + '\0' + pack_text + '\0' + problem);
-      entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), limits_.play);
+      entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), play);
     } else {
       PlaySetup setup = dataset_setup(served->dataset, dataset, problem, plan);
       auto lm = dataset_lm(*served);
-      entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), limits_.play);
+      entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), play);
     }
   } catch (...) {
     std::lock_guard lock(mutex_);

@@ -55,7 +55,8 @@ void check_replay_matches_cli(const std::string& dataset, const std::string& pla
     // The CLI's step t holds the utterances said after t actions only at the
     // start and the end; in between they are scored in step t + 1.
     if (t == 0 || t == T) hear_all();
-    const auto expected = j["steps"][t]["posterior"].get<std::vector<double>>();
+    std::vector<double> expected;  // the engine's posterior JSON: goals [{goal, p}]
+    for (const auto& g : j["steps"][t]["posterior"]["goals"]) expected.push_back(g["p"].get<double>());
     expect_near_all(session.posterior().goal_probabilities, expected, plan_id + " t=" + std::to_string(t));
     expect_near_all(session.trace().at(t).posterior.goal_probabilities, expected, plan_id + " trace t=" + std::to_string(t));
     if (t != 0 && t != T) hear_all();

@@ -61,7 +61,9 @@ Inferred infer(const std::string& ds, const std::string& modality) {
   return r;
 }
 
-std::vector<double> final_posterior(const nlohmann::json& j) { return j["steps"].back()["posterior"]; }
+std::vector<double> final_posterior(const nlohmann::json& j) {
+  return testing::goal_probabilities(j["steps"].back()["posterior"]);
+}
 
 double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
   double d = 0;

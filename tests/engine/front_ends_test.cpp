@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clips/clips.hpp"
+#include "engine/json.hpp"
 #include "language/listener.hpp"
 #include "serve/service.hpp"
 #include "test_paths.hpp"
@@ -53,7 +54,30 @@ struct FrontEndRun {
   std::vector<std::string> goals;
   std::string action;
   std::vector<std::pair<std::string, double>> candidates;
+  json posterior;  // the final posterior in JSON, as this front end writes it
 };
+
+// The same JSON shape (keys, array lengths, strings, nulls) with numbers
+// within 1e-9: the one serializer (engine/json.hpp) behind every front end.
+void expect_same_json(const json& a, const json& b, const std::string& where) {
+  if (a.is_number() && b.is_number()) {
+    EXPECT_NEAR(a.get<double>(), b.get<double>(), 1e-9) << where;
+    return;
+  }
+  ASSERT_EQ(a.type(), b.type()) << where << ": " << a << " vs " << b;
+  if (a.is_object()) {
+    ASSERT_EQ(a.size(), b.size()) << where << ": " << a << " vs " << b;
+    for (const auto& [k, v] : a.items()) {
+      ASSERT_TRUE(b.contains(k)) << where << ": no " << k;
+      expect_same_json(v, b[k], where + "." + k);
+    }
+  } else if (a.is_array()) {
+    ASSERT_EQ(a.size(), b.size()) << where;
+    for (size_t i = 0; i < a.size(); ++i) expect_same_json(a[i], b[i], where + "[" + std::to_string(i) + "]");
+  } else {
+    EXPECT_EQ(a, b) << where;
+  }
+}
 
 FrontEndRun session_run() {
   auto s = clips::Session::open_dataset(kDataset, "e1");
@@ -62,6 +86,7 @@ FrontEndRun session_run() {
   FrontEndRun r;
   for (const auto& st : s.trace()) r.steps.push_back(st.posterior.goal_probabilities);
   r.goals = s.posterior().goals;
+  r.posterior = clips::engine::to_json(s.posterior(), clips::Method::Clips);  // the session's default method
   const auto d = s.assist();
   r.action = d.action;
   for (const auto& c : d.candidates) r.candidates.push_back({c.action, c.value});
@@ -73,8 +98,14 @@ FrontEndRun cli_run() {
   const json infer = json::parse(stdout_of(clips + " infer --json" + cli_observations()));
   const json assist = json::parse(stdout_of(clips + " assist --json" + cli_observations()));
   FrontEndRun r;
-  for (const auto& st : infer["steps"]) r.steps.push_back(st["posterior"].get<std::vector<double>>());
+  for (const auto& st : infer["steps"]) {
+    std::vector<double> p;  // the engine's posterior JSON, as the server's below
+    for (const auto& g : st["posterior"]["goals"]) p.push_back(g["p"]);
+    r.steps.push_back(std::move(p));
+  }
   r.goals = infer["goals"].get<std::vector<std::string>>();
+  r.posterior = infer["steps"].back()["posterior"];
+  expect_same_json(r.posterior, assist["posterior"], "infer --json vs assist --json posterior");
   // The engine's JSON of the decision.
   EXPECT_EQ(assist["decision"]["method"], "clips");
   r.action = assist["decision"]["action"].get<std::string>();
@@ -105,6 +136,9 @@ FrontEndRun server_run() {
     if (i != kActions.size()) r.steps.push_back(history[i]["goals"].get<std::vector<double>>());
   for (const auto& g : state["posterior"]["goals"]) r.goals.push_back(g["goal"]);
   EXPECT_TRUE(state["posterior"].contains("log_marginal_likelihood"));
+  r.posterior = state["posterior"];
+  // The server adds each goal's colour for the play page; the rest is the engine's JSON.
+  for (auto& g : r.posterior["goals"]) EXPECT_EQ(g.erase("colour"), 1u);
   const json d = call("POST", "/api/sessions/" + id + "/assist", {{"apply", false}})["decision"];
   r.action = d["action"];
   for (const auto& c : d["candidates"]) r.candidates.push_back({c["action"], c["value"]});
@@ -121,10 +155,11 @@ FrontEndRun python_run() {
       << "s = clips_assist.Session.open_dataset(\"" << kDataset << "\", \"e1\")\n"
       << "for a in [" << actions << "]:\n    s.observe(a)\n"
       << "s.hear(\"" << kUtterance << "\")\n"
-      << "goals = list(s.posterior()[\"goals\"])\n"
-      << "steps = [[st[\"posterior\"][\"goals\"][g] for g in goals] for st in s.trace()]\n"
+      << "post = s.posterior()\n"
+      << "goals = [g[\"goal\"] for g in post[\"goals\"]]\n"
+      << "steps = [[g[\"p\"] for g in st[\"posterior\"][\"goals\"]] for st in s.trace()]\n"
       << "d = s.assist()\n"
-      << "print(json.dumps({\"goals\": goals, \"steps\": steps, \"action\": d[\"action\"],\n"
+      << "print(json.dumps({\"goals\": goals, \"steps\": steps, \"action\": d[\"action\"], \"posterior\": post,\n"
       << "                  \"candidates\": [[c[\"action\"], c[\"value\"]] for c in d[\"candidates\"]]}))\n";
   }
   const json j = json::parse(stdout_of("PYTHONPATH=" + std::string(CLIPS_BINARY_DIR) + "/python /usr/bin/python3 " + script));
@@ -132,6 +167,7 @@ FrontEndRun python_run() {
   r.goals = j["goals"].get<std::vector<std::string>>();
   r.steps = j["steps"].get<std::vector<std::vector<double>>>();
   r.action = j["action"];
+  r.posterior = j["posterior"];
   for (const auto& c : j["candidates"]) r.candidates.push_back({c[0], c[1]});
   return r;
 }
@@ -141,6 +177,7 @@ void expect_same(const FrontEndRun& a, const FrontEndRun& b, const std::string& 
   ASSERT_EQ(a.steps.size(), b.steps.size()) << name;
   for (size_t t = 0; t < a.steps.size(); ++t) expect_near_all(a.steps[t], b.steps[t], name + " step " + std::to_string(t));
   EXPECT_EQ(a.action, b.action) << name;
+  expect_same_json(a.posterior, b.posterior, name + " posterior");
   ASSERT_EQ(a.candidates.size(), b.candidates.size()) << name;
   for (size_t i = 0; i < a.candidates.size(); ++i) {
     EXPECT_EQ(a.candidates[i].first, b.candidates[i].first) << name;

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 
 #include "engine/engine.hpp"
 #include "engine/json.hpp"
@@ -29,6 +32,39 @@ class CancellingModel : public lm::LanguageModel {
  private:
   std::shared_ptr<lm::LanguageModel> inner_;
   std::atomic<bool>& flag_;
+};
+
+// The embedded model, which holds every scoring call until released and says
+// when the first one came: a call that is surely running while another
+// thread acts on it.
+class HeldModel : public lm::LanguageModel {
+ public:
+  HeldModel() : inner_(language::make_language_model("embedded")) {}
+  std::string name() const override { return "held"; }
+  std::vector<double> score(const std::vector<lm::ScoreRequest>& batch) override {
+    {
+      std::unique_lock lock(mutex_);
+      entered_ = true;
+      changed_.notify_all();
+      changed_.wait(lock, [this] { return released_; });
+    }
+    return inner_->score(batch);
+  }
+  void wait_until_scoring() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this] { return entered_; });
+  }
+  void release() {
+    std::lock_guard lock(mutex_);
+    released_ = true;
+    changed_.notify_all();
+  }
+
+ private:
+  std::shared_ptr<lm::LanguageModel> inner_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool entered_ = false, released_ = false;
 };
 
 Engine opened(std::shared_ptr<lm::LanguageModel> lm = nullptr) {
@@ -97,6 +133,34 @@ TEST(EngineLimits, ACancelledCallLeavesTheEngineUnchanged) {
   cancel = false;
   const Step& s = e.observe("(wait robot)", flag);  // a flag that stays down: the call runs
   EXPECT_EQ(s.t, 2);
+}
+
+TEST(EngineLimits, AnotherThreadCancelsARunningCall) {
+  // A controller thread raises the flag while the call is in the middle of
+  // scoring the utterance (the model holds it there until then): the call
+  // throws CancelledError, the engine is as it was, the next call works.
+  std::atomic<bool> cancel{false};
+  auto model = std::make_shared<HeldModel>();
+  Engine e = opened(model);
+  e.observe("(left human)");
+  e.observe("(wait robot)");
+  const auto before = snapshot(e);
+  std::thread controller([&] {
+    model->wait_until_scoring();
+    cancel = true;
+    model->release();
+  });
+  CallLimits limits;
+  limits.cancel = &cancel;
+  EXPECT_THROW(e.hear("Can you get me the yellow key?", limits), CancelledError);
+  controller.join();
+  EXPECT_EQ(snapshot(e), before);
+  e.hear("Can you get me the yellow key?");  // the model lets it through now
+  Engine reference = opened();
+  reference.observe("(left human)");
+  reference.observe("(wait robot)");
+  reference.hear("Can you get me the yellow key?");
+  EXPECT_EQ(snapshot(e), snapshot(reference));
 }
 
 TEST(EngineLimits, ACancellationInTheMiddleOfACallUndoesIt) {

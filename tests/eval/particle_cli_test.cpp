@@ -54,7 +54,7 @@ TEST(ParticleCli, InferWithParticlesReportsAProperPosterior) {
   EXPECT_EQ(j["particles"], 64);
   for (const auto& st : j["steps"]) {
     double s = 0;
-    for (double p : st["posterior"]) s += p;
+    for (double p : testing::goal_probabilities(st["posterior"])) s += p;
     EXPECT_NEAR(s, 1.0, 1e-9);
   }
   // The same seed gives the same output.

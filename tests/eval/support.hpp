@@ -12,11 +12,21 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "test_paths.hpp"
 
 namespace clips::eval::testing {
 
 inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The goal probabilities of a posterior in the engine's JSON form
+// ({"goals": [{"goal", "p"}], ...}: `clips infer --json`'s steps), in order.
+inline std::vector<double> goal_probabilities(const nlohmann::json& posterior) {
+  std::vector<double> p;
+  for (const auto& g : posterior.at("goals")) p.push_back(g.at("p").get<double>());
+  return p;
+}
 
 inline std::string clips_binary() { return std::string(CLIPS_BINARY_DIR) + "/clips"; }
 inline std::string examples_dkg() { return clips::paths::examples_dir() + "/doors-keys-gems"; }

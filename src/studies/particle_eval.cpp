@@ -1,4 +1,4 @@
-#include "eval/particle_eval.hpp"
+#include "studies/particle_eval.hpp"
 
 #include <fmt/core.h>
 
@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "data/dataset.hpp"
+#include "engine/options.hpp"
 #include "inference/belief.hpp"
 #include "language/lm/cached_model.hpp"
 #include "util/error.hpp"
@@ -54,12 +55,12 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   ParticleEvalReport rep;
   rep.dataset = o.dataset;
   rep.lm = o.language_model->name();
-  rep.settings = {{"ess_threshold", fmt::format("{}", o.ess_threshold)},
-                  {"rejuvenation_moves", std::to_string(o.rejuvenation_moves)},
-                  {"rejuvenate", inference::to_string(o.rejuvenate)},
-                  {"proposal_groups", std::to_string(o.proposal_groups)},
-                  {"particle_filters", inference::to_string(o.particle_filters)},
-                  {"particle_estimate", inference::to_string(o.particle_estimate)},
+  rep.settings = {{"ess_threshold", engine::particle_option_text(o.tuning, "ess_threshold")},
+                  {"rejuvenation_moves", engine::particle_option_text(o.tuning, "rejuvenation_moves")},
+                  {"rejuvenate", engine::particle_option_text(o.tuning, "rejuvenate")},
+                  {"proposal_groups", engine::particle_option_text(o.tuning, "proposal_groups")},
+                  {"particle_filters", engine::particle_option_text(o.tuning, "particle_filters")},
+                  {"particle_estimate", engine::particle_option_text(o.tuning, "particle_estimate")},
                   {"assistant_turns", inference::to_string(o.assistant_turns)}};
   std::vector<const data::PlanRecord*> todo;
   for (const auto& p : ds.plans()) {
@@ -76,13 +77,11 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   base.utterance.plans = o.speaker_plans;
   base.utterance_timing = o.utterance_timing;
   base.assistant_turns = o.assistant_turns;
-  base.ess_threshold = o.ess_threshold;
-  base.rejuvenation_moves = o.rejuvenation_moves;
-  base.rejuvenate = o.rejuvenate;
-  base.proposal_groups = o.proposal_groups;
-  base.particle_filters = o.particle_filters;
-  base.particle_estimate = o.particle_estimate;
-  inference::check_options(base);
+  {
+    ParticleOptions tuning = o.tuning;
+    tuning.particles = 0;  // the exact run; the particle runs set their count and seed below
+    engine::apply_particle_options(tuning, base);
+  }
   // Every timed run starts with an empty score cache: otherwise the runs
   // after the first would find the exact run's language-model scores there
   // and look cheaper than they are.

@@ -1,6 +1,6 @@
-// `clips bench --scaling` (eval/scaling.hpp): the points of each axis, the
+// `clips bench --scaling` (studies/scaling.hpp): the points of each axis, the
 // CSV line round trip, the SVG chart, and one tiny point run end to end.
-#include "eval/scaling.hpp"
+#include "studies/scaling.hpp"
 
 #include <gtest/gtest.h>
 

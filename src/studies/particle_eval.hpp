@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "clips/types.hpp"
 #include "inference/belief.hpp"
 #include "inference/particle_belief.hpp"
 #include "inference/utterance_model.hpp"
@@ -27,12 +28,9 @@ struct ParticleEvalOptions {
   std::vector<std::string> plans;             // empty: every evaluated plan
   std::vector<int> particles = {64, 128, 256};
   int seeds = 3;                              // particle seeds 1..seeds for each count
-  double ess_threshold = 0.5;
-  int rejuvenation_moves = 2;
-  inference::Rejuvenation rejuvenate = inference::Rejuvenation::Evidence;
-  int proposal_groups = 8;
-  inference::ParticleFilters particle_filters = inference::ParticleFilters::All;
-  inference::ParticleEstimate particle_estimate = inference::ParticleEstimate::Support;
+  // The filters' tuning (the one particle options type; its particles and
+  // particle_seed are not read: the counts and seeds above are).
+  ParticleOptions tuning;
   inference::SpeakerRule speaker_rule = inference::SpeakerRule::Paper;
   std::optional<domains::RolloutSettings::Plans> speaker_plans;  // nullopt: the pack's
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;

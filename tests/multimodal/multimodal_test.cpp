@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "eval/experiment.hpp"
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 #include "eval/support.hpp"
 #include "language/listener.hpp"
 #include "lm/fake_openai_server.hpp"

@@ -1,7 +1,7 @@
-// `clips generate` as a library (eval/generate.hpp): a small generated set
+// `clips generate` as a library (generate/generate.hpp): a small generated set
 // loads, every plan checks and reaches its recorded goal, the seed alone
 // decides the bytes, and impossible parameters are clear errors.
-#include "eval/generate.hpp"
+#include "generate/generate.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <set>
 
 #include "eval/bench.hpp"
-#include "eval/report.hpp"
+#include "report/report.hpp"
 #include "eval/support.hpp"
 #include "render/image.hpp"
 

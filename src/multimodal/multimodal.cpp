@@ -1,4 +1,4 @@
-#include "eval/multimodal.hpp"
+#include "multimodal/multimodal.hpp"
 
 #include <fmt/core.h>
 
@@ -15,7 +15,7 @@
 
 #include "domains/dkg_world.hpp"
 #include "domains/vh_world.hpp"
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "model/spec.hpp"
 #include "render/image.hpp"
 #include "util/error.hpp"

@@ -1,4 +1,4 @@
-#include "eval/generate.hpp"
+#include "generate/generate.hpp"
 
 #include <fmt/core.h>
 
@@ -120,7 +120,7 @@ std::optional<Trajectory> sample_trajectory(const pddl::Task& task, search::Poli
     }
     const pddl::State& s = t.states.back();
     // Refined at every state, the assistant's passive turns too: the
-    // observer's model does (spec 5.4), so the human acts on the policy
+    // observer's model does, so the human acts on the policy
     // inference will hold at that step.
     if (refine) policy.refine_step(s, budget);
     if (noop && t.actions.size() < passive_steps && task.applicable(*noop, s.data())) {

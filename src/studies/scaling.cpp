@@ -1,4 +1,4 @@
-#include "eval/scaling.hpp"
+#include "studies/scaling.hpp"
 
 #include <fmt/core.h>
 #include <sys/resource.h>
@@ -12,7 +12,7 @@
 
 #include "data/dataset.hpp"
 #include "eval/experiment.hpp"
-#include "eval/generate.hpp"
+#include "generate/generate.hpp"
 #include "util/error.hpp"
 
 namespace clips::eval {

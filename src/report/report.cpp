@@ -1,4 +1,4 @@
-#include "eval/report.hpp"
+#include "report/report.hpp"
 
 #include "eval/breakdown.hpp"
 
@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "render/theme.hpp"
 #include "util/error.hpp"
 

@@ -1,4 +1,4 @@
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 
 #include <cstdint>
 #include <filesystem>

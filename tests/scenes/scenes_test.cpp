@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "eval/scenes.hpp"
+#include "scenes/scenes.hpp"
 #include "eval/support.hpp"
 #include "render/image.hpp"
 
