@@ -263,8 +263,9 @@ py::object to_py(const clips::AssistDecision& a) { return from_json(clips::engin
 
 // ---- long calls: off the calling thread, interruptible ------------------------
 //
-// The engine has no cancellation, so a long call runs on a worker thread
-// holding everything it uses (shared_ptr, copies), while the calling thread
+// A long call runs on a worker thread, so that Ctrl-C returns at once
+// (the engine notices its cancellation flag only at its next check), holding
+// everything it uses (shared_ptr, copies), while the calling thread
 // waits without the GIL and checks for signals every 20 ms. On Ctrl-C (any
 // signal handler raising) the caller raises at once and the worker is left to
 // finish on its own state, its result dropped: a session interrupted in a call

@@ -71,11 +71,11 @@ namespace {
 
 const double kLog10 = std::log(10.0);
 
-// The weight below which a hypothesis is ignored. The spec's cut-off (0.02)
+// The weight below which a hypothesis is ignored. The paper's cut-off (0.02)
 // skips hypotheses too unlikely to matter among the paper's 8; with many
 // candidates a flat posterior puts all of them below it, and the assistant
 // would decide on none (Q_MDP's first applicable action). So the cut-off is
-// at most half the largest weight: the same as the spec's whenever some
+// at most half the largest weight: the same as the paper's whenever some
 // hypothesis weighs 0.04 or more, as one always does with up to 25
 // hypotheses (the paper's 8, the example domains' goal sets).
 }  // namespace
@@ -147,7 +147,7 @@ struct RequestMatcher {
   }
 };
 
-// The Q_MDP choice at timestep t (spec 9.3): the common best action when
+// The Q_MDP choice at timestep t: the common best action when
 // every hypothesis above the threshold agrees, else the argmax of the
 // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
 // floored at the cost of waiting to the horizon. The weighted values are
@@ -376,7 +376,7 @@ struct Episode {
   // per step; a fresh one per simulated run.
   std::vector<bool> fresh_steps() const { return std::vector<bool>(setup.completed.size(), false); }
 
-  // clips-spec.md 9.2: follow the completed plan where the state matches,
+  // The paper's simulated principal: follow the completed plan where the state matches,
   // else the true goal's joint policy, else wait.
   // Rule 1 takes each step j of the completed plan at most once (`taken`):
   // the smallest untaken j whose state equals s_h. When the assistant does

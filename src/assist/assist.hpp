@@ -1,5 +1,5 @@
 #pragma once
-// Assistance (clips-spec.md section 9): given a belief over goal
+// Assistance: given a belief over goal
 // specifications (weights + their RTAA* policies), the assistant acts in the
 // shared world while a simulated human principal pursues the true goal.
 //
@@ -48,7 +48,7 @@ struct Hypothesis {
 
 // How Q_MDP picks among the assistant's actions of equal expected value
 // (within AssistSetup::tie_tolerance of the best).
-//   Paper:   spec 9.3 as written: the hypotheses' common best action when
+//   Paper:   the paper's rule: the hypotheses' common best action when
 //            they all agree, else the first maximiser in action order.
 //   Request: the action whose continuation carries out most of what the
 //            principal most probably asked for (P(c | u, observations),
@@ -59,9 +59,9 @@ enum class AssistRule { Paper, Request };
 std::string to_string(AssistRule r);              // "paper", "request"
 AssistRule parse_assist_rule(const std::string& text);  // throws InputError
 
-// How Q_MDP bounds a hypothesis' Q-values (spec 9.3) before weighting them.
-// The spec gives max(Q, -((horizon - t) * cost(wait) + cost(a))) and says its
-// purpose is to replace dead ends (-inf) by the cost of waiting until the
+// How Q_MDP bounds a hypothesis' Q-values before weighting them.
+// The paper's rule is max(Q, -((horizon - t) * cost(wait) + cost(a))), meant
+// to replace dead ends (-inf) by the cost of waiting until the
 // horizon. Taken literally it also floors FINITE values: a hypothesis whose
 // goal costs more than waiting out the horizon then prefers waiting, and the
 // assistant procrastinates although its goal is reachable.
@@ -94,8 +94,8 @@ struct AssistSetup : model::TurnTaking {
   // (V = -h_g, no search), so policies are read but never refined.
   bool refine = true;
   // A pack rule: the principal also takes the k-th completed-plan action when it
-  // is legal in the current state, even off the completed trajectory
-  // (clips-spec-virtual-home.md 8.3).
+  // is legal in the current state, even off the completed trajectory (the
+  // VirtualHome reference's rule).
   bool follow_plan_by_index = false;
   AssistRule rule = AssistRule::Request;
   // The simulated principal does not wait for ever: at a turn where nothing
@@ -103,7 +103,7 @@ struct AssistSetup : model::TurnTaking {
   // assistant were frozen, i.e. does the work itself. Without it a principal
   // whose joint plan has the assistant fetch something the assistant does not
   // believe in, and an assistant that waits for the principal, wait until the
-  // horizon. Set with the request rule (the paper's simulations keep spec 9.2).
+  // horizon. Set with the request rule (the paper's simulations do not).
   bool impatient_principal = true;
   // Actions whose expected value is within this share of the cheapest
   // candidate action's cost of the best are tied. Exact ties are common

@@ -1,5 +1,5 @@
 #pragma once
-// Literal-listener assistance (clips-spec.md 9.8-9.11, VH spec 7.5-7.6).
+// Literal-listener assistance.
 // The listener ranks commands for the literal utterance; m = 10 commands are
 // drawn by systematic sampling; each is carried out by two-phase planning:
 //   phase 1  A* for the command's goal (joint plan; retried with the human

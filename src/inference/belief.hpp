@@ -1,5 +1,5 @@
 #pragma once
-// Exact Bayesian goal inference (clips-spec.md 1.2-1.3, 6-8).
+// Exact Bayesian goal inference.
 //
 // Model. The human holds a goal specification h = (g, c): a goal g and a cost
 // profile c, drawn uniformly from the candidates (mDKG: 4 gems × 2 profiles =
@@ -10,7 +10,7 @@
 //   * speak: with p_speak = 0.05, an utterance u ~ P(u | s, π_h)
 //            (utterance_model.hpp), where s is the state the speaker was in
 //            (s_k for an utterance after k actions; the reference code's
-//            s_{k-1} alignment of spec 7.10 is an option; index 0 at s_0).
+//            s_{k-1} alignment is an option; index 0 at s_0).
 // The assistant's own actions are interventions, do(a): they move the state
 // but carry no evidence (likelihood 1, temperatures untouched).
 //
@@ -69,8 +69,8 @@ std::string to_string(Modality m);  // "both", "utterance", "action"
 Modality parse_modality(const std::string& text);  // throws InputError
 
 // Candidate cost profiles of a plan and the index of the true one, from its
-// pack (spec 4.3: mDKG keys {C3, C4} (true C3), doors {C1, C2} (true C1); VH
-// unit costs). Throws InputError naming the plan for a tag the pack rejects.
+// pack (mDKG: keys plans {C3, C4} (true C3), doors plans {C1, C2} (true C1);
+// VH: unit costs). Throws InputError naming the plan for a tag the pack rejects.
 using domains::ProfileSet;
 ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord& plan);
 
@@ -81,7 +81,7 @@ ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord&
 // last action) also scores an utterance, a hypothesis whose plan from the
 // state is already stored gets no more than that: the utterance is explained
 // by that stored plan, which refining cannot change; the others get the full
-// REFINE. All: the spec's REFINE at every step, a lookahead from every
+// refinement. All: a refinement at every step (the paper's), a lookahead from every
 // successor. With no search stopped by its budget the later Q-values are the
 // same optimal costs either way (docs/decisions.md, "Refining the
 // assistant's turns").
@@ -90,7 +90,7 @@ std::string to_string(AssistantTurns a);               // "taken", "all"
 AssistantTurns parse_assistant_turns(const std::string& text);  // throws InputError
 
 struct InferenceOptions {
-  // Budgets of each A* search inside a refinement (spec 5.1: 2^18, no time limit).
+  // Budgets of each A* search inside a refinement (the paper's: 2^18 nodes, no time limit).
   search::SearchOptions refine = [] {
     search::SearchOptions o;
     o.max_nodes = size_t{1} << 18;
@@ -105,8 +105,7 @@ struct InferenceOptions {
   // change only the log marginal likelihood, never a posterior).
   bool speak_factors = true;
   double p_speak = 0.05;
-  // Which state explains an utterance annotated after k actions (spec 13.3,
-  // VH spec 11.1): After = s_k, the state the speaker was in when speaking,
+  // Which state explains an utterance annotated after k actions: After = s_k, the state the speaker was in when speaking,
   // with the policies refined at s_k (the paper's model; default); Before =
   // s_{k-1}, the reference code's alignment. docs/decisions.md has the numbers.
   UtteranceTiming utterance_timing = UtteranceTiming::After;

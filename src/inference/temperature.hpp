@@ -1,5 +1,5 @@
 #pragma once
-// The human's rationality (clips-spec.md 6, VH spec 5): a Boltzmann policy over
+// The human's rationality: a Boltzmann policy over
 // the joint policy's Q-values with an unknown temperature T. T is discretised
 // on a fixed 33-point grid and marginalised exactly ("Rao-Blackwellised"): each
 // hypothesis carries a weight vector over the grid that is updated by every
@@ -19,7 +19,7 @@ const TemperatureWeights& temperature_grid();
 
 // Inverse-gamma(shape, scale) DENSITY evaluated at each grid temperature and
 // normalised: w_k ∝ T_k^(-shape-1) exp(-scale / T_k). This is the reference's
-// discretisation (no Jacobian; spec 13 item 4), not a Gamma prior on β.
+// discretisation (no Jacobian, as the reference code does), not a Gamma prior on β.
 TemperatureWeights inverse_gamma_prior(double shape, double scale);
 // Each domain pack names its shape and scale (PackSpec inference settings).
 
@@ -43,7 +43,7 @@ class TemperatureBelief {
   double likelihood(std::span<const double> q, int chosen) const;
 
   // Observes the action: returns L and sets w_k ← w_k P_k / L. When L = 0 the
-  // weights reset to UNIFORM (not to the prior; spec 13 item 4).
+  // weights reset to UNIFORM (not to the prior, as the reference code does).
   double update(std::span<const double> q, int chosen);
 
  private:

@@ -1,12 +1,12 @@
 #pragma once
-// The pragmatic speaker (clips-spec.md 7, VH spec 6): how likely is utterance u
+// The pragmatic speaker: how likely is utterance u
 // if the human holds hypothesis h = (g, c) and is in state s?
 //
 //   1. The joint plans the speaker may have in mind: the policy π_h rolled
 //      out from s. Tied (the default): every plan π_h values as well as its
 //      greedy one, ties broken every way, plan p weighted w_p as a uniform
 //      random tie-break would pick it (search/tied_rollouts.hpp). Single
-//      (the paper packs, spec 7.2): the one greedy rollout (mDKG: greedy in
+//      (the paper packs): the one greedy rollout (mDKG: greedy in
 //      π_h for <= 100 steps; VH: weighted A* (w = 2) with the principal
 //      barred from grabbing), w = 1.
 //   2. Keep each plan's salient actions (pickups, hand-overs, unlocks /
@@ -41,13 +41,13 @@
 namespace clips::inference {
 
 // How the speaker's rollout runs (the pack's inference.rollout):
-//   Greedy         mDKG: best_action of the policy, no search (spec 7.2)
+//   Greedy         mDKG: best_action of the policy, no search
 //   WeightedAStar  VH: weighted A* towards g, with the pack's speaker flag
-//                  ((nograb speaker)) set first (VH spec 6.1)
+//                  ((nograb speaker)) set first
 using RolloutKind = domains::RolloutSettings::Kind;
 
-// Which of the speaker's own actions the CLIPS speaker's commands may hold
-// (spec 13 item 2). Paper: joint commands keep the speaker's part ("I'm going
+// Which of the speaker's own actions the CLIPS speaker's commands may hold.
+// Paper: joint commands keep the speaker's part ("I'm going
 // for the red key, can you get the yellow one?"), commands that are all the
 // speaker's and chains on one object are dropped. Code: the reference code's
 // default, every speaker action removed before enumeration. We default to the

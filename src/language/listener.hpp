@@ -1,5 +1,5 @@
 #pragma once
-// The literal listener (clips-spec 9.7-9.9; VH spec 7.1-7.4): given the state in
+// The literal listener: given the state in
 // which an instruction is spoken, list every command the robot could be asked
 // to do there, score the utterance under each command's few-shot prompt, and
 // return the posterior over commands. Also: mapping a command to its goal and
@@ -96,17 +96,17 @@ LiteralListenerSetup literal_listener_setup(const std::string& domain, const std
 
 // The ground salient listener actions of the literal listener in state `s`
 // (Pack::literal_candidates):
-// mDKG (spec 9.7): (pickup robot k) for every key, (handover robot human k) for
+// mDKG: (pickup robot k) for every key, (handover robot human k) for
 // every key, (unlock robot k d) for every key/door pair of the same colour, in
 // that order (keys and doors in declaration order), dropping only actions that
 // are statically impossible (forbidden items); held or used keys are kept.
-// VH (VH spec 7.1): (grab helper i f) for every (placed i f) in `s`, ordered by
+// VH: (grab helper i f) for every (placed i f) in `s`, ordered by
 // fixture name, then item name. Other packs: every ground salient action of
 // the listener.
 std::vector<commands::Term> literal_candidate_actions(const pddl::Task& task, const pddl::State& s,
                                                       const domains::Pack& pack);
 
-// The distinct lifted commands over those candidates (spec 7.4/7.5 with K from
+// The distinct lifted commands over those candidates (at most K actions each, K from
 // setup.config: 3 for mDKG, 4 for VH), in enumeration order.
 std::vector<commands::Command> literal_commands(const pddl::Task& task, const pddl::State& s,
                                                 const LiteralListenerSetup& setup);
@@ -136,12 +136,12 @@ ListenerResult literal_listener(const pddl::Task& task, const pddl::State& s, co
 
 // ---- commands as goals ----------------------------------------------------------
 
-// The goal formula of a command (spec 9.9 / VH spec 7.4) compiled in `task`.
+// The goal formula of a command compiled in `task`.
 pddl::CompiledCondition compile_command_goal(const pddl::Task& task, const commands::Command& command,
                                   const commands::LanguageConfig& config);
 
 // The state after the observed plan and then its completion (the completed plan
-// continues from the end of the observed one, spec 2.3). Throws InputError at a
+// continues from the end of the observed one). Throws InputError at a
 // bad step.
 pddl::State completed_final_state(const pddl::Task& task, const pddl::PlanFile& observed,
                                   const pddl::PlanFile& completed);

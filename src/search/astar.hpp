@@ -2,7 +2,7 @@
 // A*: forward best-first search on the grounded task for one specification.
 //
 // Priority is (f, h, insertion counter), smaller first, so ties break toward
-// deeper nodes and then earlier-generated ones (clips-spec.md 5.2). The goal
+// deeper nodes and then earlier-generated ones. The goal
 // test runs when a node is selected. Budgets (expansions, seconds) end the
 // search with a status, never an exception. With a consistent heuristic the
 // returned plan is optimal.

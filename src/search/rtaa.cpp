@@ -206,7 +206,7 @@ size_t Policy::search_and_update(int root, const SearchOptions& opts, bool prune
     }
   }
 
-  // RTAA* update (spec UPDATE).
+  // RTAA* update.
   if (status == SearchStatus::Failure) {
     for (const LookaheadNode& n : nodes) set_value(n.entry, -kInf);
     return expanded;

@@ -1,5 +1,5 @@
 #pragma once
-// Real-Time Adaptive A* with path reuse (clips-spec.md 5.3): a Policy is the
+// Real-Time Adaptive A* with path reuse: a Policy is the
 // "solution" for one specification. It holds
 //   * a value table V over states (values are NEGATIVE costs; a missing entry
 //     means -H(s) from the heuristic),
@@ -49,9 +49,9 @@ class Policy {
   double value(const pddl::State& s) const { return value(s.data()); }
   bool has_value(const uint64_t* s) const { return find_value(s) != nullptr; }
 
-  // One RTAA* policy update at s (spec REFINE). `opts` holds the budgets.
+  // One RTAA* policy update at s. `opts` holds the budgets.
   RefineStats refine(const pddl::State& s, const SearchOptions& opts);
-  // One timestep of the policy lifecycle (spec 5.4): refine at s, and if no
+  // One timestep of the policy lifecycle: refine at s, and if no
   // action is usable there afterwards, forget everything learned and refine
   // again from an empty policy. Inference and the generator's simulated
   // human both follow it, so a generated speaker plans as the observer's model does.
@@ -118,7 +118,7 @@ class Policy {
   // refine(s), or with only >= 0 refine_toward(s, only).
   RefineStats refine_successors(const pddl::State& s, const SearchOptions& opts, pddl::ActionId only);
   // A* from state `root` with the learned estimates, stopping at a goal or
-  // tree state (spec REFINE); then the RTAA* update of the values and tree.
+  // tree state; then the RTAA* update of the values and tree.
   // Returns the expansions; `status` tells how the search ended.
   size_t search_and_update(int root, const SearchOptions& opts, bool prune, Lookahead& ws, SearchStatus& status);
   double learned_estimate(int id);

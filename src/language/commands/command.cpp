@@ -116,7 +116,7 @@ std::string Command::to_goal_formula(const LanguageConfig& config) const {
           throw std::invalid_argument("goal atom '" + pattern + "' refers to a missing argument of " +
                                       to_pddl(named));
         arg = named.args[index - 1];
-        // VH quirk (spec 7.4): ?Plate2 names the object plate2.
+        // VH quirk: ?Plate2 names the object plate2.
         if (config.goal_variables == GoalVariables::LowercasedName && is_variable(arg))
           arg = lowercase(arg.substr(1));
       }

@@ -1,5 +1,5 @@
 #pragma once
-// A lifted command (spec 7.4-7.6, 9.9; VH spec 6.4-6.5, 7.3-7.4).
+// A lifted command.
 //
 // A command is what the speaker might ask for: an ordered list of actions with
 // pronouns for the two agents and variables for every other object, plus the
@@ -31,7 +31,7 @@ struct Binding {
 
 struct Command {
   std::vector<Term> actions;        // lifted; variables appear as "?key1"
-  std::vector<Term> predicates;     // lifted; in action order, repeats kept (spec 13 item 15)
+  std::vector<Term> predicates;     // lifted; in action order, repeats kept
   std::vector<Variable> variables;  // in order of first appearance
   std::vector<Binding> binding;     // variable -> ground object it was lifted from
   PrintedForm printed_form = PrintedForm::WhereClause;
@@ -42,9 +42,9 @@ struct Command {
 
   // Actions, then " where " and the predicates if any; variables as "?key1".
   std::string display_form() const;
-  // The text placed after "Input: " in prompts (spec 7.6 / VH spec 6.5).
+  // The text placed after "Input: " in prompts.
   std::string llm_form() const;
-  // PDDL goal condition (spec 9.9 / VH spec 7.4). Throws std::invalid_argument
+  // PDDL goal condition. Throws std::invalid_argument
   // if an action has no goal atoms in the config.
   std::string to_goal_formula(const LanguageConfig& config) const;
 
@@ -54,11 +54,11 @@ struct Command {
 };
 
 // Replaces agent names by pronouns and every other constant by a variable
-// (spec 7.5 / VH spec 6.4), for salient actions already chosen for one command.
+//, for salient actions already chosen for one command.
 Command lift_command(const std::vector<SalientAction>& subset, const LanguageConfig& config,
                      const TypeLookup& type_of);
 
-// VH spec 7.3: union of actions, of predicates and of variables, first command first.
+// VirtualHome's rule: union of actions, of predicates and of variables, first command first.
 Command merge_commands(const Command& first, const Command& second);
 
 // Substitutes bound variables ("?key1" -> object); other arguments are kept.

@@ -1,5 +1,5 @@
 #pragma once
-// Command enumeration (spec 7.4, 9.7; VH spec 6.3, 7.1): every subset of the
+// Command enumeration: every subset of the
 // salient actions of size 1..K in lexicographic order, filtered by the
 // exclusion rules, lifted, de-duplicated keeping first occurrences. Each
 // distinct lifted command then has probability 1/|C|.
@@ -22,7 +22,7 @@ std::vector<std::vector<std::size_t>> select_command_subsets(const std::vector<S
 std::vector<Command> enumerate_commands(const std::vector<SalientAction>& salient, const LanguageConfig& config,
                                         const TypeLookup& type_of);
 
-// Literal listener (spec 9.7, VH spec 7.1): the caller lists the candidate
+// Literal listener: the caller lists the candidate
 // ground actions (e.g. every pickup(robot,k), handover(robot,human,k) and
 // same-colour unlock(robot,k,d), or every placed VH grab); they get their
 // qualifiers and go through the same enumeration.

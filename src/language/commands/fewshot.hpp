@@ -1,5 +1,5 @@
 #pragma once
-// Few-shot examples and prompt strings (spec 7.7-7.8, VH spec 10).
+// Few-shot examples and prompt strings.
 //
 // The examples come from a TSV file with the header
 //   domain<TAB>index<TAB>command<TAB>utterance<TAB>in_literal_prompt
@@ -55,7 +55,7 @@ struct WeightedPrompt {
   double weight = 0.0;
 };
 // One prompt per command with weight 1/|C|, or the single empty-command prompt
-// with weight 1 if there is no command (spec 7.9).
+// with weight 1 if there is no command.
 std::vector<WeightedPrompt> command_prompts(const std::vector<Command>& commands,
                                             const std::vector<FewShotExample>& examples);
 

@@ -1,5 +1,5 @@
 #pragma once
-// From lifted commands back to objects (spec 9.11): the naive listener's
+// From lifted commands back to objects: the naive listener's
 // groundings, and the focal objects that a command or a plan commits to.
 #include <map>
 #include <string>
@@ -29,7 +29,7 @@ std::vector<GroundCommand> naive_groundings(const Command& command,
 // The focal argument of each salient action, without repeats, in order.
 std::vector<std::string> focal_objects(const std::vector<Term>& actions, const LanguageConfig& config);
 
-// Efficient listener (spec 9.11): the objects bound to the command's focal
+// Efficient listener: the objects bound to the command's focal
 // variables when each command action (pronouns mapped back) is unified with
 // each action of a plan; without repeats, in order found.
 std::vector<std::string> match_focal_objects(const Command& command, const std::vector<Term>& plan,

@@ -1,9 +1,8 @@
 #pragma once
-// Per-domain settings of the command model (spec 7.3-7.6, 9.9; VH spec 6.2-6.5,
-// 7.4). Everything domain-specific about commands lives here so the
+// Per-domain settings of the command model. Everything domain-specific about commands lives here so the
 // enumeration, lifting and printing code works on plain strings for any domain.
 //
-// Defaults follow the reference code (spec 13 item 2): all speaker actions are
+// Defaults follow the reference code: all speaker actions are
 // removed before enumeration and chained actions are allowed.
 #include <filesystem>
 #include <map>
@@ -19,25 +18,25 @@ struct SalientActionRule {
   int focal_arg = 2;   // the object the action is about (handover: the item, unlock: the door)
 };
 
-// Which speaker actions may appear in commands (spec 13 item 2).
+// Which speaker actions may appear in commands.
 enum class SpeakerActionRule {
   ExcludeAll,               // reference code: drop every speaker action first
   ExcludeSpeakerOnlyCommands  // paper (mDKG): drop commands whose actions are all the speaker's
 };
 
-// How lifted variables are named (spec 7.5, VH spec 6.4).
+// How lifted variables are named.
 enum class VariableNaming {
   ObjectType,     // mDKG: `?key1`, `?door1`: object type + per-type counter
   QualifierValue  // VH: `?Plate1` after (itemtype plate1 plate), else `?Fixture1` after the type
 };
 
-// How the command is printed for the LLM (spec 7.6, VH spec 6.5).
+// How the command is printed for the LLM.
 enum class PrintedForm {
   WhereClause,        // mDKG: actions ` where ` predicates, '?' removed
   QualifiedArgsOnly   // VH: drop unqualified variables and qualifier predicates, lowercase first letter
 };
 
-// How variables are treated when a command becomes a goal formula (spec 9.9, VH spec 7.4).
+// How variables are treated when a command becomes a goal formula.
 enum class GoalVariables {
   Existential,        // mDKG: (exists (?key1 - key) (and ...))
   LowercasedName      // VH quirk: ?Plate2 becomes the constant plate2
@@ -75,7 +74,7 @@ struct LanguageConfig {
   // Paper rule: drop commands in which an object occurs in two actions.
   bool exclude_chains = false;
   // The same two settings as the paper describes them for the CLIPS speaker
-  // model (spec 13 item 2). The speaker model uses these by default
+  // model. The speaker model uses these by default
   // (inference::SpeakerRule::Paper); the literal listener always uses the two
   // fields above. mDKG: speaker-only commands dropped, chains dropped; VH:
   // every speaker action dropped (the paper's VH rule equals the code's).

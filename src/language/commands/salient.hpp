@@ -1,5 +1,5 @@
 #pragma once
-// Salient actions (spec 7.3, VH spec 6.2): the actions of a rollout that a
+// Salient actions: the actions of a rollout that a
 // command may mention, each with its acting agent, its focal object and the
 // focal object's qualifying predicate, e.g. (iscolor key2 red).
 #include <functional>

@@ -1,5 +1,5 @@
 #pragma once
-// Systematic sampling of commands (spec 9.8, VH spec 7.6).
+// Systematic sampling of commands.
 #include <cstddef>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Combining the literal listener's readings of several utterances of one plan
-// (VH spec 7.3): each probable command of the next utterance is merged with
+//: each probable command of the next utterance is merged with
 // each kept combination; probabilities multiply and scores add.
 #include <vector>
 

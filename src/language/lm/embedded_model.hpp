@@ -9,7 +9,7 @@
 //     model per distinct few-shot block, cached for the life of the object;
 // with WordNet (wordnet_lexicon.hpp) supplying synonyms and inflections.
 //
-// Prompt convention (clips-spec 7.7): few-shot lines "Input: <cmd>\nOutput: <utt>"
+// Prompt convention: few-shot lines "Input: <cmd>\nOutput: <utt>"
 // joined by "\n", then "\nInput: <query cmd>\nOutput:". The prompt "\n" (a
 // hypothesis without commands) means the empty command. The continuation is
 // " <utterance>\n"; the final "\n" is the end-of-utterance event. A continuation

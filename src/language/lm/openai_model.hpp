@@ -1,7 +1,6 @@
 #pragma once
 // LanguageModel backed by an OpenAI-compatible /v1/completions endpoint
-// (OpenAI davinci-002/babbage-002, vLLM, llama-cpp-python, ...). Scores follow
-// spec section 7.8: echo the prompt+continuation with logprobs, generate
+// (OpenAI davinci-002/babbage-002, vLLM, llama-cpp-python, ...). Scores: echo the prompt+continuation with logprobs, generate
 // nothing, and sum the log-probabilities of the tokens that start inside the
 // continuation (which includes the "\n" stop), divided by the temperature.
 // With prompt_logprobs on, the request asks for vLLM's `prompt_logprobs`
