@@ -94,8 +94,7 @@ struct AssistSetup : model::TurnTaking {
   // (V = -h_g, no search), so policies are read but never refined.
   bool refine = true;
   // A pack rule: the principal also takes the k-th completed-plan action when it
-  // is legal in the current state, even off the completed trajectory (the
-  // VirtualHome reference's rule).
+  // is legal in the current state, even off the completed trajectory.
   bool follow_plan_by_index = false;
   AssistRule rule = AssistRule::Request;
   // The simulated principal does not wait for ever: at a turn where nothing

@@ -1,11 +1,12 @@
 #include "assist/setup.hpp"
 
 #include "assist/request.hpp"
+#include "pddl/plan.hpp"
 
 namespace clips::assist {
 
 AssistSetup setup_for(const domains::Pack& pack, std::shared_ptr<const pddl::Task> task,
-                      const inference::Belief& belief, std::optional<AssistRule> rule) {
+                      const inference::Belief& belief, const SetupOptions& options) {
   const domains::Roles& roles = pack.roles();
   AssistSetup setup;
   setup.task = std::move(task);
@@ -15,7 +16,22 @@ AssistSetup setup_for(const domains::Pack& pack, std::shared_ptr<const pddl::Tas
   setup.set_turns(roles);
   setup.noop_cost = roles.noop_cost;
   setup.refine = belief.searches();
-  set_request_rule(setup, rule.value_or(parse_assist_rule(pack.spec().assistance_rule)), pack.language());
+  set_request_rule(setup, options.rule.value_or(parse_assist_rule(pack.spec().assistance_rule)), pack.language());
+  setup.qa_floor = options.qa_floor;
+  if (options.max_nodes) setup.refine_options.max_nodes = *options.max_nodes;
+  if (options.max_seconds) setup.refine_options.max_seconds = *options.max_seconds;
+  setup.refine_options.deadline = options.deadline;
+  return setup;
+}
+
+AssistSetup setup_for_plan(const domains::Pack& pack, std::shared_ptr<const pddl::Task> task,
+                           const inference::Belief& belief, const data::PlanRecord& plan,
+                           const SetupOptions& options) {
+  AssistSetup setup = setup_for(pack, task, belief, options);
+  setup.observed_steps = static_cast<int>(plan.observed.actions.size());
+  setup.completed = pddl::simulate(*setup.task, setup.start, plan.completed).actions;
+  setup.option_of = [&pack, task, tag = plan.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
+  setup.follow_plan_by_index = pack.roles().principal_follows_completed_plan;
   return setup;
 }
 

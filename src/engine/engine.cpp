@@ -618,14 +618,13 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
     m.belief = belief;
     return d;
   }
-  assist::AssistSetup setup = assist::setup_for(
-      *m.problem.pack, m.problem.task, *belief,
-      m.options.assist_rule.empty() ? std::nullopt : std::optional(assist::parse_assist_rule(m.options.assist_rule)));
-  setup.qa_floor = assist::parse_qa_floor(m.options.qa_floor);
-  setup.refine_options = search::SearchOptions{};
-  setup.refine_options.max_nodes = nodes;
-  setup.refine_options.max_seconds = m.options.search_seconds;
-  setup.refine_options.deadline = b.deadline();
+  assist::SetupOptions so;
+  if (!m.options.assist_rule.empty()) so.rule = assist::parse_assist_rule(m.options.assist_rule);
+  so.qa_floor = assist::parse_qa_floor(m.options.qa_floor);
+  so.max_nodes = nodes;
+  so.max_seconds = m.options.search_seconds;
+  so.deadline = b.deadline();
+  assist::AssistSetup setup = assist::setup_for(*m.problem.pack, m.problem.task, *belief, so);
   // The hypotheses with copies of their policies: deciding never changes the belief.
   std::vector<assist::Hypothesis> hyps = assistant_hypotheses(
       std::as_const(*belief), post, requests_for(task, m.records, post.hypotheses.size(), mod));

@@ -58,9 +58,6 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   return io;
 }
 
-std::vector<pddl::ActionId> resolve_all(const pddl::Task& task, const pddl::State& start, const pddl::PlanFile& pf) {
-  return pddl::simulate(task, start, pf).actions;
-}
 
 }  // namespace
 
@@ -77,21 +74,13 @@ int true_hypothesis(const inference::InferenceRun& inf, const data::PlanRecord& 
   return true_h;
 }
 
-// The assistance episode of a dataset plan from s_T (the belief's state
-// after the observed plan), as every method of `clips bench` runs it.
-assist::AssistSetup assistance_setup(const data::Dataset& ds, const data::PlanRecord& p,
-                                     const std::shared_ptr<const pddl::Task>& task, const inference::Belief& belief,
-                                     const ExperimentOptions& opts) {
-  const domains::Pack& pack = ds.pack();
-  const domains::Roles& df = pack.roles();
-  assist::AssistSetup setup = assist::setup_for(pack, task, belief, opts.assist_rule);
-  setup.observed_steps = static_cast<int>(p.observed.actions.size());
-  setup.completed = resolve_all(*task, setup.start, p.completed);
-  setup.option_of = [&pack, task, tag = p.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
-  setup.qa_floor = opts.qa_floor;
-  setup.follow_plan_by_index = df.principal_follows_completed_plan;
-  setup.refine_options.deadline = opts.deadline;
-  return setup;
+// The assistance rule and budgets of `clips bench`'s episodes.
+assist::SetupOptions assistance_options(const ExperimentOptions& opts) {
+  assist::SetupOptions so;
+  so.rule = opts.assist_rule;
+  so.qa_floor = opts.qa_floor;
+  so.deadline = opts.deadline;
+  return so;
 }
 
 }  // namespace
@@ -130,7 +119,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     for (Modality m : inference::kModalities) inf.belief->sync_policies(m);
     inf.belief->sync_policies({true_h});
     auto true_spec = inf.belief->hypotheses()[true_h].spec;
-    const assist::AssistSetup setup = assistance_setup(ds, p, task, *inf.belief, opts);
+    const assist::AssistSetup setup = assist::setup_for_plan(pack, task, *inf.belief, p, assistance_options(opts));
 
     // Every method is built first, so an unknown name fails before any work.
     std::vector<std::unique_ptr<Method>> runners;
@@ -202,10 +191,11 @@ BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& p,
     true_h = true_hypothesis(inf, p);
     for (Modality m : inference::kModalities) inf.belief->sync_policies(m);
     inf.belief->sync_policies({true_h});
-    setup = assistance_setup(ds, p, task, *inf.belief, opts);
+    assist::SetupOptions so = assistance_options(opts);
+    so.max_nodes = opts.refine_max_nodes;
+    so.max_seconds = 5;
+    setup = assist::setup_for_plan(pack, task, *inf.belief, p, so);
     setup->horizon = std::min(setup->horizon, setup->observed_steps + 2);
-    setup->refine_options.max_nodes = opts.refine_max_nodes;
-    setup->refine_options.max_seconds = 5;
     // The Q_MDP episode's turn atom and no-ops (its Episode asks them first).
     assist::assistant_turn(*setup, setup->start);
     for (const std::string* agent : {&setup->principal, &setup->assistant}) setup->noop(*task, *agent);

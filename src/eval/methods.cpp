@@ -119,7 +119,7 @@ class LiteralMethod : public Method {
     if (utt.empty()) throw InputError("plan " + p.id + " has no utterance for the literal listener");
     auto ranked = language::literal_listener(task, s_T, utt, lsetup, ctx.lm);
     if (p.observed.utterances.size() > 1) {
-      // Several utterances (VirtualHome): every one is heard in s_T; rankings
+      // Several utterances in one plan: every one is heard in s_T; rankings
       // are merged (most probable prefix of the first, then each later one).
       auto to_cmd = [](const language::ListenerResult& lr) {
         std::vector<commands::RankedCommand> v;

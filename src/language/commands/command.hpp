@@ -58,7 +58,7 @@ struct Command {
 Command lift_command(const std::vector<SalientAction>& subset, const LanguageConfig& config,
                      const TypeLookup& type_of);
 
-// VirtualHome's rule: union of actions, of predicates and of variables, first command first.
+// Two commands as one (several utterances in a plan): union of actions, of predicates and of variables, first command first.
 Command merge_commands(const Command& first, const Command& second);
 
 // Substitutes bound variables ("?key1" -> object); other arguments are kept.
