@@ -12,22 +12,14 @@
 
 #include "clips/clips.hpp"
 #include "data/dataset.hpp"
+#include "run_command.hpp"
 #include "test_paths.hpp"
 
 namespace {
 
 std::string examples_dkg() { return clips::paths::examples_dir() + "/doors-keys-gems"; }
 
-std::string stdout_of(const std::string& command) {
-  std::string out;
-  FILE* p = popen((command + " 2>/dev/null").c_str(), "r");
-  if (!p) return out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  pclose(p);
-  return out;
-}
+using clips::tests::stdout_of;
 
 void expect_near_all(const std::vector<double>& a, const std::vector<double>& b, const std::string& where) {
   ASSERT_EQ(a.size(), b.size()) << where;

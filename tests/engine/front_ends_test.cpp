@@ -14,6 +14,7 @@
 #include "engine/json.hpp"
 #include "language/listener.hpp"
 #include "serve/service.hpp"
+#include "run_command.hpp"
 #include "test_paths.hpp"
 
 namespace {
@@ -24,16 +25,7 @@ const std::string kDataset = clips::paths::examples_dir() + "/doors-keys-gems";
 const std::vector<std::string> kActions = {"(left human)", "(wait robot)", "(left human)"};
 const std::string kUtterance = "Can you get me the yellow key?";
 
-std::string stdout_of(const std::string& command) {
-  std::string out;
-  FILE* p = popen((command + " 2>/dev/null").c_str(), "r");
-  if (!p) return out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  pclose(p);
-  return out;
-}
+using clips::tests::stdout_of;
 
 std::string cli_observations() {
   std::string actions;

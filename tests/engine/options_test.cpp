@@ -13,6 +13,7 @@
 #include "engine/options.hpp"
 #include "language/listener.hpp"
 #include "serve/service.hpp"
+#include "run_command.hpp"
 #include "test_paths.hpp"
 
 namespace {
@@ -21,16 +22,7 @@ using nlohmann::json;
 
 const std::string kDataset = clips::paths::examples_dir() + "/doors-keys-gems";
 
-std::string output_of(const std::string& command) {
-  std::string out;
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  if (!p) return out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  pclose(p);
-  return out;
-}
+using clips::tests::output_of;
 
 // One bad value as each front end spells it, and the message all must give.
 struct BadValue {
