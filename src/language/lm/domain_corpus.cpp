@@ -1,7 +1,5 @@
 #include "language/lm/domain_corpus.hpp"
 
-#include <cstdlib>
-
 #include <algorithm>
 #include <cctype>
 #include <optional>
@@ -17,12 +15,12 @@
 namespace clips::lm {
 namespace {
 
-// A fixed-seed generator with its own reductions: std:: distributions differ
-// between standard libraries, and the corpus must not.
 // The share of noun phrases that name an object by a declared supertype
 // (fitted on the dev halves: 0.15, 0.3 and 0.45 tried; docs/decisions.md).
 constexpr double kSupertypeShare = 0.3;
 
+// A fixed-seed generator with its own reductions: std:: distributions differ
+// between standard libraries, and the corpus must not.
 class Dice {
  public:
   explicit Dice(uint64_t seed) : engine_(seed) {}
@@ -251,7 +249,8 @@ class Generator {
     return plural ? WordNetLexicon::instance().plural(n) : n;
   }
   // The declared ancestors of a type, nearest first, without `object` (every
-  // type's) and without types that only group agents or places.
+  // type's). Only focal objects of commands are named, so these are kinds of
+  // things people fetch, not of agents or places.
   std::vector<std::string> supertypes(const std::string& type) const {
     std::vector<std::string> out;
     std::string t = type;
