@@ -71,7 +71,8 @@ struct LmFlags {
   std::string qa_floor = "dead-ends";      // Q_MDP floor: dead-ends or horizon (assist::QaFloor)
   std::string speaker_plans;  // "" (the pack's), single or tied (domains::RolloutSettings::Plans)
   std::string assist_rule;    // "" (the pack's), paper or request (assist::AssistRule)
-  double utterance_noise = -1;  // < 0: the pack's inference.utterance_noise
+  double utterance_noise = -1;     // < 0: the pack's inference.utterance_noise
+  double utterance_exponent = -1;  // <= 0: the pack's inference.utterance_exponent
 };
 void add_lm_options(CLI::App* cmd, LmFlags& flags);
 // --speaker-rule and --utterance-timing, for the subcommands that run CLIPS inference.

@@ -53,6 +53,11 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
                   "the mean over the goals, so one misread word cannot rule a goal out (0: the bare model); "
                   "default: the pack's inference.utterance_noise")
       ->check(CLI::Range(0.0, 0.999999));
+  cmd->add_option("--utterance-exponent", f.utterance_exponent,
+                  "Exponent in (0, 10] the robust utterance likelihood is raised to: how many independent "
+                  "observations the words count as (1: the bare model); default: the pack's "
+                  "inference.utterance_exponent")
+      ->check(CLI::Range(1e-6, 10.0));
 }
 
 void add_assistance_options(CLI::App* cmd, LmFlags& f) {
@@ -80,6 +85,7 @@ void apply_model_flags(const LmFlags& f, inference::InferenceOptions& io) {
   io.utterance_timing = inference::parse_utterance_timing(f.utterance_timing);
   io.assistant_turns = inference::parse_assistant_turns(f.assistant_turns);
   if (f.utterance_noise >= 0) io.utterance_noise = f.utterance_noise;
+  if (f.utterance_exponent > 0) io.utterance_exponent = f.utterance_exponent;
 }
 
 void apply_model_flags(const LmFlags& f, eval::ExperimentOptions& eo) {
@@ -90,6 +96,7 @@ void apply_model_flags(const LmFlags& f, eval::ExperimentOptions& eo) {
   eo.qa_floor = assist::parse_qa_floor(f.qa_floor);
   if (!f.assist_rule.empty()) eo.assist_rule = assist::parse_assist_rule(f.assist_rule);
   if (f.utterance_noise >= 0) eo.utterance_noise = f.utterance_noise;
+  if (f.utterance_exponent > 0) eo.utterance_exponent = f.utterance_exponent;
 }
 
 language::LanguageModelOptions lm_options(const LmFlags& f) {

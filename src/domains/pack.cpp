@@ -591,8 +591,36 @@ std::vector<std::string> location_predicates(const pddl::Domain& d, const std::s
 }
 
 void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain) {
-  if (!spec.language.locations_auto) return;
-  spec.language.location_predicates = location_predicates(domain, spec.roles.agent_type);
+  if (spec.language.locations_auto) spec.language.location_predicates = location_predicates(domain, spec.roles.agent_type);
+  derive_destinations(spec, domain);
+}
+
+namespace {
+// The parameter slot an effect adds (L focal slot) for, for a location predicate L; -1: none.
+int added_place_slot(const pddl::Effect& e, const pddl::Domain& d, const commands::LanguageConfig& language,
+                     int focal_slot) {
+  if (e.kind == pddl::Effect::Kind::Add && e.args.size() == 2 && e.args[0].is_var && e.args[1].is_var &&
+      e.args[0].index == focal_slot && language.is_location(d.predicates[static_cast<size_t>(e.pred)].name))
+    return e.args[1].index;
+  if (e.kind == pddl::Effect::Kind::And)
+    for (const pddl::Effect& k : e.kids)
+      if (const int slot = added_place_slot(k, d, language, focal_slot); slot >= 0) return slot;
+  return -1;
+}
+}  // namespace
+
+void derive_destinations(PackSpec& spec, const pddl::Domain& domain) {
+  for (commands::SalientActionRule& r : spec.language.salient_actions) {
+    r.destination_arg = 0;
+    if (!spec.language.destinations) continue;
+    const auto schema = std::find_if(domain.actions.begin(), domain.actions.end(),
+                                     [&](const pddl::ActionSchema& a) { return a.name == r.action; });
+    if (schema == domain.actions.end()) continue;
+    const int params = static_cast<int>(schema->param_types.size());
+    if (r.focal_arg < 1 || r.focal_arg > params) continue;
+    const int slot = added_place_slot(schema->effect, domain, spec.language, r.focal_arg - 1);
+    if (slot >= 0 && slot < params && slot + 1 != r.agent_arg && slot + 1 != r.focal_arg) r.destination_arg = slot + 1;
+  }
 }
 
 // ---- finding a pack -----------------------------------------------------------------

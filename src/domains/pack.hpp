@@ -156,6 +156,13 @@ struct InferenceSettings {
   // (the paper packs, for their tables). Fitted on the dev halves of the
   // repo's own datasets (docs/decisions.md, "Robust utterance evidence").
   double utterance_noise = 0.05;
+  // The exponent τ the robust utterance likelihood is raised to (the words
+  // count as τ observations of the same reading): a calibration knob for a
+  // pack whose language model is over- or under-confident. 1: the bare model.
+  // A fit on the dev halves (τ = 2, ε = 0.2) did not carry over to the test
+  // halves, so the default stays 1 (docs/decisions.md, "Robust utterance
+  // evidence").
+  double utterance_exponent = 1.0;
 };
 
 struct LiteralSettings {
@@ -404,6 +411,11 @@ void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain);
 // ((on ?i - item ?s - station)).
 std::vector<std::string> location_predicates(const pddl::Domain& domain, const std::string& agent_type);
 void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
+// Each salient action's destination_arg: the parameter P (neither its agent
+// nor its focal object I) such that the action adds (L I P) for a location
+// predicate L, as (put ?a ?i ?p) adds (in ?i ?p). Run after the location
+// predicates are known; nothing when language.destinations is false.
+void derive_destinations(PackSpec& spec, const pddl::Domain& domain);
 
 // The pack for a domain:
 //   1. `<dir>/pack.json` when `dir` is given and holds one;

@@ -255,10 +255,16 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
 
   if (doc.contains("inference")) {
     const json& in = doc["inference"];
-    f.only(in, "inference", {"heuristic", "search", "temperature_prior", "rollout", "utterance_noise", "comment"});
+    f.only(in, "inference", {"heuristic", "search", "temperature_prior", "rollout", "utterance_noise", "utterance_exponent",
+                          "comment"});
     if (in.contains("utterance_noise")) {
       s.inference.utterance_noise = f.number(in["utterance_noise"], "inference.utterance_noise", 0, false);
       if (s.inference.utterance_noise >= 1) f.fail("inference.utterance_noise", "expected a number below 1");
+    }
+    if (in.contains("utterance_exponent")) {
+      s.inference.utterance_exponent = f.number(in["utterance_exponent"], "inference.utterance_exponent", 0, false);
+      if (!(s.inference.utterance_exponent > 0 && s.inference.utterance_exponent <= 10))
+        f.fail("inference.utterance_exponent", "expected a number above 0 and at most 10");
     }
     if (in.contains("heuristic")) s.inference.heuristic = f.text(in["heuristic"], "inference.heuristic");
     if (in.contains("search")) s.inference.search = f.boolean(in["search"], "inference.search");

@@ -49,6 +49,7 @@ inference::InferenceOptions inference_options(const ExperimentOptions& opts) {
   io.utterance.speaker_rule = opts.speaker_rule;
   io.utterance.plans = opts.speaker_plans;
   io.utterance_noise = opts.utterance_noise;
+  io.utterance_exponent = opts.utterance_exponent;
   io.threads = opts.inference_threads;
   io.utterance_timing = opts.utterance_timing;
   io.assistant_turns = opts.assistant_turns;

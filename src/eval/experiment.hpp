@@ -82,6 +82,8 @@ struct ExperimentOptions {
   std::optional<domains::RolloutSettings::Plans> speaker_plans;
   // The utterance model's noise (InferenceOptions::utterance_noise); nullopt: the pack's.
   std::optional<double> utterance_noise;
+  // Its exponent (InferenceOptions::utterance_exponent); nullopt: the pack's.
+  std::optional<double> utterance_exponent;
   inference::UtteranceTiming utterance_timing = inference::UtteranceTiming::After;
   inference::AssistantTurns assistant_turns = inference::AssistantTurns::Taken;
   // Which Q-values Q_MDP floors at the cost of waiting to the horizon.

@@ -69,6 +69,9 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
   search_ = options_.search.value_or(settings.search);
   noise_ = options_.utterance_noise.value_or(settings.utterance_noise);
   if (!(noise_ >= 0 && noise_ < 1)) throw InputError("utterance noise must be in [0, 1), not " + std::to_string(noise_));
+  exponent_ = options_.utterance_exponent.value_or(settings.utterance_exponent);
+  if (!(exponent_ > 0 && exponent_ <= 10))
+    throw InputError("utterance exponent must be above 0 and at most 10, not " + std::to_string(exponent_));
   const std::string hname = options_.heuristic.empty() ? settings.heuristic : options_.heuristic;
   const TemperatureWeights prior = options_.temperature_prior.value_or(
       inverse_gamma_prior(settings.temperature_shape, settings.temperature_scale));
@@ -269,7 +272,7 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
     weigh_utterance(rec);
     if (rec.evidence_weight > 0)
       for (size_t h = 0; h < hyps_.size(); ++h) {
-        const double ll = robust(rec.hypotheses[h].log_likelihood, rec.log_background);
+        const double ll = utterance_evidence(rec.hypotheses[h].log_likelihood, rec.log_background);
         // w * ll with w in (0, 1]; a NaN score counts as impossible.
         utterance_ll_[h] += std::isnan(ll) ? kNegInf : (rec.evidence_weight == 1 ? ll : rec.evidence_weight * ll);
       }
@@ -294,11 +297,11 @@ double log_background(const std::vector<HypothesisUtterance>& hs, double noise) 
   return hi + std::log(z / static_cast<double>(n));
 }
 
-double Belief::robust(double ll, double log_b) const {
-  if (noise_ <= 0 || std::isnan(ll) || log_b == kNegInf) return ll;
+double Belief::utterance_evidence(double ll, double log_b) const {
+  if (noise_ <= 0 || std::isnan(ll) || log_b == kNegInf) return exponent_ * ll;
   const double a = std::log1p(-noise_) + ll, b = std::log(noise_) + log_b;
   const double hi = std::max(a, b);
-  return hi + std::log(std::exp(a - hi) + std::exp(b - hi));
+  return exponent_ * (hi + std::log(std::exp(a - hi) + std::exp(b - hi)));
 }
 
 double evidence_weight(double share, const InferenceOptions& o) {

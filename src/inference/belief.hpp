@@ -125,6 +125,10 @@ struct InferenceOptions {
   // uniform prior this is the language posterior mixed with uniform at ε.
   // nullopt: the pack's.
   std::optional<double> utterance_noise;
+  // The exponent τ of that robust likelihood (domains::InferenceSettings::
+  // utterance_exponent): hypothesis h gains τ log((1 - ε) L_h + ε B).
+  // nullopt: the pack's.
+  std::optional<double> utterance_exponent;
   double readable_share_none = 0.25;
   double readable_share_full = 0.5;
   // Threads refining the hypotheses' policies in parallel (they are
@@ -368,9 +372,11 @@ class Belief {
   InferenceOptions options_;
   std::function<bool()> stop_;  // set_call_bounds
   bool search_ = true;
-  double noise_ = 0;  // utterance noise ε (InferenceOptions::utterance_noise)
-  // The robust log-likelihood of one hypothesis (see utterance_noise).
-  double robust(double ll, double log_background) const;
+  double noise_ = 0;     // utterance noise ε (InferenceOptions::utterance_noise)
+  double exponent_ = 1;  // τ (InferenceOptions::utterance_exponent)
+  // What one hypothesis' utterance log-likelihood adds to its evidence: the
+  // robust mixture (see utterance_noise) times τ.
+  double utterance_evidence(double ll, double log_background) const;
   std::shared_ptr<const UtteranceModel> utterance_model_;
   std::vector<Hypothesis> hyps_;
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)

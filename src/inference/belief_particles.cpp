@@ -66,7 +66,7 @@ void Belief::apply_event(const Event& e, const std::vector<int>& hs) {
       const double log_b = e.backgrounds.at(u);
       if (w > 0)
         for (size_t i = 0; i < hs.size(); ++i) {
-          const double ll = robust(scores[u][i].log_likelihood, log_b);
+          const double ll = utterance_evidence(scores[u][i].log_likelihood, log_b);
           utterance_ll_[hs[i]] += std::isnan(ll) ? kNegInf : (w == 1 ? ll : w * ll);
         }
     }
@@ -141,7 +141,7 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
       last.backgrounds[u] = rec.log_background;
       if (rec.evidence_weight > 0)
         for (int h : need) {
-          const double ll = robust(rec.hypotheses[h].log_likelihood, rec.log_background);
+          const double ll = utterance_evidence(rec.hypotheses[h].log_likelihood, rec.log_background);
           utterance_ll_[h] += std::isnan(ll) ? kNegInf : (rec.evidence_weight == 1 ? ll : rec.evidence_weight * ll);
         }
       out.push_back(std::move(rec));

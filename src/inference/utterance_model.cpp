@@ -146,6 +146,13 @@ std::vector<commands::Command> UtteranceModel::plan_commands(const std::vector<p
   // Qualifiers are read in the scoring state (objects keep their colour / type).
   auto salient = commands::extract_salient(
       terms, config_, [&](const std::string& o) { return qualifiers(o, s); });
+  // Where an action leaves its object is part of what the speaker may say.
+  if (config_.destinations)
+    for (commands::SalientAction& a : salient)
+      if (const commands::SalientActionRule* r = config_.salient_rule(a.action.name);
+          r && r->destination_arg > 0 && static_cast<size_t>(r->destination_arg) <= a.action.args.size())
+        a.predicates.push_back({commands::kDestinationPredicate,
+                                {a.focal, a.action.args[static_cast<size_t>(r->destination_arg - 1)]}});
   return commands::enumerate_commands(salient, config_, [this](const std::string& o) {
     auto it = type_of_.find(o);
     return it == type_of_.end() ? std::string("object") : it->second;

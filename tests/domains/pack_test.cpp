@@ -377,6 +377,32 @@ TEST(PackFile, AFolderPackIsFoundAndDrivesGoalsOptionsAndCandidates) {
   EXPECT_NE(pack->describe_state(*task, task->initial_state()).find("(at apple)"), std::string::npos);
 }
 
+// Where an action leaves its focal object comes from its effects: the garden's
+// (put ?a ?i ?p) adds (in ?i ?p), so its destination is ?p; pickup and
+// handover add no location of their item; the paper packs state none.
+TEST(PackFile, DestinationsComeFromTheEffects) {
+  const std::string garden = std::string(CLIPS_SOURCE_DIR) + "/data/datasets/garden";
+  const DomainWithPack g = load_domain_with_pack(garden + "/domain.pddl", garden);
+  std::map<std::string, int> destination;
+  for (const auto& r : g.pack->spec().language.salient_actions) destination[r.action] = r.destination_arg;
+  EXPECT_EQ(destination.at("put"), 3);
+  EXPECT_EQ(destination.at("pickup"), 0);
+  EXPECT_EQ(destination.at("handover"), 0);
+  EXPECT_EQ(destination.at("unlock"), 0);
+  // "destinations": false turns them off.
+  PackSpec spec = g.pack->spec();
+  spec.language.destinations = false;
+  derive_destinations(spec, *g.domain);
+  for (const auto& r : spec.language.salient_actions) EXPECT_EQ(r.destination_arg, 0) << r.action;
+  EXPECT_NE(error_of(R"j({"domain": "k", "language": {"salient_actions": [{"action": "get", "focal_arg": 2}],
+                          "destinations": "yes"}})j")
+                .find("language: destinations: expected true or false"),
+            std::string::npos);
+  const std::string dkg = std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems";
+  for (const auto& r : load_domain_with_pack(dkg + "/domain.pddl", dkg).pack->spec().language.salient_actions)
+    EXPECT_EQ(r.destination_arg, 0) << r.action;
+}
+
 TEST(PackFile, WithoutAFileTheGenericPackPlansAnything) {
   Pantry p;
   PackPtr pack = find_pack(*p.domain, p.dir.string());

@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 
+#include "data/dataset.hpp"
+#include "language/listener.hpp"
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"
 #include "dkg_profiles.hpp"
@@ -202,6 +206,73 @@ TEST(Belief, UtteranceIsScoredBeforeTheActionAtItsIndex) {
     EXPECT_NEAR(r[Modality::Both].hypotheses[h], r[Modality::ActionOnly].hypotheses[h], 1e-12);
   EXPECT_EQ(b.t(), 1);
   EXPECT_EQ(b.state(), task->apply(s0, act(*task, "(left human)")));
+}
+
+// The language-only posterior of one repo plan with an instruction, under the
+// given noise and exponent (one cost profile, uniform prior: the posterior is
+// the normalised utterance evidence).
+std::vector<double> language_only(double noise, double exponent) {
+  auto lm = language::make_language_model("embedded");
+  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/workshop");
+  InferenceOptions o;
+  o.utterance_noise = noise;
+  o.utterance_exponent = exponent;
+  const InferenceRun run = run_inference(ds, ds.plan("3.3.birdhouse"), *lm, o);
+  return run.final_posterior(Modality::UtteranceOnly).hypotheses;
+}
+
+TEST(UtteranceEvidence, TheExponentScalesTheLogOddsTheWordsGive) {
+  const std::vector<double> one = language_only(0, 1), two = language_only(0, 2);
+  ASSERT_EQ(one.size(), two.size());
+  ASSERT_GE(one.size(), 3u);
+  size_t best = 0;
+  for (size_t h = 1; h < one.size(); ++h)
+    if (one[h] > one[best]) best = h;
+  bool moved = false;
+  for (size_t h = 0; h < one.size(); ++h) {
+    if (h == best) continue;
+    const double log_odds = std::log(one[best] / one[h]);
+    EXPECT_NEAR(std::log(two[best] / two[h]), 2 * log_odds, 1e-6 * (1 + std::abs(log_odds))) << "hypothesis " << h;
+    moved = moved || log_odds > 0.1;
+  }
+  EXPECT_TRUE(moved) << "the instruction should favour one goal";
+}
+
+TEST(UtteranceEvidence, NoiseKeepsEveryGoalAboveItsShareOfTheMixture) {
+  // (1 - e) L_h + e B with B the mean: under a uniform prior each of n
+  // hypotheses keeps at least e / n, however badly the words fit it.
+  const double noise = 0.2;
+  const std::vector<double> bare = language_only(0, 1), robust = language_only(noise, 1);
+  const double n = static_cast<double>(robust.size());
+  const double lowest_bare = *std::min_element(bare.begin(), bare.end());
+  ASSERT_LT(lowest_bare, noise / n) << "the plan should have a goal the words speak against";
+  for (double p : robust) EXPECT_GE(p, noise / n - 1e-12);
+}
+
+// The garden's put leaves its item at a place: the speaker model's commands
+// say where, and "to the border" then favours the jobs done at the border
+// over the same items potted on the patio.
+TEST(UtteranceEvidence, CommandsStateWhereAPutLeavesItsItem) {
+  auto lm = language::make_language_model("embedded");
+  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/garden");
+  const InferenceRun run = run_inference(ds, ds.plan("8.2.plant-tulips"), *lm);
+  const UtteranceRecord* said = nullptr;
+  for (const StepRecord& step : run.steps)
+    if (!step.utterances.empty()) said = &step.utterances.front();
+  ASSERT_NE(said, nullptr);
+  std::map<std::string, std::string> destination;  // goal -> where its best put command leaves the item
+  for (size_t h = 0; h < said->hypotheses.size(); ++h)
+    for (const CommandScore& c : said->hypotheses[h].commands)
+      if (const auto at = c.command.find("(to ?"); at != std::string::npos && !destination.count(run.goals[h]))
+        destination[run.goals[h]] = c.command.substr(c.command.find(' ', at + 4) + 1,
+                                                     c.command.find(')', at) - c.command.find(' ', at + 4) - 1);
+  EXPECT_EQ(destination["plant-tulips"], "border");
+  EXPECT_EQ(destination["pot-tulips"], "patio");
+  std::map<std::string, double> p;
+  const Posterior& post = run.final_posterior(Modality::UtteranceOnly);
+  for (size_t g = 0; g < run.goals.size(); ++g) p[run.goals[g]] = post.goals[g];
+  EXPECT_GT(p["plant-tulips"], 2 * p["pot-tulips"]);
+  EXPECT_GT(p["plant-roses"], 2 * p["pot-roses"]);
 }
 
 }  // namespace

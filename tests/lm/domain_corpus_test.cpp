@@ -215,6 +215,27 @@ TEST(DomainCorpus, DeclaredSupertypesNameTheirObjects) {
     }
 }
 
+// Where a put leaves its object is said as a place ("on the bench"): with the
+// putdown's destination declared (a pack derives it from the effects), the
+// corpus has commands stating it and the model tells the places apart.
+TEST(DomainCorpus, DestinationsAreSaidAsPlaces) {
+  DomainDescription d = workshop(1);
+  for (CommandActionRule& r : d.command_actions)
+    if (r.action == "putdown") r.destination_arg = 3;
+  const std::vector<TrainingPair> pairs = generate_domain_corpus(d, {});
+  const bool stated = std::any_of(pairs.begin(), pairs.end(), [](const TrainingPair& p) {
+    return p.command.find("(putdown you plank1) where") == 0 && p.command.find("(to plank1 ") != std::string::npos;
+  });
+  EXPECT_TRUE(stated);
+  const std::shared_ptr<AlignmentModel> m = train_domain_model(d, {});
+  const std::string bench = "(putdown you plank1) where (to plank1 bench)";
+  const std::string rack = "(putdown you plank1) where (to plank1 rack)";
+  EXPECT_GT(score(*m, bench, "could you put the plank on the bench"),
+            score(*m, rack, "could you put the plank on the bench") + 1.0);
+  EXPECT_GT(score(*m, rack, "take the plank over to the rack please"),
+            score(*m, bench, "take the plank over to the rack please") + 1.0);
+}
+
 // Colour binding, generalised: a size said of a noun of another type does not
 // count for an object of this type ("the big hammer" is no big plank).
 TEST(DomainCorpus, SizeBindsToItsNounLikeAColour) {

@@ -207,7 +207,7 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
   for (const auto& s : subset)
     for (const auto& p : s.predicates) {
       Term lifted{p.name, {}};
-      const bool location = config.is_location(p.name);  // the place keeps its name: (on ?plank1 rack)
+      const bool location = config.names_place(p.name);  // the place keeps its name: (on ?plank1 rack)
       for (std::size_t i = 0; i < p.args.size(); ++i) {
         const std::string& arg = p.args[i];
         auto it = variable_of.find(arg);

@@ -23,6 +23,10 @@ std::vector<std::string> LanguageConfig::qualifiers() const {
   return out;
 }
 
+bool LanguageConfig::names_place(const std::string& predicate) const {
+  return predicate == kDestinationPredicate || is_location(predicate);
+}
+
 bool LanguageConfig::is_location(const std::string& predicate) const {
   return std::find(location_predicates.begin(), location_predicates.end(), predicate) != location_predicates.end();
 }
@@ -127,7 +131,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
       "domain", "salient_actions", "qualifier", "speaker", "listener", "max_command_actions",
       "max_action_types", "max_qualifier_values_per_action_type", "speaker_actions",
       "exclude_chains", "paper_speaker_actions", "paper_exclude_chains", "variable_naming", "printed_form", "printed_args", "goal_atoms", "goal_variables",
-      "locations", "goal_statements", "comment"};
+      "locations", "destinations", "goal_statements", "comment"};
   for (const auto& [key, value] : doc.items())
     if (!known.contains(key)) r.fail(key, "unknown key");
 
@@ -221,6 +225,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
       r.fail("goal_statements", "expected a number in [0, 1)");
     c.goal_statements = g.get<double>();
   }
+  if (doc.contains("destinations")) c.destinations = r.boolean(doc["destinations"], "destinations");
   if (doc.contains("locations")) {
     const json& l = doc["locations"];
     if (l.is_string()) {

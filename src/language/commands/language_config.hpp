@@ -16,7 +16,16 @@ struct SalientActionRule {
   std::string action;  // e.g. "handover"
   int agent_arg = 1;   // the acting agent
   int focal_arg = 2;   // the object the action is about (handover: the item, unlock: the door)
+  // The argument naming where the action leaves its focal object ((put A I P)
+  // adds (in I P): 3), found from the domain when the pack is built
+  // (domains::derive_destinations); 0: none.
+  int destination_arg = 0;
 };
+
+// The predicate a command states a destination with: (to ?compost1 rosebed)
+// for "take the compost to the rose bed". Not a domain predicate: the speaker
+// model adds it to commands, and the language model reads it like a place.
+inline constexpr const char* kDestinationPredicate = "to";
 
 // Which speaker actions may appear in commands.
 enum class SpeakerActionRule {
@@ -97,6 +106,11 @@ struct LanguageConfig {
   // "auto" (default), "none", or a list of predicate names.
   std::vector<std::string> location_predicates;
   bool locations_auto = true;
+  // Whether the speaker model's commands state where an action leaves its
+  // object (SalientActionRule::destination_arg), so "put the compost at the
+  // border" tells the jobs at the border from the others. The pack's
+  // "destinations": true (default) or false (the paper packs).
+  bool destinations = true;
   // The share of the speaker's utterances that state the goal itself ("we're
   // making the frame", "I want the red gem") rather than a command: the
   // speaker model scores them under the goal's statement, (make me ?goal1)
@@ -104,6 +118,9 @@ struct LanguageConfig {
   // only (the paper's model; its packs keep it for their tables).
   double goal_statements = 0.15;
   bool is_location(const std::string& predicate) const;
+  // A location predicate or the destination one: its second argument is a
+  // place, printed by name.
+  bool names_place(const std::string& predicate) const;
 
   // Goal atoms per action name; `$i` is replaced by the action's i-th argument
   // after pronouns are mapped back to agent names. E.g. handover ->

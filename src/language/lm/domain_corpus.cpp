@@ -73,6 +73,7 @@ struct PlannedAction {
   const DomainObject* focal = nullptr;
   std::vector<const QualifierFact*> facts;  // the focal object's qualifiers the command states
   const QualifierFact* location = nullptr;  // where it is, when the command states it
+  const DomainObject* destination = nullptr;  // where it goes, when the command states it
 };
 
 class Generator {
@@ -106,6 +107,13 @@ class Generator {
           if (const QualifierFact* at = location_of(obj->name)) {
             a.location = at;
             for (int k = 0; k < o_.utterances_per_command; ++k) emit({a}, one_action_utterance(a));
+            a.location = nullptr;
+          }
+          // And with where it goes ("to the border"), for a few of the places.
+          const std::vector<const DomainObject*> places = destinations(*rule, *schema);
+          for (int k = 0; k < std::min<int>(2, static_cast<int>(places.size())); ++k) {
+            a.destination = dice_.pick(places);
+            for (int u = 0; u < o_.utterances_per_command; ++u) emit({a}, one_action_utterance(a));
           }
         }
       }
@@ -156,6 +164,16 @@ class Generator {
       if (obj.name != d_.speaker && obj.name != d_.listener && is_a(obj.type, want)) out.push_back(&obj);
     return out;
   }
+  // The places an action may leave its focal object at (its destination
+  // parameter's objects), none for an action without one.
+  std::vector<const DomainObject*> destinations(const CommandActionRule& r, const DomainActionSchema& s) const {
+    std::vector<const DomainObject*> out;
+    if (r.destination_arg < 1 || r.destination_arg > static_cast<int>(s.parameter_types.size())) return out;
+    const std::string& want = s.parameter_types[static_cast<size_t>(r.destination_arg - 1)];
+    for (const DomainObject& obj : d_.objects)
+      if (obj.name != d_.speaker && obj.name != d_.listener && is_a(obj.type, want)) out.push_back(&obj);
+    return out;
+  }
   const QualifierFact* location_of(const std::string& object) const {
     for (const QualifierFact& f : d_.locations)
       if (f.object == object) return &f;
@@ -181,6 +199,8 @@ class Generator {
     if (facts.size() > 1 && dice_.chance(0.5)) facts = {dice_.pick(facts)};
     a.facts = facts;
     if (dice_.chance(0.3)) a.location = location_of(a.focal->name);
+    if (const auto places = destinations(*rule, *schema); !places.empty() && dice_.chance(0.4))
+      a.destination = dice_.pick(places);
     return a;
   }
 
@@ -209,6 +229,7 @@ class Generator {
       out += ")";
       for (const QualifierFact* f : a.facts) where += " (" + f->predicate + " " + it->second + " " + f->value + ")";
       if (a.location) where += " (" + a.location->predicate + " " + it->second + " " + a.location->value + ")";
+      if (a.destination) where += " (" + d_.destination_predicate + " " + it->second + " " + a.destination->name + ")";
     }
     return where.empty() ? out : out + " where" + where;
   }
@@ -285,6 +306,16 @@ class Generator {
     return np;
   }
   std::string verb_phrase(const PlannedAction& a, const std::string& np) {
+    std::string vp = object_phrase(a, np);
+    if (a.destination) {
+      static const std::vector<std::string> to = {"to the", "over to the", "at the", "in the", "on the",
+                                                  "by the", "to the", "down at the", "into the"};
+      vp += " " + dice_.pick(to) + " " + name_as_words(a.destination->name);
+    }
+    return vp;
+  }
+  // The verb and its object, with the recipient of a hand-over.
+  std::string object_phrase(const PlannedAction& a, const std::string& np) {
     const std::string v = verb(a);
     const bool phrasal = v.find(' ') != std::string::npos;
     if (!a.speaker_acts && hands_over(*a.rule, *a.schema)) {

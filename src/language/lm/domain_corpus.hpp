@@ -55,6 +55,7 @@ struct CommandActionRule {
   std::string action;  // "handover"
   int agent_arg = 1;   // the acting agent
   int focal_arg = 2;   // the object the action is about
+  int destination_arg = 0;  // where the action leaves it ((put A I P): 3); 0: none
 };
 
 // Everything the generator needs to know about a domain and one problem.
@@ -74,6 +75,9 @@ struct DomainDescription {
   // ?goal1 frame). Empty: no goal statements in the corpus.
   std::vector<std::string> goal_names;
   std::vector<CommandActionRule> command_actions;
+  // The predicate commands state a destination with, (to plank1 bench)
+  // (commands::kDestinationPredicate).
+  std::string destination_predicate = "to";
   std::string speaker = "human";  // object names of the two agents
   std::string listener = "robot";
   std::string speaker_pronoun = "me";
