@@ -80,6 +80,18 @@ const double kLog10 = std::log(10.0);
 // hypotheses (the paper's 8, the example domains' goal sets).
 }  // namespace
 
+void refine_live(AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s,
+                 const std::function<void()>& between) {
+  if (!setup.refine) return;
+  const double cut = live_threshold(belief, setup.weight_threshold);
+  for (const Hypothesis& h : belief) {
+    if (h.weight < cut) continue;
+    if (between) between();
+    h.policy->refine(s, setup.refine_options);
+  }
+  setup.refine = false;
+}
+
 double live_threshold(const std::vector<Hypothesis>& belief, double threshold) {
   double top = 0;
   for (const Hypothesis& h : belief) top = std::max(top, h.weight);

@@ -183,6 +183,11 @@ struct Decision {
 // setup's weight_threshold, at most half the largest weight. qmdp_decision and
 // pibar_decision refine exactly these hypotheses (when setup.refine).
 double live_threshold(const std::vector<Hypothesis>& belief, double threshold);
+// The refinements a decision at s would make (when setup.refine), made now,
+// with `between` called before each (a caller's cancellation check); then
+// setup.refine is cleared so the decision does not make them again.
+void refine_live(AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s,
+                 const std::function<void()>& between = {});
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t);
 // The salient-argument table of AssistSetup::salient_args for a command language.
 std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config);

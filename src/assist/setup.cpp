@@ -1,5 +1,7 @@
 #include "assist/setup.hpp"
 
+#include <algorithm>
+
 #include "assist/request.hpp"
 #include "pddl/plan.hpp"
 
@@ -21,17 +23,21 @@ AssistSetup setup_for(const domains::Pack& pack, std::shared_ptr<const pddl::Tas
   if (options.max_nodes) setup.refine_options.max_nodes = *options.max_nodes;
   if (options.max_seconds) setup.refine_options.max_seconds = *options.max_seconds;
   setup.refine_options.deadline = options.deadline;
+  if (options.max_steps) setup.horizon = std::min(setup.horizon, setup.observed_steps + *options.max_steps);
   return setup;
 }
 
 AssistSetup setup_for_plan(const domains::Pack& pack, std::shared_ptr<const pddl::Task> task,
                            const inference::Belief& belief, const data::PlanRecord& plan,
                            const SetupOptions& options) {
-  AssistSetup setup = setup_for(pack, task, belief, options);
+  SetupOptions base = options;
+  base.max_steps.reset();  // counted from the plan's observed part, below
+  AssistSetup setup = setup_for(pack, task, belief, base);
   setup.observed_steps = static_cast<int>(plan.observed.actions.size());
   setup.completed = pddl::simulate(*setup.task, setup.start, plan.completed).actions;
   setup.option_of = [&pack, task, tag = plan.tag](pddl::ActionId a) { return pack.option_of(*task, a, tag); };
   setup.follow_plan_by_index = pack.roles().principal_follows_completed_plan;
+  if (options.max_steps) setup.horizon = std::min(setup.horizon, setup.observed_steps + *options.max_steps);
   return setup;
 }
 

@@ -22,6 +22,9 @@ struct SetupOptions {
   std::optional<size_t> max_nodes;
   std::optional<double> max_seconds;
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  // At most this many model timesteps after the observed part (a rehearsal
+  // of an episode: `clips validate`); unset: the pack's horizon.
+  std::optional<int> max_steps;
 };
 
 AssistSetup setup_for(const domains::Pack& pack, std::shared_ptr<const pddl::Task> task,

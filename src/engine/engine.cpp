@@ -630,17 +630,8 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
       std::as_const(*belief), post, requests_for(task, m.records, post.hypotheses.size(), mod));
   // The decision's model timestep; past the horizon the floor counts one wait.
   const int t = std::min(belief->t() + 1, setup.horizon - 1);
-  // The refinements qmdp_decision / pibar_decision would make, here, so that
-  // a cancellation is seen between them.
-  if (setup.refine) {
-    const double cut = assist::live_threshold(hyps, setup.weight_threshold);
-    for (auto& h : hyps) {
-      if (h.weight < cut) continue;
-      b.check_cancel();
-      h.policy->refine(s, setup.refine_options);
-    }
-    setup.refine = false;
-  }
+  // Refined here, so that a cancellation is seen between the searches.
+  assist::refine_live(setup, hyps, s, [&] { b.check_cancel(); });
   const assist::Decision dec = m.options.assistance == Assistance::QMdp ? assist::qmdp_decision(setup, hyps, s, t)
                                                                         : assist::pibar_decision(setup, hyps, s);
   b.check();

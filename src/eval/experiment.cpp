@@ -195,8 +195,8 @@ BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& p,
     assist::SetupOptions so = assistance_options(opts);
     so.max_nodes = opts.refine_max_nodes;
     so.max_seconds = 5;
+    so.max_steps = 2;
     setup = assist::setup_for_plan(pack, task, *inf.belief, p, so);
-    setup->horizon = std::min(setup->horizon, setup->observed_steps + 2);
     // The Q_MDP episode's turn atom and no-ops (its Episode asks them first).
     assist::assistant_turn(*setup, setup->start);
     for (const std::string* agent : {&setup->principal, &setup->assistant}) setup->noop(*task, *agent);
