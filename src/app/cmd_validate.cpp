@@ -48,6 +48,23 @@ int check_pack_schema(const std::string& dir, bool quiet) {
   return static_cast<int>(errors.size());
 }
 
+// What the pack left to clips and clips found from the domain's effects:
+// the goal atoms of salient actions without `goal_atoms`, and where each
+// salient action leaves its focal object (language.destinations).
+void print_derived(const domains::Pack& pack) {
+  const domains::PackSpec& spec = pack.spec();
+  for (const std::string& action : spec.derived_goal_atoms) {
+    std::string atoms;
+    if (auto it = spec.language.goal_atoms.find(action); it != spec.language.goal_atoms.end())
+      for (const std::string& a : it->second) atoms += (atoms.empty() ? "" : " ") + a;
+    fmt::print("ok    derived from the effects: {} means {}\n", action, atoms.empty() ? "nothing" : atoms);
+  }
+  for (const auto& r : spec.language.salient_actions)
+    if (r.destination_arg > 0)
+      fmt::print("ok    derived from the effects: {} leaves its argument {} at its argument {} (commands say where)\n",
+                 r.action, r.focal_arg, r.destination_arg);
+}
+
 }  // namespace
 
 void register_validate(CLI::App& app) {
@@ -67,6 +84,7 @@ void register_validate(CLI::App& app) {
     const std::string dir = dataset_dir(*dataset);
     const int schema_failures = check_pack_schema(dir, *quiet);
     auto ds = data::Dataset::load(dir);
+    if (!*quiet) print_derived(ds.pack());
     auto report = data::validate_dataset(ds);
     for (auto& r : report.results) {
       if (r.ok) {

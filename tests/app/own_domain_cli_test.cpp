@@ -53,6 +53,18 @@ TEST(CliOwnDomain, ValidateRehearsesBenchOnThePacksNoOpAndTurnPredicate) {
     EXPECT_TRUE(std::regex_search(r.out, std::regex(std::string("ok    bench set-up: ") + m + " +on plan 1.1.basil"))) << m;
 }
 
+// The repo's garden pack leaves what put and unlock mean, and where put leaves
+// its item, to clips: validate says what it found.
+TEST(CliOwnDomain, ValidateReportsWhatItDerivedFromTheEffects) {
+  const std::string ds = clips::paths::source_dir() + "/data/datasets/garden";
+  const auto r = run(clips_binary() + " validate --plans-only --dataset " + ds);
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "derived from the effects: unlock means (not (locked $3))")) << r.out;
+  EXPECT_TRUE(contains(r.out, "derived from the effects: put leaves its argument 2 at its argument 3")) << r.out;
+  // pickup's meaning is the pack's own goal_atoms entry, and pickup leaves nothing anywhere.
+  EXPECT_FALSE(contains(r.out, "derived from the effects: pickup")) << r.out;
+}
+
 TEST(CliOwnDomain, AssistTakesTurnsWithIdle) {
   auto r = run(clips_binary() + " assist --dataset " + garden() + " --plan 1.1.basil --json");
   ASSERT_EQ(r.status, 0) << r.out;
