@@ -583,7 +583,11 @@ std::vector<std::string> location_predicates(const pddl::Domain& d, const std::s
   }
   for (pddl::PredId p : changed) {
     const auto& types = d.predicates[static_cast<size_t>(p)].arg_types;
-    if (types.size() != 2 || agentish(types[0]) || types[0] == 0) continue;
+    // The first argument must be able to hold a thing that is not an agent:
+    // (in ?i - item ?p - place), or one predicate for both, (at ?x - locatable
+    // ?p - place) with agent and item under locatable; (at ?a - agent ...) is
+    // only where agents are.
+    if (types.size() != 2 || d.is_subtype(types[0], *agent) || types[0] == 0) continue;
     if (std::any_of(places.begin(), places.end(), [&](pddl::TypeId t) { return related(types[1], t); }))
       out.push_back(d.predicates[static_cast<size_t>(p)].name);
   }

@@ -407,8 +407,9 @@ void derive_goal_atoms(PackSpec& spec, const pddl::Domain& domain);
 // when the pack leaves them to "auto": the places are the types of the second
 // argument of a binary predicate some action changes for an agent (where an
 // agent is, (at ?a - agent ?s - station)); a location predicate relates a
-// non-agent first argument to such a place and some action changes it
-// ((on ?i - item ?s - station)).
+// first argument that is not an agent type to such a place and some action
+// changes it ((on ?i - item ?s - station), or one (at ?x - locatable ?p -
+// place) for agents and items alike).
 std::vector<std::string> location_predicates(const pddl::Domain& domain, const std::string& agent_type);
 void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
 // Each salient action's destination_arg: the parameter P (neither its agent

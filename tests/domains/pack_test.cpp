@@ -403,6 +403,43 @@ TEST(PackFile, DestinationsComeFromTheEffects) {
     EXPECT_EQ(r.destination_arg, 0) << r.action;
 }
 
+// A domain that says where agents and items are with one predicate, (at ?x -
+// locatable ?p - place), still has a location predicate, and its put a
+// destination; one with (at ?a - agent ...) for agents only does not count it.
+TEST(PackFile, OneAtForAgentsAndItemsIsALocation) {
+  const char* shared_at = R"(
+(define (domain yard)
+  (:requirements :strips :typing)
+  (:types locatable place - object agent item - locatable)
+  (:predicates (at ?x - locatable ?p - place) (holding ?a - agent ?i - item))
+  (:action move :parameters (?a - agent ?from ?to - place)
+   :precondition (at ?a ?from) :effect (and (not (at ?a ?from)) (at ?a ?to)))
+  (:action pickup :parameters (?a - agent ?i - item ?p - place)
+   :precondition (and (at ?a ?p) (at ?i ?p)) :effect (and (not (at ?i ?p)) (holding ?a ?i)))
+  (:action put :parameters (?a - agent ?i - item ?p - place)
+   :precondition (and (at ?a ?p) (holding ?a ?i)) :effect (and (not (holding ?a ?i)) (at ?i ?p))))
+)";
+  const pddl::Domain d = pddl::parse_domain(shared_at, "yard.pddl");
+  EXPECT_EQ(location_predicates(d, "agent"), (std::vector<std::string>{"at"}));
+  PackSpec spec = parse_pack_spec(R"j({"domain": "yard", "language": {"salient_actions": [
+      {"action": "pickup", "focal_arg": 2}, {"action": "put", "focal_arg": 2}]}})j", "yard/pack.json");
+  derive_location_predicates(spec, d);
+  EXPECT_EQ(spec.language.salient_actions[0].destination_arg, 0);
+  EXPECT_EQ(spec.language.salient_actions[1].destination_arg, 3);
+  // Where only agents are "at", items "in": only "in" is a location.
+  const char* split = R"(
+(define (domain yard2)
+  (:requirements :strips :typing)
+  (:types agent item place)
+  (:predicates (at ?a - agent ?p - place) (in ?i - item ?p - place))
+  (:action move :parameters (?a - agent ?from ?to - place)
+   :precondition (at ?a ?from) :effect (and (not (at ?a ?from)) (at ?a ?to)))
+  (:action drop :parameters (?a - agent ?i - item ?p - place)
+   :precondition (at ?a ?p) :effect (in ?i ?p)))
+)";
+  EXPECT_EQ(location_predicates(pddl::parse_domain(split, "yard2.pddl"), "agent"), (std::vector<std::string>{"in"}));
+}
+
 TEST(PackFile, WithoutAFileTheGenericPackPlansAnything) {
   Pantry p;
   PackPtr pack = find_pack(*p.domain, p.dir.string());
