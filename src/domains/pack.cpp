@@ -151,6 +151,17 @@ model::CostProfile Pack::default_profile() const {
 }
 
 ProfileSet Pack::profiles_for(const std::string& tag) const {
+  ProfileSet set = declared_profiles_for(tag);
+  if (spec_.inference.alone_cost_factor > 0) {
+    const size_t n = set.profiles.size();
+    for (size_t i = 0; i < n; ++i)
+      set.profiles.push_back(model::alone_twin(set.profiles[i], static_cast<int>(i), spec_.roles.assistant,
+                                               spec_.roles.noop_action, spec_.inference.alone_cost_factor));
+  }
+  return set;
+}
+
+ProfileSet Pack::declared_profiles_for(const std::string& tag) const {
   if (spec_.cost_profiles.empty()) return {{default_profile()}, 0};
   const ProfileRule* fallback = nullptr;
   for (const auto& r : spec_.cost_profiles) {

@@ -163,6 +163,14 @@ struct InferenceSettings {
   // halves, so the default stays 1 (docs/decisions.md, "Robust utterance
   // evidence").
   double utterance_exponent = 1.0;
+  // Each cost profile gets an alone twin (model::alone_twin) in which the
+  // assistant's actions cost this many times as much: a principal who does
+  // what is within reach instead of what the best joint plan leaves them
+  // (people fetch the thing beside them even when the assistant could have).
+  // Hypotheses are goal x profile, so the twin doubles them; the assistant
+  // values a twin's hypotheses with its base profile. 0: no twins (the paper
+  // packs). docs/decisions.md, "A principal who may plan alone".
+  double alone_cost_factor = 4.0;
 };
 
 struct LiteralSettings {
@@ -295,7 +303,11 @@ class Pack {
                       const pddl::PlanFile& observed, const pddl::PlanFile& completed) const;
 
   // ---- costs ----
+  // The candidate profiles of a plan with this tag: the declared ones, then
+  // (inference.alone_cost_factor > 0) the alone twin of each.
   ProfileSet profiles_for(const std::string& tag) const;
+  // The declared profiles alone (or the default one).
+  ProfileSet declared_profiles_for(const std::string& tag) const;
   // The one profile of a pack without cost_profiles: every action 1, both
   // agents' no-op roles.noop_cost ("unit" when that is 1).
   model::CostProfile default_profile() const;

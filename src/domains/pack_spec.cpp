@@ -256,7 +256,13 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   if (doc.contains("inference")) {
     const json& in = doc["inference"];
     f.only(in, "inference", {"heuristic", "search", "temperature_prior", "rollout", "utterance_noise", "utterance_exponent",
-                          "comment"});
+                          "alone_cost_factor", "comment"});
+    if (in.contains("alone_cost_factor")) {
+      s.inference.alone_cost_factor = f.number(in["alone_cost_factor"], "inference.alone_cost_factor", 0, false);
+      if (s.inference.alone_cost_factor != 0 &&
+          !(s.inference.alone_cost_factor >= 1 && s.inference.alone_cost_factor <= 1000))
+        f.fail("inference.alone_cost_factor", "expected 0 (no alone twins) or a number from 1 to 1000");
+    }
     if (in.contains("utterance_noise")) {
       s.inference.utterance_noise = f.number(in["utterance_noise"], "inference.utterance_noise", 0, false);
       if (s.inference.utterance_noise >= 1) f.fail("inference.utterance_noise", "expected a number below 1");

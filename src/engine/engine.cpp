@@ -728,16 +728,19 @@ std::optional<Reading> Engine::reading(size_t top) const {
       r.commands.push_back({ranked.commands[i].command.display_form(), ranked.commands[i].prob});
   } else if (rec) {
     // P(command | u) = sum_h P(h | data) P(command | u, h): the commands each
-    // goal would have the assistant do, weighted by the current posterior.
+    // goal would have the assistant do, weighted by the current posterior as
+    // the assistant reads it (alone twins counted with their base profile,
+    // whose commands are the ones the request rule follows).
     r.source = "speaker model, commands weighted by the goal posterior";
     const auto post =
         m.belief->posterior(m.options.method == Method::ActionOnly ? Modality::Both : modality_of(m.options.method));
+    const std::vector<double> w = assistant_weights(*m.belief, post);
     std::map<std::string, double> mass;
     double empty = 0;
-    for (size_t h = 0; h < rec->hypotheses.size() && h < post.hypotheses.size(); ++h) {
+    for (size_t h = 0; h < rec->hypotheses.size() && h < w.size(); ++h) {
       const auto& hu = rec->hypotheses[h];
-      if (hu.commands.empty()) empty += post.hypotheses[h];
-      for (const auto& c : hu.commands) mass[c.command] += post.hypotheses[h] * c.posterior;
+      if (hu.commands.empty()) empty += w[h];
+      for (const auto& c : hu.commands) mass[c.command] += w[h] * c.posterior;
     }
     std::vector<std::pair<std::string, double>> ranked(mass.begin(), mass.end());
     if (empty > 0) ranked.emplace_back("(no command: the human needs no help)", empty);

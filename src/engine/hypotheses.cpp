@@ -11,16 +11,34 @@ std::vector<std::shared_ptr<const assist::Request>> requests_for(const pddl::Tas
   return assist::last_requests(task, steps, hypotheses);
 }
 
+std::vector<double> assistant_weights(const inference::Belief& belief, const inference::Posterior& post) {
+  std::vector<double> w = post.hypotheses;
+  const auto& hyps = belief.hypotheses();
+  const auto& profiles = belief.profiles();
+  for (size_t h = 0; h < w.size(); ++h) {
+    const int base = profiles.at(static_cast<size_t>(hyps[h].profile)).twin_of;
+    if (base < 0) continue;
+    for (size_t k = 0; k < hyps.size(); ++k)
+      if (hyps[k].goal == hyps[h].goal && hyps[k].profile == base) {
+        w[k] += w[h];
+        w[h] = 0;
+        break;
+      }
+  }
+  return w;
+}
+
 std::vector<assist::Hypothesis> assistant_hypotheses(inference::Belief& belief, const inference::Posterior& post,
                                                      const std::vector<std::shared_ptr<const assist::Request>>& requests,
                                                      PolicyUse use) {
   std::vector<assist::Hypothesis> hyps;
   auto& policies = belief.policies();
+  const std::vector<double> w = assistant_weights(belief, post);
   for (size_t h = 0; h < post.hypotheses.size(); ++h) {
     std::shared_ptr<search::Policy> p = use == PolicyUse::Copy
                                             ? std::make_shared<search::Policy>(policies[h])
                                             : std::shared_ptr<search::Policy>(&policies[h], [](search::Policy*) {});
-    hyps.push_back({post.hypotheses[h], std::move(p), nullptr});
+    hyps.push_back({w[h], std::move(p), nullptr});
   }
   assist::attach_requests(hyps, requests);
   return hyps;
@@ -29,8 +47,9 @@ std::vector<assist::Hypothesis> assistant_hypotheses(inference::Belief& belief, 
 std::vector<assist::Hypothesis> assistant_hypotheses(const inference::Belief& belief, const inference::Posterior& post,
                                                      const std::vector<std::shared_ptr<const assist::Request>>& requests) {
   std::vector<assist::Hypothesis> hyps;
+  const std::vector<double> w = assistant_weights(belief, post);
   for (size_t h = 0; h < post.hypotheses.size(); ++h)
-    hyps.push_back({post.hypotheses[h], std::make_shared<search::Policy>(belief.policies()[h]), nullptr});
+    hyps.push_back({w[h], std::make_shared<search::Policy>(belief.policies()[h]), nullptr});
   assist::attach_requests(hyps, requests);
   return hyps;
 }

@@ -21,6 +21,13 @@ std::vector<std::shared_ptr<const assist::Request>> requests_for(const pddl::Tas
                                                                  const std::vector<inference::StepRecord>& steps,
                                                                  size_t hypotheses, inference::Modality m);
 
+// The posterior's weights as the assistant reads them: an alone twin's
+// weight (model::CostProfile::twin_of) moves to the hypothesis of the same
+// goal under the twin's base profile, since the twin says how the principal
+// chooses, not what help costs; the twin keeps weight 0, so the indexing
+// stays the belief's.
+std::vector<double> assistant_weights(const inference::Belief& belief, const inference::Posterior& post);
+
 // The posterior's hypotheses with their policies and the requests attached.
 std::vector<assist::Hypothesis> assistant_hypotheses(inference::Belief& belief, const inference::Posterior& post,
                                                      const std::vector<std::shared_ptr<const assist::Request>>& requests,

@@ -91,6 +91,10 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       policies_.emplace_back(spec, std::move(h), graph_);
       temps_.emplace_back(prior);
     }
+  for (const Hypothesis& h : hyps_) {
+    const int base = profiles_[static_cast<size_t>(h.profile)].twin_of;
+    speaker_of_.push_back(h.goal * static_cast<int>(profiles_.size()) + (base >= 0 ? base : h.profile));
+  }
   const double n = static_cast<double>(hyps_.size());
   log_prior_.assign(hyps_.size(), -std::log(n));
   action_ll_.assign(hyps_.size(), 0.0);
@@ -227,17 +231,29 @@ double Belief::score_action(int h, const pddl::State& s, pddl::ActionId action) 
 }
 
 std::vector<SpeakerPlans> Belief::speaker_plans(const pddl::State& s, const std::vector<int>& hs) {
-  std::vector<SpeakerPlans> out(hs.size());
+  // Each distinct speaker once (a twin and its base share theirs).
+  std::vector<int> speakers;
+  std::vector<size_t> slot(hs.size());
+  for (size_t i = 0; i < hs.size(); ++i) {
+    const int sp = speaker_of_[static_cast<size_t>(hs[i])];
+    auto it = std::find(speakers.begin(), speakers.end(), sp);
+    slot[i] = static_cast<size_t>(it - speakers.begin());
+    if (it == speakers.end()) speakers.push_back(sp);
+  }
+  std::vector<SpeakerPlans> plans(speakers.size());
   const bool tied = search_ && utterance_model_->plans_rule() == domains::RolloutSettings::Plans::Tied;
   auto one = [&](size_t i) {
-    search::Policy& p = policies_[static_cast<size_t>(hs[i])];
-    out[i] = tied ? utterance_model_->speaker_plans(p, s, options_.refine) : utterance_model_->single_plan(p, s);
+    search::Policy& p = policies_[static_cast<size_t>(speakers[i])];
+    plans[i] = tied ? utterance_model_->speaker_plans(p, s, options_.refine) : utterance_model_->single_plan(p, s);
   };
-  if (tied && pool_ && hs.size() > 1) {
-    pool_->run(hs.size(), one);
+  if (tied && pool_ && speakers.size() > 1) {
+    pool_->run(speakers.size(), one);
   } else {
-    for (size_t i = 0; i < hs.size(); ++i) one(i);
+    for (size_t i = 0; i < speakers.size(); ++i) one(i);
   }
+  if (speakers.size() == hs.size()) return plans;
+  std::vector<SpeakerPlans> out(hs.size());
+  for (size_t i = 0; i < hs.size(); ++i) out[i] = plans[slot[i]];
   return out;
 }
 

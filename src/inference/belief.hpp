@@ -351,6 +351,9 @@ class Belief {
   Posterior particle_posterior(Modality m) const;
   // The plans each hypothesis' speaker may have in mind at s (the utterance
   // model's rule; tie-breaking rollouts refine the policies, in parallel).
+  // An alone twin (model::CostProfile::twin_of) speaks as its base: it
+  // models how the principal acts, and a request for help says what the
+  // joint plan would have the assistant do.
   std::vector<SpeakerPlans> speaker_plans(const pddl::State& s, const std::vector<int>& hs);
   // Each hypothesis' goal statement (UtteranceModel::goal_statement), or none
   // when the pack's language has goal_statements 0.
@@ -379,6 +382,7 @@ class Belief {
   double utterance_evidence(double ll, double log_background) const;
   std::shared_ptr<const UtteranceModel> utterance_model_;
   std::vector<Hypothesis> hyps_;
+  std::vector<int> speaker_of_;  // per hypothesis, whose plans its words come from (itself or its twin's base)
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)
   std::vector<search::Policy> policies_;
   std::vector<TemperatureBelief> temps_;

@@ -6,7 +6,19 @@ namespace clips::model {
 
 double CostProfile::cost(const std::string& agent, const std::string& action) const {
   auto it = costs.find({agent, action});
-  return it == costs.end() ? default_cost : it->second;
+  const double c = it == costs.end() ? default_cost : it->second;
+  return agent == scaled_agent && action != unscaled_action ? c * agent_factor : c;
+}
+
+CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
+                       const std::string& noop, double factor) {
+  CostProfile p = base;
+  p.name = base.name + "-alone";
+  p.scaled_agent = assistant;
+  p.unscaled_action = noop;
+  p.agent_factor = factor;
+  p.twin_of = base_index;
+  return p;
 }
 
 CostProfile unit_profile() {
@@ -35,12 +47,13 @@ Specification::Specification(std::shared_ptr<const pddl::Task> task, std::string
   action_cost_.resize(task_->num_actions());
   for (pddl::ActionId a = 0; a < task_->num_actions(); ++a) {
     const auto& ga = task_->action(a);
-    if (profile_.default_cost < 0) {
-      action_cost_[a] = ga.cost;
-      continue;
-    }
     const std::string& name = task_->domain().actions[ga.schema].name;
     std::string agent = ga.args.empty() ? "" : task_->object_name(ga.args[0]);
+    if (profile_.default_cost < 0) {
+      const bool scaled = agent == profile_.scaled_agent && name != profile_.unscaled_action;
+      action_cost_[a] = scaled ? ga.cost * profile_.agent_factor : ga.cost;
+      continue;
+    }
     action_cost_[a] = profile_.cost(agent, name);
   }
 }

@@ -25,8 +25,24 @@ struct CostProfile {
   std::string name;                                         // e.g. "C1"
   std::map<std::pair<std::string, std::string>, double> costs;  // (agent, action) -> cost
   double default_cost = 1.0;                                // anything not listed
+  // Every action of `scaled_agent` except `unscaled_action` costs
+  // `agent_factor` times what the rules above say: the twin of a profile in
+  // which the principal plans as if the assistant did little (alone_twin).
+  std::string scaled_agent;
+  std::string unscaled_action;
+  double agent_factor = 1.0;
+  // The index, in its profile set, of the profile this one is the alone twin
+  // of (-1: none). The assistant values such hypotheses with that profile:
+  // the twin models how the principal chooses, not what help costs.
+  int twin_of = -1;
   double cost(const std::string& agent, const std::string& action) const;
 };
+
+// The alone twin of profile `base` (at index `base_index` of its set): named
+// "<name>-alone", with every action of `assistant` but its no-op `noop`
+// costing `factor` times as much.
+CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
+                       const std::string& noop, double factor);
 
 // Unit costs for every action (domains whose pack names no cost rules).
 CostProfile unit_profile();

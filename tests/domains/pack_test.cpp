@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "language/commands/term.hpp"
+#include "model/spec.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
 
@@ -375,6 +376,46 @@ TEST(PackFile, AFolderPackIsFoundAndDrivesGoalsOptionsAndCandidates) {
   EXPECT_EQ(pack->default_profiles().front().name, "default");
   EXPECT_EQ(pack->default_admissible_heuristic(), "lmcut");
   EXPECT_NE(pack->describe_state(*task, task->initial_state()).find("(at apple)"), std::string::npos);
+}
+
+// Every declared profile gets an alone twin: the same costs but the
+// assistant's actions, except its no-op, inference.alone_cost_factor times
+// dearer; the twin names its base. 0 turns the twins off; the paper packs do.
+TEST(PackFile, EveryProfileHasAnAloneTwinWhoseAssistantCostsMore) {
+  Pantry p;
+  std::ofstream(p.dir / "pack.json") << kPantryPack;
+  PackPtr pack = find_pack(*p.domain, p.dir.string());
+  auto task = data::ground_problem(*pack, p.domain, (p.dir / "p1.pddl").string());
+  const ProfileSet set = pack->profiles_for("");
+  ASSERT_EQ(set.profiles.size(), 2u);
+  EXPECT_EQ(set.true_index, 0);
+  EXPECT_EQ(set.profiles[0].name, "default");
+  EXPECT_EQ(set.profiles[0].twin_of, -1);
+  EXPECT_EQ(set.profiles[1].name, "default-alone");
+  EXPECT_EQ(set.profiles[1].twin_of, 0);
+  const model::Specification base(task, "(has cook apple)", set.profiles[0]);
+  const model::Specification alone(task, "(has cook apple)", set.profiles[1]);
+  auto id = [&](const std::string& a) {
+    for (pddl::ActionId i = 0; i < task->num_actions(); ++i)
+      if (task->action_name(i) == a) return i;
+    ADD_FAILURE() << "no action " << a;
+    return pddl::ActionId{0};
+  };
+  EXPECT_DOUBLE_EQ(base.cost(id("(take helper apple)")), 1.0);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(take helper apple)")), 4.0);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(wait helper)")), 0.6);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(take cook apple)")), 1.0);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(wait cook)")), 0.6);
+  // The paper packs keep their declared profiles only.
+  EXPECT_EQ(builtin_pack("doors-keys-gems")->profiles_for("keys").profiles.size(), 2u);
+  EXPECT_EQ(builtin_pack("virtual-home")->profiles_for("").profiles.size(), 1u);
+  EXPECT_EQ(parse_pack_spec(R"j({"domain": "k", "inference": {"alone_cost_factor": 0}})j", "t/pack.json")
+                .inference.alone_cost_factor,
+            0.0);
+  EXPECT_NE(error_of(R"j({"domain": "k", "inference": {"alone_cost_factor": 0.5}})j").find("inference.alone_cost_factor"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "inference": {"alone_cost_factor": "big"}})j").find("inference.alone_cost_factor"),
+            std::string::npos);
 }
 
 // Where an action leaves its focal object comes from its effects: the garden's

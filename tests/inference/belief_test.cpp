@@ -261,11 +261,13 @@ TEST(UtteranceEvidence, CommandsStateWhereAPutLeavesItsItem) {
     if (!step.utterances.empty()) said = &step.utterances.front();
   ASSERT_NE(said, nullptr);
   std::map<std::string, std::string> destination;  // goal -> where its best put command leaves the item
-  for (size_t h = 0; h < said->hypotheses.size(); ++h)
+  for (size_t h = 0; h < said->hypotheses.size(); ++h) {
+    const std::string& goal = run.goals[static_cast<size_t>(run.belief->hypotheses()[h].goal)];
     for (const CommandScore& c : said->hypotheses[h].commands)
-      if (const auto at = c.command.find("(to ?"); at != std::string::npos && !destination.count(run.goals[h]))
-        destination[run.goals[h]] = c.command.substr(c.command.find(' ', at + 4) + 1,
+      if (const auto at = c.command.find("(to ?"); at != std::string::npos && !destination.count(goal))
+        destination[goal] = c.command.substr(c.command.find(' ', at + 4) + 1,
                                                      c.command.find(')', at) - c.command.find(' ', at + 4) - 1);
+  }
   EXPECT_EQ(destination["plant-tulips"], "border");
   EXPECT_EQ(destination["pot-tulips"], "patio");
   std::map<std::string, double> p;
@@ -273,6 +275,59 @@ TEST(UtteranceEvidence, CommandsStateWhereAPutLeavesItsItem) {
   for (size_t g = 0; g < run.goals.size(); ++g) p[run.goals[g]] = post.goals[g];
   EXPECT_GT(p["plant-tulips"], 2 * p["pot-tulips"]);
   EXPECT_GT(p["plant-roses"], 2 * p["pot-roses"]);
+}
+
+// The lab's 5.2: the principal fetches the culture and the enzyme of a
+// digestion from the fridge the robot stands at, which the best joint plan
+// would have left to the robot. Read as a cooperative planner that is evidence
+// against the digestion; the alone twin of the default profile explains it.
+TEST(AloneTwins, FetchingWhatTheAssistantCouldHaveFetchedPointsToTheGoal) {
+  auto lm = language::make_language_model("embedded");
+  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/lab");
+  const InferenceRun run = run_inference(ds, ds.plan("5.2.digestion"), *lm);
+  ASSERT_EQ(run.profiles, (std::vector<std::string>{"default", "default-alone"}));
+  EXPECT_EQ(run.true_profile, 0);
+  const Posterior& actions = run.final_posterior(Modality::ActionOnly);
+  EXPECT_EQ(std::max_element(actions.goals.begin(), actions.goals.end()) - actions.goals.begin(), run.true_goal);
+  EXPECT_GT(actions.goals[static_cast<size_t>(run.true_goal)], 0.5);
+  double base = 0, twin = 0;
+  for (size_t h = 0; h < run.belief->hypotheses().size(); ++h) {
+    const Hypothesis& hyp = run.belief->hypotheses()[h];
+    if (hyp.goal != run.true_goal) continue;
+    (hyp.profile == 0 ? base : twin) += actions.hypotheses[h];
+  }
+  EXPECT_GT(twin, 10 * base);
+}
+
+// A twin models how the principal acts, not what they would say: its words
+// are scored against its base's joint plans, so "can you get the rest?" is
+// a request for the same help under both.
+TEST(AloneTwins, ATwinSpeaksAsItsBase) {
+  auto lm = language::make_language_model("embedded");
+  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/lab");
+  const InferenceRun run = run_inference(ds, ds.plan("5.2.digestion"), *lm);
+  const UtteranceRecord* said = nullptr;
+  for (const StepRecord& step : run.steps)
+    if (!step.utterances.empty()) said = &step.utterances.front();
+  ASSERT_NE(said, nullptr);
+  const auto& hyps = run.belief->hypotheses();
+  const size_t profiles = run.profiles.size();
+  ASSERT_EQ(said->hypotheses.size(), hyps.size());
+  for (size_t h = 0; h < hyps.size(); ++h) {
+    if (hyps[h].profile == 0) continue;
+    const size_t b = static_cast<size_t>(hyps[h].goal) * profiles;
+    ASSERT_EQ(hyps[b].profile, 0);
+    EXPECT_DOUBLE_EQ(said->hypotheses[h].log_likelihood, said->hypotheses[b].log_likelihood);
+    ASSERT_EQ(said->hypotheses[h].commands.size(), said->hypotheses[b].commands.size());
+    for (size_t c = 0; c < said->hypotheses[h].commands.size(); ++c)
+      EXPECT_EQ(said->hypotheses[h].commands[c].command, said->hypotheses[b].commands[c].command);
+  }
+  // The words ask the robot for the pipette under the digestion's joint plans.
+  const size_t d = static_cast<size_t>(run.true_goal) * profiles;
+  const auto& cs = said->hypotheses[d].commands;
+  ASSERT_FALSE(cs.empty());
+  const auto top = std::max_element(cs.begin(), cs.end(), [](auto& a, auto& b) { return a.posterior < b.posterior; });
+  EXPECT_NE(top->command.find("pipette"), std::string::npos) << top->command;
 }
 
 }  // namespace
