@@ -147,7 +147,10 @@ struct InferenceSettings {
   std::string heuristic = "hff";
   bool search = true;              // false: V = -h_g with no search (VH)
   double temperature_shape = 0.5;  // inverse-gamma prior on the Boltzmann temperature
-  double temperature_scale = 0.5;
+  // Fitted with the alone twins on the dev halves (docs/decisions.md, "A
+  // principal who may plan alone"): 0.25, the most tolerant of the scales
+  // within 0.01 of the best log score.
+  double temperature_scale = 0.25;
   RolloutSettings rollout;
   // The weight ε of the utterance model's noise: P(u | h) is read as
   // (1 - ε) P(u | h) + ε B(u), where B(u) is the mean of P(u | h') over the
