@@ -187,8 +187,18 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
       if (std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
     }
   if (which.empty()) return model::unit_profile();
+  // "<name>-alone": the alone twin of a profile (its base is linked by
+  // model::link_alone_twins when both are in one set).
+  const std::string suffix = "-alone";
+  if (spec_.inference.alone_cost_factor > 0 && which.size() > suffix.size() &&
+      which.compare(which.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    const model::CostProfile base = cost_profile(which.substr(0, which.size() - suffix.size()));
+    return model::alone_twin(base, -1, spec_.roles.assistant, spec_.roles.noop_action,
+                             spec_.inference.alone_cost_factor);
+  }
   std::string known = spec_.cost_profiles.empty() ? "unit, task, default" : "unit, task";
   for (const auto& n : names) known += ", " + n;
+  if (spec_.inference.alone_cost_factor > 0) known += " (each also as <name>-alone)";
   throw InputError("--costs '" + which + "' is not a cost profile of " + spec_.name + " (known: " + known + ")");
 }
 

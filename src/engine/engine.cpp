@@ -302,6 +302,7 @@ struct Engine::Impl {
     if (!options.cost_profiles.empty()) {
       problem.profiles.clear();
       for (const auto& n : options.cost_profiles) problem.profiles.push_back(problem.pack->cost_profile(n));
+      model::link_alone_twins(problem.profiles);
     }
     if (problem.goals.empty()) throw InputError("problem '" + problem.problem + "' has no candidate goal");
     for (const auto& g : problem.goals) goal_labels.push_back(g.label);

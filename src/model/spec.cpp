@@ -21,6 +21,15 @@ CostProfile alone_twin(const CostProfile& base, int base_index, const std::strin
   return p;
 }
 
+void link_alone_twins(std::vector<CostProfile>& profiles) {
+  for (CostProfile& twin : profiles) {
+    if (twin.scaled_agent.empty()) continue;
+    twin.twin_of = -1;
+    for (size_t b = 0; b < profiles.size(); ++b)
+      if (profiles[b].scaled_agent.empty() && profiles[b].name + "-alone" == twin.name) twin.twin_of = static_cast<int>(b);
+  }
+}
+
 CostProfile unit_profile() {
   CostProfile p;
   p.name = "unit";

@@ -43,6 +43,10 @@ struct CostProfile {
 // costing `factor` times as much.
 CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
                        const std::string& noop, double factor);
+// Points each twin of `profiles` ("<name>-alone") at its base when the base is
+// in the set too; a twin without its base keeps twin_of -1 (it speaks, and
+// the assistant values it, as itself).
+void link_alone_twins(std::vector<CostProfile>& profiles);
 
 // Unit costs for every action (domains whose pack names no cost rules).
 CostProfile unit_profile();

@@ -406,6 +406,15 @@ TEST(PackFile, EveryProfileHasAnAloneTwinWhoseAssistantCostsMore) {
   EXPECT_DOUBLE_EQ(alone.cost(id("(wait helper)")), 0.6);
   EXPECT_DOUBLE_EQ(alone.cost(id("(take cook apple)")), 1.0);
   EXPECT_DOUBLE_EQ(alone.cost(id("(wait cook)")), 0.6);
+  // Named, as --costs and a session's cost_profiles name them; a set of
+  // chosen names links each twin to its base.
+  std::vector<model::CostProfile> chosen{pack->cost_profile("default-alone"), pack->cost_profile("default")};
+  EXPECT_EQ(chosen[0].twin_of, -1);
+  model::link_alone_twins(chosen);
+  EXPECT_EQ(chosen[0].twin_of, 1);
+  EXPECT_EQ(chosen[1].twin_of, -1);
+  EXPECT_DOUBLE_EQ(model::Specification(task, "(has cook apple)", chosen[0]).cost(id("(take helper apple)")), 4.0);
+  EXPECT_THROW(pack->cost_profile("C9-alone"), InputError);
   // The paper packs keep their declared profiles only.
   EXPECT_EQ(builtin_pack("doors-keys-gems")->profiles_for("keys").profiles.size(), 2u);
   EXPECT_EQ(builtin_pack("virtual-home")->profiles_for("").profiles.size(), 1u);
