@@ -1,5 +1,7 @@
 #include "engine/hypotheses.hpp"
 
+#include <stdexcept>
+
 #include "assist/request.hpp"
 
 namespace clips::engine {
@@ -18,12 +20,12 @@ std::vector<double> assistant_weights(const inference::Belief& belief, const inf
   for (size_t h = 0; h < w.size(); ++h) {
     const int base = profiles.at(static_cast<size_t>(hyps[h].profile)).twin_of;
     if (base < 0) continue;
-    for (size_t k = 0; k < hyps.size(); ++k)
-      if (hyps[k].goal == hyps[h].goal && hyps[k].profile == base) {
-        w[k] += w[h];
-        w[h] = 0;
-        break;
-      }
+    // The belief enumerates goal-major (goal g, profile c at g * |profiles| + c).
+    const size_t k = static_cast<size_t>(hyps[h].goal) * profiles.size() + static_cast<size_t>(base);
+    if (k >= hyps.size() || hyps[k].goal != hyps[h].goal || hyps[k].profile != base)
+      throw std::logic_error("assistant_weights: the belief's hypotheses are not goal-major");
+    w[k] += w[h];
+    w[h] = 0;
   }
   return w;
 }
