@@ -236,9 +236,27 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       for (size_t k = 0; k < live.size(); ++k) v += live[k]->weight * std::abs(floored[k][i] - floored[k][best]);
       return live_weight > 0 ? v / live_weight : 0.0;
     };
+    // Doing what was asked may cost the assistant its own effort: where the
+    // cheapest plan leaves a requested fetch to the principal, acting
+    // instead of waiting is worse by the gap between the assistant's
+    // cheapest action and its no-op at every step. Actions behind by at
+    // most that gap more ("widened") are candidates too, but win only by
+    // carrying out more of the request, never by nearness alone.
+    const double wait_cost = top->policy->spec().cost(assistant_wait);
+    double cheapest_act = kInf;
+    for (ActionId a : acts)
+      if (a != assistant_wait) cheapest_act = std::min(cheapest_act, top->policy->spec().cost(a));
+    const double effort = cheapest_act < kInf ? std::max(0.0, cheapest_act - wait_cost) : 0.0;
     std::vector<size_t> tied;
-    for (size_t i = 0; i < acts.size(); ++i)
-      if (qa[i] >= qa[best] - tol && spread(i) <= tol) tied.push_back(i);
+    std::vector<char> widened(acts.size(), 0);
+    for (size_t i = 0; i < acts.size(); ++i) {
+      if (qa[i] >= qa[best] - tol && spread(i) <= tol) {
+        tied.push_back(i);
+      } else if (effort > 0 && qa[i] >= qa[best] - tol - effort && spread(i) <= tol + effort) {
+        tied.push_back(i);
+        widened[i] = 1;
+      }
+    }
     if (tied.size() > 1) {
       const RequestMatcher match(setup);
       // Request scores closer than this are noise of the sampled
@@ -293,9 +311,12 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       }
       auto better = [&](size_t i, size_t j) {
         if (d.request_scores[i] > d.request_scores[j] + kScoreMargin) return true;
+        if (widened[i]) return false;
         return d.request_scores[i] > d.request_scores[j] - kScoreMargin && distance[i] < distance[j] - 1e-9;
       };
       size_t pick = tied.front();
+      for (size_t i : tied)
+        if (!widened[i]) { pick = i; break; }
       for (size_t i : tied)
         if (better(i, pick)) pick = i;
       const size_t chosen = static_cast<size_t>(std::find(acts.begin(), acts.end(), d.action) - acts.begin());

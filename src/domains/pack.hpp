@@ -174,6 +174,14 @@ struct InferenceSettings {
   // values a twin's hypotheses with its base profile. 0: no twins (the paper
   // packs). docs/decisions.md, "A principal who may plan alone".
   double alone_cost_factor = 4.0;
+  // The share of the speaker model's plans that come from a delegating
+  // principal: one whose joint plan has the assistant do all it usefully
+  // can (its actions cost just above its no-op, roles.noop_cost + 0.1 times
+  // the base profile's cost), so "could you fetch the plant?" is a likely
+  // request where the cheapest joint plan has the principal fetch it
+  // themselves. 0: the cooperative plans alone (the paper packs).
+  // docs/decisions.md, "A speaker who would hand over any part".
+  double speaker_delegates = 0.15;
 };
 
 struct LiteralSettings {

@@ -256,7 +256,11 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   if (doc.contains("inference")) {
     const json& in = doc["inference"];
     f.only(in, "inference", {"heuristic", "search", "temperature_prior", "rollout", "utterance_noise", "utterance_exponent",
-                          "alone_cost_factor", "comment"});
+                          "alone_cost_factor", "speaker_delegates", "comment"});
+    if (in.contains("speaker_delegates")) {
+      s.inference.speaker_delegates = f.number(in["speaker_delegates"], "inference.speaker_delegates", 0, false);
+      if (s.inference.speaker_delegates >= 1) f.fail("inference.speaker_delegates", "expected a number below 1");
+    }
     if (in.contains("alone_cost_factor")) {
       s.inference.alone_cost_factor = f.number(in["alone_cost_factor"], "inference.alone_cost_factor", 0, false);
       if (s.inference.alone_cost_factor != 0 &&

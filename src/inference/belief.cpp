@@ -95,6 +95,24 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
     const int base = profiles_[static_cast<size_t>(h.profile)].twin_of;
     speaker_of_.push_back(h.goal * static_cast<int>(profiles_.size()) + (base >= 0 ? base : h.profile));
   }
+  // A delegating speaker per hypothesis that speaks for itself (twins speak
+  // as their base): the assistant's actions cost just above its no-op.
+  const double delegates = settings.speaker_delegates;
+  if (search_ && delegates > 0 && utterance_model_->plans_rule() == domains::RolloutSettings::Plans::Tied) {
+    delegate_share_ = delegates;
+    const domains::Roles& roles = pack_->spec().roles;
+    const double factor = std::min(1.0, roles.noop_cost + 0.1);
+    delegate_of_.assign(hyps_.size(), -1);
+    for (size_t h = 0; h < hyps_.size(); ++h) {
+      if (speaker_of_[h] != static_cast<int>(h)) continue;
+      const model::CostProfile& base = profiles_[static_cast<size_t>(hyps_[h].profile)];
+      auto spec = std::make_shared<model::Specification>(
+          task_, hyps_[h].spec->goal_text(),
+          model::scaled_assistant(base, base.name + "-delegating", roles.assistant, roles.noop_action, factor));
+      delegate_of_[h] = static_cast<int>(delegates_.size());
+      delegates_.emplace_back(spec, pack_->make_heuristic(hname, *task_), graph_);
+    }
+  }
   const double n = static_cast<double>(hyps_.size());
   log_prior_.assign(hyps_.size(), -std::log(n));
   action_ll_.assign(hyps_.size(), 0.0);
@@ -245,6 +263,13 @@ std::vector<SpeakerPlans> Belief::speaker_plans(const pddl::State& s, const std:
   auto one = [&](size_t i) {
     search::Policy& p = policies_[static_cast<size_t>(speakers[i])];
     plans[i] = tied ? utterance_model_->speaker_plans(p, s, options_.refine) : utterance_model_->single_plan(p, s);
+    if (!tied || delegate_of_.empty()) return;
+    search::Policy& d = delegates_[static_cast<size_t>(delegate_of_[static_cast<size_t>(speakers[i])])];
+    for (SpeakerPlan& plan : plans[i]) plan.weight *= 1 - delegate_share_;
+    for (SpeakerPlan& plan : utterance_model_->speaker_plans(d, s, options_.refine)) {
+      plan.weight *= delegate_share_;
+      plans[i].push_back(std::move(plan));
+    }
   };
   if (tied && pool_ && speakers.size() > 1) {
     pool_->run(speakers.size(), one);

@@ -383,6 +383,12 @@ class Belief {
   std::shared_ptr<const UtteranceModel> utterance_model_;
   std::vector<Hypothesis> hyps_;
   std::vector<int> speaker_of_;  // per hypothesis, whose plans its words come from (itself or its twin's base)
+  // The delegating speakers (domains::InferenceSettings::speaker_delegates):
+  // policies searched only to find what such a speaker would ask for, and
+  // per hypothesis the index of its own (-1: it speaks as another).
+  std::vector<search::Policy> delegates_;
+  std::vector<int> delegate_of_;
+  double delegate_share_ = 0;
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)
   std::vector<search::Policy> policies_;
   std::vector<TemperatureBelief> temps_;

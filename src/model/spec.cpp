@@ -10,13 +10,20 @@ double CostProfile::cost(const std::string& agent, const std::string& action) co
   return agent == scaled_agent && action != unscaled_action ? c * agent_factor : c;
 }
 
-CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
-                       const std::string& noop, double factor) {
+CostProfile scaled_assistant(const CostProfile& base, std::string name, const std::string& assistant,
+                             const std::string& noop, double factor) {
   CostProfile p = base;
-  p.name = base.name + "-alone";
+  p.name = std::move(name);
   p.scaled_agent = assistant;
   p.unscaled_action = noop;
   p.agent_factor = factor;
+  p.twin_of = -1;
+  return p;
+}
+
+CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
+                       const std::string& noop, double factor) {
+  CostProfile p = scaled_assistant(base, base.name + "-alone", assistant, noop, factor);
   p.twin_of = base_index;
   return p;
 }

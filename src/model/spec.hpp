@@ -43,6 +43,10 @@ struct CostProfile {
 // costing `factor` times as much.
 CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
                        const std::string& noop, double factor);
+// A copy of `base` named `name` in which every action of `assistant` but its
+// no-op `noop` costs `factor` times as much (not a twin: twin_of -1).
+CostProfile scaled_assistant(const CostProfile& base, std::string name, const std::string& assistant,
+                             const std::string& noop, double factor);
 // Points each twin of `profiles` ("<name>-alone") at its base when the base is
 // in the set too; a twin without its base keeps twin_of -1 (it speaks, and
 // the assistant values it, as itself).

@@ -44,9 +44,10 @@ struct Garden {
   }
   // The bot's turn after the gardener idled. Unit costs: moving to either
   // building or staying put are equally good in Q_MDP's values here.
-  std::string decide(assist::AssistRule rule, std::vector<std::string> asked, std::vector<std::string> self) {
-    auto spec = std::make_shared<model::Specification>(task, "(and (planted tomato1) (planted basil1))",
-                                                       model::unit_profile());
+  std::string decide(assist::AssistRule rule, std::vector<std::string> asked, std::vector<std::string> self,
+                     const std::string& goal = "(and (planted tomato1) (planted basil1))",
+                     const model::CostProfile& costs = model::unit_profile()) {
+    auto spec = std::make_shared<model::Specification>(task, goal, costs);
     auto policy = std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
     auto request = std::make_shared<assist::Request>();
     assist::RequestedCommand c;
@@ -87,6 +88,21 @@ TEST(RequestRule, WhatThePrincipalWillDoThemselvesIsLeftAlone) {
             "(move bot bed barn)");
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot tomato1 shed)"}, {"(take gardener basil1 barn)"}),
             "(move bot bed shed)");
+}
+
+// Only the tomato is wanted and idling costs 0.6: the cheapest joint plan
+// has the gardener fetch it while the bot idles, so walking to the shed is
+// worse than idling by the bot's own extra effort. Asked to fetch it, the bot
+// spends that effort; unasked, or under the paper's rule, it idles.
+TEST(RequestRule, TheAssistantSpendsItsOwnEffortOnWhatWasAsked) {
+  Garden g;
+  model::CostProfile costs = model::unit_profile();
+  costs.costs[{"gardener", "idle"}] = 0.6;
+  costs.costs[{"bot", "idle"}] = 0.6;
+  const std::string goal = "(planted tomato1)";
+  EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot tomato1 shed)"}, {}, goal, costs), "(move bot bed shed)");
+  EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs), "(idle bot)");
+  EXPECT_EQ(g.decide(assist::AssistRule::Paper, {"(take bot tomato1 shed)"}, {}, goal, costs), "(idle bot)");
 }
 
 TEST(RequestRule, ThePapersRuleIgnoresTheRequestInATie) {
