@@ -75,6 +75,13 @@ void print_explanation(const inference::InferenceRun& run, int top) {
       for (size_t h = 0; h < u.hypotheses.size(); ++h) {
         const auto& hu = u.hypotheses[h];
         if (std::isnan(hu.log_likelihood)) continue;  // particle inference: no particle held h
+        // An alone twin speaks as its base: say so instead of repeating its commands.
+        const auto& hy = run.belief->hypotheses().at(h);
+        if (const int base = run.belief->profiles().at(static_cast<size_t>(hy.profile)).twin_of; base >= 0) {
+          fmt::print("  {:<14} {:>9.3f}  (speaks as {}/{})\n", hypothesis_label(run, h), hu.log_likelihood,
+                     run.goals.at(static_cast<size_t>(hy.goal)), run.profiles.at(static_cast<size_t>(base)));
+          continue;
+        }
         fmt::print("  {:<14} {:>9.3f}  ({} command{})\n", hypothesis_label(run, h), hu.log_likelihood,
                    hu.commands.size(), hu.commands.size() == 1 ? "" : "s");
         if (hu.commands.empty()) fmt::print("      (no command: scored with the empty prompt)\n");

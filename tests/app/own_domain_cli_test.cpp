@@ -178,5 +178,16 @@ TEST(CliOwnDomain, AssistExplainShowsTheTies) {
   EXPECT_FALSE(j["ties"].empty());
 }
 
+// `clips infer --explain` lists each hypothesis' commands once: an alone
+// twin says whose words it speaks instead of repeating its base's list.
+TEST(CliOwnDomain, InferExplainFoldsTheAloneTwins) {
+  const std::string ws = std::string(CLIPS_SOURCE_DIR) + "/data/datasets/workshop";
+  auto r = run(clips_binary() + " infer --dataset " + ws + " --plan 3.3.birdhouse --explain --top 1");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("birdhouse/default-alone +-?[0-9.]+  \\(speaks as birdhouse/default\\)")))
+      << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("birdhouse/default +-?[0-9.]+  \\([0-9]+ commands?\\)"))) << r.out;
+}
+
 }  // namespace
 }  // namespace clips::eval
