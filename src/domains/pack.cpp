@@ -189,7 +189,7 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
   if (which.empty()) return model::unit_profile();
   // "<name>-alone": the alone twin of a profile (its base is linked by
   // model::link_alone_twins when both are in one set).
-  const std::string suffix = "-alone";
+  const std::string suffix = model::kAloneSuffix;
   if (spec_.inference.alone_cost_factor > 0 && which.size() > suffix.size() &&
       which.compare(which.size() - suffix.size(), suffix.size(), suffix) == 0) {
     const model::CostProfile base = cost_profile(which.substr(0, which.size() - suffix.size()));

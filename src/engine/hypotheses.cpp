@@ -1,7 +1,5 @@
 #include "engine/hypotheses.hpp"
 
-#include <stdexcept>
-
 #include "assist/request.hpp"
 
 namespace clips::engine {
@@ -15,16 +13,10 @@ std::vector<std::shared_ptr<const assist::Request>> requests_for(const pddl::Tas
 
 std::vector<double> assistant_weights(const inference::Belief& belief, const inference::Posterior& post) {
   std::vector<double> w = post.hypotheses;
-  const auto& hyps = belief.hypotheses();
-  const auto& profiles = belief.profiles();
   for (size_t h = 0; h < w.size(); ++h) {
-    const int base = profiles.at(static_cast<size_t>(hyps[h].profile)).twin_of;
-    if (base < 0) continue;
-    // The belief enumerates goal-major (goal g, profile c at g * |profiles| + c).
-    const size_t k = static_cast<size_t>(hyps[h].goal) * profiles.size() + static_cast<size_t>(base);
-    if (k >= hyps.size() || hyps[k].goal != hyps[h].goal || hyps[k].profile != base)
-      throw std::logic_error("assistant_weights: the belief's hypotheses are not goal-major");
-    w[k] += w[h];
+    const size_t base = static_cast<size_t>(belief.base_of(h));
+    if (base == h) continue;
+    w[base] += w[h];
     w[h] = 0;
   }
   return w;

@@ -93,7 +93,8 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
     }
   for (const Hypothesis& h : hyps_) {
     const int base = profiles_[static_cast<size_t>(h.profile)].twin_of;
-    speaker_of_.push_back(h.goal * static_cast<int>(profiles_.size()) + (base >= 0 ? base : h.profile));
+    // Hypotheses are enumerated goal-major: (g, c) at g * |profiles| + c.
+    base_of_.push_back(h.goal * static_cast<int>(profiles_.size()) + (base >= 0 ? base : h.profile));
   }
   // A delegating speaker per hypothesis that speaks for itself (twins speak
   // as their base): the assistant's actions cost just above its no-op.
@@ -104,7 +105,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
     const double factor = std::min(1.0, roles.noop_cost + 0.1);
     delegate_of_.assign(hyps_.size(), -1);
     for (size_t h = 0; h < hyps_.size(); ++h) {
-      if (speaker_of_[h] != static_cast<int>(h)) continue;
+      if (base_of_[h] != static_cast<int>(h)) continue;
       const model::CostProfile& base = profiles_[static_cast<size_t>(hyps_[h].profile)];
       auto spec = std::make_shared<model::Specification>(
           task_, hyps_[h].spec->goal_text(),
@@ -253,7 +254,7 @@ std::vector<SpeakerPlans> Belief::speaker_plans(const pddl::State& s, const std:
   std::vector<int> speakers;
   std::vector<size_t> slot(hs.size());
   for (size_t i = 0; i < hs.size(); ++i) {
-    const int sp = speaker_of_[static_cast<size_t>(hs[i])];
+    const int sp = base_of_[static_cast<size_t>(hs[i])];
     auto it = std::find(speakers.begin(), speakers.end(), sp);
     slot[i] = static_cast<size_t>(it - speakers.begin());
     if (it == speakers.end()) speakers.push_back(sp);

@@ -250,6 +250,10 @@ class Belief {
   // π_h after the last step; search::Policy is a copyable value for assistance
   // (copies share the heuristic object, which each refine re-prepares).
   const std::vector<search::Policy>& policies() const { return policies_; }
+  // The hypothesis of h's goal under the base profile of h's alone twin
+  // profile (model::CostProfile::twin_of), or h itself: whose plans h's words
+  // come from, and whose costs the assistant values h with.
+  int base_of(size_t h) const { return base_of_[h]; }
   // Lookahead searches so far that ended at their node or time budget (see
   // search::RefineStats): non-zero means the posterior depends on the budget.
   size_t searches_stopped_by_budget() const;
@@ -382,7 +386,7 @@ class Belief {
   double utterance_evidence(double ll, double log_background) const;
   std::shared_ptr<const UtteranceModel> utterance_model_;
   std::vector<Hypothesis> hyps_;
-  std::vector<int> speaker_of_;  // per hypothesis, whose plans its words come from (itself or its twin's base)
+  std::vector<int> base_of_;  // per hypothesis, base_of(h)
   // The delegating speakers (domains::InferenceSettings::speaker_delegates):
   // policies searched only to find what such a speaker would ask for, and
   // per hypothesis the index of its own (-1: it speaks as another).

@@ -23,7 +23,7 @@ CostProfile scaled_assistant(const CostProfile& base, std::string name, const st
 
 CostProfile alone_twin(const CostProfile& base, int base_index, const std::string& assistant,
                        const std::string& noop, double factor) {
-  CostProfile p = scaled_assistant(base, base.name + "-alone", assistant, noop, factor);
+  CostProfile p = scaled_assistant(base, base.name + kAloneSuffix, assistant, noop, factor);
   p.twin_of = base_index;
   return p;
 }
@@ -33,7 +33,7 @@ void link_alone_twins(std::vector<CostProfile>& profiles) {
     if (twin.scaled_agent.empty()) continue;
     twin.twin_of = -1;
     for (size_t b = 0; b < profiles.size(); ++b)
-      if (profiles[b].scaled_agent.empty() && profiles[b].name + "-alone" == twin.name) twin.twin_of = static_cast<int>(b);
+      if (profiles[b].scaled_agent.empty() && profiles[b].name + kAloneSuffix == twin.name) twin.twin_of = static_cast<int>(b);
   }
 }
 

@@ -38,6 +38,9 @@ struct CostProfile {
   double cost(const std::string& agent, const std::string& action) const;
 };
 
+// What an alone twin's name adds to its base's.
+inline constexpr const char* kAloneSuffix = "-alone";
+
 // The alone twin of profile `base` (at index `base_index` of its set): named
 // "<name>-alone", with every action of `assistant` but its no-op `noop`
 // costing `factor` times as much.

@@ -249,6 +249,14 @@ TEST(UtteranceEvidence, NoiseKeepsEveryGoalAboveItsShareOfTheMixture) {
   for (double p : robust) EXPECT_GE(p, noise / n - 1e-12);
 }
 
+// The record of the last step that heard an utterance (null: none did).
+const UtteranceRecord* last_utterance(const InferenceRun& run) {
+  const UtteranceRecord* said = nullptr;
+  for (const StepRecord& step : run.steps)
+    if (!step.utterances.empty()) said = &step.utterances.front();
+  return said;
+}
+
 // The garden's put leaves its item at a place: the speaker model's commands
 // say where, and "to the border" then favours the jobs done at the border
 // over the same items potted on the patio.
@@ -256,9 +264,7 @@ TEST(UtteranceEvidence, CommandsStateWhereAPutLeavesItsItem) {
   auto lm = language::make_language_model("embedded");
   const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/garden");
   const InferenceRun run = run_inference(ds, ds.plan("8.2.plant-tulips"), *lm);
-  const UtteranceRecord* said = nullptr;
-  for (const StepRecord& step : run.steps)
-    if (!step.utterances.empty()) said = &step.utterances.front();
+  const UtteranceRecord* said = last_utterance(run);
   ASSERT_NE(said, nullptr);
   std::map<std::string, std::string> destination;  // goal -> where its best put command leaves the item
   for (size_t h = 0; h < said->hypotheses.size(); ++h) {
@@ -306,9 +312,7 @@ TEST(AloneTwins, ATwinSpeaksAsItsBase) {
   auto lm = language::make_language_model("embedded");
   const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/lab");
   const InferenceRun run = run_inference(ds, ds.plan("5.2.digestion"), *lm);
-  const UtteranceRecord* said = nullptr;
-  for (const StepRecord& step : run.steps)
-    if (!step.utterances.empty()) said = &step.utterances.front();
+  const UtteranceRecord* said = last_utterance(run);
   ASSERT_NE(said, nullptr);
   const auto& hyps = run.belief->hypotheses();
   const size_t profiles = run.profiles.size();
@@ -317,6 +321,7 @@ TEST(AloneTwins, ATwinSpeaksAsItsBase) {
     if (hyps[h].profile == 0) continue;
     const size_t b = static_cast<size_t>(hyps[h].goal) * profiles;
     ASSERT_EQ(hyps[b].profile, 0);
+    EXPECT_EQ(run.belief->base_of(h), static_cast<int>(b));
     EXPECT_DOUBLE_EQ(said->hypotheses[h].log_likelihood, said->hypotheses[b].log_likelihood);
     ASSERT_EQ(said->hypotheses[h].commands.size(), said->hypotheses[b].commands.size());
     for (size_t c = 0; c < said->hypotheses[h].commands.size(); ++c)
@@ -342,9 +347,7 @@ TEST(DelegatingSpeaker, ARequestForWhatTheCheapestPlanLeavesToThePrincipal) {
   auto lm = language::make_dataset_language_model("embedded", {}, ds);
   ASSERT_GT(ds.pack().spec().inference.speaker_delegates, 0);
   const InferenceRun run = run_inference(ds, ds.plan("4.1.feed-roses"), *lm);
-  const UtteranceRecord* said = nullptr;
-  for (const StepRecord& step : run.steps)
-    if (!step.utterances.empty()) said = &step.utterances.front();
+  const UtteranceRecord* said = last_utterance(run);
   ASSERT_NE(said, nullptr);
   const size_t base = static_cast<size_t>(run.true_goal) * run.profiles.size();
   bool asks_for_hose = false;
