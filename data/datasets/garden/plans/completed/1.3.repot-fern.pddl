@@ -1,0 +1,8 @@
+(pickup robot pot1 rosebed)
+(move human patio shed)
+(move robot rosebed patio)
+(pickup human trowel1 shed)
+(put robot pot1 patio)
+(move human shed patio)
+(wait robot)
+(work human repot-fern fern1 pot1 trowel1 patio)

@@ -1,0 +1,8 @@
+(pickup robot shears2 shed)
+(move human patio rosebed)
+(move robot shed rosebed)
+(put human basket1 rosebed)
+(handover robot human shears2 rosebed)
+(put human twine1 rosebed)
+(wait robot)
+(work human prune-roses basket1 twine1 shears2 rosebed)

@@ -1,0 +1,8 @@
+(move robot vegpatch patio)
+(pickup human trowel1 greenhouse)
+(pickup robot tray1 patio)
+(put human seeds1 greenhouse)
+(move robot patio greenhouse)
+(wait human)
+(put robot tray1 greenhouse)
+(work human sow-seeds seeds1 tray1 trowel1 greenhouse)

@@ -1,0 +1,2 @@
+(pickup human sugar1 pantry1)
+; Would you mind opening the cupboard and getting the metal one out for me, please?

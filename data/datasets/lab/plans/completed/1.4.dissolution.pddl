@@ -1,0 +1,8 @@
+(open robot cabinet1)
+(pickup human beaker1 shelf1)
+(pickup robot acid2 cabinet1)
+(move human shelf1 bench1)
+(move robot cabinet1 bench1)
+(put human solvent1 bench1)
+(put robot acid2 bench1)
+(run human dissolution acid2 solvent1 beaker1 bench1)

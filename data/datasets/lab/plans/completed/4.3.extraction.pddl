@@ -1,0 +1,8 @@
+(open robot fridge1)
+(move human shelf1 hood1)
+(pickup robot culture1 fridge1)
+(wait human)
+(move robot fridge1 hood1)
+(wait human)
+(put robot culture1 hood1)
+(run human extraction solvent1 culture1 beaker1 hood1)

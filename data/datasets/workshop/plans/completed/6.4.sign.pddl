@@ -1,0 +1,8 @@
+(pickup robot screwdriver2 toolwall)
+(move human rack bench)
+(move robot toolwall bench)
+(putdown human panel2 bench)
+(handover robot human screwdriver2 bench)
+(putdown human bracket3 bench)
+(wait robot)
+(assemble human sign panel2 bracket3 screwdriver2 bench)

@@ -1,0 +1,2 @@
+(pickup human drill1 toolwall)
+; Chair time. You get the leg, I'll sort out the rest.
