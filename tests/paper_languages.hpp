@@ -41,6 +41,7 @@ inline LanguageConfig virtual_home_language() {
   c.max_qualifier_values_per_action_type = 2;
   c.variable_naming = VariableNaming::QualifierValue;
   c.printed_form = PrintedForm::QualifiedArgsOnly;
+  c.paper_speaker_actions = SpeakerActionRule::ExcludeAll;
   c.goal_atoms = {{"grab", {"(placed $2 table1)"}}};
   c.goal_variables = GoalVariables::LowercasedName;
   return c;

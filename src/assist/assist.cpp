@@ -166,7 +166,7 @@ struct RequestMatcher {
 // computed for a unanimous choice too only when `values_always` (the
 // simulated episodes do not read them).
 Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const std::vector<Hypothesis>& belief,
-                     const State& s, int t, bool values_always) {
+                     const State& s, int t, bool values_always, bool stalled) {
   const pddl::Task& task = *setup.task;
   std::vector<const Hypothesis*> live;
   const double cut = live_threshold(belief, setup.weight_threshold);
@@ -182,6 +182,10 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
     if (!b || (common && *common != *b)) all_same = false;
     if (b && !common) common = b;
   }
+  // After a round of waits the assistant's own wait is not a candidate
+  // (AssistSetup::restless_assistant), unless it is the only action.
+  const bool restless = setup.restless_assistant && stalled;
+  if (restless && common && *common == assistant_wait) all_same = false;
   Decision d;
   d.unanimous = all_same && common;
   const bool request_rule = setup.rule == AssistRule::Request && !setup.salient_args.empty() &&
@@ -209,10 +213,11 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       qa[i] += h->weight * q;
     }
   }
-  size_t best = 0;
-  for (size_t i = 1; i < acts.size(); ++i)
-    if (qa[i] > qa[best]) best = i;
   if (acts.empty()) throw InputError("no action is applicable in the assistance state");
+  auto excluded = [&](size_t i) { return restless && acts[i] == assistant_wait && acts.size() > 1; };
+  size_t best = excluded(0) ? 1 : 0;
+  for (size_t i = best + 1; i < acts.size(); ++i)
+    if (!excluded(i) && qa[i] > qa[best]) best = i;
   d.action = d.unanimous ? *common : acts[best];
   if (request_rule) {
     // Ties at the best value go to the action whose continuation (each
@@ -250,6 +255,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
     std::vector<size_t> tied;
     std::vector<char> widened(acts.size(), 0);
     for (size_t i = 0; i < acts.size(); ++i) {
+      if (excluded(i)) continue;
       if (qa[i] >= qa[best] - tol && spread(i) <= tol) {
         tied.push_back(i);
       } else if (effort > 0 && qa[i] >= qa[best] - tol - effort && spread(i) <= tol + effort) {
@@ -442,8 +448,8 @@ struct Episode {
     return a ? *a : wait_of_active(s_h);
   }
 
-  ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t) const {
-    const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false);
+  ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t, bool stalled) const {
+    const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false, stalled);
     if (!d.request_scores.empty()) tie_notes.push_back(explain_tie(*setup.task, d, t));
     return d.action;
   }
@@ -492,7 +498,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   bool solo = false;
   State s = setup.start;
   std::vector<bool> taken = ep.fresh_steps();
-  Episode::Patience patience;
+  Episode::Patience patience, assistant_patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     State s_h = s;
     const bool stuck = setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
@@ -509,7 +515,8 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
       a = ep.principal_action(truth, s_h, !solo && !stuck, taken, t - setup.observed_steps);
     } else {
       auto d0 = std::chrono::steady_clock::now();
-      a = ep.qmdp_decide(belief, s, t);
+      a = ep.qmdp_decide(belief, s, t, assistant_patience.stuck(s));
+      assistant_patience.last = s;
       r.decision_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
@@ -540,7 +547,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
   double coop = 0;
   State s = setup.start;
   std::vector<bool> taken = ep.fresh_steps();
-  Episode::Patience patience;
+  Episode::Patience patience, assistant_patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     if (setup.refine) truth.refine(s, setup.refine_options);
     ActionId a;
@@ -556,7 +563,8 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
         a = ep.principal_action(truth, s, true, taken, t - setup.observed_steps);
       }
     } else {
-      a = ep.qmdp_decide(belief.hypotheses(), s, t);
+      a = ep.qmdp_decide(belief.hypotheses(), s, t, assistant_patience.stuck(s));
+      assistant_patience.last = s;
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
     }
@@ -644,8 +652,9 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
   return mean;
 }
 
-Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t) {
-  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, /*values_always=*/true);
+Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,
+                       bool stalled) {
+  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, /*values_always=*/true, stalled);
 }
 
 Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s) {

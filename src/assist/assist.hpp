@@ -104,6 +104,11 @@ struct AssistSetup : model::TurnTaking {
   // believe in, and an assistant that waits for the principal, wait until the
   // horizon. Set with the request rule (the paper's simulations do not).
   bool impatient_principal = true;
+  // Its counterpart: the assistant does not answer a round in which both
+  // agents waited with another wait (it takes its best other action), since
+  // a principal who waits on the assistant and an assistant that waits on the
+  // principal never move again. Set with the request rule.
+  bool restless_assistant = true;
   // Actions whose expected value is within this share of the cheapest
   // candidate action's cost of the best are tied. Exact ties are common
   // wherever two plans cost the same; the tolerance also lets the assistant
@@ -188,7 +193,9 @@ double live_threshold(const std::vector<Hypothesis>& belief, double threshold);
 // setup.refine is cleared so the decision does not make them again.
 void refine_live(AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s,
                  const std::function<void()>& between = {});
-Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t);
+// `stalled`: the last round was both agents' no-ops (see restless_assistant).
+Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,
+                       bool stalled = false);
 // The salient-argument table of AssistSetup::salient_args for a command language.
 std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config);
 // pi-bar_MDP's action: the mode of the mixture of the hypotheses' greedy

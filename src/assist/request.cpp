@@ -48,6 +48,7 @@ void attach_requests(std::vector<Hypothesis>& hyps, const std::vector<std::share
 void set_request_rule(AssistSetup& setup, AssistRule rule, const commands::LanguageConfig& language) {
   setup.rule = rule;
   setup.impatient_principal = rule == AssistRule::Request;
+  setup.restless_assistant = rule == AssistRule::Request;
   setup.salient_args = salient_argument_table(*setup.task, language);
 }
 

@@ -46,7 +46,7 @@ struct Garden {
   // building or staying put are equally good in Q_MDP's values here.
   std::string decide(assist::AssistRule rule, std::vector<std::string> asked, std::vector<std::string> self,
                      const std::string& goal = "(and (planted tomato1) (planted basil1))",
-                     const model::CostProfile& costs = model::unit_profile()) {
+                     const model::CostProfile& costs = model::unit_profile(), bool stalled = false) {
     auto spec = std::make_shared<model::Specification>(task, goal, costs);
     auto policy = std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
     auto request = std::make_shared<assist::Request>();
@@ -67,7 +67,7 @@ struct Garden {
     setup.observed_steps = 1;
     setup.horizon = 30;
     assist::set_request_rule(setup, rule, dp.pack->language());
-    const assist::Decision d = assist::qmdp_decision(setup, belief, setup.start, 1);
+    const assist::Decision d = assist::qmdp_decision(setup, belief, setup.start, 1, stalled);
     EXPECT_TRUE(rule == assist::AssistRule::Paper || d.request_scores.size() == d.candidates.size());
     return task->action_name(d.action);
   }
@@ -103,6 +103,20 @@ TEST(RequestRule, TheAssistantSpendsItsOwnEffortOnWhatWasAsked) {
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot tomato1 shed)"}, {}, goal, costs), "(move bot bed shed)");
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs), "(idle bot)");
   EXPECT_EQ(g.decide(assist::AssistRule::Paper, {"(take bot tomato1 shed)"}, {}, goal, costs), "(idle bot)");
+}
+
+// The same bot, unasked, after a round in which both agents idled: idling
+// again would leave the two of them idling for ever, so it takes its best
+// other action. The paper's rule has no such exception.
+TEST(RequestRule, ARoundOfWaitsIsNotAnsweredWithAnotherWait) {
+  Garden g;
+  model::CostProfile costs = model::unit_profile();
+  costs.costs[{"gardener", "idle"}] = 0.6;
+  costs.costs[{"bot", "idle"}] = 0.6;
+  const std::string goal = "(planted tomato1)";
+  EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs, /*stalled=*/false), "(idle bot)");
+  EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs, /*stalled=*/true), "(move bot bed shed)");
+  EXPECT_EQ(g.decide(assist::AssistRule::Paper, {}, {}, goal, costs, /*stalled=*/true), "(idle bot)");
 }
 
 TEST(RequestRule, ThePapersRuleIgnoresTheRequestInATie) {

@@ -358,5 +358,24 @@ TEST(DelegatingSpeaker, ARequestForWhatTheCheapestPlanLeavesToThePrincipal) {
   EXPECT_GT(run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly));
 }
 
+// The kitchen's 1.3: "I'll grab a bowl. Can you get an egg out of the
+// fridge?" after the flour. Only the cake takes the bowl; by default the
+// speaker model keeps the speaker's own part of a joint command, so the
+// first clause is read as the plan it states, not as noise.
+TEST(JointStatement, TheSpeakersOwnPartIsReadAsThePlan) {
+  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/kitchen");
+  auto lm = language::make_dataset_language_model("embedded", {}, ds);
+  const InferenceRun run = run_inference(ds, ds.plan("1.3.cake"), *lm);
+  const UtteranceRecord* said = last_utterance(run);
+  ASSERT_NE(said, nullptr);
+  const size_t base = static_cast<size_t>(run.true_goal) * run.profiles.size();
+  double own_bowl = 0;
+  for (const CommandScore& c : said->hypotheses[base].commands)
+    if (c.command.find("(pickup me ?bowl1") != std::string::npos) own_bowl += c.posterior;
+  EXPECT_GT(own_bowl, 0.5);
+  EXPECT_GT(run.p_true_goal(Modality::Both), 0.9);
+  EXPECT_GT(run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly));
+}
+
 }  // namespace
 }  // namespace clips::inference

@@ -87,7 +87,9 @@ struct LanguageConfig {
   // (inference::SpeakerRule::Paper); the literal listener always uses the two
   // fields above. mDKG: speaker-only commands dropped, chains dropped; VH:
   // every speaker action dropped (the paper's VH rule equals the code's).
-  SpeakerActionRule paper_speaker_actions = SpeakerActionRule::ExcludeAll;
+  // Default: the speaker's own part stays in joint commands, so "I'll get
+  // the cheese, can you get the pan?" is read as the plan it states.
+  SpeakerActionRule paper_speaker_actions = SpeakerActionRule::ExcludeSpeakerOnlyCommands;
   bool paper_exclude_chains = false;
 
   VariableNaming variable_naming = VariableNaming::ObjectType;
