@@ -67,6 +67,20 @@ TEST(AlignmentBehaviour, RecipientWordsSpeakForHandOvers) {
   EXPECT_GT(gain_hand, gain_pick + 1.0);
 }
 
+// Item 4: the noun phrase an earlier clause names, when a later request asks
+// for "it", is the request's object. "I need the red key, could you get it?"
+// asks the listener for the red key; it does not say that the speaker gets
+// the red key while the listener gets some other key.
+TEST(AlignmentBehaviour, WhatALaterItPointsBackToIsTheRequestsObject) {
+  const std::string asked = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
+  const std::string split = pragmatic_prompt("(pickup me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)");
+  const double gap = score(asked, " I need the red key, could you get it?\n") -
+                     score(split, " I need the red key, could you get it?\n");
+  std::printf("[it] the request for the red key leads the split by %.2f nats\n", gap);
+  // (5.7 nats; 4.2 when the first clause was read as the speaker's own.)
+  EXPECT_GT(gap, 5.0);
+}
+
 struct Golden {
   const char* kind;  // "L" literal, "P" pragmatic, "V" virtual-home, "E" empty prompt
   const char* command;
@@ -84,29 +98,31 @@ std::string prompt_of(const Golden& g) {
 }
 
 // The log-scores below were recorded by running this test against the
-// unsplit alignment_model.cpp (commit a126c13) with CLIPS_GOLDEN_PRINT=1; they
+// unsplit alignment_model.cpp (commit a126c13) with CLIPS_GOLDEN_PRINT=1, and
+// re-recorded when what a later request's "it" points back to became the
+// listener's (EncodedUtterance::about_request; EM moves every score); they
 // are not derived by hand. They cover every step of the model: length, mention
 // sums, anchors, clause types, modifiers, colour binding and contradiction,
 // number binding, pronoun antecedents, misspellings, unknown words, prefixes
 // and the empty-command prompt. Re-record them only for an intended change of
 // the model, and say so in the commit.
 const std::vector<Golden> kGolden = {
-    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.405423359783185},
-    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.721563911707193},
+    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.40389645901017},
+    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.725365934062218},
     {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
-     " Bring me both red", -13.821025965510673},
-    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -57.061597102829325},
-    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.950867944200958},
+     " Bring me both red", -13.819491384619772},
+    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -57.04771632344693},
+    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.949711825987315},
     {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
-     " This red door has me stuck; could you open it?\n", -71.267764601538133},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -29.419073142274996},
+     " This red door has me stuck; could you open it?\n", -70.91745157702904},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -29.40075224901159},
     {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
-     " Pass me the red key pls, would it be possible?\n", -76.501865027837709},
-    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.669852990517846},
-    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -25.174307633283632},
-    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685302211650662},
-    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.737214962404956},
-    {"E", "", " Hello there.\n", -28.177224224689475},
+     " Pass me the red key pls, would it be possible?\n", -76.50174410081323},
+    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.66834446558302},
+    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -25.174319311733775},
+    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685533911728598},
+    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.71757985442169},
+    {"E", "", " Hello there.\n", -28.177215460173144},
 };
 
 TEST(AlignmentGolden, ScoresMatchTheRecordedOnes) {

@@ -556,6 +556,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   };
 
   std::vector<double> mix(n * 2);
+  auto about_request = [&](size_t i) { return i < u.about_request.size() && u.about_request[i] != 0; };
   // log of the anchored likelihood of the tokens (see below) for the k
   // mentioned action groups K, given the per-token mixtures `mix` and each
   // group's own emission emit(j, i); for a prefix, marginalised over the
@@ -657,8 +658,11 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
       const double s_me = content_sum(i, true);
       const double content_you =
           n_you > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_you / n_you : p_gen[i];
+      // What a later request's "it" points back to is the listener's object.
       const double content_me =
-          n_me > 0 ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_me / n_me : p_gen[i];
+          about_request(i) ? content_you
+          : n_me > 0       ? kGenericShare * p_gen[i] + (1 - kGenericShare) * s_me / n_me
+                           : p_gen[i];
       mix[2 * i] = contra[2 * i] * (kPiBackground * p_bg[i] + kPiAgent * p_you[i] + kPiContent * content_you);
       mix[2 * i + 1] = contra[2 * i + 1] * (kPiBackground * p_bg[i] + kPiAgent * p_me[i] + kPiContent * content_me);
     }
@@ -761,14 +765,15 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
         const double pt = std::exp(clause_log[(static_cast<size_t>(mask - first_mask) * clauses + k) * 2 + t]);
         const double wt = weight * pm * pt;
         if (wt < 1e-12) continue;
-        const int active = speaker ? n_me : n_you;
         for (size_t i = start; i < end; ++i) {
           const int id = u.ids[i];
           if (id < 0) continue;  // training tokens are always in the vocabulary
           const double p_agent = speaker ? p_me[i] : p_you[i];
+          const bool own = speaker && !about_request(i);  // whose groups the content comes from
+          const int active = own ? n_me : n_you;
           const double gen_share = active > 0 ? kGenericShare : 1.0;
           const double content =
-              gen_share * p_gen[i] + (active > 0 ? (1 - kGenericShare) * content_sum(i, speaker) / active : 0.0);
+              gen_share * p_gen[i] + (active > 0 ? (1 - kGenericShare) * content_sum(i, own) / active : 0.0);
           const double m = kPiBackground * p_bg[i] + kPiAgent * p_agent + kPiContent * content;
           if (m <= 0) continue;
           const double r = wt / m;
@@ -782,7 +787,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
             const Bound::Group& grp = c.groups[g];
             if (!on[g]) continue;
             const size_t owner = grp.parent >= 0 ? static_cast<size_t>(grp.parent) : g;
-            if (!in_role(c.groups[owner], speaker)) continue;
+            if (!in_role(c.groups[owner], own)) continue;
             const double unit = share * (grp.parent >= 0 ? grp.unit_weight : 1.0) / den[owner];
             const bool in_mod = have_spans && u.in_modifier[i] != 0 && grp.kind == 0;
             if (in_mod) counts->table[static_cast<size_t>(id_mod)][uid] += unit * grp.nonverb_weight * p_mod[i];

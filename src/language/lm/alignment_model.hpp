@@ -48,6 +48,10 @@
 //     what a hand-over brings) plus a small share of GEN, a generic
 //     source of domain content words (used entirely when no group qualifies; this
 //     is where "I'll get the red key" goes when the command omits the speaker).
+//     The content words of an earlier clause that a later request's "it" or
+//     "them" points back to ("I need the larger board, could you get it?")
+//     describe the request's object: they take R's content in either type
+//     (EncodedUtterance::about_request).
 //     A group emits through its fields, with fixed weights:
 //       V  verb, table keyed by (action, agent, whether "me" is the recipient);
 //       N  noun, keyed by (object type, plural iff the group has 2+ actions);
@@ -168,6 +172,12 @@ struct EncodedUtterance {
   // door, could you open it?"): whatever its own clause, it names the object
   // of that request (used by the colour contradiction of evaluate()).
   std::vector<char> asked_for;
+  // about_request[i] != 0: token i is a content word of the nearest earlier
+  // clause with a noun, and a later request-like clause asks for "it"/"them"
+  // ("I need the larger board off the rack, could you get it?"): it
+  // describes the request's object, so in either clause type it comes from
+  // the listener's groups, not the speaker's own.
+  std::vector<char> about_request;
 };
 
 // Trained parameters. Immutable after train(), except for a thread-safe cache of

@@ -210,7 +210,12 @@ void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
       "seems", "looks", "be", "has", "can", "does", "did", "sounds"};
   const size_t n = u.words.size();
   u.asked_for.assign(n, 0);
+  u.about_request.assign(n, 0);
   if (u.noun_heads.size() != n) return;
+  std::vector<uint8_t> f(n);
+  for (size_t i = 0; i < n; ++i) f[i] = word_flags(u.ids[i], u.words[i]);
+  auto content = [&](size_t i) { return (f[i] & kWordFunction) == 0; };
+  std::vector<size_t> starts;  // of the clauses before the current one
   size_t clause_start = 0;
   for (size_t e : u.clause_end) {
     const size_t end = std::min(e, n);
@@ -231,7 +236,17 @@ void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
           break;
         }
       }
+      // The nearest earlier clause with a noun holds what "it" stands for.
+      for (size_t k = starts.size(); k-- > 0;) {
+        const size_t b = starts[k], c_end = k + 1 < starts.size() ? starts[k + 1] : clause_start;
+        bool has_noun = false;
+        for (size_t i = b; i < c_end; ++i) has_noun = has_noun || (content(i) && (f[i] & kWordNoun) != 0);
+        if (!has_noun) continue;
+        for (size_t i = b; i < c_end; ++i) u.about_request[i] = content(i) ? 1 : 0;
+        break;
+      }
     }
+    starts.push_back(clause_start);
     clause_start = end;
   }
 }
