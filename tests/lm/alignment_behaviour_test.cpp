@@ -81,6 +81,20 @@ TEST(AlignmentBehaviour, WhatALaterItPointsBackToIsTheRequestsObject) {
   EXPECT_GT(gap, 5.0);
 }
 
+// Item 7: "the red one" has no noun, but in a request it is one of the
+// listener's objects, so it contradicts a command whose only object the
+// listener handles is blue, as "the red key" does.
+TEST(AlignmentBehaviour, TheRedOneMiscoloursARequestForTheBlueKey) {
+  const std::string red = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
+  const std::string blue = pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)");
+  const double gap = score(red, " Could you get me the red one?\n") - score(blue, " Could you get me the red one?\n");
+  const double keyed = score(red, " Could you get me the red key?\n") - score(blue, " Could you get me the red key?\n");
+  std::printf("[one] the red one: %.2f nats, the red key: %.2f nats\n", gap, keyed);
+  // (5.6 nats; 3.8 when "one" left the colour unconstrained.)
+  EXPECT_GT(gap, 5.0);
+  EXPECT_GT(gap, keyed - 1.0);
+}
+
 struct Golden {
   const char* kind;  // "L" literal, "P" pragmatic, "V" virtual-home, "E" empty prompt
   const char* command;
@@ -100,29 +114,30 @@ std::string prompt_of(const Golden& g) {
 // The log-scores below were recorded by running this test against the
 // unsplit alignment_model.cpp (commit a126c13) with CLIPS_GOLDEN_PRINT=1, and
 // re-recorded when what a later request's "it" points back to became the
-// listener's (EncodedUtterance::about_request; EM moves every score); they
+// listener's (EncodedUtterance::about_request; EM moves every score) and when
+// "the red one" became contradicted like "the red key"; they
 // are not derived by hand. They cover every step of the model: length, mention
 // sums, anchors, clause types, modifiers, colour binding and contradiction,
 // number binding, pronoun antecedents, misspellings, unknown words, prefixes
 // and the empty-command prompt. Re-record them only for an intended change of
 // the model, and say so in the commit.
 const std::vector<Golden> kGolden = {
-    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.40389645901017},
-    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.725365934062218},
+    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.4038991918104},
+    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.725360442751562},
     {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
-     " Bring me both red", -13.819491384619772},
-    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -57.04771632344693},
-    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.949711825987315},
+     " Bring me both red", -13.819498621327856},
+    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -57.04635668575652},
+    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.949589274786504},
     {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
-     " This red door has me stuck; could you open it?\n", -70.91745157702904},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -29.40075224901159},
+     " This red door has me stuck; could you open it?\n", -70.91714158861431},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -29.400376471958815},
     {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
-     " Pass me the red key pls, would it be possible?\n", -76.50174410081323},
-    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.66834446558302},
-    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -25.174319311733775},
-    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685533911728598},
-    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.71757985442169},
-    {"E", "", " Hello there.\n", -28.177215460173144},
+     " Pass me the red key pls, would it be possible?\n", -76.50152769032051},
+    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.66836169758441},
+    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -25.174317236321624},
+    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.68553493173025},
+    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.71766969198258},
+    {"E", "", " Hello there.\n", -28.17720170490398},
 };
 
 TEST(AlignmentGolden, ScoresMatchTheRecordedOnes) {

@@ -345,6 +345,17 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
   const size_t G = c.groups.size();
   const bool have_heads = u.noun_heads.size() == n;
   std::vector<double> contra(2 * n, 1.0);
+  // Whether value token i's noun phrase is headed by "one"/"ones" ("the red
+  // one", "the big red one"): only other values may stand between them.
+  auto names_a_one = [&](size_t i) {
+    for (size_t j = i + 1; j < n && j <= i + 3; ++j) {
+      if (u.words[j] == "one" || u.words[j] == "ones") return true;
+      const int jd = u.ids[j];
+      if (jd < 0 || static_cast<size_t>(jd) >= attribute_word_.size() || !attribute_word_[static_cast<size_t>(jd)])
+        return false;
+    }
+    return false;
+  };
   if (have_heads) {
     for (size_t i = 0; i < n; ++i) {
       const int id = u.ids[i];
@@ -388,6 +399,30 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
             contradicted = false;
             break;
           }
+        }
+        if (!typed && contradicted && names_a_one(i)) {
+          // "the red one": no noun, but it is one of the clause's role's
+          // objects (a request's "it" reads the listener's), so it
+          // contradicts a command none of whose such objects can be red.
+          const bool statement = t == 1 && !(i < u.asked_for.size() && u.asked_for[i]) &&
+                                 !(i < u.about_request.size() && u.about_request[i]);
+          bool any = false, consistent = false;
+          for (size_t g = 0; g < G && !consistent; ++g) {
+            const Bound::Group& grp = c.groups[g];
+            if (grp.kind != 0 || !in_role(grp, statement)) continue;
+            any = true;
+            bool coloured = false;
+            for (size_t k = 0; k < G; ++k) {
+              const Bound::Group& unit = c.groups[k];
+              if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
+              if ((qualifier_kinds(c, k) & token_kinds) == 0) continue;
+              coloured = true;
+              for (const Bound::Copy& cp : unit.copies) consistent = consistent || cp.id == id;
+            }
+            consistent = consistent || !coloured;
+          }
+          typed = any;
+          contradicted = any && !consistent;
         }
         if (typed && contradicted) contra[2 * i + static_cast<size_t>(t)] = kContradictedColour;
       }

@@ -113,8 +113,10 @@
 //     against a command asking the listener for the yellow key. A colour that
 //     a later request points back to with "it"/"them" ("This red door has me
 //     stuck; could you open it?") is checked against the request's objects
-//     whatever its own clause's type. A command that
-//     leaves an object's colour open is never contradicted.
+//     whatever its own clause's type. A value whose noun phrase is headed
+//     by "one" ("the red one") is checked against every object of its
+//     clause's role. A command that leaves an object's colour open is
+//     never contradicted.
 //
 // Apart from the colour binding and contradiction, which look ahead to the head noun, every
 // factor is a normalised distribution and the clause cuts and modifier spans
