@@ -84,6 +84,7 @@ std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string&
     o.corpus_files = pack.spec().embedded_corpus;
   } else {
     o.corpus_files.clear();
+    o.function_words = true;
     std::set<std::pair<std::string, std::string>> seen;  // problems share most pairs
     for (const pddl::Problem* problem : problems) {
       lm::DomainDescription described =

@@ -328,6 +328,24 @@ TEST(EmbeddedModel, PlacesNameNoObject) {
   EXPECT_GT(score(knife, "Could you get the kitchen knife?"), score(wine, "Could you get the kitchen knife?") + 3.0);
 }
 
+// What a thing is for, from WordNet: the verbs derived from the tool's
+// sense and their hypernyms, and the gloss's purpose verbs and adjectives.
+// Only instruments and containers have uses; food has none.
+TEST(EmbeddedModel, FunctionWordsSayWhatAToolIsFor) {
+  auto has = [](const std::string& type, const std::string& word) {
+    for (const auto& [w, p] : WordNetLexicon::instance().function_words(type))
+      if (w == word) return p > 0;
+    return false;
+  };
+  EXPECT_TRUE(has("spade", "dig"));     // spade (v) -> dig
+  EXPECT_TRUE(has("knife", "sharp"));   // "... with a sharp edge"
+  EXPECT_TRUE(has("knife", "cutting"));
+  EXPECT_TRUE(has("thermometer", "measure"));
+  EXPECT_TRUE(has("saw", "cut"));
+  EXPECT_TRUE(WordNetLexicon::instance().function_words("apple").empty());
+  EXPECT_TRUE(WordNetLexicon::instance().function_words("flour").empty());
+}
+
 TEST(EmbeddedModel, ColoursBindToNounsOfTheirObjectsType) {
   // "red door": the red belongs to a door. A command whose only red object is
   // a gem must not explain it by copying the gem's colour, and a command with

@@ -39,6 +39,7 @@ inline constexpr double kWeightVerb = 0.3;
 inline constexpr double kWeightNoun = 0.35;
 inline constexpr double kWeightAttribute = 0.25;
 inline constexpr double kWeightNumber = 0.1;
+inline constexpr double kWeightFunction = 0.05;  // what the object is for (WordNetLexicon::function_words)
 inline constexpr double kWeightRecipient = 0.3;  // relative to a group's fields, when mentioned
 
 // Dirichlet strengths of the lexical bases.

@@ -93,6 +93,7 @@ WordDistribution base_for_key(const std::string& key) {
     const bool to_me = key.find("/to-me") != std::string::npos;
     return WordNetLexicon::instance().verb_base(action, to_me);
   }
+  if (key.rfind("F:", 0) == 0) return WordNetLexicon::instance().function_words(key.substr(2));
   if (key.rfind("N:", 0) == 0) {
     const size_t slash = key.rfind('/');
     return WordNetLexicon::instance().noun_base(key.substr(2, slash - 2), key.substr(slash) == "/pl");
@@ -191,11 +192,25 @@ const AlignmentModel::Table* AlignmentModel::find_or_make_table(const std::strin
   auto t = std::make_unique<Table>();
   t->key = key;
   t->prob.assign(words_.size(), 0.0);
+  const bool function_table = key.rfind("F:", 0) == 0;
   for (const auto& [w, p] : base_for_key(key)) {
-    if (auto it = word_ids_.find(w); it != word_ids_.end()) {
+    auto it = word_ids_.find(w);
+    // What a thing is for is not one of the domain's qualifier values
+    // ("plastic" in a beaker's gloss is not its use).
+    if (function_table && it != word_ids_.end() && attribute_word_[static_cast<size_t>(it->second)]) continue;
+    if (it != word_ids_.end()) {
       t->prob[static_cast<size_t>(it->second)] += p;
     } else {
       t->extra[w] += p;
+    }
+  }
+  if (function_table) {  // renormalised over the words kept (possibly none)
+    double total = 0;
+    for (double p : t->prob) total += p;
+    for (const auto& [w, p] : t->extra) total += p;
+    if (total > 0) {
+      for (double& p : t->prob) p /= total;
+      for (auto& [w, p] : t->extra) p /= total;
     }
   }
   std::unique_lock lock(lazy_mutex_);
@@ -225,10 +240,21 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
     // (colour) is an optional unit of the group with a relative weight, so an
     // utterance that never says a colour pays the colour's mention odds rather
     // than merely diluting the group.
-    const double z = kWeightVerb + (g.type.empty() ? 0 : kWeightNoun) + (g.count >= 2 ? kWeightNumber : 0);
+    // What the object is for ("something to dig with"), where it is known.
+    const Table* use = function_words_ && !g.type.empty() ? find_or_make_table("F:" + g.type) : nullptr;
+    if (use != nullptr && std::all_of(use->prob.begin(), use->prob.end(), [](double p) { return p <= 0; }) &&
+        use->extra.empty())
+      use = nullptr;
+    const double z = kWeightVerb + (g.type.empty() ? 0 : kWeightNoun) + (g.count >= 2 ? kWeightNumber : 0) +
+                     (use != nullptr ? kWeightFunction : 0);
     bg.fields.push_back(field_of(verb_key(g), kWeightVerb / z));
     bg.fields.back().verb = true;
     if (!g.type.empty()) bg.fields.push_back(field_of(noun_key(g), kWeightNoun / z));
+    if (use != nullptr) {
+      // Kept inside modifier spans like a verb: "a tool for driving nails".
+      bg.fields.push_back(Bound::Field{use, -1, kWeightFunction / z, false});
+      bg.fields.back().verb = true;
+    }
     if (g.count >= 2) {
       bg.fields.push_back(field_of(number_key(g.count), kWeightNumber / z));
       bg.fields.back().number = true;

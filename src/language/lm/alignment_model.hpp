@@ -219,6 +219,12 @@ class AlignmentModel {
   // Human-readable per-token source probabilities (all groups mentioned), for debugging.
   std::string explain(const std::string& command, const std::string& utterance) const;
 
+  // Lets each typed action group also emit what its object is for
+  // (WordNetLexicon::function_words: "dig" for a spade), a field with a
+  // fixed weight and an untrained WordNet table. Off by default: the paper
+  // domains' hand-written corpora say what they need. Set before scoring.
+  void set_function_words(bool on) { function_words_ = on; }
+
   // A binary snapshot of the trained parameters, for the embedded model's
   // on-disk cache (tables created on demand are not part of it). load() throws
   // LmError on anything but a complete snapshot of this format; a loaded model
@@ -282,6 +288,7 @@ class AlignmentModel {
   std::unordered_map<std::string, int> table_ids_;
   std::vector<int> noun_tables_;  // ids of the trained noun tables ("N:<type>/sg|pl")
   double copy_alpha_ = 0.8;
+  bool function_words_ = false;
   double mention_[3] = {0.85, 0.85, 0.85};  // rho: action groups, recipients, attribute values
   std::vector<std::vector<double>> length_;  // [actions][n] for n <= kMaxLen
   std::vector<double> length_tail_scale_;    // weight of the base beyond kMaxLen

@@ -300,6 +300,7 @@ std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::block_
   } else {
     state->model = AlignmentModel::train(pairs, options_.em_iterations);
   }
+  state->model->set_function_words(options_.function_words);
   blocks_.emplace(block, state);
   return state;
 }

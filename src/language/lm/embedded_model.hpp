@@ -51,6 +51,10 @@ struct EmbeddedModelOptions {
   // training pairs, the iterations, this executable's file and the WordNet
   // database files, so a rebuilt program or changed data never reads a stale one.
   std::string cache_dir;
+  // Let commands' objects also emit what they are for, from WordNet
+  // (AlignmentModel::set_function_words); for domains read through a
+  // generated corpus, which says nothing of uses.
+  bool function_words = false;
 };
 
 class EmbeddedLanguageModel : public LanguageModel {

@@ -336,6 +336,152 @@ WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural)
   return dist;
 }
 
+namespace {
+
+// Whether a noun synset is an instrumentality (tool, device, container,
+// implement, ...): some hypernym path within 12 levels reaches it.
+bool is_instrumentality(SynsetPtr s, int depth = 0) {
+  if (s == nullptr || depth > 12) return false;
+  for (int k = 0; k < s->wcount; ++k) {
+    const std::string w = lower_word(s->words[k]);
+    if (w == "instrumentality" || w == "instrumentation") return true;
+  }
+  for (int i = 0; i < s->ptrcount; ++i) {
+    if (s->ptrtyp[i] != HYPERPTR) continue;
+    SynsetPtr h = read_synset(s->ppos[i], s->ptroff[i], nullptr);
+    const bool found = is_instrumentality(h, depth + 1);
+    if (h != nullptr) free_synset(h);
+    if (found) return true;
+  }
+  return false;
+}
+
+int sense_count(const std::string& word, int pos) {
+  std::string buf = word;
+  IndexPtr idx = index_lookup(buf.data(), pos);
+  if (idx == nullptr) return 0;
+  const int n = idx->off_cnt;
+  free_index(idx);
+  return n;
+}
+
+// More adjective senses than noun and verb senses ("sharp", "pointed").
+bool adjective_dominant(const std::string& word) {
+  const int a = sense_count(word, ADJ);
+  return a > 0 && a > sense_count(word, NOUN) && a > sense_count(word, VERB);
+}
+
+std::vector<std::string> gloss_words(const char* defn) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (const char* c = defn; c != nullptr && *c != '\0' && *c != '"'; ++c) {
+    const char ch = static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+    if (ch >= 'a' && ch <= 'z') {
+      cur.push_back(ch);
+    } else {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+      if (ch == ';') out.push_back(";");
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+}  // namespace
+
+WordDistribution WordNetLexicon::function_words(const std::string& type) {
+  static std::map<std::string, WordDistribution> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  if (auto it = memo.find(type); it != memo.end()) return it->second;
+  // Words that describe any object's size or shape are qualifier values,
+  // not what the thing is for.
+  static const std::set<std::string> plain = {"small", "large", "big", "little", "long", "short", "wide", "narrow",
+                                              "heavy", "light", "tall", "high", "low", "thin", "thick", "open",
+                                              "round", "flat", "shallow", "deep", "rigid", "other", "several"};
+  // Verbs every gloss uses ("used to", "consisting of", "made of").
+  static const std::set<std::string> generic = {"use", "make", "consist", "have", "be", "handle", "incorporate",
+                                                "operate", "attach", "cover", "design", "include", "contain"};
+  static const std::set<std::string> kinds = {"tool", "instrument", "utensil", "implement", "container",
+                                              "vessel", "receptacle", "device", "used"};
+  const std::vector<std::string> parts = split_name(type, NOUN);
+  std::string lookup = parts.back();
+  if (parts.size() == 2 && wn_has(parts[0] + "_" + parts[1], NOUN)) lookup = parts[0] + "_" + parts[1];
+  Accum acc;
+  auto add_verb = [&](const std::string& lemma, double weight) {
+    if (lemma.find_first_of("_ -'.") != std::string::npos || is_function_word(lemma) || lemma == lookup ||
+        generic.count(lemma))
+      return;
+    acc.add(lemma, weight);
+    for (const std::string& f : verb_forms(lemma)) acc.add(f, weight * 0.5);
+  };
+  std::string buf = lookup;
+  SynsetPtr head = findtheinfo_ds(buf.data(), NOUN, HYPERPTR, ALLSENSES);
+  int used = 0, sense = 0;
+  for (SynsetPtr s = head; s != nullptr && used < 2 && sense < 6; s = s->nextss, ++sense) {
+    const std::vector<std::string> gloss = gloss_words(s->defn);
+    bool kind = std::any_of(gloss.begin(), gloss.end(), [&](const std::string& w) { return kinds.count(w) != 0; });
+    // Or a tool, container, ... by its hypernyms within three levels ("a sturdy hand shovel").
+    std::vector<SynsetPtr> frontier;
+    for (int i = 0; i < s->ptrcount; ++i)
+      if (s->ptrtyp[i] == HYPERPTR) frontier.push_back(read_synset(s->ppos[i], s->ptroff[i], nullptr));
+    for (int level = 0; level < 3 && !frontier.empty(); ++level) {
+      std::vector<SynsetPtr> next;
+      for (SynsetPtr h : frontier) {
+        if (h == nullptr) continue;
+        for (int k = 0; k < h->wcount; ++k) {
+          const std::string hw = lower_word(h->words[k]);  // "edge_tool": its last part counts
+          kind = kind || kinds.count(hw) != 0 || kinds.count(hw.substr(hw.rfind('_') + 1)) != 0;
+        }
+        for (int i = 0; i < h->ptrcount; ++i)
+          if (h->ptrtyp[i] == HYPERPTR) next.push_back(read_synset(h->ppos[i], h->ptroff[i], nullptr));
+        free_synset(h);
+      }
+      frontier = std::move(next);
+    }
+    for (SynsetPtr h : frontier)
+      if (h != nullptr) free_synset(h);
+    if (!kind || !is_instrumentality(s)) continue;
+    ++used;
+    // Verbs derived from the sense (spade -> spade), and their hypernyms (dig).
+    for (int i = 0; i < s->ptrcount; ++i) {
+      if (s->ptrtyp[i] != DERIVATION || s->ppos[i] != VERB) continue;
+      SynsetPtr v = read_synset(VERB, s->ptroff[i], nullptr);
+      if (v == nullptr) continue;
+      for (int k = 0; k < v->wcount; ++k) add_verb(lower_word(v->words[k]), 1.0);
+      for (int j = 0; j < v->ptrcount; ++j) {
+        if (v->ptrtyp[j] != HYPERPTR) continue;
+        SynsetPtr h = read_synset(VERB, v->ptroff[j], nullptr);
+        if (h == nullptr) continue;
+        for (int k = 0; k < h->wcount; ++k) add_verb(lower_word(h->words[k]), 0.5);
+        free_synset(h);
+      }
+      free_synset(v);
+    }
+    // The gloss: purpose verbs ("used to measure", "for cutting") and
+    // describing adjectives ("a sharp edge").
+    for (size_t i = 0; i < gloss.size(); ++i) {
+      const std::string& w = gloss[i];
+      if (w == ";" || is_function_word(w) || plain.count(w) || w.size() < 3 || w == "used" || w == "such") continue;
+      const bool after_to = i > 0 && gloss[i - 1] == "to";
+      const bool gerund = w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0;
+      if (after_to || gerund) {
+        std::vector<std::string> lemmas = wn_base_forms(w, VERB);
+        if (lemmas.empty() && wn_has(w, VERB)) lemmas.push_back(w);
+        if (!lemmas.empty()) {
+          add_verb(lemmas.front(), 1.0);
+          continue;
+        }
+      }
+      if (adjective_dominant(w)) acc.add(w, 0.7);
+    }
+  }
+  if (head != nullptr) free_syns(head);
+  WordDistribution dist = acc.w.empty() ? WordDistribution{} : acc.normalised();
+  memo[type] = dist;
+  return dist;
+}
+
 WordDistribution WordNetLexicon::verb_base(const std::string& action, bool to_speaker) {
   static std::map<std::pair<std::string, bool>, WordDistribution> memo;
   std::lock_guard<std::mutex> lock(wordnet_mutex());

@@ -65,6 +65,17 @@ class WordNetLexicon {
   // English plural of a noun phrase's last word, checked by WordNet when it can.
   std::string plural(const std::string& noun);
 
+  // What a thing of this type is for, in the words people use when they ask
+  // for it by its use ("something to dig with", "something sharp"): from
+  // its noun senses that are instruments or containers (hypernym
+  // instrumentality, and a gloss that calls it a tool, utensil, container,
+  // ... or says what it is used for), the verbs derived from it with their
+  // hypernyms (spade -> spade, dig), the purpose verbs of the gloss ("used to
+  // deliver", "for scooping") and its describing adjectives ("sharp"), with
+  // their inflections. Empty for types that are not instruments (food,
+  // plants) or unknown to WordNet.
+  WordDistribution function_words(const std::string& type);
+
   // Whether the word's dominant noun sense is a place: an area, region or
   // location ("kitchen", "corner", "cupboard"), not an object one could fetch.
   bool names_place(const std::string& word);
