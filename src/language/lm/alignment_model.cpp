@@ -371,6 +371,22 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
   const size_t G = c.groups.size();
   const bool have_heads = u.noun_heads.size() == n;
   std::vector<double> contra(2 * n, 1.0);
+  // Whether action group g's object may have the value `id` of a qualifier
+  // of the kinds `token_kinds`: it has that value, or no known value of those
+  // kinds ("wooden" says nothing against a known size; a colourless object
+  // may be any colour).
+  auto may_be = [&](size_t g, int id, unsigned token_kinds) {
+    bool valued = false;
+    for (size_t k = 0; k < G; ++k) {
+      const Bound::Group& unit = c.groups[k];
+      if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
+      if ((qualifier_kinds(c, k) & token_kinds) == 0) continue;
+      valued = true;
+      for (const Bound::Copy& cp : unit.copies)
+        if (cp.id == id) return true;
+    }
+    return !valued;
+  };
   // Whether value token i's noun phrase is headed by "one"/"ones" ("the red
   // one", "the big red one"): only other values may stand between them.
   auto names_a_one = [&](size_t i) {
@@ -411,15 +427,7 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
             const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
             if (own < kBindRatio * best) continue;
             named = true;
-            bool coloured = false;  // the object has a known value of this token's kind
-            for (size_t k = 0; k < G; ++k) {
-              const Bound::Group& unit = c.groups[k];
-              if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
-              if ((qualifier_kinds(c, k) & token_kinds) == 0) continue;  // "wooden" vs a known size
-              coloured = true;
-              for (const Bound::Copy& cp : unit.copies) consistent = consistent || cp.id == id;
-            }
-            consistent = consistent || !coloured;  // a colourless object may be any colour
+            consistent = consistent || may_be(g, id, token_kinds);
           }
           if (!named || consistent) {
             contradicted = false;
@@ -437,15 +445,7 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
             const Bound::Group& grp = c.groups[g];
             if (grp.kind != 0 || !in_role(grp, statement)) continue;
             any = true;
-            bool coloured = false;
-            for (size_t k = 0; k < G; ++k) {
-              const Bound::Group& unit = c.groups[k];
-              if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
-              if ((qualifier_kinds(c, k) & token_kinds) == 0) continue;
-              coloured = true;
-              for (const Bound::Copy& cp : unit.copies) consistent = consistent || cp.id == id;
-            }
-            consistent = consistent || !coloured;
+            consistent = may_be(g, id, token_kinds);
           }
           typed = any;
           contradicted = any && !consistent;
