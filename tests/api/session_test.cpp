@@ -171,6 +171,20 @@ TEST(Session, AssistWeighsTheCandidatesWithTheGoalPosterior) {
   EXPECT_NEAR(total, 1.0, 1e-12);  // pi-bar values are the mixture's probabilities
 }
 
+// The rule that ends a deadlock holds in a session too: on the workshop
+// (request rule) the robot waits for the human walking to the rack, but after
+// a round in which both of them waited it does not wait again.
+TEST(Session, TheAssistantDoesNotAnswerARoundOfWaitsWithAnotherWait) {
+  auto s = clips::Session::open_dataset(clips::paths::source_dir() + "/data/datasets/workshop", "1");
+  s.observe("(move human bench rack)");
+  EXPECT_EQ(s.assist().action, "(wait robot)");
+  s.observe("(wait robot)");
+  s.observe("(wait human)");
+  const clips::AssistDecision d = s.assist();
+  ASSERT_TRUE(d.assistant_turn);
+  EXPECT_NE(d.action, "(wait robot)");
+}
+
 TEST(Session, CallLimitsUndoResetAndGoalsThroughThePublicApi) {
   // issue 44: a robot's controller bounds and cancels calls; a stopped call
   // leaves the session as it was.

@@ -73,6 +73,14 @@ struct Garden {
   }
 };
 
+// Unit costs, but idling costs 0.6 for both agents.
+model::CostProfile idling_is_cheap() {
+  model::CostProfile costs = model::unit_profile();
+  costs.costs[{"gardener", "idle"}] = 0.6;
+  costs.costs[{"bot", "idle"}] = 0.6;
+  return costs;
+}
+
 }  // namespace
 
 TEST(RequestRule, ATieIsBrokenTowardsTheCommand) {
@@ -96,9 +104,7 @@ TEST(RequestRule, WhatThePrincipalWillDoThemselvesIsLeftAlone) {
 // spends that effort; unasked, or under the paper's rule, it idles.
 TEST(RequestRule, TheAssistantSpendsItsOwnEffortOnWhatWasAsked) {
   Garden g;
-  model::CostProfile costs = model::unit_profile();
-  costs.costs[{"gardener", "idle"}] = 0.6;
-  costs.costs[{"bot", "idle"}] = 0.6;
+  const model::CostProfile costs = idling_is_cheap();
   const std::string goal = "(planted tomato1)";
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot tomato1 shed)"}, {}, goal, costs), "(move bot bed shed)");
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs), "(idle bot)");
@@ -110,9 +116,7 @@ TEST(RequestRule, TheAssistantSpendsItsOwnEffortOnWhatWasAsked) {
 // other action. The paper's rule has no such exception.
 TEST(RequestRule, ARoundOfWaitsIsNotAnsweredWithAnotherWait) {
   Garden g;
-  model::CostProfile costs = model::unit_profile();
-  costs.costs[{"gardener", "idle"}] = 0.6;
-  costs.costs[{"bot", "idle"}] = 0.6;
+  const model::CostProfile costs = idling_is_cheap();
   const std::string goal = "(planted tomato1)";
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs, /*stalled=*/false), "(idle bot)");
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {}, {}, goal, costs, /*stalled=*/true), "(move bot bed shed)");

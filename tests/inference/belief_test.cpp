@@ -335,27 +335,39 @@ TEST(AloneTwins, ATwinSpeaksAsItsBase) {
   EXPECT_NE(top->command.find("pipette"), std::string::npos) << top->command;
 }
 
+// A plan of one of the repo's datasets, read as clips bench and clips infer
+// read it: the embedded model trained on a corpus generated from the
+// dataset's own domain.
+struct DatasetPlanRun {
+  data::Dataset ds;
+  InferenceRun run;
+  DatasetPlanRun(const std::string& dataset, const std::string& plan)
+      : ds(data::Dataset::load(paths::source_dir() + "/data/datasets/" + dataset)),
+        run(run_inference(ds, ds.plan(plan), *language::make_dataset_language_model("embedded", {}, ds))) {}
+  // The commands the true goal's base hypothesis read the last utterance as
+  // (none, failing the test, if nothing was said).
+  std::vector<CommandScore> true_goal_commands() const {
+    const UtteranceRecord* said = last_utterance(run);
+    EXPECT_NE(said, nullptr);
+    if (said == nullptr) return {};
+    return said->hypotheses[static_cast<size_t>(run.true_goal) * run.profiles.size()].commands;
+  }
+};
+
 // The garden's 4.1: the cheapest joint plan for feeding the roses has the
 // principal walk to the greenhouse for the hose while the robot waits, so a
 // cooperative speaker has nothing to ask; yet they ask the robot to "go in
 // there and get me the big one". The delegating speakers (the robot does all
 // it usefully can) hold that request, and the words then point to the goal.
 TEST(DelegatingSpeaker, ARequestForWhatTheCheapestPlanLeavesToThePrincipal) {
-  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/garden");
-  // The model clips bench and clips infer read the garden with: trained on
-  // a corpus generated from the garden's own domain.
-  auto lm = language::make_dataset_language_model("embedded", {}, ds);
-  ASSERT_GT(ds.pack().spec().inference.speaker_delegates, 0);
-  const InferenceRun run = run_inference(ds, ds.plan("4.1.feed-roses"), *lm);
-  const UtteranceRecord* said = last_utterance(run);
-  ASSERT_NE(said, nullptr);
-  const size_t base = static_cast<size_t>(run.true_goal) * run.profiles.size();
+  const DatasetPlanRun r("garden", "4.1.feed-roses");
+  ASSERT_GT(r.ds.pack().spec().inference.speaker_delegates, 0);
   bool asks_for_hose = false;
-  for (const CommandScore& c : said->hypotheses[base].commands)
+  for (const CommandScore& c : r.true_goal_commands())
     asks_for_hose = asks_for_hose || (c.command.rfind("(pickup you ?hose1", 0) == 0 && c.posterior > 0.5);
   EXPECT_TRUE(asks_for_hose);
-  EXPECT_GT(run.p_true_goal(Modality::Both), 0.5);
-  EXPECT_GT(run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly));
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), 0.5);
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), r.run.p_true_goal(Modality::ActionOnly));
 }
 
 // The kitchen's 1.3: "I'll grab a bowl. Can you get an egg out of the
@@ -363,18 +375,13 @@ TEST(DelegatingSpeaker, ARequestForWhatTheCheapestPlanLeavesToThePrincipal) {
 // speaker model keeps the speaker's own part of a joint command, so the
 // first clause is read as the plan it states, not as noise.
 TEST(JointStatement, TheSpeakersOwnPartIsReadAsThePlan) {
-  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/kitchen");
-  auto lm = language::make_dataset_language_model("embedded", {}, ds);
-  const InferenceRun run = run_inference(ds, ds.plan("1.3.cake"), *lm);
-  const UtteranceRecord* said = last_utterance(run);
-  ASSERT_NE(said, nullptr);
-  const size_t base = static_cast<size_t>(run.true_goal) * run.profiles.size();
+  const DatasetPlanRun r("kitchen", "1.3.cake");
   double own_bowl = 0;
-  for (const CommandScore& c : said->hypotheses[base].commands)
+  for (const CommandScore& c : r.true_goal_commands())
     if (c.command.find("(pickup me ?bowl1") != std::string::npos) own_bowl += c.posterior;
   EXPECT_GT(own_bowl, 0.5);
-  EXPECT_GT(run.p_true_goal(Modality::Both), 0.9);
-  EXPECT_GT(run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly));
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), 0.9);
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), r.run.p_true_goal(Modality::ActionOnly));
 }
 
 // The kitchen's 5.3: "Hmm, I'll need something sharp for this." after the
@@ -382,11 +389,9 @@ TEST(JointStatement, TheSpeakersOwnPartIsReadAsThePlan) {
 // read through WordNet, "sharp" is what a knife is, so the words point to
 // the salad (before, the smoothie kept 0.70).
 TEST(FunctionWords, SomethingSharpIsAKnife) {
-  const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/kitchen");
-  auto lm = language::make_dataset_language_model("embedded", {}, ds);
-  const InferenceRun run = run_inference(ds, ds.plan("5.3.fruitsalad"), *lm);
-  EXPECT_GT(run.p_true_goal(Modality::Both), 0.8);
-  EXPECT_GT(run.p_true_goal(Modality::Both), run.p_true_goal(Modality::ActionOnly) + 0.3);
+  const DatasetPlanRun r("kitchen", "5.3.fruitsalad");
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), 0.8);
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), r.run.p_true_goal(Modality::ActionOnly) + 0.3);
 }
 
 }  // namespace

@@ -33,6 +33,12 @@ double score(const std::string& prompt, const std::string& continuation) {
   return model().score({{prompt, continuation}}).at(0);
 }
 
+// How many nats the command of prompt `a` explains an utterance better than
+// that of prompt `b`.
+double lead(const std::string& a, const std::string& b, const std::string& utterance) {
+  return score(a, utterance) - score(b, utterance);
+}
+
 // Item 4, C: the copy probability alpha is one parameter shared by all
 // colours, so a colour the corpus has rarely ("orange": 21 times, against 292
 // for "blue") is copied from the command as readily as a frequent one. Without the
@@ -41,8 +47,8 @@ double score(const std::string& prompt, const std::string& continuation) {
 TEST(AlignmentBehaviour, RareColoursAreCopiedAsReadilyAsFrequentOnes) {
   const std::string orange = literal_prompt("(pickup you key1) where (iscolor key1 orange)");
   const std::string blue = literal_prompt("(pickup you key1) where (iscolor key1 blue)");
-  const double gap_orange = score(orange, " Pick up the orange key.\n") - score(blue, " Pick up the orange key.\n");
-  const double gap_blue = score(blue, " Pick up the blue key.\n") - score(orange, " Pick up the blue key.\n");
+  const double gap_orange = lead(orange, blue, " Pick up the orange key.\n");
+  const double gap_blue = lead(blue, orange, " Pick up the blue key.\n");
   std::printf("[shared copy] orange %.2f, blue %.2f nats\n", gap_orange, gap_blue);
   EXPECT_GT(gap_orange, 4.5);
   EXPECT_GT(gap_blue, 4.5);
@@ -74,8 +80,7 @@ TEST(AlignmentBehaviour, RecipientWordsSpeakForHandOvers) {
 TEST(AlignmentBehaviour, WhatALaterItPointsBackToIsTheRequestsObject) {
   const std::string asked = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
   const std::string split = pragmatic_prompt("(pickup me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)");
-  const double gap = score(asked, " I need the red key, could you get it?\n") -
-                     score(split, " I need the red key, could you get it?\n");
+  const double gap = lead(asked, split, " I need the red key, could you get it?\n");
   std::printf("[it] the request for the red key leads the split by %.2f nats\n", gap);
   // (5.7 nats; 4.2 when the first clause was read as the speaker's own.)
   EXPECT_GT(gap, 5.0);
@@ -87,8 +92,8 @@ TEST(AlignmentBehaviour, WhatALaterItPointsBackToIsTheRequestsObject) {
 TEST(AlignmentBehaviour, TheRedOneMiscoloursARequestForTheBlueKey) {
   const std::string red = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
   const std::string blue = pragmatic_prompt("(pickup you key1) where (iscolor key1 blue)");
-  const double gap = score(red, " Could you get me the red one?\n") - score(blue, " Could you get me the red one?\n");
-  const double keyed = score(red, " Could you get me the red key?\n") - score(blue, " Could you get me the red key?\n");
+  const double gap = lead(red, blue, " Could you get me the red one?\n");
+  const double keyed = lead(red, blue, " Could you get me the red key?\n");
   std::printf("[one] the red one: %.2f nats, the red key: %.2f nats\n", gap, keyed);
   // (5.6 nats; 3.8 when "one" left the colour unconstrained.)
   EXPECT_GT(gap, 5.0);
