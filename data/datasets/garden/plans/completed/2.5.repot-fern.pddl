@@ -1,0 +1,6 @@
+(pickup robot pot1 shed)
+(move human shed patio)
+(move robot shed patio)
+(put human fern1 patio)
+(put robot pot1 patio)
+(work human repot-fern fern1 pot1 trowel1 patio)

@@ -1,0 +1,8 @@
+(move robot patio gate)
+(move human patio shed)
+(pickup robot tulip1 gate)
+(pickup human trowel1 shed)
+(move robot gate patio)
+(move human shed patio)
+(put robot tulip1 patio)
+(work human pot-tulips tulip1 pot1 trowel1 patio)

@@ -1,0 +1,2 @@
+(move human patio rosebed)
+; ok so all i need now is the trowel, its in the shed

@@ -1,0 +1,8 @@
+(move robot counter1 drawer1)
+(move human fridge1 counter1)
+(pickup robot whisk1 drawer1)
+(putdown human milk1 counter1)
+(move robot drawer1 counter1)
+(putdown human egg1 counter1)
+(handover robot human whisk1 counter1)
+(cook3 human custard milk1 egg1 sugar1 whisk1 counter1)

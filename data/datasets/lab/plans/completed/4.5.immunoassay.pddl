@@ -1,0 +1,8 @@
+(open robot fridge1)
+(move human shelf1 bench1)
+(pickup robot serum1 fridge1)
+(wait human)
+(move robot fridge1 bench1)
+(wait human)
+(put robot serum1 bench1)
+(run human immunoassay buffer1 serum1 pipette2 bench1)

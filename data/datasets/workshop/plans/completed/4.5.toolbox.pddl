@@ -1,0 +1,8 @@
+(move robot bench rack)
+(move human bins bench)
+(pickup robot panel2 rack)
+(putdown human bracket1 bench)
+(move robot rack bench)
+(wait human)
+(putdown robot panel2 bench)
+(assemble human toolbox panel2 bracket1 drill1 bench)
