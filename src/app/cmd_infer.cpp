@@ -49,7 +49,7 @@ nlohmann::json explain_json(const inference::InferenceRun& run, const inference:
     for (size_t h = 0; h < u.hypotheses.size(); ++h) {
       nlohmann::json cs = nlohmann::json::array();
       for (const auto* c : top_commands(u.hypotheses[h], top))
-        cs.push_back({{"command", c->command}, {"log_lm", c->log_lm}, {"posterior", c->posterior}});
+        cs.push_back({{"command", c->command}, {"log_lm", c->log_lm}, {"prior", c->prior}, {"posterior", c->posterior}});
       hs.push_back({{"hypothesis", hypothesis_label(run, h)},
                     {"log_likelihood", u.hypotheses[h].log_likelihood},
                     {"commands", std::move(cs)},
@@ -70,7 +70,7 @@ nlohmann::json rollouts_json(const inference::InferenceRun& run) {
 void print_explanation(const inference::InferenceRun& run, int top) {
   for (const auto& st : run.steps)
     for (const auto& u : st.utterances) {
-      fmt::print("\nutterance \"{}\" (step {}): log-likelihood per hypothesis, then its most probable commands\n",
+      fmt::print("\nutterance \"{}\" (step {}): log-likelihood per hypothesis, then its most probable commands (posterior, prior, LM score)\n",
                  pddl::printable(u.text), st.t);
       for (size_t h = 0; h < u.hypotheses.size(); ++h) {
         const auto& hu = u.hypotheses[h];
@@ -86,7 +86,7 @@ void print_explanation(const inference::InferenceRun& run, int top) {
                    hu.commands.size(), hu.commands.size() == 1 ? "" : "s");
         if (hu.commands.empty()) fmt::print("      (no command: scored with the empty prompt)\n");
         for (const auto* c : top_commands(hu, top))
-          fmt::print("      {:.3f}  {}\n", c->posterior, c->command);
+          fmt::print("      {:.3f}  (prior {:.3f}, log P(u|c) {:.2f})  {}\n", c->posterior, c->prior, c->log_lm, c->command);
       }
     }
   fmt::print("\nrolled-out joint plans after the last step:\n");

@@ -120,29 +120,30 @@ std::string prompt_of(const Golden& g) {
 // unsplit alignment_model.cpp (commit a126c13) with CLIPS_GOLDEN_PRINT=1, and
 // re-recorded when what a later request's "it" points back to became the
 // listener's (EncodedUtterance::about_request; EM moves every score) and when
-// "the red one" became contradicted like "the red key"; they
+// "the red one" became contradicted like "the red key", and when a clause
+// addressed to the listener ("could you ...") became a request with 0.99; they
 // are not derived by hand. They cover every step of the model: length, mention
 // sums, anchors, clause types, modifiers, colour binding and contradiction,
 // number binding, pronoun antecedents, misspellings, unknown words, prefixes
 // and the empty-command prompt. Re-record them only for an intended change of
 // the model, and say so in the commit.
 const std::vector<Golden> kGolden = {
-    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.4038991918104},
-    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.725360442751562},
+    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.1931245465282},
+    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.730581117539526},
     {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
-     " Bring me both red", -13.819498621327856},
-    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -57.04635668575652},
-    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.949589274786504},
+     " Bring me both red", -13.816399518766735},
+    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -56.99248850027272},
+    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.939941208462148},
     {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
-     " This red door has me stuck; could you open it?\n", -70.91714158861431},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -29.400376471958815},
+     " This red door has me stuck; could you open it?\n", -70.73846500040992},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -30.719568553670143},
     {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
-     " Pass me the red key pls, would it be possible?\n", -76.50152769032051},
-    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.66836169758441},
-    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -25.174317236321624},
-    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.68553493173025},
-    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.71766969198258},
-    {"E", "", " Hello there.\n", -28.17720170490398},
+     " Pass me the red key pls, would it be possible?\n", -76.5379187438028},
+    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.682939482933385},
+    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -24.96660076058079},
+    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.688433098758303},
+    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.63655043520132},
+    {"E", "", " Hello there.\n", -28.160805580300174},
 };
 
 TEST(AlignmentGolden, ScoresMatchTheRecordedOnes) {

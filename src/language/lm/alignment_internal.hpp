@@ -26,6 +26,8 @@ inline constexpr double kPiContent = 0.4;
 inline constexpr double kGenericShare = 0.08;  // share of GEN inside Content when groups are active
 inline constexpr double kMention = 0.85;       // prior mean of the rho (Beta pseudo-counts 2)
 inline constexpr double kRequestClause = 0.8;
+// A clause whose subject is the listener ("can you ...", "you bring ...").
+inline constexpr double kAddressedRequestClause = 0.99;
 inline constexpr size_t kMaxAnchors = 4;  // action groups whose mention requires an anchor token
 inline constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
 // Log-probability below which a token's sources are rescaled. The clause

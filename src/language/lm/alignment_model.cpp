@@ -569,8 +569,10 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const uint32_t first_mask = enumerate ? 0u : all;
   const uint32_t end_mask = enumerate ? all + 1u : all;  // exclusive; non-enumerated: one mask
   const size_t clauses = u.clause_end.size();
-  const double log_req = std::log(kRequestClause);
-  const double log_stm = std::log(1 - kRequestClause);
+  // A clause's speech-act prior: "can you ...", "you bring ..." is read as a request.
+  auto p_request = [&](size_t clause) {
+    return clause < u.addressed.size() && u.addressed[clause] != 0 ? kAddressedRequestClause : kRequestClause;
+  };
 
   // Mixture of one token under a mask and clause type; also returns, via
   // `den`, each action group's normaliser (1 + weights of its optional units on).
@@ -628,8 +630,8 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     double b[2][1u << kMaxAnchors];
     double e[1u << kMaxAnchors];
     double single[kMaxAnchors];
-    a[0][0] = kRequestClause;
-    a[1][0] = 1 - kRequestClause;
+    a[0][0] = p_request(0);
+    a[1][0] = 1 - p_request(0);
     double log_scale = 0;
     size_t clause = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -667,8 +669,8 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
         if (i + 1 < n) {
           for (uint32_t A = 0; A <= full; ++A) {
             const double sA = a[0][A] + a[1][A];
-            a[0][A] = kRequestClause * sA;
-            a[1][A] = (1 - kRequestClause) * sA;
+            a[0][A] = p_request(clause) * sA;
+            a[1][A] = (1 - p_request(clause)) * sA;
           }
         }
       }
@@ -730,7 +732,7 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     size_t start = 0;
     for (size_t k = 0; k < clauses; ++k) {
       const size_t end = static_cast<size_t>(u.clause_end[k]);
-      double lr = log_req, ls = log_stm;
+      double lr = std::log(p_request(k)), ls = std::log(1 - p_request(k));
       double pr = 1, ps = 1;
       for (size_t i = start; i < end; ++i) {
         pr *= mix[2 * i];

@@ -187,7 +187,29 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   }
   mark_modifiers(u);
   mark_pronoun_antecedents(u);
+  mark_addressed_clauses(u);
   return u;
+}
+
+// A clause whose subject is the listener: "you" first, after nothing but
+// discourse fillers and an auxiliary ("um, could you ...", "you bring ...").
+void AlignmentModel::mark_addressed_clauses(EncodedUtterance& u) const {
+  static const std::unordered_set<std::string> lead = {
+      "um", "uh", "er", "erm", "oh", "ok", "okay", "right", "so", "hey", "please", "and", "then", "now", "well",
+      "also", "just", "yeah", "yes", "oi", "alright", "actually", "maybe", "hi", "hmm", "ah", "look", "listen"};
+  static const std::unordered_set<std::string> auxiliary = {"can", "could", "would", "will", "wo", "do", "might",
+                                                            "shall", "should", "must"};
+  const size_t n = u.words.size();
+  u.addressed.assign(u.clause_end.size(), 0);
+  size_t start = 0;
+  for (size_t k = 0; k < u.clause_end.size(); ++k) {
+    const size_t end = std::min(static_cast<size_t>(u.clause_end[k]), n);
+    size_t i = start;
+    while (i < end && (lead.count(u.words[i]) != 0 || is_punctuation_token(u.words[i]))) ++i;
+    if (i < end && auxiliary.count(u.words[i]) != 0) ++i;
+    if (i < end && (u.words[i] == "you" || u.words[i] == "u")) u.addressed[k] = 1;
+    start = end;
+  }
 }
 
 uint8_t AlignmentModel::word_flags(int id, const std::string& w) const {
