@@ -139,8 +139,8 @@
 //
 // Files, by job: alignment_model.cpp (binding commands and the probability
 // model), english_reader.cpp (encode(): spelling repair, lexical classes,
-// clauses, modifier spans, the nouns colours and numbers describe, pronoun
-// antecedents), alignment_training.cpp (EM), alignment_snapshot.cpp (save and
+// clauses and whom they address, modifier spans, the nouns colours and
+// numbers describe, pronoun antecedents), alignment_training.cpp (EM), alignment_snapshot.cpp (save and
 // load); alignment_internal.hpp holds what they share. tests/lm/
 // alignment_behaviour_test.cpp pins golden scores across refactorings.
 #include <array>

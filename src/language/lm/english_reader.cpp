@@ -1,6 +1,7 @@
 // The alignment model's reading of an English utterance: spelling repair,
-// lexical classes, clauses, post-nominal modifiers, the nouns colours and
-// numbers describe, and the antecedents of "it"/"them" (see alignment_model.hpp, items 3, 5-7).
+// lexical classes, clauses and those addressed to the listener, post-nominal
+// modifiers, the nouns colours and numbers describe, and the antecedents of
+// "it"/"them" (see alignment_model.hpp, items 3, 5-7).
 #include "language/lm/alignment_model.hpp"
 
 #include <algorithm>
