@@ -41,7 +41,7 @@ set(CLIPS_INTEGRATION_TESTS_generate "GenerateDataset.SmallSetLoadsAndEveryPlanC
 set(CLIPS_INTEGRATION_TESTS_report "BenchReportTest.ReportFilesAndHtml:BenchReportTest.ResultsCsvHasOneRowPerPlanAndMethod:BenchReportTest.SummaryJson")
 set(CLIPS_INTEGRATION_TESTS_multimodal "MultimodalServer.*")
 set(CLIPS_INTEGRATION_TESTS_scenes "RenderCli.*")
-set(CLIPS_INTEGRATION_TESTS_inference "ConcurrentInference.*:ParallelRefinement.*:ParticleExamples.*:AloneTwins.*:DelegatingSpeaker.*:JointStatement.*:FunctionWords.*:AddressedClause.*")
+set(CLIPS_INTEGRATION_TESTS_inference "ConcurrentInference.*:ParallelRefinement.*:ParticleExamples.*:AloneTwins.*:DelegatingSpeaker.*:JointStatement.*:FunctionWords.*:AddressedClause.*:GoalWithCommand.*")
 set(CLIPS_INTEGRATION_TESTS_language "ListenCli.LmScorePrintsLogProbAndBackend:ListenCli.LmScoreReadsWindowsLineEndingsAndRefusesNonPromptFiles:LmDomain.*")
 set(CLIPS_INTEGRATION_TESTS_lm "AlignmentBehaviour.RareColoursAreCopiedAsReadilyAsFrequentOnes:AlignmentGolden.*:EmbeddedCache.*:EmbeddedSnapshot.*:HttpClientTest.ReturnsNonRetryableStatusesWithoutRetrying:HttpClientTest.StopsReadingAnEndlessReplyAtTheCap:OpenAiCompletionsTest.EndlessReplyStopsAtTheDefaultCap:DomainCorpus.*")
 set(CLIPS_INTEGRATION_TESTS_pddl "ReaderLimit.HugeFileOfRepeatedTokensFailsFast")

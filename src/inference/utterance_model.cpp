@@ -286,10 +286,25 @@ std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(const std::v
     double no_command = 0;
     cmds[h] = weighted_commands(plans[h], s, no_command);
     const double gamma = h < goals.size() && !goals[h].predicates.empty() ? config_.goal_statements : 0.0;
+    // A share of the speakers who state the goal also say what they want done.
+    const double both = gamma > 0 && !cmds[h].empty() ? gamma * config_.goal_with_command : 0.0;
+    // (Of a plan with no command, the goal statement is all it says.)
+    const double alone = gamma - both + no_command * both;
     // Plans with no command speak under the empty prompt (all of them: 1).
     const double empty_weight = (cmds[h].empty() ? 1.0 : no_command) * (1 - gamma);
-    for (WeightedCommand& c : cmds[h]) c.weight *= 1 - gamma;
-    if (gamma > 0) cmds[h].push_back({goals[h], gamma});
+    const size_t n_plain = cmds[h].size();
+    for (size_t i = 0; i < n_plain; ++i) {
+      if (both <= 0) break;
+      const WeightedCommand& c = cmds[h][i];
+      commands::Command g = goals[h];
+      g.actions.insert(g.actions.end(), c.command.actions.begin(), c.command.actions.end());
+      g.predicates.insert(g.predicates.end(), c.command.predicates.begin(), c.command.predicates.end());
+      g.variables.insert(g.variables.end(), c.command.variables.begin(), c.command.variables.end());
+      g.binding = c.command.binding;
+      cmds[h].push_back({std::move(g), c.weight * both});
+    }
+    for (size_t i = 0; i < n_plain; ++i) cmds[h][i].weight *= 1 - gamma;
+    if (alone > 0) cmds[h].push_back({goals[h], alone});
     for (const WeightedCommand& c : cmds[h])
       prompts[h].push_back({commands::build_prompt(examples_, c.command.llm_form()), c.weight});
     if (empty_weight > 0) prompts[h].push_back({std::string(commands::kEmptyCommandPrompt), empty_weight});

@@ -21,7 +21,10 @@
 //      with G_h = (make me ?goal1) where (named ?goal1 w) ... over the words
 //      of the goal's label, of the objects its condition names and of their
 //      qualifier values ("pot-roses" -> pot, roses; (has human gem1) -> gem,
-//      red). So "we're making the frame" is evidence for the frame.
+//      red). So "we're making the frame" is evidence for the frame. A share
+//      (language.goal_with_command) of those speakers also give a command
+//      in the same breath: each command c of step 3, with its prior, joined
+//      to G_h ("Distillation next. Could you dig the instrument out?").
 // The per-command posterior P(c | u, s, π_h) is a by-product, with the ground
 // actions each command was lifted from (what the assistant would carry out).
 // All prompts of all hypotheses (and utterances) go to the LM in one batch.

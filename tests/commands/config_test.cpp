@@ -16,6 +16,11 @@ TEST(LanguageConfig, PaperRuleFlagsParse) {
   EXPECT_EQ(c.speaker_actions, SpeakerActionRule::ExcludeSpeakerOnlyCommands);
   EXPECT_TRUE(c.exclude_chains);
   EXPECT_EQ(c.salient_actions.at(0).agent_arg, 1);
+  EXPECT_DOUBLE_EQ(c.goal_with_command, 0.5);  // the default
+  const auto none = parse_language_config(
+      R"({"domain": "d", "salient_actions": [{"action": "pickup", "focal_arg": 2}], "goal_with_command": 0})",
+      "inline.json");
+  EXPECT_DOUBLE_EQ(none.goal_with_command, 0.0);
 }
 
 TEST(LanguageConfig, ErrorsNameFileAndKey) {
@@ -35,6 +40,9 @@ TEST(LanguageConfig, ErrorsNameFileAndKey) {
   EXPECT_EQ(message_of(R"({"domain": "d", "salient_actions": [{"action": "a", "focal_arg": 2}],
                           "printed_form": "fancy"})"),
             "lang.json: printed_form: expected one of: where-clause, qualified-args-only");
+  EXPECT_EQ(message_of(R"({"domain": "d", "salient_actions": [{"action": "a", "focal_arg": 2}],
+                          "goal_with_command": 1.5})"),
+            "lang.json: goal_with_command: expected a number in [0, 1]");
   EXPECT_NE(message_of("{").find("lang.json: invalid JSON"), std::string::npos);
   EXPECT_NE(message_of(R"({"domain": "d", "max_command_actions": 1e999})").find("lang.json: invalid JSON"), std::string::npos);
 }

@@ -401,6 +401,17 @@ TEST(AddressedClause, CanYouOpenIsTheListenersOpening) {
   EXPECT_GT(yours, mine);
 }
 
+// The lab's 6.4: "Right, distillation next. Could you dig the instrument
+// out of the drawer for me?" after the solvent. Calibration and distillation
+// both take the solvent and the thermometer, so the request alone cannot
+// tell them apart; the goal's name does, and the speaker may state the goal
+// and ask in one breath (language.goal_with_command): 0.49 before, 0.80 now.
+TEST(GoalWithCommand, DistillationNextThenARequest) {
+  const DatasetPlanRun r("lab", "6.4.distillation");
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), 0.7);
+  EXPECT_GT(r.run.p_true_goal(Modality::Both), r.run.p_true_goal(Modality::ActionOnly) + 0.2);
+}
+
 // The kitchen's 5.3: "Hmm, I'll need something sharp for this." after the
 // banana. The fruit salad takes the big metal knife, the smoothie a spoon:
 // read through WordNet, "sharp" is what a knife is, so the words point to

@@ -131,7 +131,7 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
       "domain", "salient_actions", "qualifier", "speaker", "listener", "max_command_actions",
       "max_action_types", "max_qualifier_values_per_action_type", "speaker_actions",
       "exclude_chains", "paper_speaker_actions", "paper_exclude_chains", "variable_naming", "printed_form", "printed_args", "goal_atoms", "goal_variables",
-      "locations", "destinations", "goal_statements", "comment"};
+      "locations", "destinations", "goal_statements", "goal_with_command", "comment"};
   for (const auto& [key, value] : doc.items())
     if (!known.contains(key)) r.fail(key, "unknown key");
 
@@ -224,6 +224,12 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
     if (!g.is_number() || !(g.get<double>() >= 0 && g.get<double>() < 1))
       r.fail("goal_statements", "expected a number in [0, 1)");
     c.goal_statements = g.get<double>();
+  }
+  if (doc.contains("goal_with_command")) {
+    const json& g = doc["goal_with_command"];
+    if (!g.is_number() || !(g.get<double>() >= 0 && g.get<double>() <= 1))
+      r.fail("goal_with_command", "expected a number in [0, 1]");
+    c.goal_with_command = g.get<double>();
   }
   if (doc.contains("destinations")) c.destinations = r.boolean(doc["destinations"], "destinations");
   if (doc.contains("locations")) {

@@ -119,6 +119,10 @@ struct LanguageConfig {
   // where (named ?goal1 frame) ... (inference::UtteranceModel). 0: commands
   // only (the paper's model; its packs keep it for their tables).
   double goal_statements = 0.15;
+  // Of those, the share that also say what they want done ("Distillation
+  // next; could you dig the instrument out?"): scored under the goal's
+  // statement joined to each command of the plans.
+  double goal_with_command = 0.5;
   bool is_location(const std::string& predicate) const;
   // A location predicate or the destination one: its second argument is a
   // place, printed by name.
