@@ -292,18 +292,22 @@ std::vector<std::vector<HypothesisUtterance>> UtteranceModel::score(const std::v
     const double alone = gamma - both + no_command * both;
     // Plans with no command speak under the empty prompt (all of them: 1).
     const double empty_weight = (cmds[h].empty() ? 1.0 : no_command) * (1 - gamma);
-    const size_t n_plain = cmds[h].size();
-    for (size_t i = 0; i < n_plain; ++i) {
-      if (both <= 0) break;
-      const WeightedCommand& c = cmds[h][i];
-      commands::Command g = goals[h];
-      g.actions.insert(g.actions.end(), c.command.actions.begin(), c.command.actions.end());
-      g.predicates.insert(g.predicates.end(), c.command.predicates.begin(), c.command.predicates.end());
-      g.variables.insert(g.variables.end(), c.command.variables.begin(), c.command.variables.end());
-      g.binding = c.command.binding;
-      cmds[h].push_back({std::move(g), c.weight * both});
+    if (both > 0) {
+      std::vector<WeightedCommand> joined;
+      joined.reserve(cmds[h].size());
+      for (const WeightedCommand& c : cmds[h]) {
+        commands::Command g = goals[h];
+        g.actions.insert(g.actions.end(), c.command.actions.begin(), c.command.actions.end());
+        g.predicates.insert(g.predicates.end(), c.command.predicates.begin(), c.command.predicates.end());
+        g.variables.insert(g.variables.end(), c.command.variables.begin(), c.command.variables.end());
+        g.binding = c.command.binding;
+        joined.push_back({std::move(g), c.weight * both});
+      }
+      for (WeightedCommand& c : cmds[h]) c.weight *= 1 - gamma;
+      for (WeightedCommand& j : joined) cmds[h].push_back(std::move(j));
+    } else {
+      for (WeightedCommand& c : cmds[h]) c.weight *= 1 - gamma;
     }
-    for (size_t i = 0; i < n_plain; ++i) cmds[h][i].weight *= 1 - gamma;
     if (alone > 0) cmds[h].push_back({goals[h], alone});
     for (const WeightedCommand& c : cmds[h])
       prompts[h].push_back({commands::build_prompt(examples_, c.command.llm_form()), c.weight});
