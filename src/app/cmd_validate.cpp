@@ -12,6 +12,8 @@
 #include "data/dataset.hpp"
 #include "data/validate.hpp"
 #include "domains/pack.hpp"
+#include "language/listener.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
 #include "pddl/sexpr.hpp"
 #include "eval/experiment.hpp"
 
@@ -48,11 +50,12 @@ int check_pack_schema(const std::string& dir, bool quiet) {
   return static_cast<int>(errors.size());
 }
 
-// What the pack left to clips and clips found from the domain's effects:
-// the goal atoms of salient actions without `goal_atoms`, and where each
-// salient action leaves its focal object (language.destinations).
-void print_derived(const domains::Pack& pack) {
-  const domains::PackSpec& spec = pack.spec();
+// What the pack left to clips and clips found from the domain: the goal
+// atoms of salient actions without `goal_atoms`, where each salient action
+// leaves its focal object (language.destinations), and the WordNet senses
+// the generated corpus gives type names whose first sense is not the domain's.
+void print_derived(const data::Dataset& ds) {
+  const domains::PackSpec& spec = ds.pack().spec();
   for (const std::string& action : spec.derived_goal_atoms) {
     std::string atoms;
     if (auto it = spec.language.goal_atoms.find(action); it != spec.language.goal_atoms.end())
@@ -63,6 +66,14 @@ void print_derived(const domains::Pack& pack) {
     if (r.destination_arg > 0)
       fmt::print("ok    derived from the effects: {} leaves its argument {} at its argument {} (commands say where)\n",
                  r.action, r.focal_arg, r.destination_arg);
+  try {
+    for (const auto& [type, sense] : language::dataset_noun_senses(ds))
+      fmt::print("ok    derived from the types: {} means \"{}\" (WordNet noun sense {}, not the first)\n", type,
+                 lm::WordNetLexicon::instance().noun_gloss(type, sense), sense + 1);
+  } catch (const std::exception& e) {
+    // A problem that does not load is reported with the plans below.
+    fmt::print("WARN  the type names' WordNet senses were not derived: {}\n", e.what());
+  }
 }
 
 }  // namespace
@@ -84,7 +95,7 @@ void register_validate(CLI::App& app) {
     const std::string dir = dataset_dir(*dataset);
     const int schema_failures = check_pack_schema(dir, *quiet);
     auto ds = data::Dataset::load(dir);
-    if (!*quiet) print_derived(ds.pack());
+    if (!*quiet) print_derived(ds);
     auto report = data::validate_dataset(ds);
     for (auto& r : report.results) {
       if (r.ok) {

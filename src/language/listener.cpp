@@ -91,11 +91,25 @@ std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string&
           describe_for_language_model(domain, *problem, pack.language(), pack.language().qualifiers());
       described.goal_names = goal_names;
       const auto generated = lm::embedded_options_for_domain(described);
+      o.noun_senses.insert(generated.noun_senses.begin(), generated.noun_senses.end());
       for (const auto& pair : generated.extra_corpus)
         if (seen.emplace(pair.command, pair.utterance).second) o.extra_corpus.push_back(pair);
     }
   }
   return std::make_shared<lm::CachedLanguageModel>(std::make_shared<lm::EmbeddedLanguageModel>(o));
+}
+
+lm::NounSenses dataset_noun_senses(const data::Dataset& dataset) {
+  lm::NounSenses out;
+  if (!dataset.pack().spec().embedded_corpus.empty()) return out;
+  // As make_domain_language_model gathers them: over the problems.
+  for (const std::string& id : dataset.problem_ids()) {
+    const auto task = dataset.task(id);
+    const lm::NounSenses senses = lm::domain_noun_senses(describe_for_language_model(
+        *dataset.domain(), task->problem(), dataset.pack().language(), dataset.pack().language().qualifiers()));
+    out.insert(senses.begin(), senses.end());
+  }
+  return out;
 }
 
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,

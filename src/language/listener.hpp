@@ -20,6 +20,7 @@
 #include "language/commands/language_config.hpp"
 #include "language/commands/term.hpp"
 #include "language/lm/language_model.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
 
@@ -64,6 +65,12 @@ std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string&
                                                               const std::vector<const pddl::Problem*>& problems,
                                                               const std::vector<std::string>& goal_names = {});
 // The same over every problem a dataset's plans use.
+// The WordNet noun senses the embedded model gives a dataset's type names
+// where they are not the first (lm::domain_noun_senses, over every problem),
+// for `clips validate`; empty for a pack with a hand-written corpus, which
+// does not use them.
+lm::NounSenses dataset_noun_senses(const data::Dataset& dataset);
+
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
                                                                const LanguageModelOptions& options,
                                                                const data::Dataset& dataset);

@@ -63,6 +63,11 @@ TEST(CliOwnDomain, ValidateReportsWhatItDerivedFromTheEffects) {
   EXPECT_TRUE(contains(r.out, "derived from the effects: put leaves its argument 2 at its argument 3")) << r.out;
   // pickup's meaning is the pack's own goal_atoms entry, and pickup leaves nothing anywhere.
   EXPECT_FALSE(contains(r.out, "derived from the effects: pickup")) << r.out;
+  // The garden declares its spade and rake tools: WordNet's shovel and rake,
+  // not its playing card and libertine; its tool keeps the first sense.
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("derived from the types: spade means \"[^\"]*shovel"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("derived from the types: rake means \"[^\"]*tool"))) << r.out;
+  EXPECT_FALSE(contains(r.out, "derived from the types: tool")) << r.out;
 }
 
 TEST(CliOwnDomain, AssistTakesTurnsWithIdle) {

@@ -293,5 +293,46 @@ TEST(DomainCorpus, EmbeddedModelOptionsForADomainWithoutACorpus) {
   EXPECT_GE(model->encode("plank").ids.at(0), 0);
 }
 
+TEST(DomainCorpus, TypesMeanTheSenseTheirSupertypesSay) {
+  WordNetLexicon& wn = WordNetLexicon::instance();
+  // WordNet's first senses: a saw is a saying, a wrench an injury, a spade a
+  // playing card. Declared as tools, they are the tools.
+  const std::map<std::string, std::string> tools = {{"saw", "tool"},    {"wrench", "tool"}, {"spade", "tool"},
+                                                    {"hammer", "tool"}, {"tool", "item"},   {"item", "object"}};
+  const NounSenses senses = wn.domain_noun_senses(tools, {"saw", "wrench", "spade", "hammer", "tool", "item"});
+  const auto gloss_word = [&](const std::string& type) {
+    const auto it = senses.find(type);
+    return it == senses.end() ? -1 : it->second;
+  };
+  EXPECT_GE(gloss_word("saw"), 1);     // a hand saw or a power saw
+  EXPECT_EQ(gloss_word("wrench"), 2);  // "wrench, spanner"
+  EXPECT_EQ(gloss_word("spade"), 1);   // "a sturdy hand shovel"
+  EXPECT_EQ(gloss_word("tool"), -1);   // its first sense is already the implement
+  // Among sayings the saw stays a saying.
+  const NounSenses sayings =
+      wn.domain_noun_senses({{"saw", "saying"}, {"motto", "saying"}, {"saying", "object"}}, {"saw", "motto"});
+  EXPECT_EQ(sayings.count("saw"), 0u);
+  // The noun's lexical base follows the sense: the spanner and the tool it is.
+  const auto has = [](const WordDistribution& d, const std::string& w) {
+    return std::any_of(d.begin(), d.end(), [&](const auto& e) { return e.first == w; });
+  };
+  EXPECT_FALSE(has(wn.noun_base("wrench", false), "spanner"));
+  EXPECT_TRUE(has(wn.noun_base("wrench", false, 2), "spanner"));
+  EXPECT_TRUE(has(wn.noun_base("wrench", false, 2), "tool"));
+  // The workshop declares its wrench a tool, so the generated corpus may call it a spanner.
+  EXPECT_EQ(domain_noun_senses(workshop(2)).at("wrench"), 2);
+}
+
+TEST(DomainCorpus, TheSpannerIsTheWorkshopsWrench) {
+  const AlignmentModel& m = *model_for(2);
+  std::printf("[could you pass me the spanner]\n");
+  // The wrench last: a tie would go to the hammer.
+  EXPECT_EQ(best_of(m, "could you pass me the spanner",
+                    {"(handover you me hammer1)", "(handover you me plank1)", "(handover you me wrench1)"}),
+            "(handover you me wrench1)");
+  EXPECT_GT(score(m, "(handover you me wrench1)", "could you pass me the spanner"),
+            score(m, "(handover you me hammer1)", "could you pass me the spanner") + 2.0);
+}
+
 }  // namespace
 }  // namespace clips::lm

@@ -107,7 +107,8 @@ double length_base(int n, double mean);  // prior of utterance lengths around a 
 std::string verb_key(const FrameGroup& g);
 std::string noun_key(const FrameGroup& g);
 std::string number_key(int count);
-WordDistribution base_for_key(const std::string& key);
+// `senses`: the noun sense each type name means (NounSenses; the first when absent).
+WordDistribution base_for_key(const std::string& key, const NounSenses& senses = {});
 
 // ------------------------------------------------------------------------------------
 

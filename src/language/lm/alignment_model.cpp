@@ -79,7 +79,7 @@ std::string noun_key(const FrameGroup& g) {
 std::string number_key(int count) { return "Q:" + std::to_string(std::min(count, 10)); }
 
 // Lexical base of a table key (the keys above plus the fixed sources).
-WordDistribution base_for_key(const std::string& key) {
+WordDistribution base_for_key(const std::string& key, const NounSenses& senses) {
   if (key == "A:you") return agent_base(false);
   if (key == "A:me") return agent_base(true);
   if (key == "P:me") {
@@ -96,7 +96,10 @@ WordDistribution base_for_key(const std::string& key) {
   if (key.rfind("F:", 0) == 0) return WordNetLexicon::instance().function_words(key.substr(2));
   if (key.rfind("N:", 0) == 0) {
     const size_t slash = key.rfind('/');
-    return WordNetLexicon::instance().noun_base(key.substr(2, slash - 2), key.substr(slash) == "/pl");
+    const std::string type = key.substr(2, slash - 2);
+    const auto sense = senses.find(type);
+    return WordNetLexicon::instance().noun_base(type, key.substr(slash) == "/pl",
+                                                sense == senses.end() ? 0 : sense->second);
   }
   return {};  // GEN and R get their bases from the trainer
 }
@@ -193,7 +196,7 @@ const AlignmentModel::Table* AlignmentModel::find_or_make_table(const std::strin
   t->key = key;
   t->prob.assign(words_.size(), 0.0);
   const bool function_table = key.rfind("F:", 0) == 0;
-  for (const auto& [w, p] : base_for_key(key)) {
+  for (const auto& [w, p] : base_for_key(key, noun_senses_)) {
     auto it = word_ids_.find(w);
     // What a thing is for is not one of the domain's qualifier values
     // ("plastic" in a beaker's gloss is not its use).

@@ -154,6 +154,7 @@
 
 #include "language/lm/command_frame.hpp"
 #include "language/lm/training_pair.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
 
 namespace clips::lm {
 
@@ -198,7 +199,10 @@ class AlignmentModel {
  public:
   // Train by EM on the pairs (throws LmError naming the pair's origin if a
   // command cannot be parsed).
-  static std::shared_ptr<AlignmentModel> train(const std::vector<TrainingPair>& pairs, int iterations);
+  // `senses`: the WordNet sense the domain means by a type name where it is
+  // not the first (lexical bases of its nouns follow it).
+  static std::shared_ptr<AlignmentModel> train(const std::vector<TrainingPair>& pairs, int iterations,
+                                               const NounSenses& senses = {});
 
   struct Bound;  // a command frame bound to this model's tables
   std::shared_ptr<const Bound> bind(const std::string& command) const;
@@ -234,6 +238,9 @@ class AlignmentModel {
   // fixed weight and an untrained WordNet table. Off by default: the paper
   // domains' hand-written corpora say what they need. Set before scoring.
   void set_function_words(bool on) { function_words_ = on; }
+  // The noun senses the model was trained with, for tables made on demand
+  // (a snapshot does not hold them). Set before scoring.
+  void set_noun_senses(const NounSenses& senses) { noun_senses_ = senses; }
 
   // A binary snapshot of the trained parameters, for the embedded model's
   // on-disk cache (tables created on demand are not part of it). load() throws
@@ -300,6 +307,7 @@ class AlignmentModel {
   std::vector<int> noun_tables_;  // ids of the trained noun tables ("N:<type>/sg|pl")
   double copy_alpha_ = 0.8;
   bool function_words_ = false;
+  NounSenses noun_senses_;
   double mention_[3] = {0.85, 0.85, 0.85};  // rho: action groups, recipients, attribute values
   std::vector<std::vector<double>> length_;  // [actions][n] for n <= kMaxLen
   std::vector<double> length_tail_scale_;    // weight of the base beyond kMaxLen

@@ -19,9 +19,11 @@ namespace clips::lm {
 // ------------------------------------------------------------------------------------
 
 struct Trainer {
-  static std::shared_ptr<AlignmentModel> run(const std::vector<TrainingPair>& pairs, int iterations) {
+  static std::shared_ptr<AlignmentModel> run(const std::vector<TrainingPair>& pairs, int iterations,
+                                             const NounSenses& senses) {
     std::shared_ptr<AlignmentModel> m(new AlignmentModel());
     AlignmentModel& M = *m;
+    M.noun_senses_ = senses;
 
     // Parse everything first so malformed input fails before any work.
     std::vector<CommandFrame> frames;
@@ -52,7 +54,7 @@ struct Trainer {
     }
     std::map<std::string, WordDistribution> bases;
     for (const std::string& k : keys) {
-      bases[k] = base_for_key(k);
+      bases[k] = base_for_key(k, senses);
       for (const auto& [w, p] : bases[k]) M.add_word(w);
     }
     for (const std::string& a : attributes) M.add_word(a);
@@ -388,8 +390,9 @@ struct Trainer {
   }
 };
 
-std::shared_ptr<AlignmentModel> AlignmentModel::train(const std::vector<TrainingPair>& pairs, int iterations) {
-  auto m = Trainer::run(pairs, iterations);
+std::shared_ptr<AlignmentModel> AlignmentModel::train(const std::vector<TrainingPair>& pairs, int iterations,
+                                                      const NounSenses& senses) {
+  auto m = Trainer::run(pairs, iterations, senses);
   // Mass of the closed-class words and punctuation, for log_prob_unprimed.
   double closed = 0;
   for (size_t id = 0; id < m->words_.size() && id < m->bg_.size() && id < m->word_flags_.size(); ++id) {

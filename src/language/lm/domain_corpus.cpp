@@ -53,13 +53,14 @@ std::string name_as_words(std::string_view name) {
 
 // Words of an action or type: the pack's own words, then WordNet's.
 std::vector<std::string> phrases_for(const std::string& name, const std::map<std::string, std::vector<std::string>>& extra,
-                                     bool verb) {
+                                     bool verb, const NounSenses& senses = {}) {
   std::vector<std::string> out;
   if (auto it = extra.find(name); it != extra.end())
     for (const std::string& w : it->second) out.push_back(w);
   WordNetLexicon& wn = WordNetLexicon::instance();
   const std::string words = name_as_words(name);
-  for (const std::string& w : verb ? wn.verb_phrases(words) : wn.noun_phrases(words))
+  const auto sense = senses.find(name);
+  for (const std::string& w : verb ? wn.verb_phrases(words) : wn.noun_phrases(words, sense == senses.end() ? 0 : sense->second))
     if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
   if (out.empty()) out.push_back(words);
   return out;
@@ -78,7 +79,8 @@ struct PlannedAction {
 
 class Generator {
  public:
-  Generator(const DomainDescription& d, const DomainCorpusOptions& o) : d_(d), o_(o), dice_(o.seed) {
+  Generator(const DomainDescription& d, const DomainCorpusOptions& o)
+      : d_(d), o_(o), dice_(o.seed), senses_(domain_noun_senses(d)) {
     for (const DomainObject& obj : d_.objects) type_of_[obj.name] = obj.type;
     for (const CommandActionRule& r : d_.command_actions) {
       auto s = std::find_if(d_.actions.begin(), d_.actions.end(),
@@ -265,8 +267,8 @@ class Generator {
     std::string named = type;
     if (const std::vector<std::string> up = supertypes(type); !up.empty() && dice_.chance(kSupertypeShare))
       named = dice_.pick(up);
-    const std::string n = named == type ? ranked_pick(phrases_for(type, d_.extra_nouns, false), 0.7)
-                                        : phrases_for(named, d_.extra_nouns, false).front();
+    const std::string n = named == type ? ranked_pick(phrases_for(type, d_.extra_nouns, false, senses_), 0.7)
+                                        : phrases_for(named, d_.extra_nouns, false, senses_).front();
     return plural ? WordNetLexicon::instance().plural(n) : n;
   }
   // The declared ancestors of a type, nearest first, without `object` (every
@@ -415,11 +417,35 @@ class Generator {
   Dice dice_;
   std::map<std::string, std::string> type_of_;
   std::vector<std::pair<const CommandActionRule*, const DomainActionSchema*>> rules_;
+  NounSenses senses_;
   std::vector<TrainingPair> pairs_;
   std::set<std::string> seen_;
 };
 
 }  // namespace
+
+NounSenses domain_noun_senses(const DomainDescription& domain) {
+  // The types commands name as nouns: those of objects a command may be
+  // about (the focal parameters' types), and their declared ancestors up
+  // to those parameter types ("a tool"). Places are said by name only.
+  std::set<std::string> focal_types;
+  for (const CommandActionRule& r : domain.command_actions)
+    for (const DomainActionSchema& s : domain.actions)
+      if (s.name == r.action && r.focal_arg >= 1 && r.focal_arg <= static_cast<int>(s.parameter_types.size()))
+        focal_types.insert(s.parameter_types[static_cast<size_t>(r.focal_arg - 1)]);
+  std::set<std::string> types;
+  for (const DomainObject& obj : domain.objects) {
+    std::vector<std::string> chain{obj.type};
+    for (int guard = 0; guard < 64 && !focal_types.count(chain.back()); ++guard) {
+      const auto it = domain.parent_type.find(chain.back());
+      if (it == domain.parent_type.end()) break;
+      chain.push_back(it->second);
+    }
+    if (focal_types.count(chain.back())) types.insert(chain.begin(), chain.end());
+  }
+  types.erase("object");
+  return WordNetLexicon::instance().domain_noun_senses(domain.parent_type, {types.begin(), types.end()});
+}
 
 std::vector<TrainingPair> generate_domain_corpus(const DomainDescription& domain, const DomainCorpusOptions& options) {
   return Generator(domain, options).run();
@@ -429,6 +455,7 @@ EmbeddedModelOptions embedded_options_for_domain(const DomainDescription& domain
   EmbeddedModelOptions o;
   o.corpus_files.clear();
   o.extra_corpus = generate_domain_corpus(domain, options);
+  o.noun_senses = domain_noun_senses(domain);
   return o;
 }
 
@@ -440,7 +467,7 @@ std::shared_ptr<AlignmentModel> train_domain_model(const DomainDescription& doma
     p.weight = fewshot_weight;
     pairs.push_back(std::move(p));
   }
-  return AlignmentModel::train(pairs, em_iterations);
+  return AlignmentModel::train(pairs, em_iterations, domain_noun_senses(domain));
 }
 
 }  // namespace clips::lm

@@ -27,6 +27,7 @@
 
 #include "language/lm/embedded_model.hpp"
 #include "language/lm/training_pair.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
 
 namespace clips::lm {
 
@@ -95,6 +96,10 @@ struct DomainCorpusOptions {
   int joint_commands = 120;        // sampled commands with a speaker and a listener action
   int goal_statements = 60;        // statements of the goal
 };
+
+// The WordNet noun sense each of the domain's types means, where it is not
+// the first (WordNetLexicon::domain_noun_senses over the declared types).
+NounSenses domain_noun_senses(const DomainDescription& domain);
 
 // The generated pairs (weight 1, origin "generated <domain-less index>").
 // Throws LmError if the grammar names an action the schemas lack or a

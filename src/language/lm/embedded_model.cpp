@@ -132,6 +132,13 @@ std::string cache_identity() {
   return id;
 }
 
+// The noun senses in a cache key: a model trained with other senses differs.
+std::string senses_text(const NounSenses& senses) {
+  std::string out;
+  for (const auto& [type, sense] : senses) out += "|" + type + "#" + std::to_string(sense);
+  return out;
+}
+
 std::string cache_key(const std::string& identity, const std::vector<TrainingPair>& pairs, int iterations) {
   std::ostringstream o;
   o << "clips-embedded-lm/1\n" << identity << "\n" << iterations << "\n";
@@ -304,18 +311,20 @@ std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::block_
   auto state = std::make_shared<BlockState>();
   if (!cache_dir_.empty()) {
     const fs::path file =
-        fs::path(cache_dir_) / ("embedded-" + cache_key(cache_identity_, pairs, options_.em_iterations) + ".bin");
+        fs::path(cache_dir_) / ("embedded-" + cache_key(cache_identity_ + senses_text(options_.noun_senses), pairs,
+                                                        options_.em_iterations) + ".bin");
     state->model = load_cached(file);
     if (state->model) {
       ++cache_hits_;
     } else {
-      state->model = AlignmentModel::train(pairs, options_.em_iterations);
+      state->model = AlignmentModel::train(pairs, options_.em_iterations, options_.noun_senses);
       store_cached(cache_dir_, file, *state->model);
     }
   } else {
-    state->model = AlignmentModel::train(pairs, options_.em_iterations);
+    state->model = AlignmentModel::train(pairs, options_.em_iterations, options_.noun_senses);
   }
   state->model->set_function_words(options_.function_words);
+  state->model->set_noun_senses(options_.noun_senses);
   blocks_.emplace(block, state);
   return state;
 }

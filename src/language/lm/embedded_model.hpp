@@ -26,6 +26,7 @@
 
 #include "language/lm/language_model.hpp"
 #include "language/lm/training_pair.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
 
 namespace clips::lm {
 
@@ -55,6 +56,9 @@ struct EmbeddedModelOptions {
   // (AlignmentModel::set_function_words); for domains read through a
   // generated corpus, which says nothing of uses.
   bool function_words = false;
+  // The WordNet sense a domain means by its type names where it is not the
+  // first (lm::domain_noun_senses): their nouns' lexical bases follow it.
+  NounSenses noun_senses;
 };
 
 class EmbeddedLanguageModel : public LanguageModel {

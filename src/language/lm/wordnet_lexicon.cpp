@@ -7,6 +7,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -76,6 +77,34 @@ void wn_related(const std::string& word, int pos, int senses, int levels,
     }
   }
   if (head != nullptr) free_syns(head);
+}
+
+// As wn_related, for chosen senses: (0-based sense, hypernym levels) pairs.
+// The hypernyms are read by offset, so every level is reached.
+void wn_related_senses(const std::string& word, int pos, const std::vector<std::pair<int, int>>& sense_levels,
+                       std::vector<std::string>& synonyms, std::vector<std::string>& hypernyms) {
+  std::string buf = word;
+  IndexPtr idx = index_lookup(buf.data(), pos);
+  if (idx == nullptr) return;
+  const auto read = [&](long offset, std::vector<std::string>& words, std::vector<long>& up) {
+    SynsetPtr s = read_synset(pos, offset, nullptr);
+    if (s == nullptr) return;
+    for (int k = 0; k < s->wcount; ++k) words.push_back(lower_word(s->words[k]));
+    for (int i = 0; i < s->ptrcount; ++i)
+      if ((s->ptrtyp[i] == HYPERPTR || s->ptrtyp[i] == INSTANCE) && s->ppos[i] == pos) up.push_back(s->ptroff[i]);
+    free_synset(s);
+  };
+  for (const auto& [sense, levels] : sense_levels) {
+    if (sense < 0 || sense >= idx->off_cnt) continue;
+    std::vector<long> frontier;
+    read(static_cast<long>(idx->offset[sense]), synonyms, frontier);
+    for (int level = 0; level < levels && !frontier.empty(); ++level) {
+      std::vector<long> next;
+      for (long off : frontier) read(off, hypernyms, next);
+      frontier = std::move(next);
+    }
+  }
+  free_index(idx);
 }
 
 // --- English inflection candidates, kept only if WordNet maps them back -----------
@@ -184,6 +213,84 @@ std::vector<std::string> split_name(const std::string& name, int pos) {
   if (best.empty()) return {name};
   return best;
 }
+
+// The WordNet word a type name is looked up under, as noun_base does: the
+// name, its two-word compound, or the compound's head.
+std::string noun_lookup(const std::string& type) {
+  const std::vector<std::string> parts = split_name(type, NOUN);
+  if (parts.size() == 2) {
+    const std::string compound = parts[0] + "_" + parts[1];
+    return wn_has(compound, NOUN) ? compound : parts.back();
+  }
+  return type;
+}
+
+// Offsets of a word's first `max` noun senses, in WordNet's order.
+std::vector<long> noun_sense_offsets(const std::string& word, size_t max) {
+  std::vector<long> out;
+  std::string buf = word;
+  IndexPtr idx = index_lookup(buf.data(), NOUN);
+  if (idx == nullptr) return out;
+  for (int i = 0; i < idx->off_cnt && out.size() < max; ++i) out.push_back(static_cast<long>(idx->offset[i]));
+  free_index(idx);
+  return out;
+}
+
+// The noun hypernym graph (instance hypernyms too), read lazily by offset.
+class NounGraph {
+ public:
+  const std::vector<long>& parents(long off) {
+    if (auto it = parents_.find(off); it != parents_.end()) return it->second;
+    std::vector<long> ps;
+    if (SynsetPtr s = read_synset(NOUN, off, nullptr)) {
+      for (int i = 0; i < s->ptrcount; ++i)
+        if ((s->ptrtyp[i] == HYPERPTR || s->ptrtyp[i] == INSTANCE) && s->ppos[i] == NOUN) ps.push_back(s->ptroff[i]);
+      free_synset(s);
+    }
+    return parents_.emplace(off, std::move(ps)).first->second;
+  }
+  // Shortest hypernym path to a root.
+  int depth(long off, int guard = 0) {
+    if (auto it = depth_.find(off); it != depth_.end()) return it->second;
+    int d = 0;
+    const std::vector<long> ps = parents(off);
+    if (!ps.empty() && guard < 40) {
+      d = 1 << 20;
+      for (long p : ps) d = std::min(d, 1 + depth(p, guard + 1));
+    }
+    depth_.emplace(off, d);
+    return d;
+  }
+  // The synset and every hypernym above it.
+  const std::set<long>& closure(long off) {
+    if (auto it = closure_.find(off); it != closure_.end()) return it->second;
+    std::set<long> seen{off};
+    std::vector<long> todo{off};
+    while (!todo.empty()) {
+      const long x = todo.back();
+      todo.pop_back();
+      for (long p : parents(x))
+        if (seen.insert(p).second) todo.push_back(p);
+    }
+    return closure_.emplace(off, std::move(seen)).first->second;
+  }
+  // Wu and Palmer's similarity: how deep the most specific common hypernym
+  // lies against the depths of the two senses (1: the same synset).
+  double similarity(long a, long b) {
+    const std::set<long>& ca = closure(a);
+    const std::set<long>& cb = closure(b);
+    int shared = -1;
+    for (long x : cb)
+      if (ca.count(x)) shared = std::max(shared, depth(x));
+    if (shared < 0) return 0;
+    return 2.0 * (shared + 1) / static_cast<double>(depth(a) + depth(b) + 2);
+  }
+
+ private:
+  std::unordered_map<long, std::vector<long>> parents_;
+  std::unordered_map<long, int> depth_;
+  std::unordered_map<long, std::set<long>> closure_;
+};
 
 }  // namespace
 
@@ -295,10 +402,82 @@ WordNetLexicon::WordClass WordNetLexicon::word_class(const std::string& word) {
   return c;
 }
 
-WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural) {
-  static std::map<std::pair<std::string, bool>, WordDistribution> memo;
+NounSenses WordNetLexicon::domain_noun_senses(const std::map<std::string, std::string>& parent_type,
+                                              const std::vector<std::string>& types) {
   std::lock_guard<std::mutex> lock(wordnet_mutex());
-  auto key = std::make_pair(type, plural);
+  NounGraph graph;
+  std::map<std::string, std::vector<long>> senses;
+  auto senses_of = [&](const std::string& t) -> const std::vector<long>& {
+    if (auto it = senses.find(t); it != senses.end()) return it->second;
+    return senses.emplace(t, noun_sense_offsets(noun_lookup(t), kMaxDomainSenses)).first->second;
+  };
+  NounSenses out;
+  for (const std::string& t : types) {
+    const std::vector<long> mine = senses_of(t);
+    if (mine.size() < 2) continue;
+    // The context: the declared supertypes (the nearest weighs most) and the
+    // types declared beside it, together as much as its parent.
+    std::vector<std::pair<std::string, double>> context;
+    std::string at = t;
+    double weight = 1;
+    for (int guard = 0; guard < 32; ++guard) {
+      const auto it = parent_type.find(at);
+      if (it == parent_type.end() || it->second == "object") break;
+      at = it->second;
+      context.emplace_back(at, weight);
+      weight /= 2;
+    }
+    if (const auto it = parent_type.find(t); it != parent_type.end() && it->second != "object") {
+      std::vector<std::string> siblings;
+      for (const auto& [child, parent] : parent_type)
+        if (parent == it->second && child != t) siblings.push_back(child);
+      for (const std::string& sib : siblings) context.emplace_back(sib, 1.0 / static_cast<double>(siblings.size()));
+    }
+    std::vector<double> score(mine.size(), 0.0);
+    double total = 0;
+    for (const auto& [word, w] : context) {
+      const std::vector<long> theirs = senses_of(word);
+      if (theirs.empty()) continue;
+      total += w;
+      for (size_t i = 0; i < mine.size(); ++i) {
+        // A context word's later senses count less: its first is what
+        // the author most likely meant by it.
+        double best = 0, rank_weight = 1;
+        for (size_t j = 0; j < theirs.size() && j < kContextSenses; ++j, rank_weight *= kContextSenseDecay)
+          best = std::max(best, rank_weight * graph.similarity(mine[i], theirs[j]));
+        score[i] += w * best;
+      }
+    }
+    if (total <= 0) continue;
+    const size_t pick = static_cast<size_t>(std::max_element(score.begin(), score.end()) - score.begin());
+    // The first sense stays unless the domain clearly means another.
+    if (pick != 0 && score[pick] > score[0] + kSenseMargin * total) out[t] = static_cast<int>(pick);
+  }
+  return out;
+}
+
+std::string WordNetLexicon::noun_gloss(const std::string& type, int sense) {
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  const std::vector<long> offsets = noun_sense_offsets(noun_lookup(type), static_cast<size_t>(std::max(sense, 0)) + 1);
+  if (sense < 0 || static_cast<size_t>(sense) >= offsets.size()) return {};
+  std::string gloss;
+  if (SynsetPtr s = read_synset(NOUN, offsets[static_cast<size_t>(sense)], nullptr)) {
+    if (s->defn != nullptr) gloss = s->defn;
+    free_synset(s);
+  }
+  // "(a gloss; \"an example\")": the gloss alone.
+  if (const size_t cut = gloss.find(';'); cut != std::string::npos) gloss.erase(cut);
+  if (!gloss.empty() && gloss.front() == '(') gloss.erase(gloss.begin());
+  const auto count = [&](char c) { return std::count(gloss.begin(), gloss.end(), c); };
+  while (!gloss.empty() && gloss.back() == ' ') gloss.pop_back();
+  if (!gloss.empty() && gloss.back() == ')' && count(')') > count('(')) gloss.pop_back();
+  return gloss;
+}
+
+WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural, int sense) {
+  static std::map<std::tuple<std::string, bool, int>, WordDistribution> memo;
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  auto key = std::make_tuple(type, plural, sense);
   if (auto it = memo.find(key); it != memo.end()) return it->second;
 
   Accum singular;  // weights over singular noun forms
@@ -314,7 +493,12 @@ WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural)
     singular.add(head, 0.6);
   }
   std::vector<std::string> syn, hyp;
-  wn_related(lookup, NOUN, 2, 2, syn, hyp);
+  if (sense > 0) {
+    // The domain's sense leads, with the first sense as the second.
+    wn_related_senses(lookup, NOUN, {{sense, 2}, {0, 1}}, syn, hyp);
+  } else {
+    wn_related(lookup, NOUN, 2, 2, syn, hyp);
+  }
   singular.spread(syn, 0.15);
   singular.spread(hyp, 0.1);
   // Pro-forms: "the blue one", "the red ones".
@@ -732,10 +916,10 @@ std::vector<std::string> WordNetLexicon::verb_phrases(const std::string& action)
   return out;
 }
 
-std::vector<std::string> WordNetLexicon::noun_phrases(const std::string& type) {
-  static std::map<std::string, std::vector<std::string>> memo;
+std::vector<std::string> WordNetLexicon::noun_phrases(const std::string& type, int sense) {
+  static std::map<std::pair<std::string, int>, std::vector<std::string>> memo;
   std::lock_guard<std::mutex> lock(wordnet_mutex());
-  if (auto it = memo.find(type); it != memo.end()) return it->second;
+  if (auto it = memo.find({type, sense}); it != memo.end()) return it->second;
   const std::vector<std::string> parts = name_parts(type, NOUN);
   std::string lookup = joined(parts);
   std::replace(lookup.begin(), lookup.end(), ' ', '_');
@@ -748,10 +932,10 @@ std::vector<std::string> WordNetLexicon::noun_phrases(const std::string& type) {
     push_unique(out, joined(parts));
   }
   std::vector<std::string> syn, hyp;
-  wn_related(lookup, NOUN, 1, 0, syn, hyp);
+  wn_related_senses(lookup, NOUN, {{std::max(sense, 0), 0}}, syn, hyp);
   for (const std::string& s : syn)
     if (plain_phrase(s, 1) && mutual_synonym(s, lookup, NOUN)) push_unique(out, s);
-  memo.emplace(type, out);
+  memo.emplace(std::make_pair(type, sense), out);
   return out;
 }
 

@@ -7,13 +7,15 @@
 // training corpus still get probability mass:
 //   * noun_base("cutleryfork", plural) -> fork(s), cutlery, tableware, ...
 //     (type names are split into WordNet words when the whole name is not one;
-//      the head is the last part; synonyms and two levels of hypernyms of the
-//      first senses are added with smaller weights; plural forms are generated
+//      the head is the last part; synonyms and hypernyms are added with
+//      smaller weights: the direct hypernyms of the first two senses, or two
+//      levels of the sense the domain means and one of the first; plural forms are generated
 //      by English rules and kept only if WordNet's morphology maps them back);
 //   * verb_base("handover", to_speaker) -> hand, over, pass, give, deliver, ...
 //     plus inflections (hands, handing, handed) checked the same way.
 // The WordNet C library keeps global state and is not thread-safe, so every
 // call goes through one process-wide mutex; results are memoised.
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -24,12 +26,37 @@ namespace clips::lm {
 // A finite distribution over words (weights sum to 1, sorted by word).
 using WordDistribution = std::vector<std::pair<std::string, double>>;
 
+// The WordNet noun sense (0-based, in WordNet's order) a domain means by a
+// type name, for the types whose sense is not the first.
+using NounSenses = std::map<std::string, int>;
+
 class WordNetLexicon {
  public:
   // The process-wide instance; throws LmError if the dictionary cannot be opened.
   static WordNetLexicon& instance();
 
-  WordDistribution noun_base(const std::string& type, bool plural);
+  // `sense`: the noun sense the domain means (domain_noun_senses); 0: the
+  // first, with the second as runner-up.
+  WordDistribution noun_base(const std::string& type, bool plural, int sense = 0);
+
+  // Which noun sense each type name means in a domain, from the domain's own
+  // type hierarchy: the sense most similar (Wu-Palmer, over WordNet's
+  // hypernyms) to the senses of its declared supertypes and of the types
+  // declared beside it. "saw - tool" is the hand tool, not a saying; "base -
+  // reagent" the chemical, not a military base. The first sense stays unless
+  // another is clearly closer (kSenseMargin of the context's weight).
+  // `parent_type`: child -> parent ("object" at the top); `types`: the
+  // types to decide. Types WordNet does not know, or knows in one sense,
+  // are left out.
+  NounSenses domain_noun_senses(const std::map<std::string, std::string>& parent_type,
+                                const std::vector<std::string>& types);
+  // The gloss of a type name's noun sense (0-based), without its examples:
+  // "hand tool having a toothed blade for cutting". Empty if unknown.
+  std::string noun_gloss(const std::string& type, int sense);
+  static constexpr size_t kMaxDomainSenses = 8;  // senses of a type considered
+  static constexpr size_t kContextSenses = 3;    // senses of a context type compared
+  static constexpr double kContextSenseDecay = 0.6;  // weight of a context type's next sense
+  static constexpr double kSenseMargin = 0.15;
   WordDistribution verb_base(const std::string& action, bool to_speaker);
   // Base (uninflected) noun form of a word if WordNet knows one, else the word.
   std::string noun_lemma(const std::string& word);
@@ -61,7 +88,7 @@ class WordNetLexicon {
   // verbs come from a small table of everyday verb families, chosen by the
   // WordNet synonyms and hypernyms of the action's first senses.
   std::vector<std::string> verb_phrases(const std::string& action);
-  std::vector<std::string> noun_phrases(const std::string& type);
+  std::vector<std::string> noun_phrases(const std::string& type, int sense = 0);
   // English plural of a noun phrase's last word, checked by WordNet when it can.
   std::string plural(const std::string& noun);
 
