@@ -498,7 +498,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   bool solo = false;
   State s = setup.start;
   std::vector<bool> taken = ep.fresh_steps();
-  Episode::Patience patience, assistant_patience;
+  Episode::Patience patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     State s_h = s;
     const bool stuck = setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
@@ -515,8 +515,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
       a = ep.principal_action(truth, s_h, !solo && !stuck, taken, t - setup.observed_steps);
     } else {
       auto d0 = std::chrono::steady_clock::now();
-      a = ep.qmdp_decide(belief, s, t, assistant_patience.stuck(s));
-      assistant_patience.last = s;
+      a = ep.qmdp_decide(belief, s, t, round_of_waits(setup, r.plan));
       r.decision_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
@@ -547,7 +546,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
   double coop = 0;
   State s = setup.start;
   std::vector<bool> taken = ep.fresh_steps();
-  Episode::Patience patience, assistant_patience;
+  Episode::Patience patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
     if (setup.refine) truth.refine(s, setup.refine_options);
     ActionId a;
@@ -563,8 +562,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
         a = ep.principal_action(truth, s, true, taken, t - setup.observed_steps);
       }
     } else {
-      a = ep.qmdp_decide(belief.hypotheses(), s, t, assistant_patience.stuck(s));
-      assistant_patience.last = s;
+      a = ep.qmdp_decide(belief.hypotheses(), s, t, round_of_waits(setup, r.plan));
       coop += ep.coop_increment(truth, s, a);
       ep.collect_option(a, r.options);
     }
@@ -650,6 +648,12 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
   }
   mean.goal_reached = mean.success >= 0.5;
   return mean;
+}
+
+bool round_of_waits(const AssistSetup& setup, const std::vector<ActionId>& actions) {
+  const size_t n = actions.size();
+  return n >= 2 && actions[n - 1] == setup.turns().noop(*setup.task, setup.principal) &&
+         actions[n - 2] == setup.turns().noop(*setup.task, setup.assistant);
 }
 
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,

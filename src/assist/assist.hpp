@@ -193,7 +193,11 @@ double live_threshold(const std::vector<Hypothesis>& belief, double threshold);
 // setup.refine is cleared so the decision does not make them again.
 void refine_live(AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s,
                  const std::function<void()>& between = {});
-// `stalled`: the last round was both agents' no-ops (see restless_assistant).
+// Whether the actions so far (oldest first) end in a round of waits: the
+// assistant's no-op, then the principal's (AssistSetup::restless_assistant).
+// The simulated episodes and the session engine both ask this.
+bool round_of_waits(const AssistSetup& setup, const std::vector<pddl::ActionId>& actions);
+// `stalled`: round_of_waits before this decision.
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,
                        bool stalled = false);
 // The salient-argument table of AssistSetup::salient_args for a command language.

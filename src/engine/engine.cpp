@@ -633,10 +633,11 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
   const int t = std::min(belief->t() + 1, setup.horizon - 1);
   // Refined here, so that a cancellation is seen between the searches.
   assist::refine_live(setup, hyps, s, [&] { b.check_cancel(); });
-  // A round of waits just passed: the assistant's last action and the principal's reply were both no-ops.
-  const size_t n = m.records.size();
-  const bool stalled = n >= 3 && m.records[n - 1].action == task.action_name(setup.turns().noop(task, setup.principal)) &&
-                       m.records[n - 2].action == task.action_name(setup.turns().noop(task, setup.assistant));
+  // The session's actions (records[0] is the start), for the round-of-waits rule.
+  std::vector<pddl::ActionId> done;
+  for (size_t i = 1; i < m.records.size(); ++i)
+    if (const auto id = task.find_action(m.records[i].action)) done.push_back(*id);
+  const bool stalled = assist::round_of_waits(setup, done);
   const assist::Decision dec = m.options.assistance == Assistance::QMdp ? assist::qmdp_decision(setup, hyps, s, t, stalled)
                                                                         : assist::pibar_decision(setup, hyps, s);
   b.check();
