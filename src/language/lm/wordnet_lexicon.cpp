@@ -194,6 +194,10 @@ struct Accum {
 // balanced parts whose pieces are all known (or whose underscore compound is).
 std::vector<std::string> split_name(const std::string& name, int pos) {
   if (wn_has(name, pos) || name.size() < 5) return {name};
+  if (pos == NOUN) {
+    for (const std::string& b : wn_base_forms(name, NOUN))  // an inflected noun, not two words
+      if (b != name && wn_has(b, NOUN)) return {name};
+  }
   std::vector<std::string> best;
   size_t best_min = 0;
   for (size_t i = 2; i + 2 <= name.size(); ++i) {
@@ -214,15 +218,25 @@ std::vector<std::string> split_name(const std::string& name, int pos) {
   return best;
 }
 
+// The lemma WordNet files a noun under: the word, or the base form of an
+// inflected one that WordNet lacks as it is ("oats" -> "oat", "seeds" ->
+// "seed"), so a type named in the plural still gets its senses.
+std::string filed_noun(const std::string& word) {
+  if (wn_has(word, NOUN)) return word;
+  for (const std::string& b : wn_base_forms(word, NOUN))
+    if (b != word && wn_has(b, NOUN)) return b;
+  return word;
+}
+
 // The WordNet word a type name is looked up under, as noun_base does: the
 // name, its two-word compound, or the compound's head.
 std::string noun_lookup(const std::string& type) {
   const std::vector<std::string> parts = split_name(type, NOUN);
   if (parts.size() == 2) {
     const std::string compound = parts[0] + "_" + parts[1];
-    return wn_has(compound, NOUN) ? compound : parts.back();
+    return wn_has(compound, NOUN) ? compound : filed_noun(parts.back());
   }
-  return type;
+  return filed_noun(type);
 }
 
 // Offsets of a word's first `max` noun senses, in WordNet's order.
@@ -245,9 +259,17 @@ class NounGraph {
     if (SynsetPtr s = read_synset(NOUN, off, nullptr)) {
       for (int i = 0; i < s->ptrcount; ++i)
         if ((s->ptrtyp[i] == HYPERPTR || s->ptrtyp[i] == INSTANCE) && s->ppos[i] == NOUN) ps.push_back(s->ptroff[i]);
+      kind_.emplace(off, s->fnum);
       free_synset(s);
     }
     return parents_.emplace(off, std::move(ps)).first->second;
+  }
+  // The synset's lexicographer file: its broad kind (artifact, food,
+  // substance, body, person, ...).
+  int kind(long off) {
+    parents(off);
+    const auto it = kind_.find(off);
+    return it == kind_.end() ? -1 : it->second;
   }
   // Shortest hypernym path to a root.
   int depth(long off, int guard = 0) {
@@ -290,6 +312,7 @@ class NounGraph {
   std::unordered_map<long, std::vector<long>> parents_;
   std::unordered_map<long, int> depth_;
   std::unordered_map<long, std::set<long>> closure_;
+  std::unordered_map<long, int> kind_;
 };
 
 }  // namespace
@@ -434,11 +457,13 @@ NounSenses WordNetLexicon::domain_noun_senses(const std::map<std::string, std::s
       for (const std::string& sib : siblings) context.emplace_back(sib, 1.0 / static_cast<double>(siblings.size()));
     }
     std::vector<double> score(mine.size(), 0.0);
+    std::set<int> context_kinds;
     double total = 0;
     for (const auto& [word, w] : context) {
       const std::vector<long> theirs = senses_of(word);
       if (theirs.empty()) continue;
       total += w;
+      for (size_t j = 0; j < theirs.size() && j < kContextSenses; ++j) context_kinds.insert(graph.kind(theirs[j]));
       for (size_t i = 0; i < mine.size(); ++i) {
         // A context word's later senses count less: its first is what
         // the author most likely meant by it.
@@ -449,6 +474,11 @@ NounSenses WordNetLexicon::domain_noun_senses(const std::map<std::string, std::s
       }
     }
     if (total <= 0) continue;
+    // A later sense must be of a kind the context has: near in the graph is
+    // not enough when it is another sort of thing (garden supplies are
+    // substances, and so, to WordNet, is the seed that is semen).
+    for (size_t i = 1; i < mine.size(); ++i)
+      if (context_kinds.count(graph.kind(mine[i])) == 0) score[i] = 0;
     const size_t pick = static_cast<size_t>(std::max_element(score.begin(), score.end()) - score.begin());
     // The first sense stays unless the domain clearly means another.
     if (pick != 0 && score[pick] > score[0] + kSenseMargin * total) out[t] = static_cast<int>(pick);
@@ -483,10 +513,14 @@ WordDistribution WordNetLexicon::noun_base(const std::string& type, bool plural,
   Accum singular;  // weights over singular noun forms
   std::vector<std::string> parts = split_name(type, NOUN);
   std::string head = parts.back();
-  std::string lookup = type;
+  std::string lookup = noun_lookup(type);
+  // A name in the plural ("oats"): its lemma is the singular, and the things
+  // are spoken of in the plural whatever their number.
+  if (const std::string filed = filed_noun(head); filed != head) {
+    head = filed;
+    plural = true;
+  }
   if (parts.size() == 2) {
-    const std::string compound = parts[0] + "_" + parts[1];
-    lookup = wn_has(compound, NOUN) ? compound : head;
     singular.add(head, 0.45);
     if (!is_function_word(parts[0])) singular.add(parts[0], 0.15);
   } else {
@@ -589,7 +623,7 @@ WordDistribution WordNetLexicon::function_words(const std::string& type) {
   static const std::set<std::string> kinds = {"tool", "instrument", "utensil", "implement", "container",
                                               "vessel", "receptacle", "device", "used"};
   const std::vector<std::string> parts = split_name(type, NOUN);
-  std::string lookup = parts.back();
+  std::string lookup = filed_noun(parts.back());
   if (parts.size() == 2 && wn_has(parts[0] + "_" + parts[1], NOUN)) lookup = parts[0] + "_" + parts[1];
   Accum acc;
   auto add_verb = [&](const std::string& lemma, double weight) {
@@ -931,10 +965,12 @@ std::vector<std::string> WordNetLexicon::noun_phrases(const std::string& type, i
   } else {
     push_unique(out, joined(parts));
   }
+  // A name in the plural is looked up by its lemma, which is not another name for it.
+  if (parts.size() == 1) lookup = filed_noun(lookup);
   std::vector<std::string> syn, hyp;
   wn_related_senses(lookup, NOUN, {{std::max(sense, 0), 0}}, syn, hyp);
   for (const std::string& s : syn)
-    if (plain_phrase(s, 1) && mutual_synonym(s, lookup, NOUN)) push_unique(out, s);
+    if (plain_phrase(s, 1) && s != lookup && mutual_synonym(s, lookup, NOUN)) push_unique(out, s);
   memo.emplace(std::make_pair(type, sense), out);
   return out;
 }
