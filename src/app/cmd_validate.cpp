@@ -67,6 +67,15 @@ void print_derived(const data::Dataset& ds) {
       fmt::print("ok    derived from the effects: {} leaves its argument {} at its argument {} (commands say where)\n",
                  r.action, r.focal_arg, r.destination_arg);
   try {
+    for (const auto& [type, lemma] : language::dataset_type_nouns(ds)) {
+      if (lemma.empty())
+        fmt::print("WARN  WordNet does not know the type name '{}': its objects are understood by that word and "
+                   "their qualifiers only (no synonyms, no \"a kind of ...\"); an English noun as the name, "
+                   "or a corpus in the pack, would help\n",
+                   type);
+      else if (lemma != type)
+        fmt::print("ok    derived from the types: {} is read as WordNet's \"{}\"\n", type, lemma);
+    }
     for (const auto& [type, sense] : language::dataset_noun_senses(ds))
       fmt::print("ok    derived from the types: {} means \"{}\" (WordNet noun sense {}, not the first)\n", type,
                  lm::WordNetLexicon::instance().noun_gloss(type, sense), sense + 1);

@@ -112,6 +112,18 @@ lm::NounSenses dataset_noun_senses(const data::Dataset& dataset) {
   return out;
 }
 
+std::map<std::string, std::string> dataset_type_nouns(const data::Dataset& dataset) {
+  std::map<std::string, std::string> out;
+  if (!dataset.pack().spec().embedded_corpus.empty()) return out;
+  for (const std::string& id : dataset.problem_ids()) {
+    const auto task = dataset.task(id);
+    for (const std::string& type : lm::domain_noun_types(describe_for_language_model(
+             *dataset.domain(), task->problem(), dataset.pack().language(), dataset.pack().language().qualifiers())))
+      if (!out.count(type)) out[type] = lm::WordNetLexicon::instance().type_noun(type);
+  }
+  return out;
+}
+
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
                                                                const LanguageModelOptions& options,
                                                                const data::Dataset& dataset) {

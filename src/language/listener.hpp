@@ -8,6 +8,7 @@
 // The functions take a grounded task and a state rather than a dataset, so the
 // listener works on any problem of the two domains (the CLI does the dataset
 // loading).
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,6 +71,10 @@ std::shared_ptr<lm::LanguageModel> make_domain_language_model(const std::string&
 // for `clips validate`; empty for a pack with a hand-written corpus, which
 // does not use them.
 lm::NounSenses dataset_noun_senses(const data::Dataset& dataset);
+// For the same types (lm::domain_noun_types, over every problem): the
+// WordNet noun each is read as (lm::WordNetLexicon::type_noun; empty: none),
+// for `clips validate`; empty for a pack with a hand-written corpus.
+std::map<std::string, std::string> dataset_type_nouns(const data::Dataset& dataset);
 
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
                                                                const LanguageModelOptions& options,

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <regex>
 
 #include <nlohmann/json.hpp>
@@ -68,6 +69,37 @@ TEST(CliOwnDomain, ValidateReportsWhatItDerivedFromTheEffects) {
   EXPECT_TRUE(std::regex_search(r.out, std::regex("derived from the types: spade means \"[^\"]*shovel"))) << r.out;
   EXPECT_TRUE(std::regex_search(r.out, std::regex("derived from the types: rake means \"[^\"]*tool"))) << r.out;
   EXPECT_FALSE(contains(r.out, "derived from the types: tool")) << r.out;
+}
+
+// Type names are read through WordNet; validate says how, and warns of a
+// name WordNet does not know at all.
+TEST(CliOwnDomain, ValidateSaysWhichWordEachTypeIsReadAs) {
+  // The fixture's `seed` type, renamed throughout (domain, problem, pack).
+  const auto renamed = [](const std::string& name) {
+    auto c = std::make_unique<GardenCopy>([](std::string t) { return t; });
+    for (const char* f : {"domain.pddl", "problems/1.pddl", "pack.json"}) {
+      const fs::path file = fs::path(c->ds) / f;
+      const std::string text = std::regex_replace(testing::read_text(file), std::regex("\\bseed\\b"), name);
+      std::ofstream(file) << text;
+    }
+    return c;
+  };
+  {
+    const auto c = renamed("seeds");  // WordNet has "seed", not "seeds"
+    const auto r = run(clips_binary() + " validate --plans-only --dataset " + c->ds);
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "ok    derived from the types: seeds is read as WordNet's \"seed\"")) << r.out;
+    EXPECT_FALSE(contains(r.out, "does not know")) << r.out;
+  }
+  {
+    const auto c = renamed("zorblat");
+    const auto r = run(clips_binary() + " validate --plans-only --dataset " + c->ds);
+    EXPECT_EQ(r.status, 0) << r.out;  // a warning: the domain still works
+    EXPECT_TRUE(contains(r.out, "WARN  WordNet does not know the type name 'zorblat'")) << r.out;
+  }
+  // A name WordNet has as it is gets no line.
+  const auto r = run(clips_binary() + " validate --plans-only --dataset " + garden());
+  EXPECT_FALSE(contains(r.out, "is read as")) << r.out;
 }
 
 TEST(CliOwnDomain, AssistTakesTurnsWithIdle) {

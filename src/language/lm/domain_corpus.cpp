@@ -424,10 +424,7 @@ class Generator {
 
 }  // namespace
 
-NounSenses domain_noun_senses(const DomainDescription& domain) {
-  // The types commands name as nouns: those of objects a command may be
-  // about (the focal parameters' types), and their declared ancestors up
-  // to those parameter types ("a tool"). Places are said by name only.
+std::vector<std::string> domain_noun_types(const DomainDescription& domain) {
   std::set<std::string> focal_types;
   for (const CommandActionRule& r : domain.command_actions)
     for (const DomainActionSchema& s : domain.actions)
@@ -444,7 +441,11 @@ NounSenses domain_noun_senses(const DomainDescription& domain) {
     if (focal_types.count(chain.back())) types.insert(chain.begin(), chain.end());
   }
   types.erase("object");
-  return WordNetLexicon::instance().domain_noun_senses(domain.parent_type, {types.begin(), types.end()});
+  return {types.begin(), types.end()};
+}
+
+NounSenses domain_noun_senses(const DomainDescription& domain) {
+  return WordNetLexicon::instance().domain_noun_senses(domain.parent_type, domain_noun_types(domain));
 }
 
 std::vector<TrainingPair> generate_domain_corpus(const DomainDescription& domain, const DomainCorpusOptions& options) {

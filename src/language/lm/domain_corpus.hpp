@@ -97,8 +97,12 @@ struct DomainCorpusOptions {
   int goal_statements = 60;        // statements of the goal
 };
 
-// The WordNet noun sense each of the domain's types means, where it is not
-// the first (WordNetLexicon::domain_noun_senses over the declared types).
+// The types commands name as nouns: those of the objects a command may be
+// about (the salient actions' focal parameters) and their declared
+// ancestors up to those parameter types ("a tool"); places are said by name.
+std::vector<std::string> domain_noun_types(const DomainDescription& domain);
+// The WordNet noun sense each of those types means, where it is not the
+// first (WordNetLexicon::domain_noun_senses over the declared types).
 NounSenses domain_noun_senses(const DomainDescription& domain);
 
 // The generated pairs (weight 1, origin "generated <domain-less index>").

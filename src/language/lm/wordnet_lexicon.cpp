@@ -486,6 +486,12 @@ NounSenses WordNetLexicon::domain_noun_senses(const std::map<std::string, std::s
   return out;
 }
 
+std::string WordNetLexicon::type_noun(const std::string& type) {
+  std::lock_guard<std::mutex> lock(wordnet_mutex());
+  const std::string lookup = noun_lookup(type);
+  return wn_has(lookup, NOUN) ? lookup : std::string();
+}
+
 std::string WordNetLexicon::noun_gloss(const std::string& type, int sense) {
   std::lock_guard<std::mutex> lock(wordnet_mutex());
   const std::vector<long> offsets = noun_sense_offsets(noun_lookup(type), static_cast<size_t>(std::max(sense, 0)) + 1);

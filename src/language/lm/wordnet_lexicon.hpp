@@ -50,6 +50,10 @@ class WordNetLexicon {
   // are left out.
   NounSenses domain_noun_senses(const std::map<std::string, std::string>& parent_type,
                                 const std::vector<std::string>& types);
+  // The WordNet noun a type name is read as: the name, its lemma ("oats" ->
+  // "oat"), its two-word compound or the compound's head ("cutleryfork" ->
+  // "fork"); empty if WordNet knows none of them.
+  std::string type_noun(const std::string& type);
   // The gloss of a type name's noun sense (0-based), without its examples:
   // "hand tool having a toothed blade for cutting". Empty if unknown.
   std::string noun_gloss(const std::string& type, int sense);
