@@ -189,15 +189,22 @@ struct Accum {
   }
 };
 
+// The lemma WordNet files a noun under: the word, or the base form of an
+// inflected one that WordNet lacks as it is ("oats" -> "oat", "seeds" ->
+// "seed"), so a type named in the plural still gets its senses.
+std::string filed_noun(const std::string& word) {
+  if (wn_has(word, NOUN)) return word;
+  for (const std::string& b : wn_base_forms(word, NOUN))
+    if (b != word && wn_has(b, NOUN)) return b;
+  return word;
+}
+
 // Split a run-together name into WordNet words: ("pickup", VERB) -> {"pick", "up"}.
 // Returns {name} if WordNet knows the whole name, else the split with the most
 // balanced parts whose pieces are all known (or whose underscore compound is).
 std::vector<std::string> split_name(const std::string& name, int pos) {
   if (wn_has(name, pos) || name.size() < 5) return {name};
-  if (pos == NOUN) {
-    for (const std::string& b : wn_base_forms(name, NOUN))  // an inflected noun, not two words
-      if (b != name && wn_has(b, NOUN)) return {name};
-  }
+  if (pos == NOUN && filed_noun(name) != name) return {name};  // an inflected noun, not two words
   std::vector<std::string> best;
   size_t best_min = 0;
   for (size_t i = 2; i + 2 <= name.size(); ++i) {
@@ -216,16 +223,6 @@ std::vector<std::string> split_name(const std::string& name, int pos) {
   }
   if (best.empty()) return {name};
   return best;
-}
-
-// The lemma WordNet files a noun under: the word, or the base form of an
-// inflected one that WordNet lacks as it is ("oats" -> "oat", "seeds" ->
-// "seed"), so a type named in the plural still gets its senses.
-std::string filed_noun(const std::string& word) {
-  if (wn_has(word, NOUN)) return word;
-  for (const std::string& b : wn_base_forms(word, NOUN))
-    if (b != word && wn_has(b, NOUN)) return b;
-  return word;
 }
 
 // The WordNet word a type name is looked up under, as noun_base does: the
@@ -628,9 +625,7 @@ WordDistribution WordNetLexicon::function_words(const std::string& type) {
                                                 "operate", "attach", "cover", "design", "include", "contain"};
   static const std::set<std::string> kinds = {"tool", "instrument", "utensil", "implement", "container",
                                               "vessel", "receptacle", "device", "used"};
-  const std::vector<std::string> parts = split_name(type, NOUN);
-  std::string lookup = filed_noun(parts.back());
-  if (parts.size() == 2 && wn_has(parts[0] + "_" + parts[1], NOUN)) lookup = parts[0] + "_" + parts[1];
+  const std::string lookup = noun_lookup(type);
   Accum acc;
   auto add_verb = [&](const std::string& lemma, double weight) {
     if (lemma.find_first_of("_ -'.") != std::string::npos || is_function_word(lemma) || lemma == lookup ||
