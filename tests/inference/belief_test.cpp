@@ -388,7 +388,7 @@ TEST(JointStatement, TheSpeakersOwnPartIsReadAsThePlan) {
 // flour?" In the cheapest joint plan the cook opens the cupboard, so the
 // speaker model favours "I open the cupboard, you fetch the flour" ten to
 // one; a clause that opens with "can you" is a request all the same
-// (EncodedUtterance::addressed), so the words must carry the listener's
+// (EncodedUtterance::subject), so the words must carry the listener's
 // opening (0.10 of the true goal's commands before, 0.62 now).
 TEST(AddressedClause, CanYouOpenIsTheListenersOpening) {
   const DatasetPlanRun r("kitchen", "1.1.pancakes");

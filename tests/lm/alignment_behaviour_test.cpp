@@ -100,6 +100,29 @@ TEST(AlignmentBehaviour, TheRedOneMiscoloursARequestForTheBlueKey) {
   EXPECT_GT(gap, keyed - 1.0);
 }
 
+// Item 3: a clause that announces the speaker's own step ("I'll open ...")
+// is theirs. Its verb cannot stand for the listener's opening, so "I'll open
+// the red door. Get the blue key." asks the listener for the key, not for
+// the door while the speaker fetches the key.
+TEST(AlignmentBehaviour, AnAnnouncedStepIsTheSpeakersOwn) {
+  const std::string mine = pragmatic_prompt(
+      "(unlock me key1 door1) (pickup you key2) where (iscolor door1 red) (iscolor key2 blue)");
+  const std::string yours = pragmatic_prompt(
+      "(unlock you key1 door1) (pickup me key2) where (iscolor door1 red) (iscolor key2 blue)");
+  const double gap = lead(mine, yours, " I'll open the red door. Get the blue key.\n");
+  std::printf("[announced] the speaker's opening leads by %.2f nats\n", gap);
+  // (8.7 nats; 1.9 before the announcing clause was marked.)
+  EXPECT_GT(gap, 5.0);
+  // "I'll need ..." is not the speaker's step: it asks for the key.
+  const std::string fetch = pragmatic_prompt("(pickup you key1) where (iscolor key1 red)");
+  const std::string own = pragmatic_prompt("(pickup me key1) where (iscolor key1 red)");
+  const double need = lead(fetch, own, " I'll need the red key.\n");
+  const double get = lead(fetch, own, " I'll get the red key.\n");
+  std::printf("[announced] \"I'll need\" favours the listener's pickup by %.2f nats, \"I'll get\" by %.2f\n", need, get);
+  // (-0.75 and -3.41 nats; -0.66 and -0.63 before.)
+  EXPECT_GT(need, get + 1.0);
+}
+
 struct Golden {
   const char* kind;  // "L" literal, "P" pragmatic, "V" virtual-home, "E" empty prompt
   const char* command;
@@ -121,29 +144,32 @@ std::string prompt_of(const Golden& g) {
 // re-recorded when what a later request's "it" points back to became the
 // listener's (EncodedUtterance::about_request; EM moves every score) and when
 // "the red one" became contradicted like "the red key", and when a clause
-// addressed to the listener ("could you ...") became a request with 0.99; they
+// addressed to the listener ("could you ...") became a request with 0.99, and
+// when one announcing the speaker's own step ("I'll grab ...") became theirs,
+// with the listener's anchors scaled down there (EM moves every score a
+// little); they
 // are not derived by hand. They cover every step of the model: length, mention
 // sums, anchors, clause types, modifiers, colour binding and contradiction,
 // number binding, pronoun antecedents, misspellings, unknown words, prefixes
 // and the empty-command prompt. Re-record them only for an intended change of
 // the model, and say so in the commit.
 const std::vector<Golden> kGolden = {
-    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.1931245465282},
-    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.730581117539526},
+    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.186036711693042},
+    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.72357255078045},
     {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
-     " Bring me both red", -13.816399518766735},
-    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -56.99248850027272},
-    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.939941208462148},
+     " Bring me both red", -13.814976460573734},
+    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -55.945885734977082},
+    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.934004253889313},
     {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
-     " This red door has me stuck; could you open it?\n", -70.73846500040992},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -30.719568553670143},
+     " This red door has me stuck; could you open it?\n", -70.700566834971781},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -30.712631131926734},
     {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
-     " Pass me the red key pls, would it be possible?\n", -76.5379187438028},
-    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.682939482933385},
-    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -24.96660076058079},
-    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.688433098758303},
-    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.63655043520132},
-    {"E", "", " Hello there.\n", -28.160805580300174},
+     " Pass me the red key pls, would it be possible?\n", -76.510860373174367},
+    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.680940658236075},
+    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -24.963648522870635},
+    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685314873915221},
+    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.755721882457301},
+    {"E", "", " Hello there.\n", -28.157493356141536},
 };
 
 TEST(AlignmentGolden, ScoresMatchTheRecordedOnes) {

@@ -26,8 +26,13 @@ inline constexpr double kPiContent = 0.4;
 inline constexpr double kGenericShare = 0.08;  // share of GEN inside Content when groups are active
 inline constexpr double kMention = 0.85;       // prior mean of the rho (Beta pseudo-counts 2)
 inline constexpr double kRequestClause = 0.8;
-// A clause whose subject is the listener ("can you ...", "you bring ...").
-inline constexpr double kAddressedRequestClause = 0.99;
+// A clause whose subject says whose part it is ("can you ...", "you bring
+// ...", "I'll get ...", "let me ...") is of that type with this probability.
+inline constexpr double kMarkedClause = 0.99;
+// In a clause announcing the speaker's own step, the anchor of a listener's
+// group is scaled by this (a deficient factor, like the colour binding's).
+// Dev halves: 0.03, 0.1 and 0.3 gave the same precision and recall.
+inline constexpr double kOffRoleAnchor = 0.1;
 inline constexpr size_t kMaxAnchors = 4;  // action groups whose mention requires an anchor token
 inline constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
 // Log-probability below which a token's sources are rescaled. The clause

@@ -572,9 +572,17 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   const uint32_t first_mask = enumerate ? 0u : all;
   const uint32_t end_mask = enumerate ? all + 1u : all;  // exclusive; non-enumerated: one mask
   const size_t clauses = u.clause_end.size();
-  // A clause's speech-act prior: "can you ...", "you bring ..." is read as a request.
+  // A clause's speech-act prior: "can you ...", "you bring ..." is read as a
+  // request, "I'll get ...", "let me ..." as the speaker's own part.
+  auto subject = [&](size_t clause) {
+    return clause < u.subject.size() ? u.subject[clause] : kSubjectUnmarked;
+  };
   auto p_request = [&](size_t clause) {
-    return clause < u.addressed.size() && u.addressed[clause] != 0 ? kAddressedRequestClause : kRequestClause;
+    switch (subject(clause)) {
+      case kSubjectListener: return kMarkedClause;
+      case kSubjectSpeaker: return 1 - kMarkedClause;
+      default: return kRequestClause;
+    }
   };
 
   // Mixture of one token under a mask and clause type; also returns, via
@@ -627,18 +635,24 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   // mentioned action groups K, given the per-token mixtures `mix` and each
   // group's own emission emit(j, i); for a prefix, marginalised over the
   // unseen length (divided by P(N >= n), which the caller adds back).
-  auto anchored_log = [&](const size_t* /*K*/, size_t k, const std::vector<double>& mx, auto&& emit) {
+  auto anchored_log = [&](const size_t* K, size_t k, const std::vector<double>& mx, auto&& emit) {
     const uint32_t full = (1u << k) - 1u;
     double a[2][1u << kMaxAnchors] = {};
     double b[2][1u << kMaxAnchors];
     double e[1u << kMaxAnchors];
     double single[kMaxAnchors];
+    // In a clause that announces the speaker's own step, a group of the
+    // listener's anchors at kOffRoleAnchor of its weight: "I'll open the
+    // shed" is not how a speaker asks the listener to open it.
+    auto role_factor = [&](size_t j, size_t cl) {
+      return subject(cl) == kSubjectSpeaker && !in_role(c.groups[K[j]], true) ? kOffRoleAnchor : 1.0;
+    };
     a[0][0] = p_request(0);
     a[1][0] = 1 - p_request(0);
     double log_scale = 0;
     size_t clause = 0;
     for (size_t i = 0; i < n; ++i) {
-      for (size_t j = 0; j < k; ++j) single[j] = emit(j, i);
+      for (size_t j = 0; j < k; ++j) single[j] = emit(j, i) * role_factor(j, clause);
       e[0] = 0;
       for (uint32_t S = 1; S <= full; ++S) {
         double v = 0;

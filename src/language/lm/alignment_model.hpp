@@ -34,8 +34,13 @@
 //     S (a statement about the speaker's own part, "I'll get the red key") with 0.2.
 //     A clause whose subject is the listener ("um, could you ...", "you bring
 //     ...": "you" first after fillers and at most one auxiliary) is R with
-//     0.99 (EncodedUtterance::addressed): there "can you open the cupboard" is
-//     not the speaker's own opening.
+//     0.99 (EncodedUtterance::subject): there "can you open the cupboard" is
+//     not the speaker's own opening. One that announces the speaker's own
+//     next step ("I'll open the shed", "I'm going to get ...", "let me ...";
+//     not "I'll need ...", which asks for something) is S with 0.99, and
+//     there a group of the listener's anchors (item 2) at a tenth of its
+//     weight, so "I'll open the shed" cannot stand for the listener's
+//     opening just because the verb fits.
 //  4. Words: each token of a clause of type t is drawn independently from the mixture
 //       pi_bg * BG(w) + pi_agent * A_t(w) + pi_content * Content_{m,t}(w)
 //     where BG is a background English unigram whose base is a character bigram
@@ -123,13 +128,14 @@
 //     never contradicted.
 //
 // Apart from the colour binding and contradiction, which look ahead to the head noun,
-// and the addressed clause's prior (item 3), which reads the clause's first words, every
+// and the marked clauses' prior and anchors (item 3), which read the clause's first words, every
 // factor is a normalised distribution and the clause cuts and modifier spans
 // depend only on already generated tokens, so the sum over all token sequences
-// is exactly 1 (with items 6 and 7 it is at most 1: a deficient model, which
-// only lowers the score of commands whose colours the utterance attaches to
-// nouns of another type, or contradicts; the addressed prior reweights the
-// two readings of such a clause, the same way under every command).
+// is exactly 1 (with items 6 and 7 and the off-role anchors it is at most 1: a
+// deficient model, which only lowers the score of commands whose colours the
+// utterance attaches to nouns of another type, or contradicts, or whose part
+// it gives the other agent; the marked clauses' prior reweights the two
+// readings of such a clause, the same way under every command).
 // Emission tables are Dirichlet posteriors: expected counts from EM over the
 // training pairs (corpus + few-shot examples) plus kappa times a lexical base from
 // WordNet (nouns, verbs) or small closed lists (speech-act markers, number words).
@@ -187,11 +193,17 @@ struct EncodedUtterance {
   // describes the request's object, so in either clause type it comes from
   // the listener's groups, not the speaker's own.
   std::vector<char> about_request;
-  // addressed[k] != 0: clause k speaks to the listener as its subject ("can
-  // you ...", "you bring ..."), so it is read as a request with probability
-  // kAddressedRequestClause rather than kRequestClause.
-  std::vector<char> addressed;
+  // subject[k]: whose part clause k says it is about, from its first words.
+  // kSubjectListener ("can you ...", "you bring ...") is read as a request,
+  // kSubjectSpeaker ("I'll get ...", "I'm going to ...", "let me ...") as a
+  // statement, each with kMarkedClause rather than kRequestClause; in the
+  // latter only the speaker's groups anchor at full weight.
+  std::vector<char> subject;
 };
+
+inline constexpr char kSubjectUnmarked = 0;
+inline constexpr char kSubjectListener = 1;
+inline constexpr char kSubjectSpeaker = 2;
 
 // Trained parameters. Immutable after train(), except for a thread-safe cache of
 // tables created on demand for command elements unseen in training.
@@ -288,7 +300,7 @@ class AlignmentModel {
   std::string attribute_synonym(const std::string& w) const;
   void mark_modifiers(EncodedUtterance& u) const;
   void mark_pronoun_antecedents(EncodedUtterance& u) const;
-  void mark_addressed_clauses(EncodedUtterance& u) const;
+  void mark_clause_subjects(EncodedUtterance& u) const;
 
   std::unordered_map<std::string, int> word_ids_;
   std::vector<std::string> words_;

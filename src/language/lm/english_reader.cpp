@@ -1,5 +1,5 @@
 // The alignment model's reading of an English utterance: spelling repair,
-// lexical classes, clauses and those addressed to the listener, post-nominal
+// lexical classes, clauses and whose part each is about, post-nominal
 // modifiers, the nouns colours and numbers describe, and the antecedents of
 // "it"/"them" (see alignment_model.hpp, items 3, 5-7).
 #include "language/lm/alignment_model.hpp"
@@ -188,27 +188,51 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   }
   mark_modifiers(u);
   mark_pronoun_antecedents(u);
-  mark_addressed_clauses(u);
+  mark_clause_subjects(u);
   return u;
 }
 
-// A clause whose subject is the listener: "you" first, after nothing but
-// discourse fillers and an auxiliary ("um, could you ...", "you bring ...").
-void AlignmentModel::mark_addressed_clauses(EncodedUtterance& u) const {
+namespace {
+// The speaker announces their own next step: "i will get ...", "i am going to
+// ...", "i am gonna ...", "i shall ...", "let me ...". Not when the verb that
+// follows asks for something ("i will need the saw", "i am going to want
+// ..."): that names what the listener may bring.
+bool announces_own_step(const std::vector<std::string>& w, size_t i, size_t end) {
+  static const std::unordered_set<std::string> asking = {"need", "want", "like", "require", "have", "love"};
+  auto at = [&](size_t k, const char* s) { return i + k < end && w[i + k] == s; };
+  size_t verb = 0;
+  if (at(0, "let") && at(1, "me")) verb = 2;
+  else if (at(0, "i") && (at(1, "will") || at(1, "shall"))) verb = 2;
+  else if (at(0, "i") && at(1, "am") && at(2, "gonna")) verb = 3;
+  else if (at(0, "i") && at(1, "am") && at(2, "going") && at(3, "to")) verb = 4;
+  else return false;
+  if (i + verb < end && w[i + verb] == "just") ++verb;
+  return i + verb < end && asking.count(w[i + verb]) == 0;
+}
+}  // namespace
+
+// Whose part a clause is about, from its subject: the listener ("you" first,
+// after nothing but discourse fillers and an auxiliary: "um, could you ...",
+// "you bring ...") or the speaker announcing their own step.
+void AlignmentModel::mark_clause_subjects(EncodedUtterance& u) const {
   static const std::unordered_set<std::string> lead = {
       "um", "uh", "er", "erm", "oh", "ok", "okay", "right", "so", "hey", "please", "and", "then", "now", "well",
       "also", "just", "yeah", "yes", "oi", "alright", "actually", "maybe", "hi", "hmm", "ah", "look", "listen"};
   static const std::unordered_set<std::string> auxiliary = {"can", "could", "would", "will", "wo", "do", "might",
                                                             "shall", "should", "must"};
   const size_t n = u.words.size();
-  u.addressed.assign(u.clause_end.size(), 0);
+  u.subject.assign(u.clause_end.size(), kSubjectUnmarked);
   size_t start = 0;
   for (size_t k = 0; k < u.clause_end.size(); ++k) {
     const size_t end = std::min(static_cast<size_t>(u.clause_end[k]), n);
     size_t i = start;
     while (i < end && (lead.count(u.words[i]) != 0 || is_punctuation_token(u.words[i]))) ++i;
-    if (i < end && auxiliary.count(u.words[i]) != 0) ++i;
-    if (i < end && (u.words[i] == "you" || u.words[i] == "u")) u.addressed[k] = 1;
+    if (announces_own_step(u.words, i, end)) {
+      u.subject[k] = kSubjectSpeaker;
+    } else {
+      if (i < end && auxiliary.count(u.words[i]) != 0) ++i;
+      if (i < end && (u.words[i] == "you" || u.words[i] == "u")) u.subject[k] = kSubjectListener;
+    }
     start = end;
   }
 }
