@@ -36,8 +36,8 @@
 //     ...": "you" first after fillers and at most one auxiliary) is R with
 //     0.99 (EncodedUtterance::subject): there "can you open the cupboard" is
 //     not the speaker's own opening. One that announces the speaker's own
-//     next step ("I'll open the shed", "I'm going to get ...", "let me ...";
-//     not "I'll need ...", which asks for something) is S with 0.99, and
+//     next step ("I'll open the shed", "I'm going to get ...", "let me ...",
+//     "while I get ..."; not "I'll need ..." or "I think ...") is S with 0.99, and
 //     there a group of the listener's anchors (item 2) at a tenth of its
 //     weight, so "I'll open the shed" cannot stand for the listener's
 //     opening just because the verb fits.
@@ -195,7 +195,7 @@ struct EncodedUtterance {
   std::vector<char> about_request;
   // subject[k]: whose part clause k says it is about, from its first words.
   // kSubjectListener ("can you ...", "you bring ...") is read as a request,
-  // kSubjectSpeaker ("I'll get ...", "I'm going to ...", "let me ...") as a
+  // kSubjectSpeaker ("I'll get ...", "let me ...", "while I get ...") as a
   // statement, each with kMarkedClause rather than kRequestClause; in the
   // latter only the speaker's groups anchor at full weight.
   std::vector<char> subject;

@@ -194,17 +194,24 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
 
 namespace {
 // The speaker announces their own next step: "i will get ...", "i am going to
-// ...", "i am gonna ...", "i shall ...", "let me ...". Not when the verb that
-// follows asks for something ("i will need the saw", "i am going to want
-// ..."): that names what the listener may bring.
-bool announces_own_step(const std::vector<std::string>& w, size_t i, size_t end) {
+// ...", "i am gonna ...", "i shall ...", "let me ...", or says it in the
+// present ("while i get the potato", "i take the compost"). Not when the verb
+// that follows asks for something ("i will need the saw", "i am going to want
+// ..."): that names what the listener may bring; nor a present that says how
+// the speaker stands ("i think", "i reckon", "i fancy ...").
+template <class IsVerb>
+bool announces_own_step(const std::vector<std::string>& w, size_t i, size_t end, IsVerb&& is_verb) {
   static const std::unordered_set<std::string> asking = {"need", "want", "like", "require", "have", "love"};
+  static const std::unordered_set<std::string> stance = {
+      "think", "reckon", "guess", "know", "mean", "hope", "suppose", "believe", "wonder", "see", "fancy",
+      "wish", "prefer", "feel", "bet", "forgot", "forget", "remember", "got", "still", "just", "really"};
   auto at = [&](size_t k, const char* s) { return i + k < end && w[i + k] == s; };
   size_t verb = 0;
   if (at(0, "let") && at(1, "me")) verb = 2;
   else if (at(0, "i") && (at(1, "will") || at(1, "shall"))) verb = 2;
   else if (at(0, "i") && at(1, "am") && at(2, "gonna")) verb = 3;
   else if (at(0, "i") && at(1, "am") && at(2, "going") && at(3, "to")) verb = 4;
+  else if (at(0, "i") && i + 1 < end && is_verb(i + 1)) return asking.count(w[i + 1]) == 0 && stance.count(w[i + 1]) == 0;
   else return false;
   if (i + verb < end && w[i + verb] == "just") ++verb;
   return i + verb < end && asking.count(w[i + verb]) == 0;
@@ -227,7 +234,11 @@ void AlignmentModel::mark_clause_subjects(EncodedUtterance& u) const {
     const size_t end = std::min(static_cast<size_t>(u.clause_end[k]), n);
     size_t i = start;
     while (i < end && (lead.count(u.words[i]) != 0 || is_punctuation_token(u.words[i]))) ++i;
-    if (announces_own_step(u.words, i, end)) {
+    auto is_verb = [&](size_t j) {
+      const uint8_t f = word_flags(u.ids[j], u.words[j]);
+      return (f & kWordVerb) != 0 && (f & kWordFunction) == 0;
+    };
+    if (announces_own_step(u.words, i, end, is_verb)) {
       u.subject[k] = kSubjectSpeaker;
     } else {
       if (i < end && auxiliary.count(u.words[i]) != 0) ++i;
