@@ -130,8 +130,19 @@ std::string AlignmentModel::attribute_synonym(const std::string& w) const {
       bool ambiguous = false;
     };
     std::unordered_map<std::string, Best> best;
+    // A word of the vocabulary is a synonym too if the vocabulary has it as a
+    // modifier that is not a value (the few-shot examples' "little" for
+    // small): else it stayed a word of its own, which no value contradicts.
+    auto in_vocabulary_as_other = [&](const std::string& word) {
+      auto it = word_ids_.find(word);
+      if (it == word_ids_.end()) return false;
+      const auto id = static_cast<size_t>(it->second);
+      const uint8_t f = id < word_flags_.size() ? word_flags_[id] : 0;
+      const bool value = id < attribute_word_.size() && attribute_word_[id] != 0;
+      return value || (f & kWordModifier) == 0 || (f & kWordFunction) != 0;
+    };
     auto offer = [&](const std::string& word, int strength, const std::string& value) {
-      if (word.size() < 3 || word_ids_.count(word) != 0 || is_function_word(word)) return;
+      if (word.size() < 3 || in_vocabulary_as_other(word) || is_function_word(word)) return;
       Best& b = best[word];
       if (strength > b.strength) {
         b = Best{strength, value, false};
@@ -178,7 +189,11 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   u.words = tokenize_utterance(text);
   u.ids.reserve(u.words.size());
   for (size_t i = 0; i < u.words.size(); ++i) {
-    if (word_ids_.count(u.words[i]) == 0) u.words[i] = respelled(u.words[i]);
+    if (word_ids_.count(u.words[i]) == 0) {
+      u.words[i] = respelled(u.words[i]);
+    } else if (std::string v = attribute_synonym(u.words[i]); !v.empty()) {
+      u.words[i] = v;  // a plain modifier of the vocabulary that names a value ("little")
+    }
     auto it = word_ids_.find(u.words[i]);
     u.ids.push_back(it == word_ids_.end() ? -1 : it->second);
     if (is_clause_end(u.words[i])) u.clause_end.push_back(static_cast<int>(i) + 1);
