@@ -31,7 +31,7 @@ inline constexpr double kRequestClause = 0.8;
 inline constexpr double kMarkedClause = 0.99;
 // In a clause announcing the speaker's own step, the anchor of a listener's
 // group is scaled by this (a deficient factor, like the colour binding's).
-// Dev halves: 0.03, 0.1 and 0.3 gave the same precision and recall.
+// Dev halves: 0.02 and 0.1 gave the same precision and recall.
 inline constexpr double kOffRoleAnchor = 0.1;
 inline constexpr size_t kMaxAnchors = 4;  // action groups whose mention requires an anchor token
 inline constexpr int kMaxEnumeratedGroups = 10;  // units; beyond this all are taken as mentioned
