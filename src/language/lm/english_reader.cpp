@@ -244,15 +244,15 @@ void AlignmentModel::mark_clause_subjects(EncodedUtterance& u) const {
                                                             "shall", "should", "must"};
   const size_t n = u.words.size();
   u.subject.assign(u.clause_end.size(), kSubjectUnmarked);
+  auto is_verb = [&](size_t j) {
+    const uint8_t f = word_flags(u.ids[j], u.words[j]);
+    return (f & kWordVerb) != 0 && (f & kWordFunction) == 0;
+  };
   size_t start = 0;
   for (size_t k = 0; k < u.clause_end.size(); ++k) {
     const size_t end = std::min(static_cast<size_t>(u.clause_end[k]), n);
     size_t i = start;
     while (i < end && (lead.count(u.words[i]) != 0 || is_punctuation_token(u.words[i]))) ++i;
-    auto is_verb = [&](size_t j) {
-      const uint8_t f = word_flags(u.ids[j], u.words[j]);
-      return (f & kWordVerb) != 0 && (f & kWordFunction) == 0;
-    };
     if (announces_own_step(u.words, i, end, is_verb)) {
       u.subject[k] = kSubjectSpeaker;
     } else {
