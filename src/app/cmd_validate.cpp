@@ -52,7 +52,8 @@ int check_pack_schema(const std::string& dir, bool quiet) {
 
 // What the pack left to clips and clips found from the domain: the goal
 // atoms of salient actions without `goal_atoms`, where each salient action
-// leaves its focal object (language.destinations), and the WordNet senses
+// leaves its focal object (language.destinations), the salient actions whose
+// focal object is a place and so is named in commands, and the WordNet senses
 // the generated corpus gives type names whose first sense is not the domain's.
 void print_derived(const data::Dataset& ds) {
   const domains::PackSpec& spec = ds.pack().spec();
@@ -66,6 +67,10 @@ void print_derived(const data::Dataset& ds) {
     if (r.destination_arg > 0)
       fmt::print("ok    derived from the effects: {} leaves its argument {} at its argument {} (commands say where)\n",
                  r.action, r.focal_arg, r.destination_arg);
+  for (const auto& r : spec.language.salient_actions)
+    if (r.focal_is_place)
+      fmt::print("ok    derived from the types: {}'s argument {} is a place, named in commands (\"({} you <place>)\")\n",
+                 r.action, r.focal_arg, r.action);
   try {
     for (const auto& [type, lemma] : language::dataset_type_nouns(ds)) {
       if (lemma.empty())

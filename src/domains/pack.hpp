@@ -438,7 +438,9 @@ void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
 // Each salient action's destination_arg: the parameter P (neither its agent
 // nor its focal object I) such that the action adds (L I P) for a location
 // predicate L, as (put ?a ?i ?p) adds (in ?i ?p). Run after the location
-// predicates are known; nothing when language.destinations is false.
+// predicates are known; nothing when language.destinations is false. Also
+// each rule's focal_is_place: its focal parameter's type is a place type of a
+// location predicate (unlock's place), whatever language.destinations says.
 void derive_destinations(PackSpec& spec, const pddl::Domain& domain);
 
 // The pack for a domain:

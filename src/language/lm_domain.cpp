@@ -34,7 +34,8 @@ lm::DomainDescription describe_for_language_model(const pddl::Domain& domain, co
                                problem.objects[static_cast<size_t>(atom.args[1])].name});
   }
   for (const commands::SalientActionRule& r : config.salient_actions)
-    out.command_actions.push_back({r.action, r.agent_arg, r.focal_arg, config.destinations ? r.destination_arg : 0});
+    out.command_actions.push_back({r.action, r.agent_arg, r.focal_arg, config.destinations ? r.destination_arg : 0,
+                                 r.focal_is_place});
   out.destination_predicate = commands::kDestinationPredicate;
   out.speaker = config.speaker;
   out.listener = config.listener;

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <regex>
 
@@ -62,6 +63,9 @@ TEST(CliOwnDomain, ValidateReportsWhatItDerivedFromTheEffects) {
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_TRUE(contains(r.out, "derived from the effects: unlock means (not (locked $3))")) << r.out;
   EXPECT_TRUE(contains(r.out, "derived from the effects: put leaves its argument 2 at its argument 3")) << r.out;
+  // unlock is about a place (the greenhouse, the shed): commands name it.
+  EXPECT_TRUE(contains(r.out, "derived from the types: unlock's argument 3 is a place, named in commands")) << r.out;
+  EXPECT_FALSE(contains(r.out, "derived from the types: pickup's argument")) << r.out;
   // pickup's meaning is the pack's own goal_atoms entry, and pickup leaves nothing anywhere.
   EXPECT_FALSE(contains(r.out, "derived from the effects: pickup")) << r.out;
   // The garden declares its spade and rake tools: WordNet's shovel and rake,
@@ -73,6 +77,36 @@ TEST(CliOwnDomain, ValidateReportsWhatItDerivedFromTheEffects) {
 
 // Type names are read through WordNet; validate says how, and warns of a
 // name WordNet does not know at all.
+// Where both the shed and the greenhouse are locked, "unlock the greenhouse"
+// asks for that one: the listener's commands name the place unlocked, and
+// of the commands that unlock one of the two, nearly all the mass is on the
+// place said. (With the place lifted, both read "(unlock you ?place1)".)
+TEST(CliOwnDomain, TheListenerKnowsWhichPlaceToUnlock) {
+  const std::string ds = clips::paths::source_dir() + "/data/datasets/garden";
+  const auto mass = [&](const std::string& utterance) {
+    const auto r = run("CLIPS_LM_CACHE_DIR=off " + clips_binary() + " listen --dataset " + ds +
+                       " --plan 4.4.plant-roses --json --utterance " + sq(utterance));
+    EXPECT_EQ(r.status, 0) << r.out;
+    std::map<std::string, double> out;
+    const auto j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
+    for (const auto& c : j.at("commands")) {
+      std::vector<std::string> unlocked;
+      for (const char* place : {"shed", "greenhouse"})
+        if (std::regex_search(c.at("command").get<std::string>(),
+                              std::regex(std::string(R"(\(unlock you \?key\d+ )") + place + "[ )]")))
+          unlocked.push_back(place);
+      if (unlocked.size() == 1) out[unlocked[0]] += c.at("prob").get<double>();
+    }
+    return out;
+  };
+  auto m = mass("Could you unlock the greenhouse?");
+  EXPECT_GT(m["greenhouse"], 0.5);
+  EXPECT_GT(m["greenhouse"], 20 * m["shed"]);
+  m = mass("Can you open up the shed for me?");
+  EXPECT_GT(m["shed"], 0.5);
+  EXPECT_GT(m["shed"], 20 * m["greenhouse"]);
+}
+
 TEST(CliOwnDomain, ValidateSaysWhichWordEachTypeIsReadAs) {
   // The fixture's `seed` type, renamed throughout (domain, problem, pack).
   const auto renamed = [](const std::string& name) {

@@ -64,6 +64,27 @@ TEST(GoalFormula, VirtualHomeNamesObjectsAfterVariables) {
             "(and (placed plate1 table1) (placed plate2 table1) (placed cutleryfork1 table1))");
 }
 
+// A focal object that is a place keeps its name ("unlock the greenhouse" asks
+// for that one), while the key and the place stood at stay lifted.
+TEST(GoalFormula, AFocalPlaceIsNamed) {
+  LanguageConfig config;
+  config.speaker = "human";
+  config.listener = "robot";
+  config.print_agents_and_focal_only = true;
+  config.salient_actions = {SalientActionRule{"unlock", 1, 3, 0, true}};
+  config.goal_atoms["unlock"] = {"(not (locked $3))"};
+  const auto type_of = [](const std::string& object) { return object == "key1" ? "key" : "place"; };
+  const auto salient = salient_of("(unlock robot key1 greenhouse patio)", "", config);
+  const Command named = lift_command(salient, config, type_of);
+  EXPECT_EQ(named.display_form(), "(unlock you ?key1 greenhouse ?place1)");
+  EXPECT_EQ(named.llm_form(), "(unlock you greenhouse)");
+  EXPECT_EQ(named.to_goal_formula(config), "(and (not (locked greenhouse)))");
+  config.salient_actions[0].focal_is_place = false;
+  const Command lifted = lift_command(salient, config, type_of);
+  EXPECT_EQ(lifted.llm_form(), "(unlock you place1)");
+  EXPECT_EQ(lifted.to_goal_formula(config).rfind("(exists (?key1 - key ?place1 - place ?place2 - place) (and (not (locked ?place1))", 0), 0u);
+}
+
 TEST(GoalFormula, UnknownActionIsAnError) {
   Command cmd;
   cmd.actions = testing::terms("(open you ?door1)");

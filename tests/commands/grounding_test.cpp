@@ -78,5 +78,18 @@ TEST(FocalObjects, MatchedAgainstAPlanForTheEfficientListener) {
   EXPECT_EQ(match_focal_objects(c, plan, doors_keys_gems_language()), (std::vector<std::string>{"door1", "key1"}));
 }
 
+// A focal object the command names (a place, "(unlock you greenhouse)")
+// counts once an action of the plan carries that action out.
+TEST(FocalObjects, ANamedPlaceIsMatchedAsItself) {
+  LanguageConfig config;
+  config.speaker = "human";
+  config.listener = "robot";
+  config.salient_actions = {SalientActionRule{"unlock", 1, 3, 0, true}};
+  const auto c = command("(unlock you ?key1 greenhouse ?place1)", "", {{"key1", "key"}, {"place1", "place"}});
+  EXPECT_EQ(match_focal_objects(c, terms("(unlock robot key2 greenhouse patio)"), config),
+            (std::vector<std::string>{"greenhouse"}));
+  EXPECT_TRUE(match_focal_objects(c, terms("(unlock robot key1 shed patio)"), config).empty());
+}
+
 }  // namespace
 }  // namespace clips::commands

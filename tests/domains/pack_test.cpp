@@ -453,6 +453,28 @@ TEST(PackFile, DestinationsComeFromTheEffects) {
     EXPECT_EQ(r.destination_arg, 0) << r.action;
 }
 
+// The focal object of the garden's unlock is a place (the type of the second
+// argument of its location predicate "in"), so commands name it; the items of
+// pickup and put are not places; nothing is a place in a pack without
+// location predicates, as the paper packs.
+TEST(PackFile, AFocalPlaceIsKnownFromTheLocationPredicates) {
+  const std::string garden = std::string(CLIPS_SOURCE_DIR) + "/data/datasets/garden";
+  const DomainWithPack g = load_domain_with_pack(garden + "/domain.pddl", garden);
+  std::map<std::string, bool> place;
+  for (const auto& r : g.pack->spec().language.salient_actions) place[r.action] = r.focal_is_place;
+  EXPECT_TRUE(place.at("unlock"));
+  EXPECT_FALSE(place.at("pickup"));
+  EXPECT_FALSE(place.at("put"));
+  EXPECT_FALSE(place.at("handover"));
+  PackSpec spec = g.pack->spec();
+  spec.language.location_predicates.clear();
+  derive_destinations(spec, *g.domain);
+  for (const auto& r : spec.language.salient_actions) EXPECT_FALSE(r.focal_is_place) << r.action;
+  const std::string dkg = std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems";
+  for (const auto& r : load_domain_with_pack(dkg + "/domain.pddl", dkg).pack->spec().language.salient_actions)
+    EXPECT_FALSE(r.focal_is_place) << r.action;
+}
+
 // A domain that says where agents and items are with one predicate, (at ?x -
 // locatable ?p - place), still has a location predicate, and its put a
 // destination; one with (at ?a - agent ...) for agents only does not count it.

@@ -195,11 +195,14 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
       const std::string& arg = s.action.args[i];
       const std::string pronoun = config.to_pronoun(arg);
       const bool is_agent = pronoun != arg || config.is_pronoun(arg);
+      const bool focal = rule && static_cast<int>(i) + 1 == rule->focal_arg;
       if (is_agent || is_variable(arg))
         action.args.push_back(pronoun);
+      else if (focal && rule->focal_is_place)
+        action.args.push_back(arg);
       else
         action.args.push_back("?" + variable_for(arg));
-      if (is_agent || (rule && static_cast<int>(i) + 1 == rule->focal_arg)) printed.args.push_back(action.args.back());
+      if (is_agent || focal) printed.args.push_back(action.args.back());
     }
     cmd.actions.push_back(std::move(action));
     if (config.print_agents_and_focal_only) cmd.printed_actions.push_back(std::move(printed));

@@ -94,9 +94,13 @@ std::vector<std::string> focal_objects(const std::vector<Term>& actions, const L
 
 std::vector<std::string> match_focal_objects(const Command& command, const std::vector<Term>& plan,
                                              const LanguageConfig& config) {
-  std::vector<std::string> focal_variables;
-  for (const auto& arg : focal_objects(command.actions, config))
-    if (is_variable(arg)) focal_variables.push_back(arg.substr(1));
+  std::vector<std::string> focal_variables, named;  // named: focal objects the command names (places)
+  for (const auto& arg : focal_objects(command.actions, config)) {
+    if (is_variable(arg))
+      focal_variables.push_back(arg.substr(1));
+    else
+      named.push_back(arg);
+  }
 
   std::vector<std::string> objects;
   for (const auto& lifted : command.actions) {
@@ -107,6 +111,8 @@ std::vector<std::string> match_focal_objects(const Command& command, const std::
       for (const auto& var : focal_variables)
         for (const auto& b : *binding)
           if (b.variable == var) push_unique(objects, b.object);
+      for (const auto& object : named)
+        if (std::find(lifted.args.begin(), lifted.args.end(), object) != lifted.args.end()) push_unique(objects, object);
     }
   }
   return objects;

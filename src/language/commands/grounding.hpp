@@ -31,7 +31,8 @@ std::vector<std::string> focal_objects(const std::vector<Term>& actions, const L
 
 // Efficient listener: the objects bound to the command's focal
 // variables when each command action (pronouns mapped back) is unified with
-// each action of a plan; without repeats, in order found.
+// each action of a plan, and a focal object the command names (a place) when
+// an action of it unifies; without repeats, in order found.
 std::vector<std::string> match_focal_objects(const Command& command, const std::vector<Term>& plan,
                                              const LanguageConfig& config);
 

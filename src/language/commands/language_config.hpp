@@ -20,6 +20,11 @@ struct SalientActionRule {
   // adds (in I P): 3), found from the domain when the pack is built
   // (domains::derive_destinations); 0: none.
   int destination_arg = 0;
+  // Whether the focal object is a place (its parameter's type is a location
+  // predicate's place type, as the greenhouse of (unlock A K P Q)), found with
+  // destination_arg. A place is named, not lifted, in commands, as it is in
+  // location predicates: "unlock the greenhouse" names which one.
+  bool focal_is_place = false;
 };
 
 // The predicate a command states a destination with: (to ?compost1 rosebed)

@@ -216,7 +216,8 @@ class Generator {
     std::string out, where;
     for (const PlannedAction& a : actions) {
       auto [it, fresh] = variable.emplace(a.focal->name, "");
-      if (fresh) it->second = a.focal->type + std::to_string(++counter[a.focal->type]);
+      if (fresh)
+        it->second = a.rule->focal_is_place ? a.focal->name : a.focal->type + std::to_string(++counter[a.focal->type]);
       out += (out.empty() ? "(" : " (") + a.schema->name;
       for (size_t j = 0; j < a.schema->parameter_types.size(); ++j) {
         const int pos = static_cast<int>(j) + 1;
@@ -299,7 +300,13 @@ class Generator {
     const std::vector<std::string> adj = adjectives(a);
     std::string np = dice_.chance(0.75) ? "the" : "a";
     for (const std::string& x : adj) np += " " + x;
-    np += " " + (!adj.empty() && dice_.chance(0.3) ? std::string("one") : noun(a.focal->type, false));
+    std::string head = !adj.empty() && dice_.chance(0.3) ? std::string("one") : noun(a.focal->type, false);
+    // A place is said by its name ("the greenhouse"), as commands print it,
+    // unless the name only numbers its type (fridge1). The type's noun is
+    // drawn all the same, so the rest of the corpus draws as before.
+    if (a.rule->focal_is_place && head != "one" && name_as_words(a.focal->name) != name_as_words(a.focal->type))
+      head = name_as_words(a.focal->name);
+    np += " " + head;
     if (a.location) {
       static const std::vector<std::string> preps = {"from the", "in the", "on the", "at the", "over at the",
                                                      "by the", "from the"};
@@ -357,7 +364,7 @@ class Generator {
   std::string two_action_utterance(const PlannedAction& a, const PlannedAction& b) {
     const std::vector<std::string> adj_a = adjectives(a);
     // Same action on two objects of one type: "bring me both planks".
-    if (a.schema == b.schema && a.focal->type == b.focal->type && dice_.chance(0.5)) {
+    if (a.schema == b.schema && a.focal->type == b.focal->type && !a.rule->focal_is_place && dice_.chance(0.5)) {
       static const std::vector<std::string> both = {"both", "the two", "two", "both of the"};
       std::string np = dice_.pick(both);
       if (a.facts.size() == 1 && b.facts.size() == 1 && a.facts[0]->value == b.facts[0]->value)

@@ -57,6 +57,7 @@ struct CommandActionRule {
   int agent_arg = 1;   // the acting agent
   int focal_arg = 2;   // the object the action is about
   int destination_arg = 0;  // where the action leaves it ((put A I P): 3); 0: none
+  bool focal_is_place = false;  // the focal object is a place, named in commands ("(unlock you greenhouse)")
 };
 
 // Everything the generator needs to know about a domain and one problem.
