@@ -635,13 +635,23 @@ int added_place_slot(const pddl::Effect& e, const pddl::Domain& d, const command
 }  // namespace
 
 void derive_destinations(PackSpec& spec, const pddl::Domain& domain) {
-  std::vector<pddl::TypeId> place_types;  // the second argument of each location predicate
+  // The place (second) and the located (first) argument of each location predicate.
+  std::vector<pddl::TypeId> place_types, located_types;
   for (const std::string& name : spec.language.location_predicates) {
     const auto p = domain.find_predicate(name);
     if (!p) continue;
     const auto& types = domain.predicates[static_cast<size_t>(*p)].arg_types;
-    if (types.size() == 2) place_types.push_back(types[1]);
+    if (types.size() != 2) continue;
+    place_types.push_back(types[1]);
+    located_types.push_back(types[0]);
   }
+  // A place that is itself put somewhere, as a block on a block, is a thing
+  // like any other and stays lifted.
+  const auto is_place = [&](pddl::TypeId t) {
+    const auto under = [&](pddl::TypeId of) { return of != 0 && domain.is_subtype(t, of); };
+    return std::any_of(place_types.begin(), place_types.end(), under) &&
+           std::none_of(located_types.begin(), located_types.end(), under);
+  };
   for (commands::SalientActionRule& r : spec.language.salient_actions) {
     r.destination_arg = 0;
     r.focal_is_place = false;
@@ -651,8 +661,7 @@ void derive_destinations(PackSpec& spec, const pddl::Domain& domain) {
     const int params = static_cast<int>(schema->param_types.size());
     if (r.focal_arg < 1 || r.focal_arg > params) continue;
     const pddl::TypeId focal_type = schema->param_types[static_cast<size_t>(r.focal_arg - 1)];
-    r.focal_is_place = std::any_of(place_types.begin(), place_types.end(),
-                                   [&](pddl::TypeId t) { return t != 0 && domain.is_subtype(focal_type, t); });
+    r.focal_is_place = is_place(focal_type);
     if (!spec.language.destinations) continue;
     const int slot = added_place_slot(schema->effect, domain, spec.language, r.focal_arg - 1);
     if (slot >= 0 && slot < params && slot + 1 != r.agent_arg && slot + 1 != r.focal_arg) r.destination_arg = slot + 1;

@@ -440,7 +440,8 @@ void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
 // predicate L, as (put ?a ?i ?p) adds (in ?i ?p). Run after the location
 // predicates are known; nothing when language.destinations is false. Also
 // each rule's focal_is_place: its focal parameter's type is a place type of a
-// location predicate (unlock's place), whatever language.destinations says.
+// location predicate (unlock's place) and not a type such a predicate locates
+// (a block on a block), whatever language.destinations says.
 void derive_destinations(PackSpec& spec, const pddl::Domain& domain);
 
 // The pack for a domain:

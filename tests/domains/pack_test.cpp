@@ -473,6 +473,28 @@ TEST(PackFile, AFocalPlaceIsKnownFromTheLocationPredicates) {
   const std::string dkg = std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems";
   for (const auto& r : load_domain_with_pack(dkg + "/domain.pddl", dkg).pack->spec().language.salient_actions)
     EXPECT_FALSE(r.focal_is_place) << r.action;
+  // Blocks stacked on blocks: (on ?x - block ?y - block) says where a block
+  // is, so blocks are places, but they are located too: pickup's block stays
+  // a lifted thing; the table it is put on is only a place.
+  const char* blocks = R"(
+(define (domain stack)
+  (:requirements :strips :typing)
+  (:types agent block table)
+  (:predicates (holding ?a - agent ?b - block) (on ?x - block ?y - block) (ontable ?x - block ?t - table)
+               (clean ?t - table))
+  (:action pickup :parameters (?a - agent ?b - block ?c - block)
+   :precondition (on ?b ?c) :effect (and (not (on ?b ?c)) (holding ?a ?b)))
+  (:action wipe :parameters (?a - agent ?t - table) :effect (clean ?t))
+  (:action stack :parameters (?a - agent ?b - block ?c - block)
+   :precondition (holding ?a ?b) :effect (and (not (holding ?a ?b)) (on ?b ?c))))
+)";
+  const pddl::Domain d = pddl::parse_domain(blocks, "stack.pddl");
+  PackSpec stack = parse_pack_spec(R"j({"domain": "stack", "language": {"salient_actions": [
+      {"action": "pickup", "focal_arg": 2}, {"action": "wipe", "focal_arg": 2}], "locations": ["on", "ontable"]}})j",
+                                   "stack/pack.json");
+  derive_location_predicates(stack, d);
+  EXPECT_FALSE(stack.language.salient_actions[0].focal_is_place);
+  EXPECT_TRUE(stack.language.salient_actions[1].focal_is_place);
 }
 
 // A domain that says where agents and items are with one predicate, (at ?x -
