@@ -59,7 +59,10 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
                    search::to_string(r.status).c_str(), r.expanded, r.seconds);
     if (r.status == search::SearchStatus::Success) {
       out.plan = r.plan;
-      end = pddl::simulate(task, from, r.plan).states.back();
+      // Phase 2 continues from the plan carried out in s_T itself (spec
+      // 9.10): the human was frozen only to find the plan, and stays free
+      // to finish (a frozen human could never reach the goal).
+      end = pddl::simulate(task, w.start, r.plan).states.back();
       found = true;
       break;
     }
