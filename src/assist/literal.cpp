@@ -105,6 +105,17 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
   return out;
 }
 
+// The reference's static check of a ground command (spec 9.11 and 13 item
+// 14): it looks at the last action only, and rejects the command when that
+// action can never be applicable, which is when grounding left it out (a
+// static precondition is false, e.g. a key unlocking a door of another
+// colour).
+bool last_action_possible(const pddl::Task& task, const commands::GroundCommand& g,
+                          const commands::LanguageConfig& config) {
+  if (g.actions.empty()) return true;
+  return task.find_action(commands::to_pddl(commands::to_agent_names(g.actions.back(), config))).has_value();
+}
+
 struct Scored {
   AssistResult r;
   double cmd_ok = 0;
@@ -158,6 +169,10 @@ LiteralRun literal_assist(const LiteralSetup& ls, const language::ListenerResult
       for (auto& g : groundings)
         for (auto& o : commands::focal_objects(g.actions, ls.config))
           if (ls.is_option(o)) options[o] += 1.0 / static_cast<double>(groundings.size());
+      // Plans only for groundings that are not statically impossible.
+      std::erase_if(groundings, [&](const commands::GroundCommand& g) {
+        return !last_action_possible(*ls.world.task, g, ls.config);
+      });
       if (groundings.size() > 10) {
         std::shuffle(groundings.begin(), groundings.end(), rng);
         groundings.resize(10);

@@ -5,7 +5,8 @@
 //   phase 1  A* for the command's goal (joint plan; retried with the human
 //            frozen), phase 2  A* for the true goal with the robot frozen.
 // Efficient: plan for the lifted (existential) command directly. Naive: plan
-// for up to 10 random groundings of it, options spread over all groundings.
+// for up to 10 random groundings of it whose last action is not statically
+// impossible, options spread over all groundings.
 #include <functional>
 #include <memory>
 #include <random>

@@ -15,6 +15,7 @@
 
 #include "assist/literal.hpp"
 #include "domains/pack.hpp"
+#include "language/commands/grounding.hpp"
 #include "dkg_profiles.hpp"
 #include "pddl/parser.hpp"
 #include "search/astar.hpp"
@@ -117,4 +118,24 @@ TEST(LiteralTwoPhase, TheHumanFrozenForPhaseOneIsFreeInPhaseTwo) {
     EXPECT_TRUE(w.contains(run.result.plan, "(pickup human gem1)")) << "naive " << naive;
     EXPECT_EQ(run.result.noops, 0);
   }
+}
+
+// The naive listener counts options over every grounding, then plans only for
+// those whose last action is not statically impossible (spec 9.11, 13 item
+// 14): "unlock the red door" grounds with the blue key too, which can never
+// open it.
+TEST(LiteralNaive, StaticallyImpossibleGroundingsAreNotPlannedFor) {
+  World w;
+  auto ls = w.setup();
+  ls.max_nodes = 1u << 16;
+  const auto ranked = w.reading("(unlock you ?key1 ?door1) where (iscolor ?door1 red)");
+  ASSERT_EQ(ranked.commands.size(), 1u);
+  EXPECT_EQ(commands::naive_groundings(ranked.commands[0].command, ls.objects_by_type, ls.facts).size(), 2u);
+
+  const auto run = assist::literal_assist(ls, ranked, /*naive=*/true, 1);
+  EXPECT_DOUBLE_EQ(run.result.options.at("door1"), 1.0);
+  // Only (unlock robot key1 door1) is planned for, and it succeeds.
+  EXPECT_DOUBLE_EQ(run.command_success, 1.0);
+  EXPECT_DOUBLE_EQ(run.result.success, 1.0);
+  EXPECT_TRUE(w.contains(run.result.plan, "(unlock robot key1 door1)"));
 }
