@@ -59,9 +59,9 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
                    search::to_string(r.status).c_str(), r.expanded, r.seconds);
     if (r.status == search::SearchStatus::Success) {
       out.plan = r.plan;
-      // Phase 2 continues from the plan carried out in s_T itself (spec
-      // 9.10): the human was frozen only to find the plan, and stays free
-      // to finish (a frozen human could never reach the goal).
+      // Phase 2 continues from the plan carried out in s_T itself, as the
+      // reference does: the human was frozen only to find the plan, and is
+      // free to finish (a frozen human could never reach the goal).
       end = pddl::simulate(task, w.start, r.plan).states.back();
       found = true;
       break;
@@ -105,11 +105,10 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
   return out;
 }
 
-// The reference's static check of a ground command (spec 9.11 and 13 item
-// 14): it looks at the last action only, and rejects the command when that
-// action can never be applicable, which is when grounding left it out (a
-// static precondition is false, e.g. a key unlocking a door of another
-// colour).
+// The reference's static check of a ground command: it looks at the last
+// action only, and rejects the command when that action can never be
+// applicable, which is when grounding left it out (a static precondition is
+// false, e.g. a key unlocking a door of another colour).
 bool last_action_possible(const pddl::Task& task, const commands::GroundCommand& g,
                           const commands::LanguageConfig& config) {
   if (g.actions.empty()) return true;

@@ -1,4 +1,5 @@
-// Literal-listener assistance (spec 9.10-9.11) on a hand-made map:
+// Literal-listener assistance (two-phase planning, naive groundings) on a
+// hand-made map:
 //
 //   x: 1 2 3 4 5 6 7 8 9
 //   y1 . . . . . . . . .
@@ -120,10 +121,10 @@ TEST(LiteralTwoPhase, TheHumanFrozenForPhaseOneIsFreeInPhaseTwo) {
   }
 }
 
-// The naive listener counts options over every grounding, then plans only for
-// those whose last action is not statically impossible (spec 9.11, 13 item
-// 14): "unlock the red door" grounds with the blue key too, which can never
-// open it.
+// The naive listener counts options over every grounding, then, as the
+// reference does, plans only for those whose last action is not statically
+// impossible: "unlock the red door" grounds with the blue key too, which can
+// never open it.
 TEST(LiteralNaive, StaticallyImpossibleGroundingsAreNotPlannedFor) {
   World w;
   auto ls = w.setup();
