@@ -122,7 +122,8 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   if (r_.use_turns) {
     const pddl::Task& t = spec.task();
     std::vector<int> op_of(static_cast<size_t>(t.num_actions()), -1);
-    for (size_t op = 0; op < nrel; ++op) op_of[static_cast<size_t>(r_.op_action[op])] = static_cast<int>(op);
+    for (size_t op = 0; op < nrel; ++op)
+      if (r_.op_action[op] >= 0) op_of[static_cast<size_t>(r_.op_action[op])] = static_cast<int>(op);
     for (pddl::ActionId a = 0; a < t.num_actions(); ++a)
       agent_actions_[static_cast<size_t>(r_.turns.agent_of[static_cast<size_t>(a)])].push_back(
           {op_of[static_cast<size_t>(a)], scaled_cost(spec.cost(a), scale_), a});
