@@ -87,7 +87,6 @@ struct Rule {
   std::vector<std::pair<RArg, RArg>> equal, differ;
   std::vector<RAtom> heads;
   std::vector<int> needed;  // variables the heads read
-  bool never = false;       // the condition is false
 };
 
 RArg arg_of(const TermRef& t) { return t.is_var ? RArg{t.index, -1} : RArg{-1, t.index}; }
@@ -97,30 +96,83 @@ bool objects_compared(const Condition& c) {
          c.nums[1].kind == NumExpr::Kind::Object;
 }
 
-// The atoms, equalities and inequalities every state satisfying `c` has
-// (its top-level conjunction, through existentials).
-void positive(const Condition& c, Rule& r) {
+// What a state satisfying a condition has, as alternatives: the DNF of its
+// atoms and object (in)equalities, through existentials; anything else (a
+// negated atom, a universal, a number) counts as true. Each alternative is
+// one rule body, as a translator splits disjunctive preconditions.
+struct Part {
+  std::vector<RAtom> atoms;
+  std::vector<std::pair<RArg, RArg>> equal, differ;
+};
+constexpr size_t kMaxParts = 16;  // beyond: a conjunction keeps only its single-part conjuncts
+
+void merge(Part& into, const Part& p) {
+  into.atoms.insert(into.atoms.end(), p.atoms.begin(), p.atoms.end());
+  into.equal.insert(into.equal.end(), p.equal.begin(), p.equal.end());
+  into.differ.insert(into.differ.end(), p.differ.begin(), p.differ.end());
+}
+
+// No alternative: the condition is false.
+std::vector<Part> parts(const Condition& c) {
   using K = Condition::Kind;
   switch (c.kind) {
     case K::Atom: {
       RAtom a{c.pred, {}};
       for (const TermRef& t : c.args) a.args.push_back(arg_of(t));
-      r.body.push_back(std::move(a));
-      return;
+      Part p;
+      p.atoms.push_back(std::move(a));
+      return {p};
     }
-    case K::And:
-      for (const Condition& k : c.kids) positive(k, r);
-      return;
-    case K::Exists: positive(c.kids[0], r); return;
-    case K::False: r.never = true; return;
-    case K::Equal:
-      if (objects_compared(c)) r.equal.push_back({arg_of(c.nums[0].args[0]), arg_of(c.nums[1].args[0])});
-      return;
-    case K::Not:
+    case K::And: {
+      std::vector<std::vector<Part>> kids;
+      size_t product = 1;
+      for (const Condition& k : c.kids) {
+        kids.push_back(parts(k));
+        if (kids.back().empty()) return {};
+        product = std::min<size_t>(product * kids.back().size(), kMaxParts + 1);
+      }
+      if (product > kMaxParts) {
+        Part common;
+        for (const auto& k : kids)
+          if (k.size() == 1) merge(common, k[0]);
+        return {common};
+      }
+      std::vector<Part> acc{Part{}};
+      for (const auto& k : kids) {
+        std::vector<Part> next;
+        for (const Part& x : acc)
+          for (const Part& y : k) {
+            Part z = x;
+            merge(z, y);
+            next.push_back(std::move(z));
+          }
+        acc = std::move(next);
+      }
+      return acc;
+    }
+    case K::Or: {
+      std::vector<Part> out;
+      for (const Condition& k : c.kids) {
+        auto ps = parts(k);
+        out.insert(out.end(), ps.begin(), ps.end());
+        if (out.size() > kMaxParts) return {Part{}};
+      }
+      return out;
+    }
+    case K::Exists: return parts(c.kids[0]);
+    case K::False: return {};
+    case K::Equal: {
+      Part p;
+      if (objects_compared(c)) p.equal.push_back({arg_of(c.nums[0].args[0]), arg_of(c.nums[1].args[0])});
+      return {p};
+    }
+    case K::Not: {
+      Part p;
       if (objects_compared(c.kids[0]))
-        r.differ.push_back({arg_of(c.kids[0].nums[0].args[0]), arg_of(c.kids[0].nums[1].args[0])});
-      return;
-    default: return;  // a disjunction, universal, implication or number: may hold
+        p.differ.push_back({arg_of(c.kids[0].nums[0].args[0]), arg_of(c.kids[0].nums[1].args[0])});
+      return {p};
+    }
+    default: return {Part{}};  // a universal, implication, negation or number: may hold
   }
 }
 
@@ -164,7 +216,7 @@ class Explorer {
     }
     std::vector<ObjectId> binding;
     for (size_t r = 0; r < rules_.size(); ++r)
-      if (rules_[r].body.empty() && !rules_[r].never) {
+      if (rules_[r].body.empty()) {
         binding.assign(rules_[r].var_types.size(), -1);
         finish(static_cast<int>(r), binding);
       }
@@ -195,6 +247,12 @@ class Explorer {
     }
   }
 
+  static void add_part(Rule& r, const Part& p) {
+    r.body.insert(r.body.end(), p.atoms.begin(), p.atoms.end());
+    r.equal.insert(r.equal.end(), p.equal.begin(), p.equal.end());
+    r.differ.insert(r.differ.end(), p.differ.begin(), p.differ.end());
+  }
+
   RAtom action_atom(int schema) const {
     RAtom a{num_preds_ + schema, {}};
     for (size_t i = 0; i < d_.actions[static_cast<size_t>(schema)].param_types.size(); ++i)
@@ -219,19 +277,20 @@ class Explorer {
         return;
       }
       case K::When: case K::Forall: {
-        Rule child;
-        child.var_types = into.var_types;
-        if (top) {
-          child.body.push_back(action_atom(schema));
-        } else {
-          child.body = into.body;
-          child.equal = into.equal;
-          child.differ = into.differ;
+        for (const Part& part : e.kind == K::When ? parts(e.cond) : std::vector<Part>{Part{}}) {
+          Rule child;
+          child.var_types = into.var_types;
+          if (top) {
+            child.body.push_back(action_atom(schema));
+          } else {
+            child.body = into.body;
+            child.equal = into.equal;
+            child.differ = into.differ;
+          }
+          add_part(child, part);
+          effect_rules(e.kids[0], child, false, schema);
+          if (!child.heads.empty()) rules_.push_back(std::move(child));
         }
-        if (e.kind == K::When) positive(e.cond, child);
-        if (child.never) return;
-        effect_rules(e.kids[0], child, false, schema);
-        if (!child.heads.empty()) rules_.push_back(std::move(child));
         return;
       }
       default: return;  // deletes and numbers add nothing
@@ -254,25 +313,29 @@ class Explorer {
       for (size_t i = 0; i < a.param_types.size(); ++i) r.var_types[i] = a.param_types[i];
       if (a.precondition) slot_types(*a.precondition, r.var_types);
       slot_types(a.effect, r.var_types);
-      if (a.precondition) positive(*a.precondition, r);
-      if (r.never) continue;
+      const std::vector<Part> pre = a.precondition ? parts(*a.precondition) : std::vector<Part>{Part{}};
+      if (pre.empty()) continue;  // never applicable
       r.heads.push_back(action_atom(static_cast<int>(s)));
-      const size_t action_rule = rules_.size();
-      rules_.push_back(Rule{});
-      effect_rules(a.effect, r, true, static_cast<int>(s));
-      rules_[action_rule] = std::move(r);
+      effect_rules(a.effect, r, true, static_cast<int>(s));  // r collects the unconditional adds
+      for (const Part& part : pre) {
+        Rule x = r;
+        add_part(x, part);
+        rules_.push_back(std::move(x));
+      }
     }
     for (const DerivedRule& dr : d_.derived) {
       Rule r;
       r.var_types.assign(static_cast<size_t>(std::max<int>(dr.num_vars, static_cast<int>(dr.param_types.size()))), -1);
       for (size_t i = 0; i < dr.param_types.size(); ++i) r.var_types[i] = dr.param_types[i];
       slot_types(dr.body, r.var_types);
-      positive(dr.body, r);
-      if (r.never) continue;
       RAtom h{dr.pred, {}};
       for (size_t i = 0; i < dr.param_types.size(); ++i) h.args.push_back(RArg{static_cast<int>(i), -1});
       r.heads.push_back(std::move(h));
-      rules_.push_back(std::move(r));
+      for (const Part& part : parts(dr.body)) {
+        Rule x = r;
+        add_part(x, part);
+        rules_.push_back(std::move(x));
+      }
     }
     // Per rule: which objects each variable may take, what the heads need,
     // and for each body atom, the join order of the others when it is the
@@ -396,7 +459,7 @@ class Explorer {
     for (size_t c = 0; c < cands->size(); ++c) {
       int undo[kMaxArity];
       int nundo = 0;
-      if (unify(ri, a, (*cands)[c], b, undo, nundo)) join(ri, order, k + 1, b);
+      if (unify(ri, a, (*cands)[c], b, undo, nundo) && constraints_hold(r, b)) join(ri, order, k + 1, b);
       for (int u = 0; u < nundo; ++u) b[static_cast<size_t>(undo[u])] = -1;
     }
   }
@@ -424,6 +487,17 @@ class Explorer {
     if (!constraints_hold(r, b)) return;
     for (int v : r.needed)
       if (b[static_cast<size_t>(v)] < 0) {
+        // Equal to something known: only that object.
+        for (const auto& [x, y] : r.equal) {
+          const ObjectId o = x.var == v ? value(y, b) : y.var == v ? value(x, b) : -1;
+          if (o < 0) continue;
+          if (allowed_[static_cast<size_t>(ri)][static_cast<size_t>(v)][static_cast<size_t>(o)]) {
+            b[static_cast<size_t>(v)] = o;
+            finish(ri, b);
+          }
+          b[static_cast<size_t>(v)] = -1;
+          return;
+        }
         for (ObjectId o = 0; o < num_objects_; ++o) {
           if (!allowed_[static_cast<size_t>(ri)][static_cast<size_t>(v)][static_cast<size_t>(o)]) continue;
           b[static_cast<size_t>(v)] = o;

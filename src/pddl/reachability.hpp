@@ -6,12 +6,13 @@
 // those are grounded, so the size limit counts what a plan could use, never
 // a cross product of parameter types that the facts rule out.
 //
-// Each action schema becomes a rule "action(params) <- its precondition's
-// positive atoms" (those of its top-level conjunction, existentials
-// included, with (= ?x ?y) and (not (= ?x ?y)) as constraints), whose head
-// also adds its unconditional effects; each conditional or universal effect
-// a rule "add <- action(params), its condition's positive atoms"; each
-// :derived rule "p(params) <- its condition's positive atoms". Rules fire by
+// Each action schema becomes rules "action(params) <- its precondition's
+// positive atoms" (one per alternative of the precondition's DNF over atoms,
+// existentials included, with (= ?x ?y) and (not (= ?x ?y)) as
+// constraints), whose heads also add its unconditional effects; each
+// conditional or universal effect rules "add <- action(params), its
+// condition's positive atoms"; each :derived rule "p(params) <- its
+// condition's positive atoms". Rules fire by
 // a semi-naive join: every new atom is matched against the rule bodies that
 // name its predicate and joined with the atoms already processed. Anything
 // left out (a disjunction, a negation, a numeric test) only makes more atoms
