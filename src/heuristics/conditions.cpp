@@ -11,16 +11,21 @@ namespace {
 constexpr size_t kMaxClauses = 4096;
 
 // `G` reads a pool: a CompiledCondition, or a Task (its own pool).
+// `negative`: literals (not b) as -(b + 1); else they count as true.
 template <class G>
-std::vector<std::vector<int>> dnf(const G& g, pddl::CondId c, bool norm, size_t max_clauses = kMaxClauses) {
+std::vector<std::vector<int>> dnf(const G& g, pddl::CondId c, bool norm, size_t max_clauses = kMaxClauses,
+                                  bool negative = false) {
   const CNode& n = g.cnode(c);
   switch (n.op) {
     case CNode::False: return {};
     case CNode::Atom: return {{n.a}};
+    case CNode::NotAtom:
+      if (negative) return {{-(n.a + 1)}};
+      return {{}};
     case CNode::Or: {
       std::vector<std::vector<int>> out;
       for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i], norm, max_clauses);
+        auto k = dnf(g, g.ckids()[n.a + i], norm, max_clauses, negative);
         out.insert(out.end(), k.begin(), k.end());
         if (norm && out.size() > max_clauses) normalise_all(out);
         // (Goals keep their disjunctions whole, as they always have.)
@@ -32,7 +37,7 @@ std::vector<std::vector<int>> dnf(const G& g, pddl::CondId c, bool norm, size_t 
     case CNode::And: {
       std::vector<std::vector<int>> acc{{}};
       for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i], norm, max_clauses);
+        auto k = dnf(g, g.ckids()[n.a + i], norm, max_clauses, negative);
         std::vector<std::vector<int>> next;
         for (auto& a : acc)
           for (auto& b : k) {
@@ -82,6 +87,10 @@ void to_csr(const std::vector<std::vector<int>>& rows, std::vector<int>& begin, 
 
 std::vector<std::vector<int>> goal_dnf(const pddl::CompiledCondition& g, bool sorted) {
   return dnf(g, g.root(), sorted);
+}
+
+std::vector<std::vector<int>> goal_dnf_literals(const pddl::CompiledCondition& g) {
+  return dnf(g, g.root(), true, kMaxClauses, true);
 }
 
 std::vector<std::vector<int>> axiom_clauses(const pddl::Task& t, pddl::CondId body) {

@@ -55,7 +55,12 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   // Goal clauses asking for two atoms no reachable state has together can
   // never hold: leave them out (all of them: the goal is unreachable).
   if (const auto mutexes = MutexTable::of(spec.task_ptr()); !r_.goal_clauses.empty())
-    std::erase_if(r_.goal_clauses, [&](const std::vector<int>& c) { return mutexes->any_mutex(c); });
+    std::erase_if(r_.goal_clauses, [&](const std::vector<int>& c) {
+      std::vector<int> state_atoms;  // the task's own (not negation atoms)
+      for (int b : c)
+        if (b < r_.num_state_atoms) state_atoms.push_back(b);
+      return mutexes->any_mutex(state_atoms);
+    });
   r_.goal_trivial = false;
   for (const auto& c : r_.goal_clauses) r_.goal_trivial |= c.empty();
   num_atoms_ = r_.num_atoms;

@@ -51,6 +51,22 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
         }
     }
   }
+  // The goal's negative literals too ((not (rcnot g)) for every gate done):
+  // "not b" is a goal atom when some action deletes b, else dropped.
+  std::vector<std::vector<int>> goal_literals;
+  if (opts.negations) {
+    goal_literals = goal_dnf_literals(spec.goal());
+    for (const auto& c : goal_literals)
+      for (int l : c) {
+        if (l >= 0) continue;
+        const int b = -l - 1;
+        if (deleted[static_cast<size_t>(b)] && !is_turn[static_cast<size_t>(b)] && !t.is_derived(b) &&
+            neg_atom[static_cast<size_t>(b)] < 0) {
+          neg_atom[static_cast<size_t>(b)] = nb + static_cast<int>(r.negated.size());
+          r.negated.push_back(b);
+        }
+      }
+  }
   const int ntotal = nb + static_cast<int>(r.negated.size());
   r.num_atoms = ntotal;
   std::vector<std::vector<int>> pre_rows, add_rows, needed(static_cast<size_t>(ntotal)),
@@ -118,7 +134,18 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     }
   }
 
-  r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
+  if (opts.negations) {
+    for (auto& c : goal_literals) {
+      std::vector<int> atoms;
+      for (int l : c)
+        if (l >= 0) atoms.push_back(l);
+        else if (neg_atom[static_cast<size_t>(-l - 1)] >= 0) atoms.push_back(neg_atom[static_cast<size_t>(-l - 1)]);
+      r.goal_clauses.push_back(std::move(atoms));
+    }
+    normalise_all(r.goal_clauses);
+  } else {
+    r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
+  }
   if (r.use_turns) {
     for (auto& c : r.goal_clauses) std::erase_if(c, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
     if (opts.normalise_goal) normalise_all(r.goal_clauses);
