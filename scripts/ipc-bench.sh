@@ -7,7 +7,8 @@
 #
 # --ground: parse and ground problems 1 and 2 of each folder only
 # (`clips plan --ground-only`), no search. Seconds are wall-clock per run,
-# parsing and grounding included. The TSV goes to --out (default stdout), a
+# parsing and grounding included (cpu: user + system time, which says more
+# on a machine others load). The TSV goes to --out (default stdout), a
 # summary to stderr. Exit status 0 when every problem Fast Downward solves is
 # solved with its cost (or, with --ground, every problem grounds), else 1.
 set -uo pipefail
@@ -61,9 +62,9 @@ else:
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 if [ "$ground" = 1 ]; then
-  printf 'domain\tproblem\tstatus\tactions\tatoms\tseconds\tmessage\n' >"$out"
+  printf 'domain\tproblem\tstatus\tactions\tatoms\tseconds\tcpu\tmessage\n' >"$out"
 else
-  printf 'domain\tproblem\tstatus\tcost\texpanded\tseconds\tfd_status\tfd_cost\tfd_seconds\tverdict\tmessage\n' >"$out"
+  printf 'domain\tproblem\tstatus\tcost\texpanded\tseconds\tcpu\tfd_status\tfd_cost\tfd_seconds\tverdict\tmessage\n' >"$out"
 fi
 total=0 ok=0 fd_solved=0 both=0 ours_t=0 fd_t=0 missed=""
 while IFS=$'\t' read -r dom prob search fd_status fd_cost fd_secs; do
@@ -79,22 +80,20 @@ while IFS=$'\t' read -r dom prob search fd_status fd_cost fd_secs; do
     dfile="$(domain_of "$dir" "$p")"
     total=$((total + 1))
     t0=$(date +%s.%N)
-    if [ "$ground" = 1 ]; then
-      timeout $((seconds + 10)) "$clips" plan --domain "$dfile" --problem "$dir/$p" --ground-only --json \
-        --max-seconds "$seconds" >"$tmp/out" 2>"$tmp/err"
-    else
-      timeout $((seconds + 10)) "$clips" plan --domain "$dfile" --problem "$dir/$p" --json \
-        --max-seconds "$seconds" >"$tmp/out" 2>"$tmp/err"
-    fi
+    extra=()
+    [ "$ground" = 1 ] && extra=(--ground-only)
+    /usr/bin/time -f "%U %S" -o "$tmp/cpu" timeout $((seconds + 10)) "$clips" plan --domain "$dfile" \
+      --problem "$dir/$p" --json --max-seconds "$seconds" "${extra[@]}" >"$tmp/out" 2>"$tmp/err"
     rc=$?
     t1=$(date +%s.%N)
     secs=$(python3 -c "print('%.2f' % ($t1 - $t0))")
+    cpu=$(awk 'NF == 2 && $1 ~ /^[0-9.]+$/ { printf "%.2f", $1 + $2 }' "$tmp/cpu")
     IFS=$'\t' read -r status cost expanded < <(fields <"$tmp/out")
     [ -z "$status" ] && status="exit$rc"
     msg="$(grep -v '^$' "$tmp/err" | tail -1 | cut -c1-160 | tr '\t' ' ')"
     if [ "$ground" = 1 ]; then
       [ "$status" = grounded ] && ok=$((ok + 1)) || missed="$missed $dom/$p"
-      printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$dom" "$p" "$status" "$cost" "$expanded" "$secs" "$msg" >>"$out"
+      printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$dom" "$p" "$status" "$cost" "$expanded" "$secs" "$cpu" "$msg" >>"$out"
       continue
     fi
     verdict=""
@@ -111,8 +110,8 @@ while IFS=$'\t' read -r dom prob search fd_status fd_cost fd_secs; do
     elif [ "$status" = success ]; then
       verdict=only-clips; ok=$((ok + 1))
     fi
-    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$dom" "$p" "$status" "$cost" "$expanded" "$secs" \
-      "$fd_status" "$fd_cost" "$fd_secs" "$verdict" "$msg" >>"$out"
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$dom" "$p" "$status" "$cost" "$expanded" "$secs" \
+      "$cpu" "$fd_status" "$fd_cost" "$fd_secs" "$verdict" "$msg" >>"$out"
   done
 done <"$ref"
 if [ "$ground" = 1 ]; then
