@@ -41,6 +41,7 @@ void register_plan(CLI::App& app) {
   struct Opts {
     std::string dataset, problem, domain_file, problem_file, goal, costs, planner = "astar", heuristic, from_plan;
     bool json = false;
+    bool ground_only = false;
     size_t max_nodes = size_t{1} << 24;
     double max_seconds = 300;
     int max_steps = 200;
@@ -89,6 +90,8 @@ void register_plan(CLI::App& app) {
                   "cost with an admissible heuristic (default 1: optimal)")
       ->check(CLI::Range(1.0, 1e6));
   cmd->add_flag("--json", o->json, "Print one JSON object: plan, cost, expanded, seconds, status");
+  cmd->add_flag("--ground-only", o->ground_only,
+                "Parse and ground the task, print its size (atoms, fluents, actions, axioms) and stop: no search");
   cmd->callback([o, goal_opt] {
     using clock = std::chrono::steady_clock;
     const auto t_run = clock::now();
@@ -151,6 +154,24 @@ void register_plan(CLI::App& app) {
       task = std::make_shared<pddl::Task>(d, p, go);
       start = task->initial_state();
     }
+    if (o->ground_only) {
+      const double secs = std::chrono::duration<double>(clock::now() - t_run).count();
+      if (o->json) {
+        nlohmann::json j;
+        j["status"] = "grounded";
+        j["atoms"] = task->num_atoms();
+        j["fluents"] = task->num_fluents();
+        j["actions"] = task->num_actions();
+        j["axioms"] = task->num_axioms();
+        j["seconds"] = secs;
+        fmt::print("{}\n", j.dump());
+      } else {
+        fmt::print("; grounded: {} atoms, {} fluents, {} actions, {} axioms, {:.3f} s\n", task->num_atoms(),
+                   task->num_fluents(), task->num_actions(), task->num_axioms(), secs);
+      }
+      g_exit_code = kExitOk;
+      return;
+    }
     std::string goal = o->goal;
     if (goal.empty()) {
       if (!task->problem().goal_sexpr) throw InputError("--goal is required (the problem has no :goal)");
@@ -159,10 +180,11 @@ void register_plan(CLI::App& app) {
     if (is_empty_goal(pddl::read_one_sexpr(goal, "--goal")))
       throw InputError("goal " + goal + " is empty: give at least one condition, e.g. \"(has human gem1)\"");
     std::string costs = o->costs;
+    // A problem's :metric is what its plans cost.
     if (costs.empty())
-      costs = !pack->spec().default_cost_profile.empty() ? pack->spec().default_cost_profile
-              : task->domain().total_cost                ? "task"
-                                                         : "unit";
+      costs = !pack->spec().default_cost_profile.empty()                ? pack->spec().default_cost_profile
+              : task->domain().total_cost || task->problem().metric ? "task"
+                                                                        : "unit";
     auto spec = std::make_shared<model::Specification>(task, goal, pack->cost_profile(costs));
     std::string hname = o->heuristic.empty() ? pack->default_admissible_heuristic() : o->heuristic;
     std::shared_ptr<heuristics::Heuristic> h = pack->make_heuristic(hname, *task);

@@ -101,6 +101,8 @@ StripsExport export_grounded_strips(const pddl::Task& task, const pddl::State& s
   if (task.num_fluents() > 0)
     throw InputError("export-strips: the task has numeric fluents; only packs with their own exporter "
                      "(doors-keys-gems) export numeric tasks");
+  if (task.num_axioms() > 0)
+    throw InputError("export-strips: the task has derived predicates (:derived), which STRIPS cannot state");
   const pddl::Domain& dom = task.domain();
   const pddl::CompiledCondition goal_cond = task.compile_text(goal, "<goal>");
   const Dnf goal_dnf =

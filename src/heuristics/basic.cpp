@@ -26,6 +26,15 @@ Relaxation Relaxation::of(const model::Specification& spec) {
     r.cost[a] = spec.cost(a);
     for (int p : r.pre[a]) r.needed_by[p].push_back(a);
   }
+  // Derived predicates' rules: zero-cost entries after the actions.
+  for (int i = 0; i < t.num_axioms(); ++i)
+    for (auto& clause : axiom_clauses(t, t.axiom(i).body)) {
+      const int a = static_cast<int>(r.pre.size());
+      for (int p : clause) r.needed_by[static_cast<size_t>(p)].push_back(a);
+      r.pre.push_back(std::move(clause));
+      r.add.push_back({t.axiom(i).head});
+      r.cost.push_back(0);
+    }
   r.goal_clauses = goal_dnf(spec.goal(), /*normalise=*/false);
   return r;
 }
@@ -36,8 +45,8 @@ void HMaxHeuristic::prepare(const model::Specification& spec, const pddl::State&
   r_ = Relaxation::of(spec);
   const pddl::Task& t = spec.task();
   atom_cost_.assign(t.num_atoms(), kInf);
-  act_cost_.assign(t.num_actions(), kInf);
-  unsat_.assign(t.num_actions(), 0);
+  act_cost_.assign(r_.pre.size(), kInf);
+  unsat_.assign(r_.pre.size(), 0);
 }
 
 double HMaxHeuristic::estimate(const uint64_t* s) {
@@ -45,7 +54,7 @@ double HMaxHeuristic::estimate(const uint64_t* s) {
   if (timed_out()) return 0;  // past the search's deadline: stay cheap until it stops
   if (spec_->is_goal(s)) return 0;
   const pddl::Task& t = spec_->task();
-  int na = t.num_actions(), nb = t.num_atoms();
+  const int na = static_cast<int>(r_.pre.size()), nb = t.num_atoms();
   std::fill(atom_cost_.begin(), atom_cost_.end(), kInf);
   using QE = std::pair<double, int>;
   std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
@@ -284,7 +293,7 @@ double FFHeuristic::estimate(const uint64_t* s) {
     if (op < 0 || op_mark_[static_cast<size_t>(op)] == stamp_) continue;  // true in s, or already planned
     op_mark_[static_cast<size_t>(op)] = stamp_;
     h += r_.cost[static_cast<size_t>(op)];
-    if (r_.use_turns) ++count_[static_cast<size_t>(r_.agent[static_cast<size_t>(op)])];
+    if (r_.use_turns && r_.agent[static_cast<size_t>(op)] >= 0) ++count_[static_cast<size_t>(r_.agent[static_cast<size_t>(op)])];
     for (int k = r_.pre_begin[static_cast<size_t>(op)]; k < r_.pre_begin[static_cast<size_t>(op) + 1]; ++k)
       open_.push_back(r_.pre[static_cast<size_t>(k)]);
   }

@@ -10,17 +10,26 @@ namespace {
 
 constexpr size_t kMaxClauses = 4096;
 
-std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId c, bool norm) {
+// `G` reads a pool: a CompiledCondition, or a Task (its own pool).
+// `negative`: literals (not b) as -(b + 1); else they count as true.
+template <class G>
+std::vector<std::vector<int>> dnf(const G& g, pddl::CondId c, bool norm, size_t max_clauses = kMaxClauses,
+                                  bool negative = false) {
   const CNode& n = g.cnode(c);
   switch (n.op) {
     case CNode::False: return {};
     case CNode::Atom: return {{n.a}};
+    case CNode::NotAtom:
+      if (negative) return {{-(n.a + 1)}};
+      return {{}};
     case CNode::Or: {
       std::vector<std::vector<int>> out;
       for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i], norm);
+        auto k = dnf(g, g.ckids()[n.a + i], norm, max_clauses, negative);
         out.insert(out.end(), k.begin(), k.end());
-        if (norm && out.size() > kMaxClauses) normalise_all(out);
+        if (norm && out.size() > max_clauses) normalise_all(out);
+        // (Goals keep their disjunctions whole, as they always have.)
+        if (max_clauses < kMaxClauses && out.size() > max_clauses) return {{}};
       }
       if (norm) normalise_all(out);
       return out;
@@ -28,7 +37,7 @@ std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId
     case CNode::And: {
       std::vector<std::vector<int>> acc{{}};
       for (int i = 0; i < n.b; ++i) {
-        auto k = dnf(g, g.ckids()[n.a + i], norm);
+        auto k = dnf(g, g.ckids()[n.a + i], norm, max_clauses, negative);
         std::vector<std::vector<int>> next;
         for (auto& a : acc)
           for (auto& b : k) {
@@ -38,7 +47,7 @@ std::vector<std::vector<int>> dnf(const pddl::CompiledCondition& g, pddl::CondId
           }
         acc = std::move(next);
         if (norm) normalise_all(acc);
-        if (acc.size() > kMaxClauses) return {{}};  // too large: give up (0 is admissible)
+        if (acc.size() > max_clauses) return {{}};  // too large: give up (0 is admissible)
       }
       return acc;
     }
@@ -78,6 +87,23 @@ void to_csr(const std::vector<std::vector<int>>& rows, std::vector<int>& begin, 
 
 std::vector<std::vector<int>> goal_dnf(const pddl::CompiledCondition& g, bool sorted) {
   return dnf(g, g.root(), sorted);
+}
+
+std::vector<std::vector<int>> goal_dnf_literals(const pddl::CompiledCondition& g) {
+  return dnf(g, g.root(), true, kMaxClauses, true);
+}
+
+std::vector<std::vector<int>> axiom_clauses(const pddl::Task& t, pddl::CondId body) {
+  constexpr size_t kMaxAxiomClauses = 16;
+  auto clauses = dnf(t, body, true, kMaxAxiomClauses);
+  if (clauses.size() == 1 && clauses[0].empty()) {
+    // Too many clauses (or none needs an atom): the top-level conjunction's atoms.
+    std::vector<int> pos;
+    conjuncts(t, body, pos);
+    normalise(pos);
+    return {pos};
+  }
+  return clauses;
 }
 
 }  // namespace clips::heuristics

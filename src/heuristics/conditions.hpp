@@ -18,6 +18,17 @@ void conjuncts(const pddl::Task& t, pddl::CondId c, std::vector<int>& pos, std::
 // clauses: {{}} (always satisfied, so an estimate of 0).
 std::vector<std::vector<int>> goal_dnf(const pddl::CompiledCondition& g, bool sorted);
 
+// The same DNF (sorted) with negative literals kept: (not b) as -(b + 1).
+std::vector<std::vector<int>> goal_dnf_literals(const pddl::CompiledCondition& g);
+
+// A derived predicate's rule read as relaxed operators: the DNF of its body
+// over positive atoms (other literals dropped), or, above a few clauses,
+// the positive atoms of its top-level conjunction as one clause. Each clause
+// with the rule's head is a zero-cost operator of the delete relaxation:
+// wherever the rule fires, one clause's atoms hold, so the relaxation stays
+// a relaxation (h_max, LM-cut admissible).
+std::vector<std::vector<int>> axiom_clauses(const pddl::Task& t, pddl::CondId body);
+
 // Sorted, duplicates removed: one clause; every clause, then the clauses.
 void normalise(std::vector<int>& clause);
 void normalise_all(std::vector<std::vector<int>>& clauses);

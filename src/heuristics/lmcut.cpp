@@ -55,7 +55,12 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   // Goal clauses asking for two atoms no reachable state has together can
   // never hold: leave them out (all of them: the goal is unreachable).
   if (const auto mutexes = MutexTable::of(spec.task_ptr()); !r_.goal_clauses.empty())
-    std::erase_if(r_.goal_clauses, [&](const std::vector<int>& c) { return mutexes->any_mutex(c); });
+    std::erase_if(r_.goal_clauses, [&](const std::vector<int>& c) {
+      std::vector<int> state_atoms;  // the task's own (not negation atoms)
+      for (int b : c)
+        if (b < r_.num_state_atoms) state_atoms.push_back(b);
+      return mutexes->any_mutex(state_atoms);
+    });
   r_.goal_trivial = false;
   for (const auto& c : r_.goal_clauses) r_.goal_trivial |= c.empty();
   num_atoms_ = r_.num_atoms;
@@ -122,7 +127,8 @@ void LmCutHeuristic::prepare(const model::Specification& spec, const pddl::State
   if (r_.use_turns) {
     const pddl::Task& t = spec.task();
     std::vector<int> op_of(static_cast<size_t>(t.num_actions()), -1);
-    for (size_t op = 0; op < nrel; ++op) op_of[static_cast<size_t>(r_.op_action[op])] = static_cast<int>(op);
+    for (size_t op = 0; op < nrel; ++op)
+      if (r_.op_action[op] >= 0) op_of[static_cast<size_t>(r_.op_action[op])] = static_cast<int>(op);
     for (pddl::ActionId a = 0; a < t.num_actions(); ++a)
       agent_actions_[static_cast<size_t>(r_.turns.agent_of[static_cast<size_t>(a)])].push_back(
           {op_of[static_cast<size_t>(a)], scaled_cost(spec.cost(a), scale_), a});

@@ -29,6 +29,10 @@ MutexTable::MutexTable(const pddl::Task& task, int max_atoms) {
     if (pddl::get_bit(s0.data(), b)) init.push_back(b);
   for (int p : init)
     for (int q : init) set(p, q);
+  // Derived atoms follow from the others, not from actions: never mutex.
+  for (int p = 0; p < n; ++p)
+    if (task.is_derived(p))
+      for (int q = 0; q < n; ++q) set(p, q);
 
   struct Op {
     std::vector<int> pre, add;

@@ -13,7 +13,7 @@
 // with atoms no action adds set on top (the `frozen` of assistance and
 // literal planning): such atoms only take actions away, so they never make a
 // pair reachable. Pairs with an atom unreachable from the initial state are
-// never called mutex.
+// never called mutex, nor pairs with a derived atom (:derived).
 #include <cstdint>
 #include <memory>
 #include <vector>

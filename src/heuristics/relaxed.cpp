@@ -27,6 +27,11 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
       for (const auto& ce : t.action(a).cond_eff)
         for (int b : ce.eff.del) deleted[static_cast<size_t>(b)] = 1;
     }
+  // A derived atom becomes false whenever its rules stop holding: never a
+  // dead precondition. Nor an atom of its own when negated: nothing "adds"
+  // its negation, so that literal is dropped instead.
+  for (int b = 0; b < nb; ++b)
+    if (t.is_derived(b)) deleted[static_cast<size_t>(b)] = 1;
 
   // Negation atoms: negative preconditions some action deletes (turn atoms
   // are out of the relaxation anyway).
@@ -39,11 +44,28 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
       neg.clear();
       conjuncts(t, t.action(a).pre, p, &neg);
       for (int b : neg)
-        if (deleted[static_cast<size_t>(b)] && !is_turn[static_cast<size_t>(b)] && neg_atom[static_cast<size_t>(b)] < 0) {
+        if (deleted[static_cast<size_t>(b)] && !is_turn[static_cast<size_t>(b)] && !t.is_derived(b) &&
+            neg_atom[static_cast<size_t>(b)] < 0) {
           neg_atom[static_cast<size_t>(b)] = nb + static_cast<int>(r.negated.size());
           r.negated.push_back(b);
         }
     }
+  }
+  // The goal's negative literals too ((not (rcnot g)) for every gate done):
+  // "not b" is a goal atom when some action deletes b, else dropped.
+  std::vector<std::vector<int>> goal_literals;
+  if (opts.negations) {
+    goal_literals = goal_dnf_literals(spec.goal());
+    for (const auto& c : goal_literals)
+      for (int l : c) {
+        if (l >= 0) continue;
+        const int b = -l - 1;
+        if (deleted[static_cast<size_t>(b)] && !is_turn[static_cast<size_t>(b)] && !t.is_derived(b) &&
+            neg_atom[static_cast<size_t>(b)] < 0) {
+          neg_atom[static_cast<size_t>(b)] = nb + static_cast<int>(r.negated.size());
+          r.negated.push_back(b);
+        }
+      }
   }
   const int ntotal = nb + static_cast<int>(r.negated.size());
   r.num_atoms = ntotal;
@@ -92,8 +114,38 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     add_rows.push_back(std::move(e));
   }
   for (auto& k : r.agent_killable) std::sort(k.begin(), k.end());
+  // Derived predicates' rules: zero-cost operators adding their atom, one per
+  // clause (conditions.hpp), after the actions.
+  for (int i = 0; i < t.num_axioms(); ++i) {
+    const pddl::Axiom& x = t.axiom(i);
+    for (auto& clause : axiom_clauses(t, x.body)) {
+      std::vector<int> p;
+      for (int b : clause)
+        if (!r.use_turns || !is_turn[static_cast<size_t>(b)]) p.push_back(b);
+      const int op = static_cast<int>(r.op_action.size());
+      r.op_action.push_back(-1);
+      r.cost.push_back(0);
+      r.positive_costs = false;
+      r.agent.push_back(-1);
+      for (int b : p) needed[static_cast<size_t>(b)].push_back(op);
+      if (p.empty()) r.no_pre_ops.push_back(op);
+      pre_rows.push_back(std::move(p));
+      add_rows.push_back({x.head});
+    }
+  }
 
-  r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
+  if (opts.negations) {
+    for (auto& c : goal_literals) {
+      std::vector<int> atoms;
+      for (int l : c)
+        if (l >= 0) atoms.push_back(l);
+        else if (neg_atom[static_cast<size_t>(-l - 1)] >= 0) atoms.push_back(neg_atom[static_cast<size_t>(-l - 1)]);
+      r.goal_clauses.push_back(std::move(atoms));
+    }
+    normalise_all(r.goal_clauses);
+  } else {
+    r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
+  }
   if (r.use_turns) {
     for (auto& c : r.goal_clauses) std::erase_if(c, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
     if (opts.normalise_goal) normalise_all(r.goal_clauses);

@@ -56,7 +56,8 @@ struct RelaxedTask {
   int num_state_atoms = 0;  // the task's atoms (bits of a state)
   std::vector<int> negated;  // negation atom num_state_atoms + k is "not negated[k]"
   // Operators in action order: preconditions (positive top-level atoms) and
-  // adds (unconditional, then conditional ones) in the task's order.
+  // adds (unconditional, then conditional ones) in the task's order; then
+  // the derived predicates' rules (zero cost, op_action -1, agent -1).
   std::vector<pddl::ActionId> op_action;
   std::vector<int> pre_begin, pre, add_begin, add;
   std::vector<double> cost;

@@ -56,10 +56,10 @@ Specification::Specification(std::shared_ptr<const pddl::Task> task, std::string
       goal_text_(std::move(goal_text)),
       goal_(task_->compile_text(goal_text_, source)),
       profile_(std::move(costs)) {
-  if (profile_.default_cost < 0 && !task_->domain().total_cost)
+  if (profile_.default_cost < 0 && !task_->domain().total_cost && !task_->problem().metric)
     throw InputError("cost profile 'task' needs the domain's own action costs, but domain '" +
                      task_->domain().name + "' (" + task_->domain().file +
-                     ") declares no (total-cost) function: use unit costs instead");
+                     ") declares no (total-cost) function and the problem no :metric: use unit costs instead");
   action_cost_.resize(task_->num_actions());
   for (pddl::ActionId a = 0; a < task_->num_actions(); ++a) {
     const auto& ga = task_->action(a);

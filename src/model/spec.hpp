@@ -57,7 +57,7 @@ void link_alone_twins(std::vector<CostProfile>& profiles);
 
 // Unit costs for every action (domains whose pack names no cost rules).
 CostProfile unit_profile();
-// Costs from the task itself ((increase (total-cost) n) effects), for :action-costs domains.
+// Costs from the task itself: the problem's :metric, else its (increase (total-cost) n) effects.
 CostProfile task_costs_profile();
 
 class Specification {

@@ -1,9 +1,10 @@
 #pragma once
 // Typed, lifted PDDL: what the parser produces and the grounder consumes.
 //
-//   Domain  = types (a forest under `object`), constants, predicates, functions,
-//             action schemas (parameters, precondition, effect).
-//   Problem = objects, initial facts and fluent assignments, goal.
+//   Domain  = types (a forest under `object`, plus `(either t1 t2)` unions),
+//             constants, predicates, functions, derived predicates' rules
+//             (:derived), action schemas (parameters, precondition, effect).
+//   Problem = objects, initial facts and fluent assignments, goal, metric.
 //
 // Conditions, numeric expressions and effects are small trees of value nodes.
 // Terms inside them are either variables (index into the enclosing scope's
@@ -81,13 +82,26 @@ struct Effect {
 };
 
 struct TypeDef {
-  std::string name;
-  TypeId parent = -1;  // -1 only for `object`
+  std::string name;     // "(either a b)" for a union
+  TypeId parent = -1;   // -1 only for `object` and unions
+  std::vector<TypeId> either;  // a union's member types; empty for a named type
 };
 
 struct PredicateDef {
   std::string name;
   std::vector<TypeId> arg_types;
+  SourceLoc loc;
+  bool derived = false;  // defined by :derived rules, never by effects or :init
+};
+
+// (:derived (p ?x - t) condition): p holds of objects exactly when the
+// condition of one of its rules holds of them (rules of one predicate add up).
+struct DerivedRule {
+  PredId pred = -1;
+  std::vector<std::string> param_names;  // without '?'
+  std::vector<TypeId> param_types;
+  Condition body;
+  int num_vars = 0;  // parameters + quantified variables of the body
   SourceLoc loc;
 };
 
@@ -123,6 +137,7 @@ struct Domain {
   std::vector<PredicateDef> predicates;
   std::vector<FunctionDef> functions;
   std::vector<ActionSchema> actions;
+  std::vector<DerivedRule> derived;
   std::optional<FuncId> total_cost;  // (total-cost) when :action-costs is used
 
   std::optional<TypeId> find_type(const std::string& n) const;
@@ -145,6 +160,20 @@ struct InitAtom {
   SourceLoc loc;
 };
 
+// (:metric minimize <linear expression of ground fluents>): plans cost the
+// sum of coef x (the fluent's change) over their actions; the constant part
+// of the expression (and the fluents' initial values) is the same for every
+// plan and left out.
+struct Metric {
+  struct Term {
+    int64_t coef = 1;
+    FuncId func = -1;
+    std::vector<ObjectId> args;
+  };
+  std::vector<Term> terms;
+  SourceLoc loc;
+};
+
 struct Problem {
   std::string name;
   std::string file;
@@ -154,6 +183,7 @@ struct Problem {
   std::optional<Condition> goal;   // absent when parsing was skipped
   int goal_num_vars = 0;
   std::optional<SExpr> goal_sexpr; // the :goal text as read, always kept
+  std::optional<Metric> metric;
 
   std::optional<ObjectId> find_object(const std::string& n) const;
 };

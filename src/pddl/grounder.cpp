@@ -3,12 +3,14 @@
 // with Task::compile.
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
 #include <string>
 
 #include "pddl/parser.hpp"
+#include "pddl/reachability.hpp"
 #include "pddl/task.hpp"
 #include "pddl/task_inline.hpp"
 #include "util/memory.hpp"
@@ -74,6 +76,7 @@ class ConditionCompiler {
     return out;
   }
 
+  // f(tuple) for every tuple of objects of `types`, until f returns false.
   template <class F>
   void for_each_tuple(const std::vector<TypeId>& types, F&& f, bool first_fastest = false) {
     std::vector<std::vector<ObjectId>> doms;
@@ -85,7 +88,7 @@ class ConditionCompiler {
     std::vector<ObjectId> tuple(types.size());
     for (uint64_t visited = 1;; ++visited) {
       for (size_t i = 0; i < types.size(); ++i) tuple[i] = doms[i][idx[i]];
-      f(tuple);
+      if (!f(tuple)) return;
       if (visited % kTupleCheckInterval == 0) on_tuples(visited);
       // odometer increment: last position fastest unless first_fastest
       size_t n = types.size();
@@ -175,6 +178,20 @@ class ConditionCompiler {
       }
     }
     if (keep.empty()) return is_and ? Task::kTrue : Task::kFalse;
+    // p and (not p): a conjunction that never holds, a disjunction that always does.
+    if (keep.size() > 1) {
+      std::vector<int> pos, neg;
+      for (int k : keep) {
+        const CNode& n = pool_.cnodes[k];
+        if (n.op == CNode::Atom) pos.push_back(n.a);
+        if (n.op == CNode::NotAtom) neg.push_back(n.a);
+      }
+      if (!pos.empty() && !neg.empty()) {
+        std::sort(pos.begin(), pos.end());
+        for (int b : neg)
+          if (std::binary_search(pos.begin(), pos.end(), b)) return is_and ? Task::kFalse : Task::kTrue;
+      }
+    }
     // A disjunction repeats the same kid once per binding of variables its
     // atoms do not read (an existential command goal over ?station1 ...):
     // keep the first of structurally equal kids (the value cannot change).
@@ -201,12 +218,16 @@ class ConditionCompiler {
     auto bin = [&](NNode::Op op) -> NumResult {
       int l = num_int(x.kids[0], b), r = num_int(x.kids[1], b);
       // fluent +/- constant (and constant + fluent) stay a single fluent node
-      if ((op == NNode::Add || op == NNode::Sub) && pool_.nnodes[l].op == NNode::Fluent && is_const_n(r)) {
+      // (while the offset is small: fluents are 16-bit, see Task::kMaxFluent)
+      auto small_offset = [](int64_t off, int64_t k) { return std::abs(off) < (1 << 20) && std::abs(k) < (1 << 20); };
+      if ((op == NNode::Add || op == NNode::Sub) && pool_.nnodes[l].op == NNode::Fluent && is_const_n(r) &&
+          small_offset(pool_.nnodes[l].a, pool_.nnodes[r].v)) {
         NNode f = pool_.nnodes[l];
         f.a += static_cast<int>(op == NNode::Add ? pool_.nnodes[r].v : -pool_.nnodes[r].v);
         return {add_n(f), -1};
       }
-      if (op == NNode::Add && is_const_n(l) && pool_.nnodes[r].op == NNode::Fluent) {
+      if (op == NNode::Add && is_const_n(l) && pool_.nnodes[r].op == NNode::Fluent &&
+          small_offset(pool_.nnodes[r].a, pool_.nnodes[l].v)) {
         NNode f = pool_.nnodes[r];
         f.a += static_cast<int>(pool_.nnodes[l].v);
         return {add_n(f), -1};
@@ -216,6 +237,10 @@ class ConditionCompiler {
         if (op == NNode::Div && c == 0) throw InputError(x.loc, "division by zero");
         int64_t v = checked(op == NNode::Add ? '+' : op == NNode::Sub ? '-' : op == NNode::Mul ? '*' : '/', a, c, x.loc);
         return {add_n({NNode::Const, v, 0, 0}), -1};
+      }
+      if (op == NNode::Div) {  // where it was written, for a divisor that is 0 in some state
+        pool_.div_locs.push_back(x.loc);
+        return {add_n({op, static_cast<int64_t>(pool_.div_locs.size() - 1), l, r}), -1};
       }
       return {add_n({op, 0, l, r}), -1};
     };
@@ -230,8 +255,12 @@ class ConditionCompiler {
         auto k = key_of(x.func, args);
         if (auto m = ct_.static_matrix_.find(k); m != ct_.static_matrix_.end()) return {-1, m->second};
         auto it = ct_.static_int_.find(k);
-        if (it == ct_.static_int_.end())
-          throw InputError(x.loc, "fluent '" + printable(d_.functions[x.func].name) + "' has no value in the initial state");
+        if (it == ct_.static_int_.end()) {
+          std::string f = "(" + d_.functions[x.func].name;
+          for (ObjectId o : args) f += " " + p_.objects[static_cast<size_t>(o)].name;
+          throw InputError(x.loc, printable("fluent " + f + ") has no value in the initial state, and a reachable "
+                                            "action or the condition reads it"));
+        }
         return {add_n({NNode::Const, it->second, 0, 0}), -1};
       }
       case K::Object: throw InputError(x.loc, "an object is not a numeric value");
@@ -273,14 +302,59 @@ class ConditionCompiler {
     return r.node;
   }
 
+  // f() for every binding of a quantifier's variables, until f returns
+  // false. Every binding counts against the expansion budget of the
+  // condition or action being compiled (GroundingOptions::max_ground_actions):
+  // nested quantifiers over many objects are refused at once, not after
+  // minutes and all the memory.
   template <class F>
-  void for_each_binding(const std::vector<TypeId>& types, int first, std::vector<ObjectId>& b, F&& f) {
+  void for_each_binding(const std::vector<TypeId>& types, int first, std::vector<ObjectId>& b, const SourceLoc& loc,
+                        F&& f) {
     if (b.size() < first + types.size()) b.resize(first + types.size(), -1);
     for_each_tuple(types, [&](const std::vector<ObjectId>& tuple) {
+      if (++expansions_ > ct_.opts_.max_ground_actions)
+        throw InputError(loc, "expanding this quantifier (with those around it) takes more than " +
+                                  std::to_string(ct_.opts_.max_ground_actions) +
+                                  " instances, the limit of ground actions (--max-ground-actions): quantify over fewer "
+                                  "objects or nest fewer quantifiers");
       for (size_t i = 0; i < tuple.size(); ++i) b[first + i] = tuple[i];
-      f();
+      return f();
     });
   }
+
+ public:
+  // Starts the expansion budget of one condition or action.
+  void reset_expansions() { expansions_ = 0; }
+
+ protected:
+  int64_t expansions_ = 0;
+  bool in_quantifier_ = false;
+  std::vector<int64_t> type_size_;  // objects per type (-1: not counted yet)
+
+  // How many quantifier instances expanding `c` takes when nothing decides
+  // it early: each quantifier's bindings times (1 + its body's), summed
+  // over junctions (saturating).
+  int64_t instances(const Condition& c) {
+    using K = Condition::Kind;
+    auto add = [](int64_t x, int64_t y) {
+      int64_t v = 0;
+      return __builtin_add_overflow(x, y, &v) ? std::numeric_limits<int64_t>::max() : v;
+    };
+    int64_t n = 0;
+    for (const Condition& k : c.kids) n = add(n, instances(k));
+    if (c.kind != K::Exists && c.kind != K::Forall) return n;
+    int64_t bindings = 1;
+    for (TypeId t : c.var_types) {
+      if (type_size_.size() <= static_cast<size_t>(t)) type_size_.resize(static_cast<size_t>(t) + 1, -1);
+      if (type_size_[static_cast<size_t>(t)] < 0) type_size_[static_cast<size_t>(t)] = static_cast<int64_t>(objects_of(t).size());
+      int64_t v = 0;
+      bindings = __builtin_mul_overflow(bindings, type_size_[static_cast<size_t>(t)], &v) ? std::numeric_limits<int64_t>::max() : v;
+    }
+    int64_t v = 0;
+    return __builtin_mul_overflow(bindings, add(n, 1), &v) ? std::numeric_limits<int64_t>::max() : v;
+  }
+
+ public:
 
   int cond(const Condition& c, std::vector<ObjectId>& b) {
     using K = Condition::Kind;
@@ -306,15 +380,31 @@ class ConditionCompiler {
       }
       case K::Imply: return junction(false, {negate(cond(c.kids[0], b)), cond(c.kids[1], b)});
       case K::Exists: case K::Forall: {
+        // The outermost quantifier first weighs the whole nest: one beyond
+        // the budget is refused before any of it is expanded.
+        if (!in_quantifier_) {
+          const int64_t need = instances(c);
+          if (need > ct_.opts_.max_ground_actions - expansions_)
+            throw InputError(c.loc, "expanding this quantifier (with those nested in it) takes " + std::to_string(need) +
+                                        " instances, more than the limit of " +
+                                        std::to_string(ct_.opts_.max_ground_actions) +
+                                        " (--max-ground-actions): quantify over fewer objects or nest fewer quantifiers");
+        }
+        const bool outer = !in_quantifier_;
+        in_quantifier_ = true;
         std::vector<int> kids;
         bool is_and = c.kind == K::Forall;
-        bool decided = false;
-        for_each_binding(c.var_types, c.first_var, b, [&] {
-          if (decided) return;
-          int x = cond(c.kids[0], b);
-          if (x == (is_and ? Task::kFalse : Task::kTrue)) decided = true;
-          kids.push_back(x);
-        });
+        try {
+          for_each_binding(c.var_types, c.first_var, b, c.loc, [&] {
+            int x = cond(c.kids[0], b);
+            kids.push_back(x);
+            return x != (is_and ? Task::kFalse : Task::kTrue);  // decided: stop
+          });
+        } catch (...) {
+          if (outer) in_quantifier_ = false;
+          throw;
+        }
+        if (outer) in_quantifier_ = false;
         return junction(is_and, kids);
       }
       default: break;
@@ -340,6 +430,26 @@ class ConditionCompiler {
     const NNode& na = pool_.nnodes[a];
     const NNode& nz = pool_.nnodes[z];
     auto small = [](int64_t v) { return v > -(1 << 27) && v < (1 << 27); };
+    // A state's fluent is 16-bit (Task::kMinFluent..kMaxFluent): against a
+    // constant beyond that, the comparison holds in every state (folded to
+    // true) or needs a value no state holds (an input error, not a silent
+    // "never").
+    auto beyond = [&](const NNode& f, int64_t k, int cmp) -> int {
+      int64_t want = 0;
+      if (__builtin_sub_overflow(k, static_cast<int64_t>(f.a), &want))
+        want = k > 0 ? std::numeric_limits<int64_t>::max() : std::numeric_limits<int64_t>::min();
+      if (want >= Task::kMinFluent - 1 && want <= Task::kMaxFluent + 1) return -1;
+      if (detail::compare(Task::kMinFluent, cmp, want) && detail::compare(Task::kMaxFluent, cmp, want)) return Task::kTrue;
+      throw InputError(c.loc, printable("this comparison of fluent " + ct_.fluent_str(static_cast<int>(f.v)) +
+                                        " with " + std::to_string(k) +
+                                        " asks for a value beyond what states hold: the numeric fluents actions "
+                                        "change are 16-bit integers (" +
+                                        std::to_string(Task::kMinFluent) + ".." + std::to_string(Task::kMaxFluent) + ")"));
+    };
+    if (na.op == NNode::Fluent && is_const_n(z))
+      if (int v = beyond(na, nz.v, code(op)); v >= 0) return v;
+    if (nz.op == NNode::Fluent && is_const_n(a))
+      if (int v = beyond(nz, na.v, mirror[code(op)]); v >= 0) return v;
     if (na.op == NNode::Fluent && is_const_n(z) && small(nz.v - na.a))  // slot + ka  op  c
       return add_c({CNode::SlotConst, static_cast<int>(na.v), static_cast<int>(nz.v - na.a), code(op)});
     if (nz.op == NNode::Fluent && is_const_n(a) && small(na.v - nz.a))  // c  op  slot + kz
@@ -368,7 +478,8 @@ class Grounder : public ConditionCompiler {
   void run() {
     eval_init();
     find_dynamic_symbols();
-    // Pass 1: provisional bits for every atom of a changeable predicate.
+    explore();
+    // Pass 1: provisional bits for every reachable atom of a changeable predicate.
     pass_ = 1;
     reset_tables();
     ground_actions();
@@ -384,9 +495,17 @@ class Grounder : public ConditionCompiler {
       if (!pid) continue;  // a domain without that predicate
       for_each_tuple(d_.predicates[*pid].arg_types, [&](const std::vector<ObjectId>& args) {
         intern_atom(*pid, args);
+        return true;
       });
     }
+    // Derived atoms: a bit for every reachable one, before anything reads them.
+    for (int id = 0; id < reach_.atoms.size(); ++id) {
+      const int pred = reach_.atoms.pred(id);
+      if (pred < static_cast<int>(d_.predicates.size()) && d_.predicates[static_cast<size_t>(pred)].derived)
+        intern_atom(pred, std::vector<ObjectId>(reach_.atoms.args(id), reach_.atoms.args(id) + reach_.atoms.arity(id)));
+    }
     ground_actions();
+    ground_axioms();
     finish_layout();
   }
 
@@ -536,11 +655,13 @@ class Grounder : public ConditionCompiler {
     return slot;
   }
 
-  // Is this ground atom part of the state? (else it is folded)
+  // Is this ground atom part of the state? (else it is folded: false when
+  // unreachable, its initial value when nothing changes it)
   bool atom_is_dynamic(PredId pred, const std::vector<ObjectId>& args) const {
+    if (d_.predicates[static_cast<size_t>(pred)].derived) return reach_.reached(pred, args);
     if (!t_.dynamic_preds_.count(pred)) return false;
-    if (pass_ == 1) return true;
     if (t_.opts_.keep_dynamic.count(d_.predicates[pred].name)) return true;
+    if (pass_ == 1) return reach_.reached(pred, args);
     return modified_atoms_.count(key_of(pred, args)) > 0;
   }
   bool fluent_is_dynamic(FuncId f, const std::vector<ObjectId>& args) const {
@@ -585,7 +706,10 @@ class Grounder : public ConditionCompiler {
         return;
       }
       case K::Forall:
-        for_each_binding(e.var_types, e.first_var, b, [&] { effect(e.kids[0], b, ctx, ga); });
+        for_each_binding(e.var_types, e.first_var, b, e.loc, [&] {
+          effect(e.kids[0], b, ctx, ga);
+          return true;
+        });
         return;
       default: break;
     }
@@ -595,18 +719,17 @@ class Grounder : public ConditionCompiler {
       if (!is_const_n(v) || e.kind != K::Increase || ctx != Task::kTrue)
         throw InputError(e.loc, "only (increase (total-cost) <constant>) is supported for action costs");
       const int64_t c = pool_.nnodes[v].v;
-      if (c < 0) {
-        std::string name = "(" + d_.actions[ga.schema].name;
-        for (ObjectId o : ga.args) name += " " + p_.objects[o].name;
-        throw InputError(e.loc, printable("action " + name + ") has a negative cost (" + std::to_string(c) +
+      if (c < 0)
+        throw InputError(e.loc, printable("action " + action_str(ga) + " has a negative cost (" + std::to_string(c) +
                                           "): action costs must be non-negative"));
-      }
-      ga.cost += static_cast<double>(c);
+      if (!p_.metric) ga.cost += static_cast<double>(c);
+      else add_metric_cost(e, {}, c, ga);
       return;
     }
     std::vector<ObjectId> args;
     for (auto& a : e.args) args.push_back(resolve(a, b));
     if (!args_fit(d_.functions[e.func].arg_types, args)) return;
+    if (p_.metric) metric_effect(e, args, b, ctx, ga);
     int slot = fluent_slot(e.func, args);
     if (slot < 0) return;
     NumericEffect ne;
@@ -616,6 +739,114 @@ class Grounder : public ConditionCompiler {
     ne.slot = slot;
     ne.expr = num_int(e.value, b);
     target().num.push_back(ne);
+  }
+
+  // ------------------------------------------------------------ derived predicates
+  // Strata of the derived predicates: a rule's predicate sits at least as
+  // high as those its condition reads positively, and above those it reads
+  // negatively (under a not, or as an imply's premise). A cycle through a
+  // negation has no strata: refused.
+  std::vector<int> derived_strata() const {
+    struct Edge {
+      PredId from, to;
+      bool negative;
+      SourceLoc loc;
+    };
+    std::vector<Edge> edges;
+    std::function<void(const Condition&, PredId, bool, const SourceLoc&)> walk =
+        [&](const Condition& c, PredId head, bool neg, const SourceLoc& loc) {
+          using K = Condition::Kind;
+          if (c.kind == K::Atom && d_.predicates[static_cast<size_t>(c.pred)].derived) edges.push_back({head, c.pred, neg, loc});
+          for (size_t i = 0; i < c.kids.size(); ++i)
+            walk(c.kids[i], head, c.kind == K::Not || (c.kind == K::Imply && i == 0) ? !neg : neg, loc);
+        };
+    for (const DerivedRule& r : d_.derived) walk(r.body, r.pred, false, r.loc);
+    std::vector<int> stratum(d_.predicates.size(), 0);
+    const int limit = static_cast<int>(d_.predicates.size());
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (const Edge& e : edges) {
+        const int need = stratum[static_cast<size_t>(e.to)] + (e.negative ? 1 : 0);
+        if (stratum[static_cast<size_t>(e.from)] >= need) continue;
+        if (need > limit)
+          throw InputError(e.loc, printable("derived predicate '" + d_.predicates[static_cast<size_t>(e.from)].name +
+                                            "' depends on the negation of itself (through '" +
+                                            d_.predicates[static_cast<size_t>(e.to)].name +
+                                            "'): derived predicates must be stratified"));
+        stratum[static_cast<size_t>(e.from)] = need;
+        changed = true;
+      }
+    }
+    return stratum;
+  }
+
+  // A ground rule for every reachable derived atom and every rule of its
+  // predicate, by stratum.
+  void ground_axioms() {
+    if (d_.derived.empty()) return;
+    const std::vector<int> stratum = derived_strata();
+    std::vector<std::vector<int>> atoms_of(d_.predicates.size());
+    for (int id = 0; id < reach_.atoms.size(); ++id)
+      if (reach_.atoms.pred(id) < static_cast<int>(d_.predicates.size())) atoms_of[static_cast<size_t>(reach_.atoms.pred(id))].push_back(id);
+    std::vector<std::pair<int, Axiom>> made;
+    std::vector<ObjectId> args;
+    for (const DerivedRule& r : d_.derived) {
+      for (int id : atoms_of[static_cast<size_t>(r.pred)]) {
+        args.assign(reach_.atoms.args(id), reach_.atoms.args(id) + reach_.atoms.arity(id));
+        if (!args_fit(r.param_types, args)) continue;
+        std::vector<ObjectId> b(std::max<size_t>(static_cast<size_t>(r.num_vars), args.size()), -1);
+        std::copy(args.begin(), args.end(), b.begin());
+        reset_expansions();
+        const int body = cond(r.body, b);
+        if (body == Task::kFalse) continue;
+        made.push_back({stratum[static_cast<size_t>(r.pred)], Axiom{intern_atom(r.pred, args), body}});
+      }
+    }
+    std::stable_sort(made.begin(), made.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    t_.axioms_.clear();
+    t_.stratum_begin_.clear();
+    for (size_t i = 0; i < made.size(); ++i) {
+      if (i == 0 || made[i].first != made[i - 1].first) t_.stratum_begin_.push_back(static_cast<int>(i));
+      t_.axioms_.push_back(made[i].second);
+    }
+    t_.stratum_begin_.push_back(static_cast<int>(made.size()));
+  }
+
+  std::string action_str(const GroundAction& ga) const {
+    std::string name = "(" + d_.actions[static_cast<size_t>(ga.schema)].name;
+    for (ObjectId o : ga.args) name += " " + p_.objects[static_cast<size_t>(o)].name;
+    return name + ")";
+  }
+
+  // The :metric's share of an effect that changes fluent (func args) by
+  // `delta`: coef x delta for each of the metric's terms on that fluent.
+  void add_metric_cost(const Effect& e, const std::vector<ObjectId>& args, int64_t delta, GroundAction& ga) {
+    for (const Metric::Term& t : p_.metric->terms)
+      if (t.func == e.func && t.args == args) ga.cost += static_cast<double>(t.coef) * static_cast<double>(delta);
+  }
+
+  // An effect on a fluent the metric reads: it must change it by a constant,
+  // unconditionally, so that every action has one cost.
+  void metric_effect(const Effect& e, const std::vector<ObjectId>& args, std::vector<ObjectId>& b, int ctx,
+                     GroundAction& ga) {
+    bool read = false;
+    for (const Metric::Term& t : p_.metric->terms) read |= t.func == e.func && t.args == args;
+    if (!read) return;
+    const std::string fluent = fluent_text(e.func, args);
+    const int v = num_int(e.value, b);
+    if ((e.kind != Effect::Kind::Increase && e.kind != Effect::Kind::Decrease) || !is_const_n(v) || ctx != Task::kTrue)
+      throw InputError(e.loc, printable("the :metric (" + p_.file + ":" + std::to_string(p_.metric->loc.line) +
+                                        ") reads " + fluent + ", which action " + action_str(ga) +
+                                        " changes other than by an unconditional (increase/decrease " + fluent +
+                                        " <constant>): only such metrics, whose actions each have one cost, are supported"));
+    const int64_t c = pool_.nnodes[static_cast<size_t>(v)].v;
+    add_metric_cost(e, args, e.kind == Effect::Kind::Increase ? c : -c, ga);
+  }
+
+  std::string fluent_text(FuncId f, const std::vector<ObjectId>& args) const {
+    std::string s = "(" + d_.functions[static_cast<size_t>(f)].name;
+    for (ObjectId o : args) s += " " + p_.objects[static_cast<size_t>(o)].name;
+    return s + ")";
   }
 
   void ground_actions() {
@@ -630,30 +861,69 @@ class Grounder : public ConditionCompiler {
     } else {
       for (int i = 0; i < static_cast<int>(d_.actions.size()); ++i) order.push_back(i);
     }
-    int64_t total = 0;
+    uint64_t visited = 0;
+    std::vector<ObjectId> args;
     for (int si : order) {
       const ActionSchema& s = d_.actions[si];
-      if (pass_ == 1) check_ground_size(si, total);
-      if (s.param_types.empty()) {
-        ground_one(si, {});
-        continue;
-      }
+      const size_t n = s.param_types.size();
       schema_ = si;
-      schema_tuples_ = 1;
-      for (TypeId ty : s.param_types) schema_tuples_ = saturating_mul(schema_tuples_, objects_of(ty).size());
-      actions_before_schema_ = static_cast<int64_t>(t_.actions_.size());
-      for_each_tuple(s.param_types, [&](const std::vector<ObjectId>& args) { ground_one(si, args); },
-                     t_.opts_.first_param_fastest);
+      const std::vector<ObjectId>& flat = reach_.tuples[static_cast<size_t>(si)];
+      for (size_t k : tuple_order(si)) {
+        args.assign(flat.begin() + static_cast<std::ptrdiff_t>(k * n), flat.begin() + static_cast<std::ptrdiff_t>(k * n + n));
+        ground_one(si, args);
+        if (++visited % kTupleCheckInterval == 0) on_tuples(visited);
+      }
       schema_ = -1;
     }
   }
 
-  // The budgets, checked while enumerating: the deadline, and memory. For
-  // memory, the ground actions made so far, and those the current schema is
-  // on course to make (its kept share of the tuples visited, projected over
-  // all its tuples once a fiftieth of them are seen), must fit in the
-  // headroom the process had when grounding began.
-  void on_tuples(uint64_t visited) override {
+  // The reachable tuples of schema `si` in the order an enumeration of its
+  // parameters' objects meets them (the last parameter fastest, or the first
+  // with GroundingOptions::first_param_fastest): action ids do not depend on
+  // the order reachability found them.
+  std::vector<size_t> tuple_order(int si) const {
+    const ActionSchema& s = d_.actions[static_cast<size_t>(si)];
+    const size_t n = s.param_types.size();
+    const std::vector<ObjectId>& flat = reach_.tuples[static_cast<size_t>(si)];
+    const size_t count = static_cast<size_t>(reach_.counts[static_cast<size_t>(si)]);
+    std::vector<std::vector<int>> rank(n, std::vector<int>(p_.objects.size(), 0));
+    for (size_t i = 0; i < n; ++i) {
+      const auto objs = objects_of(s.param_types[i]);
+      for (size_t r = 0; r < objs.size(); ++r) rank[i][static_cast<size_t>(objs[r])] = static_cast<int>(r);
+    }
+    std::vector<size_t> order(count);
+    for (size_t k = 0; k < count; ++k) order[k] = k;
+    const bool first_fastest = t_.opts_.first_param_fastest;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      for (size_t j = 0; j < n; ++j) {
+        const size_t i = first_fastest ? n - 1 - j : j;
+        const int ra = rank[i][static_cast<size_t>(flat[a * n + i])], rb = rank[i][static_cast<size_t>(flat[b * n + i])];
+        if (ra != rb) return ra < rb;
+      }
+      return false;
+    });
+    return order;
+  }
+
+  // Reachability first: only the actions and atoms it finds are grounded
+  // (reachability.hpp), and the size limit counts those.
+  void explore() {
+    std::set<PredId> keep_all;
+    for (const auto& name : t_.opts_.keep_dynamic)
+      if (auto pid = d_.find_predicate(name)) keep_all.insert(*pid);
+    ReachabilityLimits lim;
+    lim.max_actions = t_.opts_.max_ground_actions;
+    lim.deadline = t_.opts_.deadline;
+    lim.deadline_label = t_.opts_.deadline_label;
+    lim.check_memory = t_.opts_.check_memory;
+    lim.bytes_per_action = GroundingOptions::kBytesPerGroundAction;
+    reach_ = explore_reachable(d_, p_, keep_all, lim);
+  }
+
+  // The budgets, checked while grounding: the deadline, and memory (the
+  // ground actions made so far must fit in the headroom the process had when
+  // grounding began; reachability already checked the whole count).
+  void on_tuples(uint64_t) override {
     const GroundingOptions& o = t_.opts_;
     if (o.deadline != std::chrono::steady_clock::time_point::max() && std::chrono::steady_clock::now() >= o.deadline)
       throw TimeLimitError(
@@ -662,11 +932,7 @@ class Grounder : public ConditionCompiler {
                                  std::to_string(t_.actions_.size()) + " ground actions made so far)"));
     if (!headroom_ || schema_ < 0) return;
     const int64_t made = static_cast<int64_t>(t_.actions_.size());
-    int64_t projected = made;
-    if (static_cast<int64_t>(visited) * 50 >= schema_tuples_) {
-      const double kept = static_cast<double>(made - actions_before_schema_) / static_cast<double>(visited);
-      projected = actions_before_schema_ + static_cast<int64_t>(kept * static_cast<double>(schema_tuples_));
-    }
+    const int64_t projected = made;
     const int64_t need = saturating_mul(projected, GroundingOptions::kBytesPerGroundAction);
     if (need <= headroom_->bytes) return;
     throw MemoryLimitError(
@@ -684,68 +950,11 @@ class Grounder : public ConditionCompiler {
     return __builtin_mul_overflow(a, b, &v) ? std::numeric_limits<int64_t>::max() : v;
   }
 
-  // How many objects may fill each parameter of a schema: those of its type
-  // that satisfy every static unary atom of the top-level precondition on it
-  // (e.g. (is-room ?r)). Others would ground to a false precondition anyway.
-  std::vector<int64_t> parameter_counts(const ActionSchema& s) const {
-    std::vector<std::vector<PredId>> unary(s.param_types.size());
-    std::vector<const Condition*> conj;
-    if (s.precondition) {
-      if (s.precondition->kind == Condition::Kind::And)
-        for (auto& k : s.precondition->kids) conj.push_back(&k);
-      else
-        conj.push_back(&*s.precondition);
-    }
-    for (const Condition* c : conj)
-      if (c->kind == Condition::Kind::Atom && c->args.size() == 1 && c->args[0].is_var &&
-          c->args[0].index < static_cast<int>(s.param_types.size()) && !t_.dynamic_preds_.count(c->pred))
-        unary[c->args[0].index].push_back(c->pred);
-    std::vector<int64_t> counts;
-    for (size_t i = 0; i < s.param_types.size(); ++i) {
-      int64_t n = 0;
-      for (ObjectId o : objects_of(s.param_types[i])) {
-        bool ok = true;
-        for (PredId p : unary[i]) ok = ok && t_.static_true_.count(key_of(p, {o})) > 0;
-        n += ok;
-      }
-      counts.push_back(n);
-    }
-    return counts;
-  }
-
-  // Refuses, before materialising anything, a schema whose ground actions
-  // could exceed GroundingOptions::max_ground_actions (alone or with the
-  // schemas before it), or whose parameter tuples are too many to enumerate.
-  void check_ground_size(int si, int64_t& total) const {
-    const ActionSchema& s = d_.actions[si];
-    const int64_t limit = t_.opts_.max_ground_actions;
-    int64_t bound = 1, tuples = 1;
-    std::string factors;
-    for (size_t i = 0; i < s.param_types.size(); ++i) tuples = saturating_mul(tuples, objects_of(s.param_types[i]).size());
-    for (int64_t n : parameter_counts(s)) {
-      bound = saturating_mul(bound, n);
-      factors += (factors.empty() ? "" : " x ") + std::to_string(n);
-    }
-    total = total > std::numeric_limits<int64_t>::max() - bound ? std::numeric_limits<int64_t>::max() : total + bound;
-    auto refuse = [&](const std::string& what) {
-      throw InputError(s.loc, printable("action '" + s.name + "' " + what + "; the limit is " + std::to_string(limit) +
-                                        " ground actions (raise it with --max-ground-actions)"));
-    };
-    if (bound > limit)
-      refuse("may have up to " + std::to_string(bound) + " ground actions (" + factors + " objects per parameter)");
-    if (total > limit)
-      refuse("brings the task to up to " + std::to_string(total) + " ground actions (this action: " +
-             std::to_string(bound) + ")");
-    // Enumeration visits every typed tuple, pruned or not: bound its time too.
-    if (tuples / 16 > limit)
-      refuse("has " + std::to_string(tuples) + " parameter tuples to enumerate (" + std::to_string(bound) +
-             " after static pruning)");
-  }
-
   void ground_one(int si, const std::vector<ObjectId>& args) {
     const ActionSchema& s = d_.actions[si];
     std::vector<ObjectId> b(std::max<size_t>(s.num_vars, args.size()), -1);
     std::copy(args.begin(), args.end(), b.begin());
+    reset_expansions();
     int pre = s.precondition ? cond(*s.precondition, b) : Task::kTrue;
     if (pre == Task::kFalse) return;
     GroundAction ga;
@@ -753,6 +962,9 @@ class Grounder : public ConditionCompiler {
     ga.args = args;
     ga.pre = pre;
     effect(s.effect, b, Task::kTrue, ga);
+    if (p_.metric && ga.cost < 0)
+      throw InputError(p_.metric->loc, printable("action " + action_str(ga) + " costs " + std::to_string(static_cast<int64_t>(ga.cost)) +
+                                                 " under the :metric: action costs must be non-negative"));
     // trigger: the first positive atom of the precondition's top-level conjunction
     const CNode& n = pool_.cnodes[pre];
     if (n.op == CNode::Atom) ga.trigger_bit = n.a;
@@ -821,10 +1033,10 @@ class Grounder : public ConditionCompiler {
   int pass_ = 1;
   std::optional<util::MemoryHeadroom> headroom_;
   int schema_ = -1;  // the schema being grounded, -1 between schemas
-  int64_t schema_tuples_ = 0, actions_before_schema_ = 0;
   std::map<std::vector<int>, InitValue> init_;
   std::map<std::vector<int>, SourceLoc> init_locs_;  // where each initial value was given
   std::set<std::vector<int>> modified_atoms_, modified_fluents_;
+  Reachable reach_;
 };
 
 // ================================================================ Task
@@ -834,6 +1046,7 @@ Task::Task(std::shared_ptr<const Domain> domain, std::shared_ptr<const Problem> 
     : domain_(std::move(domain)), problem_(std::move(problem)), opts_(opts) {
   Grounder g(*this);
   g.run();
+  prepare_axioms();
   flatten_preconditions();
 }
 

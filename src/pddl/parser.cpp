@@ -30,6 +30,17 @@ int Domain::find_action(const std::string& n) const {
   return -1;
 }
 bool Domain::is_subtype(TypeId t, TypeId ancestor) const {
+  // Unions: every member of `t` within `ancestor`; `t` within some member.
+  if (t >= 0 && !types[t].either.empty()) {
+    for (TypeId m : types[t].either)
+      if (!is_subtype(m, ancestor)) return false;
+    return true;
+  }
+  if (ancestor >= 0 && !types[ancestor].either.empty()) {
+    for (TypeId m : types[ancestor].either)
+      if (is_subtype(t, m)) return true;
+    return false;
+  }
   for (int guard = 0; t >= 0 && guard <= static_cast<int>(types.size()); ++guard) {
     if (t == ancestor) return true;
     t = types[t].parent;
@@ -47,7 +58,7 @@ namespace {
 const std::set<std::string> kSupportedRequirements = {
     ":strips", ":typing", ":negative-preconditions", ":disjunctive-preconditions", ":equality",
     ":existential-preconditions", ":universal-preconditions", ":quantified-preconditions",
-    ":conditional-effects", ":adl", ":fluents", ":numeric-fluents", ":action-costs"};
+    ":conditional-effects", ":adl", ":fluents", ":numeric-fluents", ":action-costs", ":derived-predicates"};
 
 // Messages quote input text (names, expressions): escape control bytes in them.
 [[noreturn]] void fail(const SourceLoc& loc, const std::string& msg) { throw InputError(loc, printable(msg)); }
@@ -64,6 +75,28 @@ bool is_integer(const std::string& s) {
 
 // The value of an integer literal (is_integer); one beyond int64 is an input
 // error at the literal rather than an exception from std::stoll.
+// A token meant as a number that is not a PDDL integer: "1e6", "0x10",
+// "1.5", "inf", "nan", "-.5". Read as a name it would be "unknown object".
+bool looks_numeric(const std::string& s) {
+  size_t i = (s.size() > 1 && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
+  if (i >= s.size()) return false;
+  const std::string rest = s.substr(i);
+  if (rest == "inf" || rest == "infinity" || rest == "nan") return true;
+  return std::isdigit(static_cast<unsigned char>(rest[0])) ||
+         (rest[0] == '.' && rest.size() > 1 && std::isdigit(static_cast<unsigned char>(rest[1])));
+}
+
+std::string not_an_integer(const std::string& s) {
+  const std::string what = s.find_first_of("xX") != std::string::npos ? "a hexadecimal number"
+                           : s.find_first_of("eE") != std::string::npos && s.find_first_of("iI") == std::string::npos
+                               ? "a number in exponent notation"
+                           : s.find('.') != std::string::npos ? "a number with a fraction"
+                           : s.find_first_not_of("+-0123456789") != std::string::npos ? "not a number PDDL allows"
+                                                                                      : "a number";
+  return "'" + s + "' is " + what + ": numbers here are integers written in decimal digits (e.g. 1000000); "
+         "non-integer, infinite and hexadecimal values are not supported";
+}
+
 int64_t integer_value(const SExpr& e) {
   const char* first = e.atom.data() + (e.atom[0] == '+' ? 1 : 0);
   const char* last = e.atom.data() + e.atom.size();
@@ -84,9 +117,17 @@ const SExpr& expect_list(const SExpr& e, const std::string& what) {
 // A name with type, from a PDDL typed list such as `a b - t c`.
 struct TypedName {
   std::string name;
-  std::string type;  // "object" when untyped
+  std::string type;  // "object" when untyped; "(either a b)" for a union
   SourceLoc loc;
+  SourceLoc type_loc;  // where the type was written (the name's own when untyped)
 };
+
+// The name of the union type `(either a b ...)`, as the domain's type table has it.
+std::string either_name(const SExpr& e) {
+  std::string n = "(either";
+  for (size_t i = 1; i < e.items.size(); ++i) n += " " + e.items[i].atom;
+  return n + ")";
+}
 
 std::vector<TypedName> typed_list(const std::vector<SExpr>& items, size_t from, const SExpr& owner) {
   std::vector<TypedName> out;
@@ -97,19 +138,17 @@ std::vector<TypedName> typed_list(const std::vector<SExpr>& items, size_t from, 
     if (it.atom == "-") {
       if (i + 1 >= items.size()) fail(it, "expected a type after '-'");
       const SExpr& t = items[i + 1];
-      if (t.is_list) {
-        if (t.head() == "either") fail(t, "unsupported: (either ...) types");
-        fail(t, "expected a type name after '-'");
-      }
+      if (t.is_list && t.head() != "either") fail(t, "expected a type name after '-'");
       if (pending.empty()) fail(it, "'-' with no names before it");
       for (auto& p : pending) {
-        p.type = t.atom;
+        p.type = t.is_list ? either_name(t) : t.atom;
+        p.type_loc = t.loc;
         out.push_back(p);
       }
       pending.clear();
       ++i;
     } else {
-      pending.push_back(TypedName{it.atom, "object", it.loc});
+      pending.push_back(TypedName{it.atom, "object", it.loc, it.loc});
     }
   }
   (void)owner;
@@ -251,9 +290,8 @@ class ExprParser {
       } else if (names_zero_ary_function(e.atom)) {
         x.kind = NumExpr::Kind::Fluent;
         x.func = *d_.find_function(e.atom);
-      } else if (e.atom.find('.') != std::string::npos && !e.atom.empty() &&
-                 (std::isdigit(static_cast<unsigned char>(e.atom[0])) || e.atom[0] == '-')) {
-        fail(e, "non-integer number '" + e.atom + "': only integer fluents are supported");
+      } else if (looks_numeric(e.atom) && !find_object(e.atom)) {
+        fail(e, not_an_integer(e.atom));
       } else {
         x.kind = NumExpr::Kind::Object;
         x.args.push_back(term(e, nullptr));
@@ -407,6 +445,8 @@ class ExprParser {
     } else if (!h.empty()) {
       auto p = d_.find_predicate(h);
       if (!p) fail(e, "unknown predicate '" + h + "'");
+      if (d_.predicates[*p].derived)
+        fail(e, "predicate '" + h + "' is derived (:derived): it follows from the state, and effects may not change it");
       x.kind = Effect::Kind::Add;
       x.pred = *p;
       x.args = args_for(e, d_.predicates[*p].arg_types, "predicate '" + h + "'");
@@ -424,27 +464,69 @@ class ExprParser {
 
 TypeId ensure_type(Domain& d, const std::string& name) {
   if (auto t = d.find_type(name)) return *t;
-  d.types.push_back(TypeDef{name, 0});
+  d.types.push_back(TypeDef{name, 0, {}});
   return static_cast<TypeId>(d.types.size() - 1);
 }
 
+// Every type is declared as a name of :types before it is a parent, and at
+// most once with a parent of its own: "car - vehicle" without "vehicle", or
+// "car - vehicle car - toy", would otherwise pass unnoticed.
 void parse_types(Domain& d, const SExpr& sec) {
+  std::map<std::string, TypedName> declared;  // type -> its declaration with an explicit parent
+  std::set<std::string> named;
+  std::vector<TypedName> parents;  // each first use of a name as a parent
   for (auto& tn : typed_list(sec.items, 1, sec)) {
+    if (tn.type.rfind("(either", 0) == 0)
+      fail(tn.type_loc, "type '" + tn.name + "' cannot have a union " + tn.type + " as its parent: name one type");
     if (tn.name == "object") {
       // The root type has no parent: "object - dish" would close a cycle.
       if (tn.type != "object") fail(tn.loc, "cyclic type hierarchy: the root type 'object' cannot be a subtype of '" + tn.type + "'");
       continue;
     }
+    named.insert(tn.name);
+    if (tn.type != "object" && !d.find_type(tn.type)) parents.push_back(tn);
+    if (tn.type != "object") {
+      auto [it, fresh] = declared.emplace(tn.name, tn);
+      if (!fresh && it->second.type != tn.type)
+        fail(tn.loc, "type '" + tn.name + "' is declared twice with two parents: '" + it->second.type + "' (line " +
+                         std::to_string(it->second.loc.line) + ") and '" + tn.type + "'");
+    }
     TypeId parent = ensure_type(d, tn.type);
     TypeId t = ensure_type(d, tn.name);
     if (d.is_subtype(parent, t)) fail(tn.loc, "cyclic type hierarchy at '" + tn.name + "'");
-    d.types[t].parent = parent;
+    if (tn.type != "object" || d.types[t].parent <= 0) d.types[t].parent = parent;
   }
+  for (const TypedName& tn : parents)
+    if (!named.count(tn.type))
+      fail(tn.type_loc, "type '" + tn.type + "' (the parent of '" + tn.name + "') is not declared in :types");
+}
+
+// Adds the union types `(either a b)` the domain writes anywhere (parameters,
+// predicates, quantifiers) to its type table, before anything reads them.
+void declare_union_types(Domain& d, const SExpr& e) {
+  if (!e.is_list) return;
+  if (e.head() == "either") {
+    const std::string name = either_name(e);
+    if (d.find_type(name)) return;
+    if (e.items.size() < 2) fail(e, "(either) names no type");
+    TypeDef u{name, -1, {}};
+    for (size_t i = 1; i < e.items.size(); ++i) {
+      const SExpr& m = e.items[i];
+      if (m.is_list) fail(m, "expected a type name in (either ...), found a list");
+      auto t = d.find_type(m.atom);
+      if (!t) fail(m, "unknown type '" + m.atom + "' in " + name);
+      u.either.push_back(*t);
+    }
+    d.types.push_back(std::move(u));
+    return;
+  }
+  for (const SExpr& k : e.items) declare_union_types(d, k);
 }
 
 TypeId type_of_name(const Domain& d, const TypedName& tn) {
   auto t = d.find_type(tn.type);
-  if (!t) fail(tn.loc, "unknown type '" + tn.type + "'");
+  if (!t) fail(tn.type_loc, tn.type.rfind("(either", 0) == 0 ? "unsupported: the union type " + tn.type + " here (the domain uses no such union)"
+                                                          : "unknown type '" + tn.type + "'");
   return *t;
 }
 
@@ -527,6 +609,80 @@ void parse_action(Domain& d, const SExpr& sec) {
   d.actions.push_back(std::move(a));
 }
 
+// (:derived (p ?x - t ...) condition). The parameters' types default to the
+// predicate's declared ones.
+void parse_derived(Domain& d, const SExpr& sec) {
+  if (sec.items.size() != 3 || !sec.items[1].is_list || sec.items[1].items.empty() || sec.items[1].items[0].is_list)
+    fail(sec, "expected (:derived (predicate ?parameters) condition)");
+  const SExpr& head = sec.items[1];
+  auto pid = d.find_predicate(head.head());
+  if (!pid) fail(head, "derived predicate '" + head.head() + "' is not declared in :predicates");
+  DerivedRule r;
+  r.pred = *pid;
+  r.loc = sec.loc;
+  const PredicateDef& pd = d.predicates[static_cast<size_t>(*pid)];
+  auto params = typed_list(head.items, 1, head);
+  if (params.size() != pd.arg_types.size())
+    fail(head, "arity mismatch: predicate '" + pd.name + "' takes " + std::to_string(pd.arg_types.size()) +
+                   " argument(s), its :derived rule gives " + std::to_string(params.size()));
+  ExprParser ep(d, nullptr);
+  for (size_t i = 0; i < params.size(); ++i) {
+    const TypedName& tn = params[i];
+    if (tn.name.empty() || tn.name[0] != '?') fail(tn.loc, "expected a parameter variable, found '" + tn.name + "'");
+    if (std::find(r.param_names.begin(), r.param_names.end(), tn.name.substr(1)) != r.param_names.end())
+      fail(tn.loc, "parameter '" + tn.name + "' of derived predicate '" + pd.name + "' is declared twice");
+    TypeId t = tn.type == "object" ? pd.arg_types[i] : type_of_name(d, tn);
+    r.param_names.push_back(tn.name.substr(1));
+    r.param_types.push_back(t);
+    ep.scope.vars.push_back({tn.name.substr(1), t});
+    ep.scope.visible.push_back(ep.scope.num_slots() - 1);
+  }
+  r.body = ep.cond(sec.items[2]);
+  r.num_vars = ep.scope.num_slots();
+  d.derived.push_back(std::move(r));
+}
+
+// The linear form of a :metric expression: coefficient x ground fluent terms.
+// Anything else (a product of fluents, a division) is refused.
+void linear_terms(const Domain& d, const NumExpr& x, int64_t coef, std::vector<Metric::Term>& out, int64_t& constant) {
+  using K = NumExpr::Kind;
+  auto product = [&](int64_t a, int64_t b) {
+    int64_t v = 0;
+    if (__builtin_mul_overflow(a, b, &v)) fail(x.loc, "integer overflow in the :metric expression");
+    return v;
+  };
+  switch (x.kind) {
+    case K::Const: constant += product(coef, x.value); return;
+    case K::Fluent: {
+      Metric::Term t{coef, x.func, {}};
+      for (const TermRef& a : x.args) t.args.push_back(a.index);
+      out.push_back(std::move(t));
+      return;
+    }
+    case K::Add: case K::Sub:
+      linear_terms(d, x.kids[0], coef, out, constant);
+      linear_terms(d, x.kids[1], x.kind == K::Add ? coef : product(coef, -1), out, constant);
+      return;
+    case K::Neg: linear_terms(d, x.kids[0], product(coef, -1), out, constant); return;
+    case K::Mul: {
+      // One side must be a constant (after its own linear form).
+      for (int c = 0; c < 2; ++c) {
+        std::vector<Metric::Term> probe;
+        int64_t k = 0;
+        linear_terms(d, x.kids[static_cast<size_t>(c)], 1, probe, k);
+        if (probe.empty()) {
+          linear_terms(d, x.kids[static_cast<size_t>(1 - c)], product(coef, k), out, constant);
+          return;
+        }
+      }
+      fail(x.loc, "the :metric multiplies two fluents: only a linear expression of fluents (sums of constant "
+                  "multiples) can be minimised");
+    }
+    case K::Div: fail(x.loc, "division in the :metric is not supported: only sums of constant multiples of fluents");
+    default: fail(x.loc, "the :metric must be a linear expression of fluents (e.g. (total-cost))");
+  }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- Domain
@@ -538,7 +694,7 @@ Domain parse_domain(const std::string& text, const std::string& file) {
   const SExpr& def = top[0];
   Domain d;
   d.file = file;
-  d.types.push_back(TypeDef{"object", -1});
+  d.types.push_back(TypeDef{"object", -1, {}});
   if (def.items.size() < 2 || !def.items[1].is_list || def.items[1].head() != "domain" || def.items[1].items.size() != 2)
     fail(def, "expected (domain NAME) after define");
   d.name = def.items[1].items[1].atom;
@@ -556,6 +712,7 @@ Domain parse_domain(const std::string& text, const std::string& file) {
       parse_types(d, sec);
     }
   }
+  declare_union_types(d, def);
   for (size_t i = 2; i < def.items.size(); ++i) {
     const SExpr& sec = def.items[i];
     const std::string& h = sec.head();
@@ -564,19 +721,29 @@ Domain parse_domain(const std::string& text, const std::string& file) {
       for (auto& tn : typed_list(sec.items, 1, sec)) {
         for (auto& c : d.constants)
           if (c.name == tn.name) fail(tn.loc, "constant '" + tn.name + "' declared twice");
+        if (tn.type.rfind("(either", 0) == 0)
+          fail(tn.type_loc, "constant '" + tn.name + "' has the union type " + tn.type + ": give each object one type");
         d.constants.push_back(ObjectDef{tn.name, type_of_name(d, tn), true});
       }
     } else if (h == ":predicates") {
       parse_predicates(d, sec);
     } else if (h == ":functions") {
       parse_functions(d, sec);
-    } else if (h == ":action") {
+    } else if (h == ":action" || h == ":derived") {
       continue;  // after everything is declared
     } else {
       fail(sec, "unknown or unsupported domain section '" + h + "'");
     }
   }
   if (auto tc = d.find_function("total-cost"); tc && d.functions[*tc].arg_types.empty()) d.total_cost = *tc;
+  // Derived predicates first: effects may not name them.
+  for (size_t i = 2; i < def.items.size(); ++i)
+    if (def.items[i].head() == ":derived") {
+      const SExpr& head = def.items[i].items.size() > 1 ? def.items[i].items[1] : def.items[i];
+      if (auto p = d.find_predicate(head.head())) d.predicates[static_cast<size_t>(*p)].derived = true;
+    }
+  for (size_t i = 2; i < def.items.size(); ++i)
+    if (def.items[i].head() == ":derived") parse_derived(d, def.items[i]);
   for (size_t i = 2; i < def.items.size(); ++i)
     if (def.items[i].head() == ":action") parse_action(d, def.items[i]);
   return d;
@@ -585,6 +752,35 @@ Domain parse_domain(const std::string& text, const std::string& file) {
 Domain load_domain(const std::string& path) { return parse_domain(read_text_file(path), path); }
 
 // ---------------------------------------------------------------- Problem
+
+namespace {
+
+// (:metric minimize <linear expression of ground fluents>); everything else
+// is refused, so that no metric is silently ignored.
+Metric parse_metric(const Domain& d, ExprParser& ep, const SExpr& sec) {
+  if (sec.items.size() != 3 || sec.items[1].is_list)
+    fail(sec, "expected (:metric minimize <expression>)");
+  const std::string& dir = sec.items[1].atom;
+  if (dir == "maximize")
+    fail(sec.items[1], "(:metric maximize ...) is not supported: clips finds plans of least cost; write the metric "
+                       "as minimize of a linear expression of fluents");
+  if (dir != "minimize") fail(sec.items[1], "expected 'minimize' after :metric, found '" + dir + "'");
+  const SExpr& e = sec.items[2];
+  const std::string name = e.is_list ? e.head() : e.atom;
+  if (name == "total-time" && !d.find_function(name))
+    fail(e, "(:metric minimize (total-time)) is not supported: actions here have no durations (write (total-cost) "
+            "and :action-costs, or leave the metric out to minimise the number of actions)");
+  Metric m;
+  m.loc = sec.loc;
+  int64_t constant = 0;
+  linear_terms(d, ep.num(e), 1, m.terms, constant);
+  for (const Metric::Term& t : m.terms)
+    if (d.functions[static_cast<size_t>(t.func)].type != ValueType::Int)
+      fail(e, "the :metric reads the bit-matrix '" + d.functions[static_cast<size_t>(t.func)].name + "'");
+  return m;
+}
+
+}  // namespace
 
 Problem parse_problem(const Domain& d, const std::string& text, const std::string& file, bool with_goal) {
   auto top = read_pddl_forms(text, file);
@@ -606,6 +802,8 @@ Problem parse_problem(const Domain& d, const std::string& text, const std::strin
     } else if (sec.head() == ":objects") {
       for (auto& tn : typed_list(sec.items, 1, sec)) {
         if (p.find_object(tn.name)) fail(tn.loc, "object '" + tn.name + "' declared twice");
+        if (tn.type.rfind("(either", 0) == 0)
+          fail(tn.type_loc, "object '" + tn.name + "' has the union type " + tn.type + ": give each object one type");
         p.objects.push_back(ObjectDef{tn.name, type_of_name(d, tn), false});
       }
     }
@@ -638,6 +836,9 @@ Problem parse_problem(const Domain& d, const std::string& text, const std::strin
         } else {
           auto pid = d.find_predicate(f.head());
           if (!pid) fail(f, "unknown predicate '" + f.head() + "'");
+          if (d.predicates[static_cast<size_t>(*pid)].derived)
+            fail(f, "predicate '" + f.head() + "' is derived (:derived): it follows from the other facts and "
+                    "cannot be stated in :init");
           InitAtom a{*pid, {}, f.loc};
           for (auto& r : ep.args_for(f, d.predicates[*pid].arg_types, "predicate '" + f.head() + "'"))
             a.args.push_back(r.index);
@@ -652,7 +853,7 @@ Problem parse_problem(const Domain& d, const std::string& text, const std::strin
         p.goal_num_vars = ep.scope.num_slots();
       }
     } else if (h == ":metric") {
-      continue;  // costs come from specifications, not the problem
+      p.metric = parse_metric(d, ep, sec);
     } else {
       fail(sec, "unknown or unsupported problem section '" + h + "'");
     }

@@ -108,6 +108,8 @@ class Reader {
     while (pos_ < t_.size()) {
       char d = t_[pos_];
       if (d == '(' || d == ')' || d == ';' || std::isspace(static_cast<unsigned char>(d))) break;
+      // PDDL's grammar: '?' starts a variable, so "(at?x ?y)" is "at ?x ?y".
+      if (d == '?' && !sym.empty()) break;
       sym += static_cast<char>(std::tolower(static_cast<unsigned char>(d)));
       advance();
     }

@@ -1,6 +1,7 @@
 #pragma once
 // S-expression reader for PDDL text. Symbols are lower-cased (PDDL is
-// case-insensitive); `;` starts a comment that runs to the end of the line.
+// case-insensitive); `;` starts a comment that runs to the end of the line;
+// `?` starts a new symbol (a variable), also right after a name: `(at?x)`.
 // Every node remembers where it started so later stages can report
 // file:line:col in their errors. A leading UTF-8 byte-order mark is skipped.
 #include <string>

@@ -87,8 +87,10 @@ void Task::set(State& s, const FluentRef& f, int64_t v) const {
     if (f.value != v) throw std::logic_error("cannot change a static fluent");
     return;
   }
-  if (v < std::numeric_limits<int16_t>::min() || v > std::numeric_limits<int16_t>::max())
-    throw std::out_of_range("fluent " + fluent_str(f.slot) + " value out of the int16 range");
+  if (v < kMinFluent || v > kMaxFluent)
+    throw InputError("fluent " + fluent_str(f.slot) + " cannot be set to " + std::to_string(v) +
+                     ": states hold the numeric fluents actions change as 16-bit integers (" +
+                     std::to_string(kMinFluent) + ".." + std::to_string(kMaxFluent) + ")");
   set_num(s.data(), atom_words_, f.slot, static_cast<int16_t>(v));
 }
 
@@ -96,7 +98,82 @@ State Task::initial_state() const {
   State s = empty_state();
   for (int bit : init_bits_) set_bit(s.data(), bit, true);
   for (int slot = 0; slot < num_fluents(); ++slot) set(s, FluentRef{slot, 0, nullptr}, init_fluent_values_[slot]);
+  evaluate_axioms(s.data());
   return s;
+}
+
+void Task::prepare_axioms() {
+  derived_.clear();
+  derived_mask_.clear();
+  readers_begin_.clear();
+  readers_.clear();
+  bool any = false;
+  std::vector<char> flag(static_cast<size_t>(num_atoms()), 0);
+  for (int bit = 0; bit < num_atoms(); ++bit)
+    if (domain_->predicates[static_cast<size_t>(atoms_[static_cast<size_t>(bit)].first)].derived) flag[static_cast<size_t>(bit)] = any = 1;
+  if (!any) return;
+  derived_ = std::move(flag);
+  derived_mask_.assign(static_cast<size_t>(atom_words_), 0);
+  for (int bit = 0; bit < num_atoms(); ++bit)
+    if (derived_[static_cast<size_t>(bit)]) derived_mask_[static_cast<size_t>(bit >> 6)] |= uint64_t{1} << (bit & 63);
+  // The stratum of each derived bit (that of its rules), then per bit the
+  // rules of its own stratum that read it.
+  std::vector<int> stratum_of(static_cast<size_t>(num_atoms()), -1);
+  for (size_t k = 0; k + 1 < stratum_begin_.size(); ++k)
+    for (int i = stratum_begin_[k]; i < stratum_begin_[k + 1]; ++i)
+      stratum_of[static_cast<size_t>(axioms_[static_cast<size_t>(i)].head)] = static_cast<int>(k);
+  std::vector<std::vector<int>> readers(static_cast<size_t>(num_atoms()));
+  std::vector<int> bits;
+  std::function<void(CondId)> reads = [&](CondId c) {
+    const CNode& n = pool_.cnodes[static_cast<size_t>(c)];
+    switch (n.op) {
+      case CNode::Atom: case CNode::NotAtom: bits.push_back(n.a); return;
+      case CNode::And: case CNode::Or:
+        for (int i = 0; i < n.b; ++i) reads(pool_.ckids[static_cast<size_t>(n.a + i)]);
+        return;
+      case CNode::Not: reads(n.a); return;
+      default: return;
+    }
+  };
+  for (size_t k = 0; k + 1 < stratum_begin_.size(); ++k)
+    for (int i = stratum_begin_[k]; i < stratum_begin_[k + 1]; ++i) {
+      bits.clear();
+      reads(axioms_[static_cast<size_t>(i)].body);
+      std::sort(bits.begin(), bits.end());
+      bits.erase(std::unique(bits.begin(), bits.end()), bits.end());
+      for (int b : bits)
+        if (stratum_of[static_cast<size_t>(b)] == static_cast<int>(k)) readers[static_cast<size_t>(b)].push_back(i);
+    }
+  readers_begin_.assign(1, 0);
+  for (const auto& r : readers) {
+    readers_.insert(readers_.end(), r.begin(), r.end());
+    readers_begin_.push_back(static_cast<int>(readers_.size()));
+  }
+}
+
+void Task::evaluate_axioms(uint64_t* s) const {
+  if (derived_.empty()) return;
+  for (size_t w = 0; w < derived_mask_.size(); ++w) s[w] &= ~derived_mask_[w];
+  // Stratum by stratum: every rule once, then again the rules reading an
+  // atom that became true (within a stratum, rules read their own stratum's
+  // atoms only positively, so the fixpoint only grows).
+  thread_local std::vector<int> queue;
+  for (size_t k = 0; k + 1 < stratum_begin_.size(); ++k) {
+    queue.clear();
+    auto fire = [&](int i) {
+      const Axiom& x = axioms_[static_cast<size_t>(i)];
+      if (get_bit(s, x.head) || !eval(x.body, s)) return;
+      set_bit(s, x.head, true);
+      for (int r = readers_begin_[static_cast<size_t>(x.head)]; r < readers_begin_[static_cast<size_t>(x.head) + 1]; ++r)
+        queue.push_back(readers_[static_cast<size_t>(r)]);
+    };
+    for (int i = stratum_begin_[k]; i < stratum_begin_[k + 1]; ++i) fire(i);
+    while (!queue.empty()) {
+      const int i = queue.back();
+      queue.pop_back();
+      fire(i);
+    }
+  }
 }
 
 std::string Task::state_str(const State& s) const {
@@ -150,7 +227,8 @@ int64_t Task::eval_num(const Pool& pool, int n, const uint64_t* s) const {
     case NNode::Mul: return eval_num(pool, x.a, s) * eval_num(pool, x.b, s);
     case NNode::Div: {
       int64_t d = eval_num(pool, x.b, s);
-      return d == 0 ? 0 : eval_num(pool, x.a, s) / d;
+      if (d == 0) throw InputError(pool.div_locs[static_cast<size_t>(x.v)], "division by zero: the divisor is 0 in this state");
+      return eval_num(pool, x.a, s) / d;
     }
     case NNode::Neg: return -eval_num(pool, x.a, s);
     case NNode::GetIndex: {
@@ -205,10 +283,16 @@ void Task::apply_list(const EffectList& e, const uint64_t* src, uint64_t* dst, b
       case NumericEffect::Op::Increase: v = old + v; break;
       case NumericEffect::Op::Decrease: v = old - v; break;
       case NumericEffect::Op::ScaleUp: v = old * v; break;
-      case NumericEffect::Op::ScaleDown: v = v ? old / v : 0; break;
+      case NumericEffect::Op::ScaleDown:
+        if (v == 0) throw InputError("(scale-down " + fluent_str(ne.slot) + " ...) divides by zero in this state");
+        v = old / v;
+        break;
     }
-    if (v < std::numeric_limits<int16_t>::min() || v > std::numeric_limits<int16_t>::max())
-      throw std::out_of_range("fluent " + fluent_str(ne.slot) + " left the int16 range");
+    if (v < kMinFluent || v > kMaxFluent)
+      throw InputError("fluent " + fluent_str(ne.slot) + " would become " + std::to_string(v) +
+                       ": states hold the numeric fluents actions change as 16-bit integers (" +
+                       std::to_string(kMinFluent) + ".." + std::to_string(kMaxFluent) +
+                       "), and this plan goes beyond them");
     set_num(dst, atom_words_, ne.slot, static_cast<int16_t>(v));
   }
 }
@@ -219,6 +303,7 @@ void Task::apply(ActionId a, const uint64_t* src, uint64_t* dst) const {
   if (g.cond_eff.empty()) {
     apply_list(g.eff, src, dst, false);
     apply_list(g.eff, src, dst, true);
+    if (!derived_.empty()) evaluate_axioms(dst);
     return;
   }
   // Conditions and right-hand sides read the old state; deletes before adds.
@@ -236,6 +321,7 @@ void Task::apply(ActionId a, const uint64_t* src, uint64_t* dst) const {
   apply_list(g.eff, from, dst, true);
   for (size_t i = 0; i < g.cond_eff.size(); ++i)
     if (fired[i]) apply_list(g.cond_eff[i].eff, from, dst, true);
+  if (!derived_.empty()) evaluate_axioms(dst);
 }
 
 State Task::apply(const State& s, ActionId a) const {

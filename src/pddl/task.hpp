@@ -2,8 +2,9 @@
 // The grounded task: a domain + problem compiled for fast simulation.
 //
 //   Task        owns the lifted Domain/Problem, the table of dynamic atoms (one
-//               bit each in a State) and dynamic numeric fluents (int16 slots),
-//               the folded static facts, and the ground actions.
+//               bit each in a State; derived ones computed by the ground
+//               rules of :derived predicates) and dynamic numeric fluents
+//               (int16 slots), the folded static facts, and the ground actions.
 //   GroundAction  name + argument objects, a compiled precondition, compiled
 //               effects (unconditional add/delete/numeric, plus conditional
 //               ones) and the set of its `active`-style trigger bit.
@@ -13,17 +14,19 @@
 //               command's goal): it owns its own expression pool, so compiling
 //               one never touches the task.
 //
-// Grounding (grounder.cpp) runs in two passes: the first folds predicates and
-// functions that no action schema changes; the second also folds ground atoms
-// and fluents that no surviving ground action changes (e.g. (has robot gem1)
-// when the robot may never hold gems). Predicates listed in
+// Grounding (grounder.cpp) starts with relaxed reachability
+// (reachability.hpp): only the ground actions and atoms reachable from the
+// initial state are made, and GroundingOptions::max_ground_actions limits
+// their real count (InputError naming it). Then two passes over those
+// actions: the first finds the ground atoms and fluents some action
+// changes; the second compiles everything with the rest folded as static
+// (an unreachable atom is false; (has robot gem1) when the robot may never
+// hold gems keeps its initial value). Predicates listed in
 // GroundingOptions::keep_dynamic stay in the state even if no action changes
 // them, because callers set them on copies of states (e.g. `frozen` in the
-// assistance simulations). Before it materialises the ground actions of a
-// schema, the grounder bounds their number and refuses (InputError naming the
-// action and the count) above GroundingOptions::max_ground_actions. While it
-// enumerates, it stops at GroundingOptions::deadline and before memory runs
-// out (TimeLimitError, MemoryLimitError: naming the action and counts).
+// assistance simulations). Quantifiers expand within the same limit, per
+// condition. Grounding stops at GroundingOptions::deadline and before memory
+// runs out (TimeLimitError, MemoryLimitError: naming the counts).
 // Runtime queries live in task.cpp, successor generation in successor.cpp.
 //
 // Threads: a Task is immutable once its constructor returns. Every const
@@ -54,9 +57,9 @@ struct GroundingOptions {
   std::vector<std::string> schema_order;    // enumeration order of schemas (default: declared)
   bool first_param_fastest = false;         // vary the first parameter fastest
   bool objects_by_name = false;             // order objects by name instead of declaration
-  // Refuse to ground an action schema whose ground actions may number more than
-  // this (an upper bound from the parameters' object counts after pruning by
-  // static unary preconditions). About 1 kB each: the default is ~2 GB.
+  // Refuse a task with more ground actions reachable from its initial state
+  // than this (the real count; reachability.hpp), and a condition whose
+  // quantifiers expand to more instances. About 1 kB each: the default is ~2 GB.
   int64_t max_ground_actions = kDefaultMaxGroundActions;
   static constexpr int64_t kDefaultMaxGroundActions = 2'000'000;
   // Grounding past `deadline` throws TimeLimitError with a message starting
@@ -94,13 +97,20 @@ struct ConditionalEffect {
   EffectList eff;
 };
 
+// A ground rule of a derived predicate: `head` (a derived atom's bit) holds
+// in a state when `body` does (or another rule of the same atom's body).
+struct Axiom {
+  int head = 0;
+  CondId body = 0;
+};
+
 struct GroundAction {
   int schema = 0;
   std::vector<ObjectId> args;
   CondId pre = 0;
   EffectList eff;
   std::vector<ConditionalEffect> cond_eff;
-  double cost = 0;  // from (increase (total-cost) n), 0 without :action-costs
+  double cost = 0;  // by the problem's :metric, else (increase (total-cost) n); 0 without either
   int trigger_bit = -1;  // a positive atom every applicable state has, or -1
 };
 
@@ -127,6 +137,10 @@ class Task {
   std::optional<ObjectId> find_object(const std::string& name) const { return problem_->find_object(name); }
   bool object_is_a(ObjectId o, const std::string& type) const;
   std::vector<ObjectId> objects_of_type(const std::string& type) const;
+
+  // The values the numeric fluents actions change can take in a state (16-bit
+  // slots): a value beyond them is an InputError naming the fluent.
+  static constexpr int64_t kMinFluent = -32768, kMaxFluent = 32767;
 
   // ---- atoms and fluents: dynamic ones have a bit/slot; static ones a value
   struct AtomRef {
@@ -175,6 +189,18 @@ class Task {
   void applicable_actions(const uint64_t* s, std::vector<ActionId>& out) const;
   std::vector<ActionId> applicable_actions(const State& s) const;
 
+  // ---- derived predicates (:derived): atoms computed from the others
+  // Derived atoms are bits of the state like the others; apply() and
+  // initial_state() compute them (stratum by stratum, each a least fixpoint),
+  // so conditions read them as atoms. Their rules, by stratum:
+  int num_axioms() const { return static_cast<int>(axioms_.size()); }
+  const Axiom& axiom(int i) const { return axioms_[static_cast<size_t>(i)]; }
+  bool is_derived(int bit) const { return !derived_.empty() && derived_[static_cast<size_t>(bit)] != 0; }
+  // Recomputes the derived atoms of `s` from its other atoms (after a caller
+  // changed some of them, e.g. with set()).
+  void evaluate_axioms(uint64_t* s) const;
+  void evaluate_axioms(State& s) const { evaluate_axioms(s.data()); }
+
   // ---- conditions
   // Compiles a lifted condition (variables bound by `binding`, -1 = free) or a
   // PDDL formula into its own pool; the task is not changed.
@@ -212,6 +238,7 @@ class Task {
     std::vector<CNode> cnodes;
     std::vector<int> ckids;
     std::vector<NNode> nnodes;
+    std::vector<SourceLoc> div_locs;  // where each division was written (NNode::Div's v)
   };
   // The task's own pool (action preconditions and effect conditions).
   const CNode& cnode(CondId c) const { return pool_.cnodes[c]; }
@@ -248,6 +275,17 @@ class Task {
 
   std::vector<GroundAction> actions_;
   std::map<std::vector<int>, ActionId> action_index_;  // [schema, args...] -> id
+
+  // Derived atoms: the rules by stratum (axioms_[stratum_begin_[k],
+  // stratum_begin_[k+1])), a flag per bit, the mask of their bits, and per
+  // derived bit the rules of its stratum that read it (CSR), to look at again
+  // once it becomes true.
+  std::vector<Axiom> axioms_;
+  std::vector<int> stratum_begin_;
+  std::vector<char> derived_;
+  std::vector<uint64_t> derived_mask_;
+  std::vector<int> readers_begin_, readers_;
+  void prepare_axioms();
   std::vector<std::pair<int, std::vector<ActionId>>> trigger_groups_;  // bit -> actions
   std::vector<ActionId> untriggered_;
   // Preconditions flattened for speed: per action, its primitive top-level

@@ -30,7 +30,6 @@ StateGraph::~StateGraph() {
   for (size_t c = 0; c < kMaxChunks; ++c) {
     delete[] state_chunks_[c].load(std::memory_order_relaxed);
     delete[] info_chunks_[c].load(std::memory_order_relaxed);
-    delete[] succ_chunks_[c].load(std::memory_order_relaxed);
   }
 }
 
@@ -109,7 +108,6 @@ uint64_t StateGraph::expand(int id) {
   const size_t w = static_cast<size_t>(words_);
   task_->applicable_actions(state(id), acts);
   const size_t n = acts.size();
-  if (n > 0xffff) throw std::length_error("state graph: more than 65535 applicable actions in one state");
   children.resize(n * w);
   hashes.resize(n);
   for (size_t k = 0; k < n; ++k) {
@@ -119,19 +117,26 @@ uint64_t StateGraph::expand(int id) {
 
   std::lock_guard lock(mutex_);
   if (const uint64_t v = slot.load(std::memory_order_relaxed); v != 0) return v;  // another thread did it
-  // A state's successors are contiguous: start a new chunk if they do not fit.
+  // A state's successors are contiguous: start a new chunk if they do not
+  // fit, and give more than a chunk's worth one array over several chunks.
   size_t first = succ_size_;
   if (first % kSuccChunk + n > kSuccChunk) first = (first / kSuccChunk + 1) * kSuccChunk;
   const size_t chunk = first / kSuccChunk;
-  if (chunk >= kMaxChunks) throw std::length_error("state graph: too many successors");
-  if (succ_chunks_[chunk].load(std::memory_order_relaxed) == nullptr)
-    succ_chunks_[chunk].store(new Successor[kSuccChunk], std::memory_order_release);
+  const size_t spans = n > kSuccChunk ? (n + kSuccChunk - 1) / kSuccChunk : 1;
+  if (chunk + spans > kMaxChunks)
+    throw std::length_error("state graph: more than " + std::to_string(kMaxChunks * kSuccChunk) +
+                            " successors stored (the search's states have too many applicable actions)");
+  if (succ_chunks_[chunk].load(std::memory_order_relaxed) == nullptr) {
+    succ_arrays_.emplace_back(new Successor[spans * kSuccChunk]);
+    for (size_t j = 0; j < spans; ++j)
+      succ_chunks_[chunk + j].store(succ_arrays_.back().get() + j * kSuccChunk, std::memory_order_release);
+  }
   Successor* out = succ_chunks_[chunk].load(std::memory_order_relaxed) + first % kSuccChunk;
   // The table slots are fetched together (cache misses into a large table).
   for (size_t k = 0; k < n; ++k) __builtin_prefetch(&table_[hashes[k] & (table_.size() - 1)]);
   for (size_t k = 0; k < n; ++k) out[k] = Successor{acts[k], insert_locked(children.data() + k * w, hashes[k])};
   succ_size_ = first + n;
-  const uint64_t v = ((static_cast<uint64_t>(first) + 1) << 16) | static_cast<uint64_t>(n);
+  const uint64_t v = ((static_cast<uint64_t>(first) + 1) << 32) | static_cast<uint64_t>(n);
   slot.store(v, std::memory_order_release);
   return v;
 }

@@ -69,11 +69,13 @@ class StateGraph {
     return info_chunks_[static_cast<size_t>(id) >> kChunkBits].load(std::memory_order_acquire)
         [static_cast<size_t>(id) & (kChunk - 1)];
   }
-  // info value: ((first successor index + 1) << 16) | count; 0 = not expanded.
+  // info value: ((first successor index + 1) << 32) | count; 0 = not expanded.
+  // A state's successors are contiguous: more than a chunk's worth get an
+  // array of their own spanning several chunk indices.
   std::span<const Successor> view(uint64_t v) const {
-    const size_t first = (v >> 16) - 1;
+    const size_t first = (v >> 32) - 1;
     const Successor* chunk = succ_chunks_[first / kSuccChunk].load(std::memory_order_acquire);
-    return {chunk + first % kSuccChunk, static_cast<size_t>(v & 0xffff)};
+    return {chunk + first % kSuccChunk, static_cast<size_t>(v & 0xffffffffu)};
   }
   uint64_t expand(int id);
   int find_locked(const uint64_t* s, uint64_t h) const;
@@ -87,7 +89,8 @@ class StateGraph {
   // Fixed directories of chunk pointers, so readers never see them move.
   std::unique_ptr<std::atomic<uint64_t*>[]> state_chunks_;
   std::unique_ptr<std::atomic<std::atomic<uint64_t>*>[]> info_chunks_;
-  std::unique_ptr<std::atomic<Successor*>[]> succ_chunks_;
+  std::unique_ptr<std::atomic<Successor*>[]> succ_chunks_;  // pointers into succ_arrays_
+  std::vector<std::unique_ptr<Successor[]>> succ_arrays_;   // owns the successors (guarded by mutex_)
   size_t succ_size_ = 0;  // successors stored (index of the next free slot)
 
   mutable util::SpinMutex mutex_;       // guards everything below and all writes
