@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -18,6 +19,7 @@
 #include <semaphore>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <variant>
 
 #include <httplib.h>
@@ -124,6 +126,8 @@ class ConnectionStream : public httplib::Stream {
   }
   std::string_view ahead() const { return ahead_; }
   bool past_deadline() const { return Clock::now() >= read_deadline_; }
+  // Waits until bytes (or the end of the stream) can be read, up to the deadline.
+  bool readable() const { return wait_for(fd_, POLLIN, read_deadline_); }
 
  private:
   ssize_t receive(char* ptr, size_t size) {
@@ -238,9 +242,11 @@ class ConnectionPool : public httplib::TaskQueue {
 
 // Open connections, in all and per client address. A connection is idle
 // until its request head has arrived; when a new connection finds the table
-// full, the oldest idle connection of the client holding the most (of the
-// same client, when that client is at its own limit) is dropped for it, so
-// that connections opened and left silent cannot lock others out.
+// full, an idle connection is dropped for it (of the same client, when that
+// client is at its own limit), so that connections opened and left silent
+// cannot lock others out: a silent one first (nothing received, nothing
+// waiting), of the client holding the most idle connections (a player has
+// one at most, for a moment), the oldest among equals.
 class ConnectionTable {
  public:
   ConnectionTable(int max_total, int max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}
@@ -257,8 +263,13 @@ class ConnectionTable {
     ++per_client_[client];
     ++total_;
     const uint64_t id = next_id_++;
-    open_[id] = Conn{fd, client, Clock::now(), true, false};
+    open_[id] = Conn{fd, client, Clock::now(), true, false, false};
     return id;
+  }
+  // Its first bytes have arrived: not silent.
+  void heard(uint64_t id) {
+    std::lock_guard lock(m_);
+    if (auto it = open_.find(id); it != open_.end()) it->second.heard = true;
   }
   // Its request head has arrived (or it ended): no longer a connection to drop.
   // Called before the connection's socket is closed.
@@ -284,8 +295,13 @@ class ConnectionTable {
     int fd;
     std::string client;
     Clock::time_point since;
-    bool idle, dropped;
+    bool idle, dropped, heard;
   };
+  // Nothing received from it, and nothing waiting to be read.
+  static bool silent(const Conn& c) {
+    int waiting = 0;
+    return !c.heard && ::ioctl(c.fd, FIONREAD, &waiting) == 0 && waiting == 0;
+  }
   void release_locked(const std::string& client) {
     --total_;
     if (--per_client_[client] <= 0) per_client_.erase(client);
@@ -295,15 +311,19 @@ class ConnectionTable {
   // is none. Its thread sees the end of the stream and closes it; the socket
   // is still open here, since a connection settles before it is closed.
   bool drop_oldest_idle_locked(const std::string* client) {
+    std::map<std::string, int> idle_of;  // idle connections per client
+    for (const auto& [id, c] : open_)
+      if (c.idle && !c.dropped) ++idle_of[c.client];
     Conn* victim = nullptr;
+    bool victim_silent = false;
     for (auto& [id, c] : open_) {
       if (!c.idle || c.dropped || (client && c.client != *client)) continue;
-      if (!victim) {
+      const bool quiet = silent(c);
+      const auto rank = std::tuple(quiet, idle_of[c.client], Clock::time_point::max() - c.since);
+      if (!victim || rank > std::tuple(victim_silent, idle_of[victim->client], Clock::time_point::max() - victim->since)) {
         victim = &c;
-        continue;
+        victim_silent = quiet;
       }
-      const int held = per_client_[c.client], victim_held = per_client_[victim->client];
-      if (held > victim_held || (held == victim_held && c.since < victim->since)) victim = &c;
     }
     if (!victim) return false;
     ::shutdown(victim->fd, SHUT_RDWR);
@@ -355,8 +375,16 @@ class GuardedServer : public httplib::Server {
     RequestHead head;
     size_t head_bytes = 0;
     HeadScan scan;
-    while ((scan = scan_head(strm.ahead(), head, head_bytes)) == HeadScan::incomplete)
+    bool heard = false;
+    while ((scan = scan_head(strm.ahead(), head, head_bytes)) == HeadScan::incomplete) {
+      // Said heard while its first bytes still wait in the socket, so that
+      // it never looks silent to a newcomer.
+      if (!heard && strm.readable()) {
+        table_.heard(slot.id);
+        heard = true;
+      }
       if (!strm.read_ahead(kMaxHead + 1 - std::min(kMaxHead, strm.ahead().size()))) break;
+    }
     table_.settled(slot.id);  // from here on it is not dropped for others (and may be closed)
     std::optional<Reply> reject;
     switch (scan) {
