@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "engine/json.hpp"
@@ -115,7 +116,13 @@ PlaySetup text_setup(const std::string& domain_pddl, const std::string& problem_
     return pack;
   });
   s.task = field("problem", [&] {
-    return data::ground_problem_text(*s.pack, domain, problem_pddl, "problem", limits.text_max_ground_actions);
+    data::GroundingLimits grounding(limits.text_max_ground_actions);
+    grounding.deadline = std::chrono::steady_clock::now() +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(limits.text_ground_seconds));
+    grounding.deadline_label = "field 'problem': grounding stopped at the server's limit of " +
+                               std::to_string(static_cast<int>(limits.text_ground_seconds)) + " s";
+    return data::ground_problem_text(*s.pack, domain, problem_pddl, "problem", grounding);
   });
   s.problem = s.task->problem().name;
   field("problem", [&] {

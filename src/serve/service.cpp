@@ -23,6 +23,10 @@ using nlohmann::json;
 
 namespace {
 
+// Set while a request works on a problem sent as PDDL text (creating its
+// session, or any request on it).
+thread_local bool t_text_problem = false;
+
 // A request error with its HTTP status.
 struct HttpError : std::runtime_error {
   int status;
@@ -367,6 +371,7 @@ Reply Service::create(const std::string& body, const std::string& client) {
   if (std::find(known.begin(), known.end(), method) == known.end())
     throw HttpError(400, "field 'method': unknown method '" + echo(method) + "' (known: clips, lang_only, action_only, literal)");
   const bool from_text = j.contains("domain");
+  t_text_problem = from_text;
   std::string dataset, problem, plan, domain_text, pack_text;
   Served* served = nullptr;
   if (from_text) {
@@ -485,6 +490,7 @@ Reply Service::on_session(const std::string& method, const std::string& id, cons
     return json_reply(200, json{{"deleted", id}});
   }
   auto entry = find(id);
+  t_text_problem = entry->dataset.empty();
   std::lock_guard busy(entry->mutex);
   if (!entry->session) throw HttpError(404, "no session '" + echo(id) + "' (deleted)");
   entry->last_used = now_().time_since_epoch().count();
@@ -591,6 +597,7 @@ std::string Service::allowed_methods(const std::string& path) {
 }
 
 Reply Service::handle(const Request& request) {
+  t_text_problem = false;
   const std::string method = request.method == "HEAD" ? "GET" : request.method;  // the front end drops the body
   const std::string& path = request.path;
   const std::string& body = request.body;
@@ -639,6 +646,9 @@ Reply Service::handle(const Request& request) {
     return error_reply(503, e.what());
   } catch (const std::bad_alloc&) {
     return error_reply(503, "the server ran out of memory for this request; try a smaller problem or later");
+  } catch (const CallStoppedError& e) {
+    // A request past the server's time limits (grounding a problem sent as text).
+    return error_reply(422, std::string("the problem exceeds a limit of this server: ") + e.what());
   } catch (const std::length_error& e) {
     // A size limit of the planner's tables (e.g. more than 65,535 actions
     // applicable in one state): the problem is too large for this server.
@@ -652,6 +662,9 @@ Reply Service::handle(const Request& request) {
       return error_reply(500, std::string("internal error: ") + e.what());
     return error_reply(503, std::string("the server is out of resources: ") + e.what());
   } catch (const std::exception& e) {
+    // A problem sent as PDDL text is the client's: whatever the planner
+    // throws on it is a limit the problem exceeds, not the server's fault.
+    if (t_text_problem) return error_reply(422, std::string("the problem exceeds a limit of this server: ") + e.what());
     return error_reply(500, std::string("internal error: ") + e.what());
   }
 }
