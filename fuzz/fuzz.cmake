@@ -3,7 +3,8 @@
 # CLIPS_FUZZ_SMOKE_TARGETS are the ones `make fuzz-build` (and so `make test`)
 # builds for the FuzzSmoke run; the others need much more of the code base
 # under clang + ASan and are built by `make fuzz` only (target fuzz_targets_all).
-set(CLIPS_FUZZ_SMOKE_TARGETS sexpr pddl plan dataset goalset pack utterance completions chat)
+set(CLIPS_FUZZ_SMOKE_TARGETS sexpr pddl plan dataset goalset pack pack_roles cost_profiles quantified_goals utterance
+    completions chat)
 set(CLIPS_FUZZ_TARGETS ${CLIPS_FUZZ_SMOKE_TARGETS} serve stdio bench_merge)
 set(clips_fuzz_lib_sexpr clips_pddl)
 set(clips_fuzz_lib_pddl clips_pddl)
@@ -11,6 +12,9 @@ set(clips_fuzz_lib_plan clips_pddl)
 set(clips_fuzz_lib_dataset clips_data)
 set(clips_fuzz_lib_goalset clips_data)
 set(clips_fuzz_lib_pack clips_domains)
+set(clips_fuzz_lib_pack_roles clips_domains)
+set(clips_fuzz_lib_cost_profiles clips_domains)
+set(clips_fuzz_lib_quantified_goals clips_data)
 set(clips_fuzz_lib_utterance clips_lm)
 set(clips_fuzz_lib_completions clips_lm)
 set(clips_fuzz_lib_chat clips_lm)

@@ -15,7 +15,8 @@ fuzz_dir=$(cd "$(dirname "$0")" && pwd)
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   # The fast targets first; serve (built by `make fuzz` only) last.
-  targets=(sexpr chat completions dataset goalset pack plan utterance pddl serve stdio bench_merge)
+  targets=(sexpr chat completions dataset goalset pack pack_roles cost_profiles quantified_goals plan utterance pddl serve
+           stdio bench_merge)
 fi
 mkdir -p "$build/logs"
 status=0
@@ -25,11 +26,11 @@ for t in "${targets[@]}"; do
         -artifact_prefix="$build/artifacts/$t/" -print_final_stats=1)
   [ "$runs" -gt 0 ] && args+=(-runs="$runs")
   case $t in
-    sexpr|pddl|plan) args+=(-dict="$fuzz_dir/dict/pddl.dict") ;;
+    sexpr|pddl|plan|quantified_goals) args+=(-dict="$fuzz_dir/dict/pddl.dict") ;;
     serve) args+=(-dict="$fuzz_dir/dict/serve.dict") ;;
     stdio) args+=(-dict="$fuzz_dir/dict/stdio.dict") ;;
     goalset) args+=(-dict="$fuzz_dir/dict/goalset.dict") ;;
-    pack) args+=(-dict="$fuzz_dir/dict/pack.dict") ;;
+    pack|pack_roles|cost_profiles) args+=(-dict="$fuzz_dir/dict/pack.dict") ;;
     bench_merge) args+=(-dict="$fuzz_dir/dict/bench_merge.dict") ;;
   esac
   echo "fuzz: $build/${t}_fuzz ${args[*]}" | tee "$build/logs/$t.log"

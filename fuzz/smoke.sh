@@ -28,8 +28,10 @@ status=0
 for t in $targets; do
   mkdir -p "$scratch/$t"
   dict=()
-  [ "$t" = pddl ] || [ "$t" = sexpr ] || [ "$t" = plan ] && dict=(-dict="$fuzz_dir/dict/pddl.dict")
-  [ "$t" = pack ] && dict=(-dict="$fuzz_dir/dict/pack.dict")
+  case $t in
+    pddl|sexpr|plan|quantified_goals) dict=(-dict="$fuzz_dir/dict/pddl.dict") ;;
+    pack|pack_roles|cost_profiles) dict=(-dict="$fuzz_dir/dict/pack.dict") ;;
+  esac
   [ "$t" = goalset ] && dict=(-dict="$fuzz_dir/dict/goalset.dict")
   if ! "$bin_dir/${t}_fuzz" "$scratch/$t" "$fuzz_dir/corpus/$t" "${dict[@]}" -max_total_time="$seconds" \
       -rss_limit_mb=2048 -timeout=1 -artifact_prefix="$scratch/$t/" -print_final_stats=1 \

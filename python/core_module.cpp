@@ -57,7 +57,40 @@ T cast_option(const char* name, py::handle v, const char* expected) {
   }
 }
 
-std::string text_option(const char* name, py::handle v) { return cast_option<std::string>(name, v, "str"); }
+// A str argument as UTF-8. `what` names it ("hear(): utterance"). A str that
+// UTF-8 cannot encode (a lone surrogate, '\ud800') is a ValueError naming it,
+// not pybind11's "Unable to cast".
+std::string text_arg(const std::string& what, py::handle v) {
+  if (!py::isinstance<py::str>(v)) throw py::type_error(what + ": expected str, got " + type_name(v));
+  Py_ssize_t n = 0;
+  const char* bytes = PyUnicode_AsUTF8AndSize(v.ptr(), &n);
+  if (!bytes) {
+    PyErr_Clear();
+    throw clips::InputError(what + ": the text holds a lone surrogate (such as '\\ud800'), which is not a character "
+                                   "and cannot be encoded as UTF-8");
+  }
+  return std::string(bytes, static_cast<size_t>(n));
+}
+
+// An int argument (anything with __index__ but a bool) as a C++ int; an int
+// beyond that range, however large, is `out_of_range`'s ValueError.
+int index_arg(const std::string& what, py::handle v, const std::string& out_of_range) {
+  if (py::isinstance<py::bool_>(v) || !py::hasattr(v, "__index__"))
+    throw py::type_error(what + ": expected an int, got " + type_name(v));
+  const py::object i = v.attr("__index__")();
+  int overflow = 0;
+  const long long x = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
+  if (x == -1 && PyErr_Occurred()) throw py::error_already_set();
+  if (overflow != 0 || x < INT_MIN || x > INT_MAX)
+    throw clips::InputError(out_of_range + " " + std::string(py::str(i)));
+  return static_cast<int>(x);
+}
+
+std::string text_option(const char* name, py::handle v) {
+  if (!py::isinstance<py::str>(v))
+    throw py::type_error(std::string("option '") + name + "': expected str, got " + type_name(v));
+  return text_arg(std::string("option '") + name + "'", v);
+}
 
 // An int option in [lo, hi]; a bool is a TypeError, an int out of range
 // (however large) an InputError (a ValueError).
@@ -92,7 +125,12 @@ double float_option(const char* name, py::handle v, double lo = -HUGE_VAL, doubl
 std::vector<std::string> list_option(const char* name, py::handle v) {
   if (py::isinstance<py::str>(v))
     throw py::type_error(std::string("option '") + name + "': expected a list of str, got one str");
-  return cast_option<std::vector<std::string>>(name, v, "a list of str");
+  if (!py::isinstance<py::sequence>(v))
+    throw py::type_error(std::string("option '") + name + "': expected a list of str, got " + type_name(v));
+  std::vector<std::string> out;
+  for (py::handle item : py::reinterpret_borrow<py::sequence>(v))
+    out.push_back(text_arg(std::string("option '") + name + "' item", item));
+  return out;
 }
 
 
@@ -226,8 +264,9 @@ std::string options_doc() {
 
 // A str or os.PathLike (pathlib.Path) as a path.
 std::string path_arg(const char* name, py::handle v) {
-  if (py::isinstance<py::str>(v)) return py::cast<std::string>(v);
-  if (py::hasattr(v, "__fspath__")) return py::cast<std::string>(py::module_::import("os").attr("fspath")(v));
+  if (py::isinstance<py::str>(v)) return text_arg(std::string("argument '") + name + "'", v);
+  if (py::hasattr(v, "__fspath__"))
+    return text_arg(std::string("argument '") + name + "'", py::module_::import("os").attr("fspath")(v));
   throw py::type_error(std::string("argument '") + name + "': expected str or os.PathLike, got " + type_name(v));
 }
 
@@ -364,6 +403,58 @@ struct PySession {
   // The running call's cancellation flag (null between calls): cancel(),
   // from another Python thread, raises it. Read and written under the GIL.
   std::shared_ptr<std::atomic<bool>> cancel_flag;
+  // Held for the whole of every call but cancel(): calls from several
+  // threads run one after the other (the engine is not thread-safe, and
+  // calls release the GIL while they run).
+  std::shared_ptr<std::timed_mutex> busy = std::make_shared<std::timed_mutex>();
+  std::shared_ptr<std::atomic<std::thread::id>> busy_owner = std::make_shared<std::atomic<std::thread::id>>();
+};
+
+// `self` of a Session method. Session.__new__(Session) alone (as pickle does
+// before __setstate__) makes an object whose C++ part was never built, which
+// pybind11 would hand over as uninitialised memory: every method takes
+// `self` as a handle and checks it here.
+PySession& opened(py::handle self) {
+  if (!py::isinstance<PySession>(self))
+    throw py::type_error("expected a clips_assist.Session, got " + type_name(self));
+  auto* inst = reinterpret_cast<py::detail::instance*>(self.ptr());
+  const py::detail::value_and_holder vh = inst->get_value_and_holder(py::detail::get_type_info(typeid(PySession)));
+  if (!vh.holder_constructed())
+    throw py::type_error("this Session was never opened: make sessions with Session.open_dataset(...) or "
+                         "Session.open_domain(...) (Session.__new__ alone makes an empty shell)");
+  return *vh.value_ptr<PySession>();
+}
+
+// An opened session, held for one call: a call from another thread waits
+// (without the GIL, Ctrl-C still interrupting it) until this one is done.
+class Held {
+ public:
+  explicit Held(py::handle self) : ps_(&opened(self)), busy_(ps_->busy), owner_(ps_->busy_owner) {
+    if (owner_->load() == std::this_thread::get_id())
+      throw py::value_error("this Session is already running a call on this thread (a call from inside a call)");
+    while (!busy_->try_lock()) {
+      bool got;
+      {
+        py::gil_scoped_release unlocked;
+        got = busy_->try_lock_for(std::chrono::milliseconds(20));
+      }
+      if (got) break;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+    owner_->store(std::this_thread::get_id());
+  }
+  ~Held() {
+    owner_->store(std::thread::id());
+    busy_->unlock();
+  }
+  Held(const Held&) = delete;
+  Held& operator=(const Held&) = delete;
+  PySession& operator*() const { return *ps_; }
+
+ private:
+  PySession* ps_;
+  std::shared_ptr<std::timed_mutex> busy_;
+  std::shared_ptr<std::atomic<std::thread::id>> owner_;
 };
 
 std::shared_ptr<clips::Session> open_engine(const Opener& op, const clips::SessionOptions& o) {
@@ -606,8 +697,9 @@ PYBIND11_MODULE(_core, m) {
                         "during a call raises KeyboardInterrupt and leaves the session as it was.")
       .def_static(
           "open_dataset",
-          [](py::object dataset, const std::string& problem, const py::kwargs& kwargs) {
+          [](py::object dataset, py::object problem_arg, const py::kwargs& kwargs) {
             const std::string dir = absolute(path_arg("dataset", dataset));
+            const std::string problem = text_arg("open_dataset(): problem", problem_arg);
             auto o = session_options(kwargs, "open_dataset");
             return open_session(Opener{"dataset", dir, problem, ""}, given_options(kwargs), std::move(o));
           },
@@ -659,17 +751,18 @@ PYBIND11_MODULE(_core, m) {
               .c_str())
       .def(
           "observe",
-          [](PySession& ps, py::object action, py::object time_limit) {
+          [](py::handle self, py::object action, py::object time_limit) {
+            Held held(self);
+            PySession& ps = *held;
             const clips::CallLimits limits = call_limits(time_limit);
             // A str is PDDL text, an int (not a bool) an id of applicable_actions().
             if (py::isinstance<py::str>(action))
-              return step_call(ps, Event{false, py::cast<std::string>(action)}, limits);
+              return step_call(ps, Event{false, text_arg("observe(): action", action)}, limits);
             if (py::isinstance<py::bool_>(action) || !py::hasattr(action, "__index__"))
               throw py::type_error("observe(): expected the action as PDDL text (str) or an action id (int), got " +
                                    type_name(action));
-            const long long id = py::cast<long long>(action.attr("__index__")());
-            if (id < INT_MIN || id > INT_MAX) throw clips::InputError("unknown action id " + std::to_string(id));
-            const std::string text = engine(ps).action_name(static_cast<int>(id));
+            const int id = index_arg("observe(): action", action, "observe(): action: unknown action id");
+            const std::string text = engine(ps).action_name(id);
             return step_call(ps, Event{false, text}, limits);
           },
           py::arg("action"), py::kw_only(), py::arg("time_limit") = py::none(),
@@ -680,10 +773,12 @@ PYBIND11_MODULE(_core, m) {
           "takes longer than time_limit seconds; the session is then unchanged.")
       .def(
           "hear",
-          [](PySession& ps, py::object utterance, py::object time_limit) {
+          [](py::handle self, py::object utterance, py::object time_limit) {
+            Held held(self);
+            PySession& ps = *held;
             if (!py::isinstance<py::str>(utterance))
               throw py::type_error("hear(): expected the utterance as str, got " + type_name(utterance));
-            return step_call(ps, Event{true, py::cast<std::string>(utterance)}, call_limits(time_limit));
+            return step_call(ps, Event{true, text_arg("hear(): utterance", utterance)}, call_limits(time_limit));
           },
           py::arg("utterance"), py::kw_only(), py::arg("time_limit") = py::none(),
           "hear(utterance, *, time_limit=None) -> dict\n\n"
@@ -692,9 +787,12 @@ PYBIND11_MODULE(_core, m) {
           "TimeLimitError when the call takes longer than time_limit seconds (the session is then unchanged).")
       .def(
           "posterior",
-          [](PySession& ps, std::optional<std::string> method) {
+          [](py::handle self, py::object method) {
+            Held held(self);
+            PySession& ps = *held;
             clips::Session& s = engine(ps);
-            const clips::Method m = method ? clips::parse_method(*method) : ps.parsed.method;
+            const clips::Method m =
+                method.is_none() ? ps.parsed.method : clips::parse_method(text_arg("posterior(): method", method));
             return to_py(s.posterior(m), m);
           },
           py::arg("method") = py::none(),
@@ -705,7 +803,9 @@ PYBIND11_MODULE(_core, m) {
           "under the session's method or another ('clips', 'lang_only', 'action_only').")
       .def(
           "assist",
-          [](PySession& ps, py::object time_limit) {
+          [](py::handle self, py::object time_limit) {
+            Held held(self);
+            PySession& ps = *held;
             return to_py(session_call(ps, call_limits(time_limit),
                                       [](clips::Session& s, const clips::CallLimits& l) { return s.assist(l); }));
           },
@@ -717,7 +817,9 @@ PYBIND11_MODULE(_core, m) {
           "The posterior is not changed. TimeLimitError when the decision takes longer than time_limit seconds.")
       .def(
           "undo",
-          [](PySession& ps, py::object time_limit) {
+          [](py::handle self, py::object time_limit) {
+            Held held(self);
+            PySession& ps = *held;
             const bool undone = session_call(ps, call_limits(time_limit),
                                              [](clips::Session& s, const clips::CallLimits& l) { return s.undo(l); });
             if (undone) {
@@ -734,7 +836,9 @@ PYBIND11_MODULE(_core, m) {
           "TimeLimitError past time_limit, CancelledError on cancel(), the session then unchanged.")
       .def(
           "reset",
-          [](PySession& ps) {
+          [](py::handle self) {
+            Held held(self);
+            PySession& ps = *held;
             session_call(ps, {}, [](clips::Session& s, const clips::CallLimits&) {
               s.reset();
               return true;
@@ -744,17 +848,21 @@ PYBIND11_MODULE(_core, m) {
           "reset() -> None\n\nBack to the initial state with nothing observed or heard (t = 0).")
       .def(
           "goal_holds",
-          [](PySession& ps, py::object goal) {
+          [](py::handle self, py::object goal) {
+            Held held(self);
+            PySession& ps = *held;
             if (!py::isinstance<py::str>(goal))
               throw py::type_error("goal_holds(): expected the goal's label as str, got " + type_name(goal));
-            return engine(ps).goal_holds(py::cast<std::string>(goal));
+            return engine(ps).goal_holds(text_arg("goal_holds(): goal", goal));
           },
           py::arg("goal"),
           "goal_holds(goal) -> bool\n\nWhether the candidate goal with this label (e.g. 'gem2', as posterior()'s "
           "goals name it) holds in the current state; InputError for a label that is not a candidate.")
       .def(
           "cancel",
-          [](PySession& ps) {
+          [](py::handle self) {
+            // Not held: it reaches the call that holds the session now.
+            PySession& ps = opened(self);
             if (!ps.cancel_flag) return false;
             ps.cancel_flag->store(true);
             return true;
@@ -763,11 +871,13 @@ PYBIND11_MODULE(_core, m) {
           "thread, to stop: it raises CancelledError and leaves the session exactly as it was before it. True when "
           "a call was running; a call started afterwards is not affected.")
       .def(
-          "state", [](PySession& ps) { return engine(ps).state(); },
+          "state", [](py::handle self) { return engine(*Held(self)).state(); },
           "state() -> str\n\nThe current state, printable (an ASCII map for Doors-Keys-Gems).")
       .def(
           "scene_png",
-          [](PySession& ps) {
+          [](py::handle self) {
+            Held held(self);
+            PySession& ps = *held;
             const clips::Session& s = engine(ps);
             const std::string png = scene_png(clips::SessionInternals::pack(s), clips::SessionInternals::task(s),
                                               clips::SessionInternals::state(s));
@@ -776,9 +886,11 @@ PYBIND11_MODULE(_core, m) {
           "scene_png() -> bytes\n\nThe current state drawn as a PNG image (the grid of Doors-Keys-Gems, the "
           "fixtures of a card scene), as `clips render` draws it. A pack whose scene is text has no picture: "
           "InputError (print the session instead).")
-      .def("__str__", [](PySession& ps) { return engine(ps).state(); })
+      .def("__str__", [](py::handle self) { return engine(*Held(self)).state(); })
       .def("__repr__",
-           [](PySession& ps) {
+           [](py::handle self) {
+             Held held(self);
+             PySession& ps = *held;
              const clips::Session& s = engine(ps);
              std::string where = ps.opener.kind == "dataset" ? "problem=" + std::string(py::repr(py::str(ps.opener.b)))
                                  : ps.opener.kind == "domain"
@@ -790,7 +902,9 @@ PYBIND11_MODULE(_core, m) {
            })
       .def(
           "trace",
-          [](PySession& ps) {
+          [](py::handle self) {
+            Held held(self);
+            PySession& ps = *held;
             py::list out;
             for (const auto& st : engine(ps).trace()) out.append(to_py(st, ps.parsed.method));
             return out;
@@ -799,17 +913,19 @@ PYBIND11_MODULE(_core, m) {
           "Every step so far: trace()[t] after t actions, with 't', 'action', 'agent', 'evidence', 'utterances', "
           "'posterior' and 'seconds'.")
       .def_property_readonly(
-          "t", [](PySession& ps) { return engine(ps).t(); }, "Actions observed so far.")
+          "t", [](py::handle self) { return engine(*Held(self)).t(); }, "Actions observed so far.")
       .def_property_readonly(
-          "domain", [](PySession& ps) { return engine(ps).domain(); }, "The PDDL domain's name.")
+          "domain", [](py::handle self) { return engine(*Held(self)).domain(); }, "The PDDL domain's name.")
       .def_property_readonly(
-          "active_agent", [](PySession& ps) { return engine(ps).active_agent(); }, "Who is to move.")
+          "active_agent", [](py::handle self) { return engine(*Held(self)).active_agent(); }, "Who is to move.")
       .def_property_readonly(
-          "assistant_turn", [](PySession& ps) { return engine(ps).assistant_turn(); },
+          "assistant_turn", [](py::handle self) { return engine(*Held(self)).assistant_turn(); },
           "True when the assistant is to move.")
       .def(
           "applicable_actions",
-          [](PySession& ps) {
+          [](py::handle self) {
+            Held held(self);
+            PySession& ps = *held;
             py::list out;
             for (const auto& a : engine(ps).applicable_actions()) {
               py::dict d;
@@ -822,16 +938,18 @@ PYBIND11_MODULE(_core, m) {
           "applicable_actions() -> list[dict]\n\nThe active agent's actions applicable now: [{'id', 'action'}].")
       .def(
           "action_name",
-          [](PySession& ps, py::object id) {
+          [](py::handle self, py::object id) {
+            Held held(self);
+            PySession& ps = *held;
             if (py::isinstance<py::bool_>(id) || !py::hasattr(id, "__index__"))
               throw py::type_error("action_name(): expected an action id (int), got " + type_name(id));
-            const long long x = py::cast<long long>(id.attr("__index__")());
-            if (x < INT_MIN || x > INT_MAX) throw clips::InputError("unknown action id " + std::to_string(x));
-            return engine(ps).action_name(static_cast<int>(x));
+            return engine(ps).action_name(index_arg("action_name(): action_id", id, "unknown action id"));
           },
           py::arg("action_id"), "action_name(action_id) -> str\n\nThe PDDL text of an action id.")
       .def(py::pickle(
-          [](const PySession& ps) {
+          [](py::handle self) {
+            Held held(self);
+            const PySession& ps = *held;
             py::list log;
             for (const auto& e : ps.log) log.append(py::make_tuple(e.utterance ? "hear" : "observe", e.text));
             return py::make_tuple(1, ps.opener.kind, ps.opener.a, ps.opener.b, ps.opener.c, ps.options, log);

@@ -37,6 +37,11 @@ extern const CLI::Validator NonNegativeInteger;  // 0, 1, ...
 extern const CLI::Validator HttpUrl;             // http://... or https://...
 extern const CLI::Validator PositiveSeconds;     // a finite number > 0
 extern const CLI::Validator SeedValue;           // 0 .. 2^64-1 (CLI11 would wrap -1 and 2^64 silently)
+extern const CLI::Validator NodeBudget;          // a search's expansion budget: 1 .. 2^30
+extern const CLI::Validator FiniteNumber;        // not NaN or an infinity (a Range lets NaN through)
+// Adds FiniteNumber to every floating-point option of `app` and its
+// subcommands, so that no number anywhere can be NaN or infinite.
+void require_finite_numbers(CLI::App& app);
 
 // --time-limit SECONDS of infer and assist: a wall-clock limit on `what`
 // (the session engine's CallLimits); reaching it exits with kExitLimit.

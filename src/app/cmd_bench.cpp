@@ -175,10 +175,14 @@ void register_particles(CLI::App* bench) {
   auto lm = std::make_shared<LmFlags>();
   auto out = std::make_shared<std::string>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
-  cmd->add_option("--particles", o->particles, "Particle counts to compare with exact inference (default 64,128,256)")
+  cmd->add_option("--particles", o->particles,
+                  "Particle counts to compare with exact inference (default 64,128,256; each at most 1000000)")
       ->delimiter(',')
-      ->check(PositiveInteger);
-  cmd->add_option("--seeds", o->seeds, "Particle seeds 1..S run per count and plan (default 3)")->check(PositiveInteger);
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 1000000));
+  cmd->add_option("--seeds", o->seeds, "Particle seeds 1..S run per count and plan (default 3, at most 1000)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 1000));
   add_particle_options(cmd, o->tuning, {"particles", "particle_seed"});  // as for `clips infer`
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
   auto* out_opt = cmd->add_option("--out", *out, "Also write every run and the summary as JSON to this file");
@@ -264,11 +268,13 @@ void register_bench(CLI::App& app) {
                 "P(g_true) against map side, number of goals and observed steps, on generated Doors-Keys-Gems sets; "
                 "writes DIR/scaling.csv and DIR/scaling.svg (--out, default docs/scaling)");
   cmd->add_flag("--quick", sc->quick, "With --scaling: three smaller points per axis");
-  cmd->add_option("--scaling-plans", sc->settings.plans, "With --scaling: plans per point (default 4)")
-      ->check(PositiveInteger);
+  cmd->add_option("--scaling-plans", sc->settings.plans, "With --scaling: plans per point (default 4, at most 10000)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 10000));
   cmd->add_option("--max-nodes", sc->settings.max_nodes,
                   "With --scaling: node budget of each lookahead search (default 2^18, as inference)")
-      ->check(PositiveInteger);
+      ->check(PositiveInteger)
+      ->check(NodeBudget);
   cmd->add_option("--point-seconds", sc->settings.point_seconds,
                   "With --scaling: no further plan of a point starts after this many seconds (default 300)")
       ->check(CLI::PositiveNumber);

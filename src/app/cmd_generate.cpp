@@ -63,20 +63,27 @@ void register_generate(CLI::App& app) {
   cmd->add_option("--keys", o->keys, "Keys (default 2)")->check(NonNegativeInteger);
   cmd->add_option("--doors", o->doors, "Locked doors, each on a chokepoint of a wall (default 2)")
       ->check(NonNegativeInteger);
-  cmd->add_option("--problems", o->problems, "Problems (maps) to draw (default 1)")->check(PositiveInteger);
-  cmd->add_option("--plans", o->plans, "Plans per problem (default 2)")->check(PositiveInteger);
+  cmd->add_option("--problems", o->problems, "Problems (maps) to draw (default 1, at most 1000)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--plans", o->plans, "Plans per problem (default 2, at most 100)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 100));
   cmd->add_option("--seed", o->seed, "Random seed (default 0); the same arguments and seed give the same files")
       ->check(SeedValue);
   cmd->add_option("--temperature", o->temperature,
                   "Boltzmann temperature of the sampled actions (default 0.5), or 'prior' to draw one per plan from "
                   "the pack's temperature prior (noisy: long plans)")
       ->check(TemperatureValue);
-  cmd->add_option("--max-steps", o->max_steps, "Longest sampled plan (default: the pack's horizon, 100 for mDKG)")
-      ->check(PositiveInteger);
+  cmd->add_option("--max-steps", o->max_steps,
+                  "Longest sampled plan (default: the pack's horizon, 100 for mDKG; at most 10000)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 10000));
   cmd->add_option("--max-nodes", o->max_nodes,
                   "Expansion budget per A* search of the simulated human's refinements (default 2^18); infer and "
                   "bench with the same --max-nodes to score the data with the model that drew it")
-      ->check(PositiveInteger);
+      ->check(PositiveInteger)
+      ->check(NodeBudget);
   cmd->add_option("--out", o->out, "Dataset folder to write")->required();
   cmd->add_flag("--force", o->force, "Replace the dataset in a non-empty --out folder");
   cmd->add_flag("-q,--quiet", o->quiet, "Print only the final line");

@@ -145,7 +145,8 @@ void register_infer(CLI::App& app) {
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
   cmd->add_option("--max-nodes", o->max_nodes, "Expansion budget per A* search in each refinement (default 2^18)")
-      ->check(PositiveInteger);
+      ->check(PositiveInteger)
+      ->check(NodeBudget);
   cmd->add_option("--heuristic", o->heuristic,
                   "Heuristic of the refinements (default: the domain pack's inference heuristic; an unknown name "
                   "lists the pack's heuristics)");

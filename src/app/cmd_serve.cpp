@@ -91,26 +91,45 @@ void register_serve(CLI::App& app) {
   cmd->add_option("--owner-token-file", o->owner_token_file,
                   "File whose first line is the owner token (at least 16 characters) that lists and deletes every "
                   "session; default: a random token printed at start");
-  cmd->add_option("--max-sessions", o->limits.max_sessions, "Live sessions at most (default 64; more: HTTP 503)")
-      ->check(PositiveInteger);
-  cmd->add_option("--max-body", o->limits.max_body_bytes, "Request body size limit in bytes (default 65536)")
-      ->check(PositiveInteger);
+  cmd->add_option("--max-sessions", o->limits.max_sessions,
+                  "Live sessions at most (default 64, at most 100000; when full, a new session replaces the idlest "
+                  "of the client holding the most, if idle for --evict-idle seconds; else HTTP 503)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--max-client-sessions", o->limits.max_client_sessions,
+                  "Live sessions one client address may hold (default 16; 0: no limit of its own; more: HTTP 429). "
+                  "Requests with the owner token are not counted")
+      ->check(NonNegativeInteger)
+      ->check(CLI::Range(0, 100000));
+  cmd->add_option("--evict-idle", o->limits.evict_idle_seconds,
+                  "Seconds a session must have been idle before a new session may replace it on a full server "
+                  "(default 120; 0: never)")
+      ->check(CLI::Range(0.0, 1e7));
+  cmd->add_option("--max-body", o->limits.max_body_bytes, "Request body size limit in bytes (default 65536, at most 64 MiB)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 64 << 20));
   cmd->add_option("--max-pddl-bytes", o->limits.max_pddl_bytes,
                   "Size limit of each PDDL or pack text of a session created from text (\"domain\", \"problem\", "
-                  "\"pack\"), in bytes (default 32768)")
-      ->check(PositiveInteger);
-  cmd->add_option("--idle-timeout", o->limits.idle_seconds, "Seconds after which an unused session is deleted (default 1800)")
-      ->check(PositiveSeconds);
+                  "\"pack\"), in bytes (default 32768, at most 16 MiB)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 16 << 20));
+  cmd->add_option("--idle-timeout", o->limits.idle_seconds,
+                  "Seconds after which an unused session is deleted (default 1800, at most 1e7)")
+      ->check(PositiveSeconds)
+      ->check(CLI::Range(0.0, 1e7));
   cmd->add_option("--max-nodes", o->limits.play.inference_nodes,
                   "Expansion budget per A* search when updating a belief (default 2^18)")
-      ->check(PositiveInteger);
+      ->check(PositiveInteger)
+      ->check(NodeBudget);
   cmd->add_option("--assist-nodes", o->limits.play.assist_nodes,
                   "Expansion budget per A* search of an assistance decision (default 2^16)")
-      ->check(PositiveInteger);
+      ->check(PositiveInteger)
+      ->check(NodeBudget);
   cmd->add_option("--max-seconds", o->limits.play.search_seconds, "Time budget per A* search (default 5)")
       ->check(PositiveSeconds);
-  cmd->add_option("--max-steps", o->limits.play.max_steps, "Actions per session at most (default 300)")
-      ->check(PositiveInteger);
+  cmd->add_option("--max-steps", o->limits.play.max_steps, "Actions per session at most (default 300, at most 100000)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--session-threads", o->limits.play.belief_threads,
                   "Threads refining each session's belief (default 1, as sessions already run in parallel; 0: all "
                   "cores, for one player at a time; at most 64)")

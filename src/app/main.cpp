@@ -14,6 +14,7 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "multimodal/multimodal.hpp"
+#include "language/lm/http_client.hpp"
 #include "language/lm/language_model.hpp"
 #include "util/error.hpp"
 #include "util/version.hpp"
@@ -99,14 +100,7 @@ const CLI::Validator SeedValue(
       return in + " is not a seed (an integer from 0 to 18446744073709551615)";
     },
     "SEED");
-const CLI::Validator HttpUrl(
-    [](std::string& in) -> std::string {
-      if (in.rfind("http://", 0) == 0 || in.rfind("https://", 0) == 0) {
-        if (in.size() > (in[4] == 's' ? 8u : 7u)) return {};
-      }
-      return "'" + in + "' is not an http:// or https:// URL";
-    },
-    "URL");
+const CLI::Validator HttpUrl([](std::string& in) -> std::string { return lm::base_url_problem(in); }, "URL");
 const CLI::Validator PositiveSeconds(
     [](std::string& in) -> std::string {
       char* end = nullptr;
@@ -115,6 +109,29 @@ const CLI::Validator PositiveSeconds(
       return in + " is not a positive number of seconds";
     },
     "SECONDS>0");
+// More expansions than this fill any machine's memory long before they end.
+const CLI::Validator NodeBudget(
+    [](std::string& in) -> std::string {
+      if (all_digits(in) && in.size() <= 11 && std::stoull(in) <= (1ull << 30)) return {};
+      return in + " is more than 2^30 (1073741824) expansions per search";
+    },
+    "<=2^30");
+const CLI::Validator FiniteNumber(
+    [](std::string& in) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(in.c_str(), &end);
+      // Only what reads as a number is judged here; CLI11 reports the rest.
+      if (end != in.c_str() && !std::isfinite(v)) return in + " is not a finite number";
+      return {};
+    },
+    "");
+
+void require_finite_numbers(CLI::App& app) {
+  for (CLI::Option* o : app.get_options())
+    if (o->get_type_name().rfind("FLOAT", 0) == 0) o->check(FiniteNumber);
+  for (CLI::App* sub : app.get_subcommands({})) require_finite_numbers(*sub);
+}
+
 void add_time_limit_option(CLI::App* cmd, std::optional<double>& seconds, const std::string& what) {
   cmd->add_option("--time-limit", seconds,
                   "Wall-clock limit in seconds for " + what + " (default: none); reaching it exits with status 5")
@@ -156,6 +173,7 @@ int main(int argc, char** argv) {
   register_render(app);
   register_serve(app);
   register_generate(app);
+  require_finite_numbers(app);  // NaN and infinities, for every number any subcommand reads
   const std::string exit_footer = "Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.";
   for (CLI::App* sub : app.get_subcommands({})) {
     sub->footer(exit_footer);

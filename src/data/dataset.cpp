@@ -1,4 +1,5 @@
 #include "data/dataset.hpp"
+#include "data/goal_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -542,6 +543,23 @@ std::shared_ptr<const pddl::Task> Dataset::task(const std::string& problem_id) c
   // with the same error).
   if (debug_load()) std::fprintf(stderr, "dataset: grounding problem %s\n", problem_id.c_str());
   auto t = ground_problem(*pack_, domain_, problem_path(problem_id), grounding_limits_);
+  // A candidate goal the data defines (goal sets, the problem's :goal) that
+  // no state can satisfy is a mistake: refused here, before inference plans
+  // for the impossible.
+  std::vector<GoalSpec> defined;
+  if (pack_->spec().goals.source == domains::GoalSource::GoalSets) {
+    if (auto set = goal_sets_.find(problem_id); set != goal_sets_.end())
+      for (const auto& l : set->second) defined.push_back({l, goal_defs_.at(l), goal_def_paths_.at(l)});
+  } else if (pack_->spec().goals.source == domains::GoalSource::ProblemGoal) {
+    defined = pack_->problem_goals(*t, problem_path(problem_id));
+  }
+  const pddl::State s0 = t->initial_state();
+  for (const GoalSpec& g : defined) {
+    const std::string why = why_goal_never_holds(*t, t->compile_text(g.condition, g.source), s0);
+    if (!why.empty())
+      throw InputError(SourceLoc{g.source, 0, 0}, "goal '" + g.label + "' can never hold in problem " + problem_id +
+                                                      ": " + why);
+  }
   slot->task = t;
   return t;
 }

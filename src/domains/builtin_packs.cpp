@@ -2,6 +2,7 @@
 // data/domains/<name>/pack.json, compiled in as well), and the table that
 // turns a pack file's "code" into a Pack.
 #include <algorithm>
+#include <map>
 #include <string_view>
 
 #include "domains/dkg_generate.hpp"
@@ -136,6 +137,37 @@ class DkgPack : public Pack {
   }
   std::vector<std::string> generated_kinds() const override { return {"gem", "key", "door"}; }
 
+  // The human's moves to the gem's cell through the walls (doors counted
+  // open), and the pick-up.
+  std::optional<int> min_principal_actions(const pddl::Task& task, const pddl::State& s,
+                                           const std::string& goal) const override {
+    const DkgWorld w(task);
+    const auto gem = task.find_object(goal);
+    if (!gem || std::find(w.gems().begin(), w.gems().end(), *gem) == w.gems().end()) return std::nullopt;
+    // Only when the human alone may hold it (else the robot could carry it over).
+    if (!task.domain().find_predicate("forbidden") ||
+        !task.test(s, task.atom("forbidden", {task.object_name(w.robot()), goal})))
+      return std::nullopt;
+    const Cell from = w.pos(s, w.human()), to = w.pos(s, *gem);
+    if (from.x < 1 || to.x < 1) return std::nullopt;  // held, or off the grid
+    const int width = w.width(), height = w.height();
+    std::vector<int> dist(static_cast<size_t>(width * height), -1);
+    auto at = [&](int x, int y) -> int& { return dist[static_cast<size_t>((y - 1) * width + (x - 1))]; };
+    std::vector<Cell> queue{from};
+    at(from.x, from.y) = 0;
+    for (size_t i = 0; i < queue.size(); ++i) {
+      const Cell c = queue[i];
+      if (c.x == to.x && c.y == to.y) return at(c.x, c.y) + 1;
+      for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const int x = c.x + dx, y = c.y + dy;
+        if (w.wall(x, y) || at(x, y) >= 0) continue;
+        at(x, y) = at(c.x, c.y) + 1;
+        queue.push_back(Cell{x, y});
+      }
+    }
+    return std::nullopt;  // walled off: reachability is checked elsewhere
+  }
+
   std::string object_list(const pddl::Task& task) const override {
     DkgWorld w(task);
     std::string out;
@@ -200,6 +232,35 @@ class VhPack : public Pack {
 };
 
 }  // namespace
+
+std::string code_misfit(const std::string& code, const pddl::Domain& d) {
+  struct Needs {
+    std::vector<const char*> types;
+    std::vector<std::pair<const char*, size_t>> predicates, functions;  // name, arity
+  };
+  static const std::map<std::string, Needs> needs = {
+      {"doors-keys-gems",
+       {{"agent", "human", "robot", "key", "door", "gem", "color", "physical"},
+        {{"has", 2}, {"locked", 1}, {"active", 1}, {"pickedup-by", 2}, {"unlocked-by", 2}, {"iscolor", 2}},
+        {{"walls", 0}, {"xloc", 1}, {"yloc", 1}}}},
+      {"virtual-home", {{"agent", "fixture", "item", "itype"}, {{"itemtype", 2}}, {}}},
+  };
+  const auto it = needs.find(code);
+  if (it == needs.end()) return "";
+  for (const char* t : it->second.types)
+    if (!d.find_type(t)) return std::string("no type '") + t + "'";
+  for (const auto& [name, arity] : it->second.predicates) {
+    const auto p = d.find_predicate(name);
+    if (!p || d.predicates[static_cast<size_t>(*p)].arg_types.size() != arity)
+      return "no predicate '" + std::string(name) + "' of " + std::to_string(arity) + " arguments";
+  }
+  for (const auto& [name, arity] : it->second.functions) {
+    const auto f = d.find_function(name);
+    if (!f || d.functions[static_cast<size_t>(*f)].arg_types.size() != arity)
+      return "no function (" + std::string(name) + (arity ? " ?o" : "") + ")";
+  }
+  return "";
+}
 
 PackPtr make_pack(PackSpec spec) {
   if (spec.code.empty()) return std::make_shared<const Pack>(std::move(spec));

@@ -392,6 +392,10 @@ std::optional<StripsExport> Pack::export_strips(const pddl::Task& task, const pd
   return export_grounded_strips(task, start, goal, costs);
 }
 
+std::optional<int> Pack::min_principal_actions(const pddl::Task&, const pddl::State&, const std::string&) const {
+  return std::nullopt;
+}
+
 std::optional<GeneratedProblem> Pack::generate_problem(const GenerateParams&, util::Rng&) const {
   throw InputError("pack " + spec_.name + " cannot generate problems (only packs with generator code can: "
                    "doors-keys-gems)");
@@ -417,9 +421,20 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
   auto type = [&](const std::string& field, const std::string& name) {
     if (!d.find_type(name)) fail(field, "the domain has no type '" + name + "'");
   };
+  if (const std::string misfit = code_misfit(spec.code, d); !misfit.empty())
+    fail("code", "\"" + spec.code + "\" is the compiled code of the paper's " + spec.code +
+                     " domain, and this domain does not have its shape (" + misfit + "): leave \"code\" out");
   // The turns and freezing clips adds (and the no-op, when it compiles the turns).
   const TaskTransform added = plan_task_transform(spec, d);
-  if (!added.add_noop) action("roles.noop_action", spec.roles.noop_action);
+  if (!added.add_noop) {
+    // The no-op is one agent's turn without a move, (wait ?a): the policies
+    // and cost profiles read it as a one-argument action of that agent.
+    const auto* noop = action("roles.noop_action", spec.roles.noop_action);
+    if (noop->param_types.size() != 1)
+      fail("roles.noop_action", "action '" + noop->name + "' has " + std::to_string(noop->param_types.size()) +
+                                    " parameters; the no-op takes exactly one, the agent that waits (as (" +
+                                    noop->name + " ?a - agent))");
+  }
   for (size_t i = 0; i < spec.grounding.schema_order.size(); ++i)
     action("grounding.schema_order[" + std::to_string(i) + "]", spec.grounding.schema_order[i]);
   if (spec.goals.source == GoalSource::Objects) type("goals.object_type", spec.goals.object_type);

@@ -373,6 +373,13 @@ class Pack {
   // that every candidate goal is solvable. Default: InputError, the pack
   // cannot generate problems.
   virtual std::optional<GeneratedProblem> generate_problem(const GenerateParams& params, util::Rng& rng) const;
+  // A lower bound on the principal's own actions before the candidate goal
+  // labelled `goal` holds, from `s` (nullopt: the pack cannot say). `clips
+  // generate` refuses at once a plan no sampled sequence could fit into its
+  // step limit (mDKG: the walk to the gem on the grid, doors open, and the
+  // pick-up).
+  virtual std::optional<int> min_principal_actions(const pddl::Task& task, const pddl::State& s,
+                                                   const std::string& goal) const;
   // The object kinds generate_problem counts (empty: it cannot generate).
   virtual std::vector<std::string> generated_kinds() const { return {}; }
 
@@ -466,6 +473,10 @@ struct DomainWithPack {
 DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir);
 // A pack from a spec: its "code" picks the compiled hooks ("" none).
 PackPtr make_pack(PackSpec spec);
+// What a domain lacks of what the compiled hooks of `code` read (the types,
+// predicates and functions of the paper's domain they were written for),
+// e.g. "no function (walls)"; "" when it has all of it (or `code` is "").
+std::string code_misfit(const std::string& code, const pddl::Domain& domain);
 // The compiled-in specs (equal to data/domains/<name>/pack.json; tested).
 std::vector<std::string> builtin_pack_names();
 std::optional<PackSpec> builtin_pack_spec(const std::string& name);

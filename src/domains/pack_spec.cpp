@@ -105,6 +105,8 @@ class Fields {
 
 // The largest cost a profile may give an action.
 constexpr double kMaxActionCost = 1e6;
+// The most cost profiles one rule may list (the paper's domains have 2 or 3).
+constexpr size_t kMaxProfilesPerRule = 32;
 
 model::CostProfile read_profile(const Fields& f, const json& v, const std::string& path) {
   f.only(v, path, {"name", "default", "costs", "comment"});
@@ -239,8 +241,19 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
       if (c[i].contains("tag")) rule.tag = f.text(c[i]["tag"], path + ".tag", true);
       if (!c[i].contains("profiles") || !c[i]["profiles"].is_array() || c[i]["profiles"].empty())
         f.fail(path + ".profiles", "expected a non-empty array of profiles");
-      for (size_t k = 0; k < c[i]["profiles"].size(); ++k)
-        rule.profiles.push_back(read_profile(f, c[i]["profiles"][k], path + ".profiles[" + std::to_string(k) + "]"));
+      // Every profile is one more hypothesis per goal, searched at every step.
+      if (c[i]["profiles"].size() > kMaxProfilesPerRule)
+        f.fail(path + ".profiles", std::to_string(c[i]["profiles"].size()) + " profiles; at most " +
+                                       std::to_string(kMaxProfilesPerRule) +
+                                       " (each is one more hypothesis per goal to plan for at every step)");
+      for (size_t k = 0; k < c[i]["profiles"].size(); ++k) {
+        const std::string at = path + ".profiles[" + std::to_string(k) + "]";
+        rule.profiles.push_back(read_profile(f, c[i]["profiles"][k], at));
+        for (size_t e = 0; e + 1 < rule.profiles.size(); ++e)
+          if (rule.profiles[e].name == rule.profiles.back().name)
+            f.fail(at + ".name", "\"" + rule.profiles.back().name + "\" is also the name of profiles[" +
+                                     std::to_string(e) + "]");
+      }
       if (c[i].contains("true_index"))
         rule.true_index = f.integer(c[i]["true_index"], path + ".true_index", 0,
                                     static_cast<long long>(rule.profiles.size()) - 1);

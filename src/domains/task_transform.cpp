@@ -227,8 +227,22 @@ void prepare_problem(const PackSpec& spec, const pddl::Domain& d, pddl::Problem&
   const std::string pack = " (pack " + (spec.source.empty() ? spec.name : spec.source) + ")";
   for (const auto& [field, name] : {std::pair<const char*, const std::string*>{"roles.principal", &r.principal},
                                     {"roles.assistant", &r.assistant}})
-    if (!problem.find_object(*name))
+  {
+    const auto o = problem.find_object(*name);
+    if (!o)
       throw InputError(loc, std::string(field) + " names '" + *name + "', which is not an object of this problem" + pack);
+    // An agent is the first argument of the actions it takes; an object no
+    // action can take as its first argument (a place, an item) never acts.
+    const TypeId type = problem.objects[static_cast<size_t>(*o)].type;
+    const bool acts = std::any_of(d.actions.begin(), d.actions.end(), [&](const pddl::ActionSchema& a) {
+      return !a.param_types.empty() && d.is_subtype(type, a.param_types[0]);
+    });
+    if (!acts)
+      throw InputError(loc, std::string(field) + " names '" + *name + "', of type '" +
+                                d.types[static_cast<size_t>(type)].name +
+                                "', which no action takes as its agent (first parameter): the roles must be agents" +
+                                pack);
+  }
   const TaskTransform& t = spec.transform;
   if (!t.compile_turns) return;
   const auto turn = d.find_predicate(r.turn_predicate), next = d.find_predicate(kNextTurn);

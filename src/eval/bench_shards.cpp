@@ -240,6 +240,8 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
 // goal one of the goals, probabilities within [0, 1] (NaN allowed where a
 // method had no value). A plan outcome written by `clips bench` always holds;
 // a hand-edited or damaged one is refused here, naming the field.
+constexpr double kMaxMeasure = 1e12;
+
 void check_plan(const FieldReader& in, const PlanOutcome& p, const std::string& at) {
   const size_t n = p.goals.size();
   auto probability = [&](double v, const std::string& field) {
@@ -262,12 +264,31 @@ void check_plan(const FieldReader& in, const PlanOutcome& p, const std::string& 
             fmt::format("{} is not the index of one of the plan's {} goals (0 to {})", p.true_goal, n, n - 1));
   for (size_t t = 0; t < p.goal_posterior_steps.size(); ++t)
     row(p.goal_posterior_steps[t], fmt::format("{}.goal_posterior_steps[{}]", at, t));
+  // Lengths, costs, their ratios and times: NaN (no value) or from 0 to a
+  // bound no run reaches (a plan of 100,000 steps at the largest action cost,
+  // 1e6, costs 1e11), so that an absurd value cannot blow up the report.
+  auto measure = [&](double v, const std::string& field) {
+    if (!(std::isnan(v) || (v >= 0 && v <= kMaxMeasure)))
+      in.fail(field, fmt::format("{} is not a length, cost or time (from 0 to {:g})", v, kMaxMeasure));
+  };
   for (size_t k = 0; k < p.methods.size(); ++k) {
     const MethodResult& m = p.methods[k];
     const std::string mat = fmt::format("{}.methods[{}]", at, k);
+    if (!is_method_name(m.method))
+      in.fail(mat + ".method", "'" + m.method.substr(0, 80) + "' is not a method clips bench runs");
     if (m.p_true_goal) probability(*m.p_true_goal, mat + ".p_true_goal");
     probability(m.precision, mat + ".precision");
     probability(m.recall, mat + ".recall");
+    probability(m.goal_success, mat + ".goal_success");
+    measure(m.plan_length, mat + ".plan_length");
+    measure(m.human_cost, mat + ".human_cost");
+    measure(m.plan_cost, mat + ".plan_cost");
+    measure(m.rel_plan_length, mat + ".rel_plan_length");
+    measure(m.rel_human_cost, mat + ".rel_human_cost");
+    measure(m.seconds, mat + ".seconds");
+    for (const auto& [option, v] : m.options) probability(v, mat + ".options." + option.substr(0, 80));
+    for (size_t d = 0; d < m.decision_seconds.size(); ++d)
+      measure(m.decision_seconds[d], fmt::format("{}.decision_seconds[{}]", mat, d));
     if (!m.goal_posterior.empty()) row(m.goal_posterior, mat + ".goal_posterior");
     for (size_t t = 0; t < m.posterior_steps.size(); ++t)
       row(m.posterior_steps[t], fmt::format("{}.posterior_steps[{}]", mat, t));

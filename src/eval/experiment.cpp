@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <set>
 
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
@@ -38,6 +39,17 @@ std::vector<std::string> known_methods(const domains::Pack& pack) {
   std::vector<std::string> m = default_methods(pack, true);
   m.push_back("multimodal");
   return m;
+}
+
+bool is_method_name(const std::string& name) {
+  static const std::set<std::string> names = [] {
+    std::set<std::string> n = {"clips", "lang_only", "action_only", "literal", "literal_efficient", "literal_naive",
+                               "multimodal"};
+    for (const char* base : {"clips", "lang_only", "action_only"})
+      for (const char* a : {"qmdp_online", "pibar"}) n.insert(std::string(base) + "/" + a);
+    return n;
+  }();
+  return names.count(name) > 0;
 }
 
 namespace {

@@ -112,6 +112,9 @@ struct ExperimentOptions {
 std::vector<std::string> default_methods(const domains::Pack& pack, bool all_assistance);
 // Every method name evaluate_plan accepts on this kind of domain.
 std::vector<std::string> known_methods(const domains::Pack& pack);
+// Whether `name` is a method of some domain (known_methods of any pack), for
+// reading results without the pack (`clips bench merge`).
+bool is_method_name(const std::string& name);
 
 // Assisting a live human: inference over observations that are not a dataset
 // plan (built by the caller; see inference::run_inference_on_observations),

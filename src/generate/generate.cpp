@@ -258,6 +258,16 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
       search::SearchOptions budget = inference::InferenceOptions{}.refine;
       budget.max_nodes = options.refine_nodes;
       const pddl::State s0 = task.initial_state();
+      // A plan that cannot fit into the step limit is refused now, not after
+      // every attempt has walked the limit's length (minutes on large maps):
+      // with the agents taking turns, the principal's n actions take at
+      // least 2n - 1 steps.
+      if (const auto n = pack->min_principal_actions(task, s0, plan.goal); n && 2 * *n - 1 > max_steps)
+        throw InputError(fmt::format("plan {}: {} needs at least {} actions of the {}, so at least {} steps with the "
+                                     "agents taking turns, more than the step limit of {}; give --max-steps {} or more "
+                                     "(or a smaller --size)",
+                                     plan.id, plan.goal, *n, pack->roles().principal, 2 * *n - 1, max_steps,
+                                     2 * *n - 1));
       if (search) policy.refine_step(s0, budget);
       const search::Policy at_start = policy;
 

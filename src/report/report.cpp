@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -86,7 +87,13 @@ std::string metric_svg(const Column& col, const BenchReport& r, const nlohmann::
   }
   double tick = 0.25;
   if (!col.unit_range) {
+    if (!std::isfinite(hi)) hi = 1;
     tick = hi <= 2 ? 0.5 : 1.0;
+    // Past 10, a 1-2-5 step that keeps the axis to about ten ticks.
+    if (hi > 10) {
+      const double step = std::pow(10.0, std::floor(std::log10(hi / 10)));
+      tick = hi / step <= 20 ? 2 * step : hi / step <= 50 ? 5 * step : 10 * step;
+    }
     hi = std::max(1.0, std::ceil(hi / tick) * tick);
   }
   const int label_w = 150, plot_w = 230, row_h = 22, top = 26, bottom = 22;

@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -18,6 +19,8 @@
 #include <semaphore>
 #include <system_error>
 #include <thread>
+#include <tuple>
+#include <variant>
 
 #include <httplib.h>
 #include <nlohmann/json.hpp>
@@ -123,6 +126,8 @@ class ConnectionStream : public httplib::Stream {
   }
   std::string_view ahead() const { return ahead_; }
   bool past_deadline() const { return Clock::now() >= read_deadline_; }
+  // Waits until bytes (or the end of the stream) can be read, up to the deadline.
+  bool readable() const { return wait_for(fd_, POLLIN, read_deadline_); }
 
  private:
   ssize_t receive(char* ptr, size_t size) {
@@ -235,36 +240,105 @@ class ConnectionPool : public httplib::TaskQueue {
   bool stop_ = false;
 };
 
-// Open connections, in all and per client address.
-class ConnectionCount {
+// Open connections, in all and per client address. A connection is idle
+// until its request head has arrived; when a new connection finds the table
+// full, an idle connection is dropped for it (of the same client, when that
+// client is at its own limit), so that connections opened and left silent
+// cannot lock others out: a silent one first (nothing received, nothing
+// waiting), of the client holding the most idle connections (a player has
+// one at most, for a moment), the oldest among equals.
+class ConnectionTable {
  public:
-  ConnectionCount(int max_total, int max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}
-  // Takes a slot; nullopt when full, else "" or the reason it is refused.
-  std::optional<std::string> take(const std::string& client) {
+  ConnectionTable(int max_total, int max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}
+
+  // A slot for the connection on `fd` (its id), or why it is refused.
+  std::variant<uint64_t, std::string> take(int fd, const std::string& client) {
     std::lock_guard lock(m_);
-    if (total_ >= max_total_)
-      return std::to_string(max_total_) + " connections are open (--max-connections); try again";
-    int& mine = per_client_[client];
-    if (mine >= max_per_client_) {
-      if (mine == 0) per_client_.erase(client);
+    const auto mine = per_client_.find(client);
+    if (mine != per_client_.end() && mine->second >= max_per_client_ && !drop_oldest_idle_locked(&client))
       return std::to_string(max_per_client_) + " connections from " + client +
-             " are open (--max-client-connections); try again";
-    }
-    ++mine;
+             " are open and busy (--max-client-connections); try again";
+    if (total_ >= max_total_ && !drop_oldest_idle_locked(nullptr))
+      return std::to_string(max_total_) + " connections are open and busy (--max-connections); try again";
+    ++per_client_[client];
     ++total_;
-    return std::nullopt;
+    const uint64_t id = next_id_++;
+    open_[id] = Conn{fd, client, Clock::now(), true, false, false};
+    return id;
   }
-  void give_back(const std::string& client) {
+  // Its first bytes have arrived: not silent.
+  void heard(uint64_t id) {
     std::lock_guard lock(m_);
-    --total_;
-    if (--per_client_[client] <= 0) per_client_.erase(client);
+    if (auto it = open_.find(id); it != open_.end()) it->second.heard = true;
+  }
+  // Its request head has arrived (or it ended): no longer a connection to drop.
+  // Called before the connection's socket is closed.
+  void settled(uint64_t id) {
+    std::lock_guard lock(m_);
+    if (auto it = open_.find(id); it != open_.end()) it->second.idle = false;
+  }
+  void give_back(uint64_t id) {
+    std::lock_guard lock(m_);
+    auto it = open_.find(id);
+    if (it == open_.end()) return;
+    if (!it->second.dropped) release_locked(it->second.client);
+    open_.erase(it);
+  }
+  // Connections dropped for newer ones so far (for the log).
+  uint64_t dropped() const {
+    std::lock_guard lock(m_);
+    return dropped_;
   }
 
  private:
-  std::mutex m_;
+  struct Conn {
+    int fd;
+    std::string client;
+    Clock::time_point since;
+    bool idle, dropped, heard;
+  };
+  // Nothing received from it, and nothing waiting to be read.
+  static bool silent(const Conn& c) {
+    int waiting = 0;
+    return !c.heard && ::ioctl(c.fd, FIONREAD, &waiting) == 0 && waiting == 0;
+  }
+  void release_locked(const std::string& client) {
+    --total_;
+    if (--per_client_[client] <= 0) per_client_.erase(client);
+  }
+  // Shuts the oldest idle connection down (of `client`, or of the client
+  // holding the most connections) and hands its slot over; false when there
+  // is none. Its thread sees the end of the stream and closes it; the socket
+  // is still open here, since a connection settles before it is closed.
+  bool drop_oldest_idle_locked(const std::string* client) {
+    std::map<std::string, int> idle_of;  // idle connections per client
+    for (const auto& [id, c] : open_)
+      if (c.idle && !c.dropped) ++idle_of[c.client];
+    Conn* victim = nullptr;
+    bool victim_silent = false;
+    for (auto& [id, c] : open_) {
+      if (!c.idle || c.dropped || (client && c.client != *client)) continue;
+      const bool quiet = silent(c);
+      const auto rank = std::tuple(quiet, idle_of[c.client], Clock::time_point::max() - c.since);
+      if (!victim || rank > std::tuple(victim_silent, idle_of[victim->client], Clock::time_point::max() - victim->since)) {
+        victim = &c;
+        victim_silent = quiet;
+      }
+    }
+    if (!victim) return false;
+    ::shutdown(victim->fd, SHUT_RDWR);
+    victim->dropped = true;
+    release_locked(victim->client);
+    ++dropped_;
+    return true;
+  }
+
+  mutable std::mutex m_;
   const int max_total_, max_per_client_;
   int total_ = 0;
+  uint64_t next_id_ = 1, dropped_ = 0;
   std::map<std::string, int> per_client_;
+  std::map<uint64_t, Conn> open_;
 };
 
 class GuardedServer : public httplib::Server {
@@ -272,7 +346,7 @@ class GuardedServer : public httplib::Server {
   GuardedServer(const HttpOptions& options, GuardPolicy policy)
       : policy_(std::move(policy)),
         read_time_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.read_timeout))),
-        count_(options.max_connections, options.max_client_connections) {}
+        table_(options.max_connections, options.max_client_connections) {}
 
   // The listening socket once bound (to raise its backlog).
   int listening_socket() const { return svr_sock_; }
@@ -283,25 +357,35 @@ class GuardedServer : public httplib::Server {
     sockaddr_storage peer{};
     socklen_t len = sizeof peer;
     const std::string client = getpeername(sock, reinterpret_cast<sockaddr*>(&peer), &len) == 0 ? address_of(peer) : "";
-    if (auto full = count_.take(client)) {
+    const auto taken = table_.take(sock, client);
+    if (const auto* full = std::get_if<std::string>(&taken)) {
       Reply r = error_json(503, "the server is busy: " + *full);
       r.headers.emplace_back("Retry-After", "1");
       reply_and_close(sock, format_response(r), std::chrono::milliseconds(100));
       return true;
     }
     struct Slot {
-      ConnectionCount& c;
-      const std::string& client;
-      ~Slot() { c.give_back(client); }
-    } slot{count_, client};
+      ConnectionTable& table;
+      uint64_t id;
+      ~Slot() { table.give_back(id); }
+    } slot{table_, std::get<uint64_t>(taken)};
 
     t_request_timed_out = false;
     ConnectionStream strm(sock, start + read_time_, read_time_);
     RequestHead head;
     size_t head_bytes = 0;
     HeadScan scan;
-    while ((scan = scan_head(strm.ahead(), head, head_bytes)) == HeadScan::incomplete)
+    bool heard = false;
+    while ((scan = scan_head(strm.ahead(), head, head_bytes)) == HeadScan::incomplete) {
+      // Said heard while its first bytes still wait in the socket, so that
+      // it never looks silent to a newcomer.
+      if (!heard && strm.readable()) {
+        table_.heard(slot.id);
+        heard = true;
+      }
       if (!strm.read_ahead(kMaxHead + 1 - std::min(kMaxHead, strm.ahead().size()))) break;
+    }
+    table_.settled(slot.id);  // from here on it is not dropped for others (and may be closed)
     std::optional<Reply> reject;
     switch (scan) {
       case HeadScan::incomplete:
@@ -336,8 +420,46 @@ class GuardedServer : public httplib::Server {
 
   GuardPolicy policy_;
   Clock::duration read_time_;
-  ConnectionCount count_;
+  ConnectionTable table_;
 };
+
+// Whether `port` on the other loopback address (::1 for 127.0.0.1 and back)
+// is taken by a listening socket: "localhost:PORT" would then reach two
+// servers, whichever the client's resolver tries first.
+bool sibling_loopback_taken(const std::string& host, int port) {
+  const bool v4 = host == "127.0.0.1", v6 = host == "::1";
+  if (!v4 && !v6) return false;
+  const int family = v4 ? AF_INET6 : AF_INET;
+  const int fd = ::socket(family, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return false;  // no such family here: nothing to share the name with
+  int yes = 1;
+  setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);  // as the server binds: only a listener conflicts
+  if (family == AF_INET6) setsockopt(fd, IPPROTO_IPV6, IPV6_V6ONLY, &yes, sizeof yes);
+  sockaddr_storage a{};
+  socklen_t len = 0;
+  if (family == AF_INET) {
+    auto& in = reinterpret_cast<sockaddr_in&>(a);
+    in.sin_family = AF_INET;
+    in.sin_port = htons(static_cast<uint16_t>(port));
+    in.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    len = sizeof in;
+  } else {
+    auto& in6 = reinterpret_cast<sockaddr_in6&>(a);
+    in6.sin6_family = AF_INET6;
+    in6.sin6_port = htons(static_cast<uint16_t>(port));
+    in6.sin6_addr = in6addr_loopback;
+    len = sizeof in6;
+  }
+  const bool taken = ::bind(fd, reinterpret_cast<sockaddr*>(&a), len) != 0 && errno == EADDRINUSE;
+  ::close(fd);
+  return taken;
+}
+
+// "host:port" for a URL: an IPv6 literal in brackets.
+std::string url_authority(const std::string& host, int port) {
+  const bool v6 = host.find(':') != std::string::npos && host.front() != '[';
+  return (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+}
 
 bool same_token(const std::string& given, const std::string& token) {
   if (token.empty() || given.size() != token.size()) return false;
@@ -375,7 +497,7 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   server.set_keep_alive_max_count(1);  // one request a connection: each is checked before it is read
   std::counting_semaphore<> working(std::max(1, options.threads));
   auto serve = [&service, &options, &policy, &working](const httplib::Request& req, httplib::Response& res) {
-    Request request{req.method, req.path, req.body, false};
+    Request request{req.method, req.path, req.body, false, req.remote_addr};
     const std::string auth = req.get_header_value("Authorization");
     request.owner = auth.compare(0, 7, "Bearer ") == 0 && same_token(auth.substr(7), options.owner_token);
     // Session requests compute: at most --threads at once. The rest is cheap
@@ -426,10 +548,17 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   else if (!server.bind_to_port(options.host, port)) port = -1;
   if (port < 0) {
     const int err = errno;
-    log << "clips serve: error: cannot listen on " << options.host << ":" << options.port << ": "
+    log << "clips serve: error: cannot listen on " << url_authority(options.host, options.port) << ": "
         << (err == EADDRINUSE ? "the port is already in use (is another clips serve running?)"
                               : err ? std::strerror(err) : "the address cannot be bound")
         << "\n"
+        << std::flush;
+    return kCannotListen;
+  }
+  if (sibling_loopback_taken(options.host, port)) {
+    log << "clips serve: error: cannot listen on " << url_authority(options.host, port) << ": the port is already in use on "
+        << (options.host == "::1" ? "127.0.0.1" : "::1")
+        << ", so localhost:" << port << " would reach two servers (is another clips serve running?)\n"
         << std::flush;
     return kCannotListen;
   }
@@ -462,7 +591,7 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   if (!options.owner_token.empty())
     log << "clips serve: owner token " << options.owner_token
         << " (GET or DELETE /api/sessions with the header 'Authorization: Bearer TOKEN' lists or deletes every session)\n";
-  log << "clips serve: listening on http://" << options.host << ":" << port << "/\n" << std::flush;
+  log << "clips serve: listening on http://" << url_authority(options.host, port) << "/\n" << std::flush;
   server.listen_after_bind();  // returns after stop(), once in-flight requests are answered
 
   // listen_after_bind can also end on its own (socket error): wake the stopper.
@@ -524,7 +653,8 @@ int run_stdio(Service& service, std::istream& in, std::ostream& out) {
       if (!req.contains("method") || !req["method"].is_string()) throw std::runtime_error("field 'method': expected a string");
       if (!req.contains("path") || !req["path"].is_string()) throw std::runtime_error("field 'path': expected a string");
       const std::string body = req.contains("body") ? req["body"].dump() : "";
-      Reply r = service.handle(Request{req["method"].get<std::string>(), req["path"].get<std::string>(), body, true});
+      Reply r =
+          service.handle(Request{req["method"].get<std::string>(), req["path"].get<std::string>(), body, true, ""});
       reply["status"] = r.status;
       reply["body"] = r.content_type == "application/json" ? json::parse(r.body) : json(r.body);
     } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "engine/json.hpp"
@@ -100,18 +101,28 @@ PlaySetup text_setup(const std::string& domain_pddl, const std::string& problem_
   auto domain = field("domain", [&] { return std::make_shared<const pddl::Domain>(pddl::parse_domain(domain_pddl, "domain")); });
   const bool no_pack = pack_json.find_first_not_of(" \t\r\n") == std::string::npos;
   s.pack = field(no_pack ? "domain" : "pack", [&] {
-    // Said before the pack is read (which would look for the files).
+    // Said before the pack is read (which would look for the files). Only a
+    // pack sent as text is limited so: without one, the server's own pack
+    // for the domain (data/domains/<name>/, compiled in, or the generic one)
+    // plays, and may read its own files.
     const auto j = nlohmann::json::parse(pack_json, nullptr, false);
-    if (j.is_object() && ((j.contains("fewshot") && j["fewshot"].is_object() && j["fewshot"].contains("file")) ||
-                          j.contains("embedded_corpus")))
+    if (!no_pack && j.is_object() &&
+        ((j.contains("fewshot") && j["fewshot"].is_object() && j["fewshot"].contains("file")) ||
+         j.contains("embedded_corpus")))
       throw InputError("a pack sent as text may not name files (fewshot.file, embedded_corpus); leave them out");
     auto pack = data::text_pack(*domain, pack_json, "pack");
-    if (!pack->spec().fewshot.file.empty() || !pack->spec().embedded_corpus.empty())
+    if (!no_pack && (!pack->spec().fewshot.file.empty() || !pack->spec().embedded_corpus.empty()))
       throw InputError("a pack sent as text may not name files (fewshot.file, embedded_corpus); leave them out");
     return pack;
   });
   s.task = field("problem", [&] {
-    return data::ground_problem_text(*s.pack, domain, problem_pddl, "problem", limits.text_max_ground_actions);
+    data::GroundingLimits grounding(limits.text_max_ground_actions);
+    grounding.deadline = std::chrono::steady_clock::now() +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(limits.text_ground_seconds));
+    grounding.deadline_label = "field 'problem': grounding stopped at the server's limit of " +
+                               std::to_string(static_cast<int>(limits.text_ground_seconds)) + " s";
+    return data::ground_problem_text(*s.pack, domain, problem_pddl, "problem", grounding);
   });
   s.problem = s.task->problem().name;
   field("problem", [&] {

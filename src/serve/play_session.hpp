@@ -41,6 +41,8 @@ struct PlayLimits {
   // Sessions from PDDL text: ground actions of one schema at most (the
   // grounder refuses more, naming the action).
   int64_t text_max_ground_actions = 200000;
+  // ... and grounding such a problem takes at most this many seconds.
+  double text_ground_seconds = 10;
   // Threads refining one session's belief. 1 (default): sessions already run
   // in parallel, one per request thread; 0: all cores, for a server that has
   // one player at a time (the hypotheses are refined in parallel; results do

@@ -1,9 +1,14 @@
 #include "serve/service.hpp"
 
+#include <fcntl.h>
 #include <malloc.h>
+#include <sys/random.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
+#include <regex>
 #include <set>
 #include <system_error>
 
@@ -17,6 +22,10 @@ namespace clips::serve {
 using nlohmann::json;
 
 namespace {
+
+// Set while a request works on a problem sent as PDDL text (creating its
+// session, or any request on it).
+thread_local bool t_text_problem = false;
 
 // A request error with its HTTP status.
 struct HttpError : std::runtime_error {
@@ -42,7 +51,7 @@ json parse_body(const std::string& body, std::initializer_list<const char*> allo
     try {
       j = parse_json_unique(body);
     } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
-      throw HttpError(400, std::string("malformed JSON body: ") + e.what());
+      throw HttpError(400, "malformed JSON body: " + json_error_text(e));
     } catch (const std::invalid_argument& e) {  // a repeated key
       throw HttpError(400, std::string("malformed JSON body: ") + e.what());
     }
@@ -132,6 +141,61 @@ std::vector<std::string> split_path(const std::string& path) {
 
 }  // namespace
 
+void os_random_bytes(void* out, size_t n) {
+  auto* bytes = static_cast<unsigned char*>(out);
+  size_t got = 0;
+  while (got < n) {
+    const ssize_t r = getrandom(bytes + got, n - got, 0);
+    if (r > 0) {
+      got += static_cast<size_t>(r);
+    } else if (r < 0 && errno == ENOSYS) {
+      break;  // a kernel without getrandom: its device instead
+    } else if (r < 0 && errno != EINTR) {
+      throw std::system_error(errno, std::generic_category(), "getrandom");
+    }
+  }
+  if (got == n) return;
+  const int fd = ::open("/dev/urandom", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw std::system_error(errno, std::generic_category(), "/dev/urandom");
+  while (got < n) {
+    const ssize_t r = ::read(fd, bytes + got, n - got);
+    if (r > 0) {
+      got += static_cast<size_t>(r);
+    } else if (r == 0 || errno != EINTR) {
+      const int err = r == 0 ? EIO : errno;
+      ::close(fd);
+      throw std::system_error(err, std::generic_category(), "/dev/urandom");
+    }
+  }
+  ::close(fd);
+}
+
+std::string json_error_text(const std::exception& e) {
+  const std::string what = e.what();
+  // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax
+  // error while parsing object key - invalid literal; last read: '{x';
+  // expected string literal": where, what was read, what was wrong.
+  static const std::regex parse(
+      R"(parse error at line (\d+), column (\d+): syntax error while parsing [^-]*- ([^;]*)(?:; last read: '(.*?)'(?=;|$))?(?:; expected (.*))?)");
+  std::smatch m;
+  if (std::regex_search(what, m, parse)) {
+    std::string out = "not valid JSON at line " + m[1].str() + ", column " + m[2].str();
+    if (m[4].matched && !m[4].str().empty()) {
+      std::string read = m[4].str();
+      if (read.size() > 24) read = "..." + read.substr(read.size() - 24);
+      out += " (after '" + read + "')";
+    }
+    out += ": " + m[3].str();
+    if (m[5].matched) out += "; expected " + m[5].str();
+    return echo(out, 300);
+  }
+  static const std::regex overflow(R"(number overflow parsing '(.*)')");
+  if (std::regex_search(what, m, overflow))
+    return "the number " + echo(m[1].str(), 40) + " is too large for a double";
+  const size_t tag = what.find("] ");
+  return echo(what.rfind("[json.exception.", 0) == 0 && tag != std::string::npos ? what.substr(tag + 2) : what, 300);
+}
+
 std::string echo(const std::string& text, size_t max_bytes) {
   if (text.size() <= max_bytes) return text;
   size_t cut = max_bytes;
@@ -158,7 +222,7 @@ json parse_json_unique(const std::string& text) {
 
 Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits limits,
                  std::shared_ptr<lm::LanguageModel> lm, std::function<Clock::time_point()> now)
-    : limits_(limits), lm_(std::move(lm)), now_(std::move(now)), rng_(std::random_device{}()) {
+    : limits_(limits), lm_(std::move(lm)), now_(std::move(now)) {
   for (const auto& dir : dataset_dirs) {
     std::string name = std::filesystem::path(dir).lexically_normal().filename().string();
     if (name.empty()) name = std::filesystem::path(dir).lexically_normal().parent_path().filename().string();
@@ -170,10 +234,12 @@ Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits lim
 
 std::string Service::new_id() {
   static const char* hex = "0123456789abcdef";
+  unsigned char bytes[16];
+  random_(bytes, sizeof bytes);
   std::string id;
-  for (int w = 0; w < 2; ++w) {
-    uint64_t r = rng_();
-    for (int i = 0; i < 16; ++i, r >>= 4) id += hex[r & 15];
+  for (unsigned char b : bytes) {
+    id += hex[b >> 4];
+    id += hex[b & 15];
   }
   return id;
 }
@@ -208,6 +274,31 @@ size_t Service::expire_idle() {
   }
   if (n > 0) malloc_trim(0);
   return n;
+}
+
+std::shared_ptr<Service::Entry> Service::evict_locked(int64_t now) {
+  if (!(limits_.evict_idle_seconds > 0)) return nullptr;
+  const auto least = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits_.evict_idle_seconds));
+  std::map<std::string, size_t> held;  // sessions per client
+  for (const auto& [id, e] : sessions_) ++held[e->client];
+  auto victim = sessions_.end();
+  std::pair<size_t, int64_t> worst{0, 0};  // (the client's sessions, idle ticks)
+  for (auto it = sessions_.begin(); it != sessions_.end(); ++it) {
+    Entry& e = *it->second;
+    const int64_t idle = now - e.last_used.load();
+    if (idle < least.count()) continue;
+    std::unique_lock busy(e.mutex, std::try_to_lock);  // a session in use stays
+    if (!busy.owns_lock()) continue;
+    const std::pair<size_t, int64_t> rank{held[e.client], idle};
+    if (victim == sessions_.end() || rank > worst) {
+      victim = it;
+      worst = rank;
+    }
+  }
+  if (victim == sessions_.end()) return nullptr;
+  auto gone = std::move(victim->second);
+  sessions_.erase(victim);
+  return gone;
 }
 
 std::shared_ptr<Service::Entry> Service::find(const std::string& id) {
@@ -272,7 +363,7 @@ std::shared_ptr<lm::LanguageModel> Service::text_lm(const PlaySetup& setup, cons
   return m;
 }
 
-Reply Service::create(const std::string& body) {
+Reply Service::create(const std::string& body, const std::string& client) {
   const json j = parse_body(body, {"dataset", "domain", "inference", "method", "pack", "plan", "problem"});
   const PlayLimits play = with_inference(limits_.play, j);
   const std::string method = string_field(j, "method", false, "clips");
@@ -280,6 +371,7 @@ Reply Service::create(const std::string& body) {
   if (std::find(known.begin(), known.end(), method) == known.end())
     throw HttpError(400, "field 'method': unknown method '" + echo(method) + "' (known: clips, lang_only, action_only, literal)");
   const bool from_text = j.contains("domain");
+  t_text_problem = from_text;
   std::string dataset, problem, plan, domain_text, pack_text;
   Served* served = nullptr;
   if (from_text) {
@@ -312,14 +404,36 @@ Reply Service::create(const std::string& body) {
     if (ds == datasets_.end()) throw HttpError(400, "field 'dataset': no served dataset '" + echo(dataset) + "'");
     served = &ds->second;
   }
+  std::shared_ptr<Entry> evicted;  // dropped outside the lock
   {
     std::lock_guard lock(mutex_);
-    expire_locked(now_().time_since_epoch().count());
-    if (sessions_.size() + pending_ >= limits_.max_sessions)
+    const int64_t now = now_().time_since_epoch().count();
+    expire_locked(now);
+    if (!client.empty() && limits_.max_client_sessions > 0) {
+      size_t mine = pending_by_client_[client];
+      for (const auto& [id, e] : sessions_) mine += e->client == client;
+      if (mine >= limits_.max_client_sessions)
+        throw HttpError(429, "too many sessions from " + echo(client) + ": " + std::to_string(mine) + " of at most " +
+                                 std::to_string(limits_.max_client_sessions) +
+                                 " per client (--max-client-sessions); delete one (DELETE /api/sessions/ID) first");
+    }
+    if (sessions_.size() + pending_ >= limits_.max_sessions && !(evicted = evict_locked(now)))
       throw HttpError(503, "the server is full: " + std::to_string(limits_.max_sessions) +
-                               " live sessions; delete one or try later");
+                               " live sessions, none idle long enough to make room; delete one or try later");
     ++pending_;
+    ++pending_by_client_[client];
   }
+  if (evicted) {
+    std::lock_guard wait_for_requests(evicted->mutex);
+    evicted->session.reset();
+    evicted.reset();
+    malloc_trim(0);
+  }
+  // The slot is held until the session is in the table (or its creation failed).
+  const auto release_pending = [this, &client] {
+    --pending_;
+    if (--pending_by_client_[client] == 0) pending_by_client_.erase(client);
+  };
   auto entry = std::make_shared<Entry>();
   try {
     if (from_text) {
@@ -332,19 +446,23 @@ Reply Service::create(const std::string& body) {
       entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), play);
     }
   } catch (...) {
-    std::lock_guard lock(mutex_);
-    --pending_;
+    {
+      std::lock_guard lock(mutex_);
+      release_pending();
+    }
+    malloc_trim(0);  // a refused problem may have grounded a large task: its pages go back now
     throw;
   }
   entry->last_used = now_().time_since_epoch().count();
   entry->created = entry->last_used;
   entry->dataset = dataset;
+  entry->client = client;
   entry->problem = from_text ? entry->session->state().value("problem", "") : problem;
   json state = entry->session->state();
   std::string id;
   {
     std::lock_guard lock(mutex_);
-    --pending_;
+    release_pending();
     do id = new_id();
     while (sessions_.count(id));
     sessions_[id] = entry;
@@ -372,6 +490,7 @@ Reply Service::on_session(const std::string& method, const std::string& id, cons
     return json_reply(200, json{{"deleted", id}});
   }
   auto entry = find(id);
+  t_text_problem = entry->dataset.empty();
   std::lock_guard busy(entry->mutex);
   if (!entry->session) throw HttpError(404, "no session '" + echo(id) + "' (deleted)");
   entry->last_used = now_().time_since_epoch().count();
@@ -478,6 +597,7 @@ std::string Service::allowed_methods(const std::string& path) {
 }
 
 Reply Service::handle(const Request& request) {
+  t_text_problem = false;
   const std::string method = request.method == "HEAD" ? "GET" : request.method;  // the front end drops the body
   const std::string& path = request.path;
   const std::string& body = request.body;
@@ -503,7 +623,8 @@ Reply Service::handle(const Request& request) {
     }
     if (parts.size() == 2 && parts[1] == "datasets") return datasets();
     if (parts.size() == 2 && parts[1] == "sessions") {
-      if (method == "POST") return create(body);
+      // The owner's sessions are not counted against a client's quota.
+      if (method == "POST") return create(body, request.owner ? "" : request.client);
       if (!request.owner) {
         Reply r = error_reply(401, "listing or deleting every session needs the owner token "
                                    "(header 'Authorization: Bearer TOKEN'; clips serve prints it at start)");
@@ -523,6 +644,15 @@ Reply Service::handle(const Request& request) {
     // Memory this server would not have: not the client's fault, and trying
     // later or smaller may work.
     return error_reply(503, e.what());
+  } catch (const std::bad_alloc&) {
+    return error_reply(503, "the server ran out of memory for this request; try a smaller problem or later");
+  } catch (const CallStoppedError& e) {
+    // A request past the server's time limits (grounding a problem sent as text).
+    return error_reply(422, std::string("the problem exceeds a limit of this server: ") + e.what());
+  } catch (const std::length_error& e) {
+    // A size limit of the planner's tables (e.g. more than 65,535 actions
+    // applicable in one state): the problem is too large for this server.
+    return error_reply(422, std::string("the problem exceeds a limit of this server: ") + e.what());
   } catch (const lm::LmError& e) {
     // The language model is another server behind this one: a gateway error.
     const bool timed_out = std::string_view(e.what()).find("timed out") != std::string_view::npos;
@@ -532,6 +662,9 @@ Reply Service::handle(const Request& request) {
       return error_reply(500, std::string("internal error: ") + e.what());
     return error_reply(503, std::string("the server is out of resources: ") + e.what());
   } catch (const std::exception& e) {
+    // A problem sent as PDDL text is the client's: whatever the planner
+    // throws on it is a limit the problem exceeds, not the server's fault.
+    if (t_text_problem) return error_reply(422, std::string("the problem exceeds a limit of this server: ") + e.what());
     return error_reply(500, std::string("internal error: ") + e.what());
   }
 }

@@ -12,7 +12,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -28,7 +27,13 @@ struct ServiceLimits {
   // "problem", "pack"), in bytes.
   size_t max_pddl_bytes = 32 * 1024;
   size_t max_sessions = 64;
+  // Sessions one client (address) may hold at once; 0: no limit of its own.
+  // Requests that name no client (tests) or carry the owner token are not counted.
+  size_t max_client_sessions = 16;
   double idle_seconds = 30 * 60;  // a session untouched this long is deleted
+  // When the server is full, a new session replaces the idlest session of
+  // the client holding the most, if it has been idle this long (0: never).
+  double evict_idle_seconds = 120;
   PlayLimits play;
 };
 
@@ -41,13 +46,26 @@ struct Reply {
 
 // One request as the handlers see it. `owner`: the request proved it comes
 // from whoever started the server (HTTP: the owner token; stdio: always),
-// which may list and delete every session.
+// which may list and delete every session. `client`: who sent it, for the
+// per-client quotas (HTTP: the peer's address; "" when unknown).
 struct Request {
   std::string method;
   std::string path;
   std::string body;
   bool owner = false;
+  std::string client;
 };
+
+// Fills `out` with `n` bytes from the operating system's cryptographic
+// source (getrandom(2); /dev/urandom where it is missing). Throws
+// std::system_error when neither answers.
+void os_random_bytes(void* out, size_t n);
+using RandomSource = std::function<void(void* out, size_t n)>;
+
+// A nlohmann::json error as a short message of our own, without the
+// library's "[json.exception.parse_error.101]" tag, quoting at most a few
+// bytes of the input.
+std::string json_error_text(const std::exception& e);
 
 // At most `max_bytes` bytes of `text` (cut at a UTF-8 character boundary,
 // with a note of the full length), for echoing request values in errors.
@@ -83,10 +101,14 @@ class Service {
   // language model (e.g. the embedded model trained on a domain's own
   // corpus). Models are built at a domain's first session and kept.
   void set_domain_language_model(DomainLanguageModel f) { domain_lm_ = std::move(f); }
+  // Where session ids come from (16 bytes each, written as 32 hex digits):
+  // os_random_bytes unless a test says otherwise. Ids must not be guessable:
+  // whoever knows one may read and play that session.
+  void set_random_source(RandomSource source) { random_ = std::move(source); }
 
   Reply handle(const Request& request);
   Reply handle(const std::string& method, const std::string& path, const std::string& body) {
-    return handle(Request{method, path, body, false});
+    return handle(Request{method, path, body, false, ""});
   }
 
   // The methods a path answers to ("GET, HEAD", "POST", ...; HEAD with
@@ -106,6 +128,7 @@ class Service {
     std::atomic<int64_t> last_used{0};  // Clock ticks
     int64_t created = 0;                 // Clock ticks
     std::string dataset, problem;        // as created ("" dataset: PDDL text)
+    std::string client;                  // who created it ("" when not counted)
   };
   // A served folder: its dataset and, once a session needed it, its model.
   struct Served {
@@ -114,7 +137,7 @@ class Service {
     std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex
   };
   std::shared_ptr<Entry> find(const std::string& id);
-  Reply create(const std::string& body);
+  Reply create(const std::string& body, const std::string& client);
   std::shared_ptr<lm::LanguageModel> dataset_lm(Served& served);
   std::shared_ptr<lm::LanguageModel> text_lm(const PlaySetup& setup, const std::string& key);
   Reply datasets() const;
@@ -123,6 +146,9 @@ class Service {
   Reply on_session(const std::string& method, const std::string& id, const std::string& op, const std::string& body);
   std::string new_id();
   size_t expire_locked(int64_t now);
+  // When full: takes out the session a new one may replace (see
+  // ServiceLimits::evict_idle_seconds), or null.
+  std::shared_ptr<Entry> evict_locked(int64_t now);
 
   ServiceLimits limits_;
   std::shared_ptr<lm::LanguageModel> lm_;
@@ -131,10 +157,11 @@ class Service {
   DomainLanguageModel domain_lm_;
   std::mutex lm_mutex_;  // guards text_lms_; held while one of them is built
   std::vector<std::pair<std::string, std::shared_ptr<lm::LanguageModel>>> text_lms_;  // newest last
-  mutable std::mutex mutex_;  // guards sessions_, pending_, rng_
+  mutable std::mutex mutex_;  // guards sessions_, pending_, pending_by_client_, random_
   std::map<std::string, std::shared_ptr<Entry>> sessions_;
   size_t pending_ = 0;  // sessions being created (they hold a slot)
-  std::mt19937_64 rng_;
+  std::map<std::string, size_t> pending_by_client_;
+  RandomSource random_ = os_random_bytes;
 };
 
 }  // namespace clips::serve

@@ -14,10 +14,16 @@ struct SourceLoc {
   std::string str() const;
 };
 
+// A message of at most about `max_bytes`: a longer one keeps its start and its
+// end, cut at UTF-8 character boundaries, with "... (N bytes) ..." between, so
+// that a huge value echoed into an error (a 1 MB pack field) stays readable.
+std::string clip_message(const std::string& text, size_t max_bytes = 2000);
+
+// Its message is clipped (clip_message): it may quote input of any size.
 class InputError : public std::runtime_error {
  public:
   InputError(const SourceLoc& loc, const std::string& what);
-  explicit InputError(const std::string& what) : std::runtime_error(what) {}
+  explicit InputError(const std::string& what) : std::runtime_error(clip_message(what)) {}
 };
 
 // A call stopped before it was done: by its wall-clock limit (CallLimits,

@@ -250,6 +250,15 @@ TEST_F(BenchShardTest, MalformedOutcomesAreRefusedNamingTheField) {
       {"p-1e308", [](json& p) { p["methods"][0]["p_true_goal"] = 1e308; },
        "plans[0].methods[0].p_true_goal: 1e+308 is not a probability"},
       {"duplicate-goal", [](json& p) { p["goals"][1] = p["goals"][0]; }, "plans[0].goals: lists goal"},
+      // issue 61: values no run writes, which the report would draw as they are.
+      {"success-minus-1", [](json& p) { p["methods"][0]["goal_success"] = -1; },
+       "plans[0].methods[0].goal_success: -1 is not a probability"},
+      {"unknown-method", [](json& p) { p["methods"][0]["method"] = "telepathy"; },
+       "plans[0].methods[0].method: 'telepathy' is not a method clips bench runs"},
+      {"cost-1e308", [](json& p) { p["methods"][0]["rel_human_cost"] = 1e308; },
+       "plans[0].methods[0].rel_human_cost: 1e+308 is not a length, cost or time"},
+      {"length-minus-1", [](json& p) { p["methods"][0]["plan_length"] = -1; },
+       "plans[0].methods[0].plan_length: -1 is not a length, cost or time"},
   };
   for (const auto& c : cases) {
     const fs::path edited = copy_of(1, "bad-" + c.name);
@@ -261,6 +270,23 @@ TEST_F(BenchShardTest, MalformedOutcomesAreRefusedNamingTheField) {
     EXPECT_EQ(r.status, 3) << c.name << ": " << r.out;
     EXPECT_TRUE(contains(r.out, edited.string() + "/outcomes.json: " + c.message)) << c.name << ": " << r.out;
   }
+}
+
+// issue 61: a shard with rel_human_cost 1e308 made `--report` draw an axis
+// of 1e308 ticks (a 2 GB report); the merge now refuses it before any report.
+TEST_F(BenchShardTest, AbsurdValuesAreRefusedBeforeTheReport) {
+  const fs::path edited = copy_of(1, "absurd-report");
+  json outcomes = json::parse(read_text(edited / "outcomes.json"));
+  outcomes["plans"][0]["methods"][0]["rel_human_cost"] = 1e308;
+  std::ofstream(edited / "outcomes.json") << outcomes.dump();
+  const fs::path report = dir("absurd-report-html");
+  const auto r = run("timeout 60 " +
+                     merge_command(dir("absurd-merged").string(), {edited},
+                                   "--allow-partial --dataset " + testing::examples_dkg() + " --report " +
+                                       report.string()));
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_TRUE(contains(r.out, "rel_human_cost: 1e+308")) << r.out;
+  EXPECT_FALSE(fs::exists(report / "index.html"));
 }
 
 TEST(BenchShardCli, MergeTakesNoBenchOptions) {

@@ -68,10 +68,11 @@ TEST(Issue46Cli, BaseUrlsMustBeHttp) {
   r = run(clips() + " assist --dataset " + testing::examples_dkg() +
           " --plan e1.1.keys --method multimodal --chat-base-url ftp://example.org/");
   EXPECT_EQ(r.status, 2) << r.out;
-  // From the environment, libcurl is told to speak HTTP(S) only.
+  // From the environment: refused before any request (issue 61; libcurl is
+  // also told to speak HTTP(S) only).
   r = run("CLIPS_LM_CACHE_DIR=off CLIPS_LM_BASE_URL=file:///etc/passwd OPENAI_API_KEY=test " + listen + " --lm openai");
   EXPECT_EQ(r.status, 6) << r.out;
-  EXPECT_TRUE(contains(r.out, "\"file\" not supported")) << r.out;
+  EXPECT_TRUE(contains(r.out, "is not an http:// or https:// URL ($CLIPS_LM_BASE_URL)")) << r.out;
 }
 
 TEST(Issue46Cli, OptionsThatCannotRunAreUsageErrors) {

@@ -25,6 +25,9 @@ CLIPS_FUZZ_DECLARE(chat);
 CLIPS_FUZZ_DECLARE(serve);
 CLIPS_FUZZ_DECLARE(stdio);
 CLIPS_FUZZ_DECLARE(pack);
+CLIPS_FUZZ_DECLARE(pack_roles);
+CLIPS_FUZZ_DECLARE(cost_profiles);
+CLIPS_FUZZ_DECLARE(quantified_goals);
 CLIPS_FUZZ_DECLARE(bench_merge);
 
 namespace fs = std::filesystem;
@@ -48,6 +51,8 @@ const Case kTargets[] = {
     {"chat", clips_fuzz_chat},           {"serve", clips_fuzz_serve},
     {"pack", clips_fuzz_pack},           {"bench_merge", clips_fuzz_bench_merge},
     {"goalset", clips_fuzz_goalset},     {"stdio", clips_fuzz_stdio},
+    {"pack_roles", clips_fuzz_pack_roles}, {"cost_profiles", clips_fuzz_cost_profiles},
+    {"quantified_goals", clips_fuzz_quantified_goals},
 };
 
 // Runs every file of `dir` (if it exists) through `run`; returns how many.

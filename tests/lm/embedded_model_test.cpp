@@ -16,6 +16,7 @@
 #include "language/lm/embedded_model.hpp"
 #include "language/lm/utterance_tokens.hpp"
 #include "language/lm/wordnet_lexicon.hpp"
+#include "util/error.hpp"
 #include "lm/embedded_prompts.hpp"
 
 namespace clips::lm {
@@ -443,6 +444,7 @@ TEST(EmbeddedModel, DataDirectoryFromOptionsAndEnvironment) {
   EXPECT_EQ(explicit_dir.name(), "embedded");
 }
 
+// A corpus file is input: its errors are InputErrors (exit 3) naming file:line.
 TEST(EmbeddedModel, MissingOrMalformedCorpusIsAClearError) {
   const auto tmp = std::filesystem::temp_directory_path() / "clips_lm_corpus_test";
   std::filesystem::create_directories(tmp);
@@ -451,8 +453,8 @@ TEST(EmbeddedModel, MissingOrMalformedCorpusIsAClearError) {
   o.corpus_files = {"nope.tsv"};
   try {
     EmbeddedLanguageModel m(o);
-    FAIL() << "expected LmError";
-  } catch (const LmError& e) {
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("nope.tsv"), std::string::npos) << e.what();
   }
   {
@@ -462,8 +464,8 @@ TEST(EmbeddedModel, MissingOrMalformedCorpusIsAClearError) {
   o.corpus_files = {"bad.tsv"};
   try {
     EmbeddedLanguageModel m(o);
-    FAIL() << "expected LmError";
-  } catch (const LmError& e) {
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.tsv:3"), std::string::npos) << e.what();
   }
   {
@@ -473,8 +475,8 @@ TEST(EmbeddedModel, MissingOrMalformedCorpusIsAClearError) {
   o.corpus_files = {"bad2.tsv"};
   try {
     EmbeddedLanguageModel m(o);
-    FAIL() << "expected LmError";
-  } catch (const LmError& e) {
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad2.tsv:1"), std::string::npos) << e.what();
   }
   std::filesystem::remove_all(tmp);

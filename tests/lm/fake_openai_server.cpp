@@ -194,6 +194,16 @@ bool apply_body_fault(FakeReply reply, const std::string& body, httplib::Respons
     case FakeReply::MalformedJson:
       res.set_content("{\"choices\": [ {\"index\": 0,, oops", "application/json");
       return true;
+    case FakeReply::HugeNumber: {
+      std::string text = body;
+      const std::string key = "\"token_logprobs\":[";
+      const std::size_t at = text.find(key);
+      if (at == std::string::npos) return false;
+      const std::size_t start = at + key.size(), end = text.find_first_of(",]", start);
+      text.replace(start, end - start, "-1e999");
+      res.set_content(text, "application/json");
+      return true;
+    }
     case FakeReply::CutJson:
       res.set_content(body.substr(0, body.size() / 2), "application/json");
       return true;

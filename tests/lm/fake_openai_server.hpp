@@ -36,6 +36,7 @@ enum class FakeReply {
   NonJsonAnswer,         // chat: the assistant text is not JSON
   MissingContent,        // chat: message.content null (with a refusal)
   Endless,               // a chunked reply that never ends (until the client hangs up or stop())
+  HugeNumber,            // the first token log-prob written as -1e999 (valid JSON, no double holds it)
 };
 
 struct FakeFaults {

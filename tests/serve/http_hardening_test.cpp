@@ -90,22 +90,25 @@ TEST(ServeHardening, SlowHeaderSendersNeitherFreezeHealthNorStayForever) {
 TEST(ServeHardening, ConnectionsPerClientAreBounded) {
   ServerProcess server({}, {"--dataset", kDkg, "--max-client-connections", "4", "--read-timeout", "60"});
   ASSERT_GT(server.port, 0);
-  // Four idle connections the server holds open. A connection of the test
-  // harness's own (its readiness probe) may still be counted while they
-  // arrive, so one of them can be turned away: open another in its place.
-  std::vector<int> idle;
-  for (int tries = 0; tries < 12 && idle.size() < 4; ++tries) {
+  // Four connections busy with a request: their heads have arrived, their
+  // bodies are still on the way. A connection of the test harness's own
+  // (its readiness probe) may still be counted while they arrive, so one of
+  // them can be turned away: open another in its place.
+  const std::string slow_post = "POST /api/sessions HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+                                "Content-Length: 100\r\n\r\n{";
+  std::vector<int> busy;
+  for (int tries = 0; tries < 12 && busy.size() < 4; ++tries) {
     const int fd = connect_loopback(server.port);
     ASSERT_GE(fd, 0);
-    ASSERT_TRUE(send_all(fd, "GET /api/health HTTP/1.1\r\n"));  // and nothing more
+    ASSERT_TRUE(send_all(fd, slow_post));
     pollfd p{fd, POLLIN, 0};
     if (poll(&p, 1, 200) == 0) {
-      idle.push_back(fd);  // nothing came back: held open
+      busy.push_back(fd);  // nothing came back: held open, reading the body
     } else {
       close(fd);  // answered (503) and closed
     }
   }
-  ASSERT_EQ(idle.size(), 4u);
+  ASSERT_EQ(busy.size(), 4u);
   // A fifth is turned away once the server has taken the four (it accepts
   // them on its own threads: ask a few times).
   std::string reply;
@@ -115,13 +118,25 @@ TEST(ServeHardening, ConnectionsPerClientAreBounded) {
   }
   EXPECT_EQ(raw_status(reply), 503) << reply;
   EXPECT_NE(raw_body(reply).find("--max-client-connections"), std::string::npos) << reply;
-  for (int fd : idle) close(fd);
+  for (int fd : busy) close(fd);
   // With the four gone, requests are served again.
   for (int attempt = 0; attempt < 50 && raw_status(reply) != 200; ++attempt) {
     reply = raw_exchange(server.port, get("/api/health"), 30);
     if (raw_status(reply) != 200) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   EXPECT_EQ(raw_status(reply), 200) << reply;
+  // Idle connections (no head yet) do not lock the address out (issue 61):
+  // the oldest is dropped for a newcomer, which is served.
+  std::vector<int> idle;
+  for (int i = 0; i < 4; ++i) {
+    idle.push_back(connect_loopback(server.port));
+    ASSERT_TRUE(send_all(idle.back(), "GET /api/health HTTP/1.1\r\n"));  // and nothing more
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  reply = raw_exchange(server.port, get("/api/health"), 30);
+  EXPECT_EQ(raw_status(reply), 200) << reply;
+  EXPECT_EQ(read_until_closed(idle.front(), 5), "");  // closed without a reply
+  for (int fd : idle) close(fd);
   EXPECT_EQ(server.stop(), 0);
 }
 

@@ -50,7 +50,7 @@ struct ServerProcess {
     close(fds[1]);
     err = fdopen(fds[0], "r");
     char line[1024];
-    const std::regex re("listening on http://127\\.0\\.0\\.1:(\\d+)/");
+    const std::regex re("listening on http://(?:127\\.0\\.0\\.1|\\[::1\\]):(\\d+)/");
     const std::regex tok("owner token (\\S+)");
     while (fgets(line, sizeof line, err)) {
       lines.emplace_back(line);
@@ -87,10 +87,20 @@ struct ServerProcess {
   }
 };
 
-// A TCP connection to 127.0.0.1:port (-1 on failure).
-inline int connect_loopback(int port) {
+// A TCP connection to 127.0.0.1:port (-1 on failure); from another
+// loopback address (127.0.0.2, ...) when `from` names one.
+inline int connect_loopback(int port, const char* from = nullptr) {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
   if (fd < 0) return -1;
+  if (from) {
+    sockaddr_in local{};
+    local.sin_family = AF_INET;
+    inet_pton(AF_INET, from, &local.sin_addr);
+    if (bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0) {
+      close(fd);
+      return -1;
+    }
+  }
   sockaddr_in a{};
   a.sin_family = AF_INET;
   a.sin_port = htons(static_cast<uint16_t>(port));

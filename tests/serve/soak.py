@@ -2,14 +2,23 @@
 """Soak test of `clips serve` on loopback: honest players and hostile clients
 at once, for a given time.
 
-Honest clients (from 127.0.0.1) play sessions of the repo's small
-Doors-Keys-Gems example, over and over: create, hear an instruction, act as
-the human, ask for assistance (applied), read the state now and then, delete.
-Every honest reply must be right: the status the API documents (201 for a
-create, 200 otherwise) and a JSON body with the fields the client reads. A
-create answered 503 "the server is full" while the session flood below has
-filled the slots is the documented answer too: the client waits and tries
-again (counted and printed as "full", not a failure; any other refusal is).
+Honest clients (each from an address of its own, 127.0.1.K, as separate
+users are) play sessions of the repo's small Doors-Keys-Gems example, over
+and over: create, hear an instruction, act as the human, ask for assistance
+(applied), read the state now and then, delete. Every honest reply must be
+right: the status the API documents (201 for a create, 200 otherwise) and a
+JSON body with the fields the client reads. The run has three phases: quiet
+(honest players only, the first and last fifth of the time) and attacked
+(the rest), whose honest latency p95 must stay within P95_FACTOR times the
+quiet one.
+
+While attacked (issue 61), besides the hostile clients below:
+  idle          IDLE_CONNECTIONS connections from 127.0.0.3-6 opened and left
+                silent, opened again as soon as the server drops one (more
+                than --max-connections allows: the server must drop the idle
+                ones for new ones, not turn players away)
+  filler        sessions created from 127.0.0.2 as fast as the server allows
+                and never deleted (-> 201 until its per-client quota, then 429)
 
 Hostile clients (from 127.0.0.2, so that the per-address connection bound of
 one does not fall on the other) each repeat one misbehaviour:
@@ -22,9 +31,9 @@ one does not fall on the other) each repeat one misbehaviour:
   bad-json      malformed JSON, duplicate keys, a form body (-> 400, 415)
   bad-http      a request line without a version, binary noise (-> 400)
   flood         sessions created as fast as the server allows and abandoned
-                (-> 201 until full, then 503)
-An owner (the server's owner token) lists the sessions every second and
-deletes the abandoned ones, as an operator would.
+                (-> 201 until the address's quota, then 429)
+An owner (the server's owner token) lists the sessions every second, as an
+operator would, and deletes whatever is left at the end.
 
 Checked: every honest request answered rightly, every hostile one with its
 expected status (or a connection the server closed, where a refusal may come
@@ -43,6 +52,7 @@ import json
 import os
 import random
 import re
+import selectors
 import socket
 import sys
 import threading
@@ -52,13 +62,22 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from serve_harness import Server  # noqa: E402
 
 GROWTH_BOUND_MIB = 64
-HONEST_ADDR = "127.0.0.1"
+HONEST_ADDR = "127.0.0.1"   # the server's address, and the owner's
 HOSTILE_ADDR = "127.0.0.2"
+IDLE_ADDRS = ["127.0.0.3", "127.0.0.4", "127.0.0.5", "127.0.0.6"]
+IDLE_CONNECTIONS = 200
+CLIENT_SESSIONS = 16  # the server's --max-client-sessions
+P95_FACTOR = 2.0
 READ_TIMEOUT = 3  # the server's --read-timeout in this test
 UTTERANCES = ["Can you pass me the red key?", "Could you get the blue key for me?", "Please unlock the door.",
               "I need a key.", "Get me the yellow key please"]
 HOSTILE_KINDS = ["slow-header", "slow-body", "cross-origin", "wrong-host", "big-body", "big-header", "bad-json",
                  "bad-http", "flood"]
+
+
+def player_addr(k):
+    """Player k's own loopback address: 127.0.1.1, 127.0.1.2, ..."""
+    return "127.0.%d.%d" % (1 + k // 250, 1 + k % 250)
 
 
 def percentile(xs, q):
@@ -72,6 +91,8 @@ class Stats:
         self.count = {}      # kind -> requests
         self.statuses = {}   # kind -> {status: n}
         self.latency = {}    # honest kind -> [seconds]
+        self.phase_latency = {"quiet": [], "attacked": []}  # honest, by phase
+        self.phase = "quiet"
         self.failures = []
 
     def record(self, kind, status, seconds=None):
@@ -81,6 +102,7 @@ class Stats:
             per[status] = per.get(status, 0) + 1
             if seconds is not None:
                 self.latency.setdefault(kind, []).append(seconds)
+                self.phase_latency[self.phase].append(seconds)
 
     def fail(self, text):
         with self.lock:
@@ -133,10 +155,11 @@ def main():
         print("soak: at least 50 clients, please")
         return 2
     dkg = os.path.join(args.source_dir, "data", "examples", "doors-keys-gems")
-    # Slots for every honest player and some for the flood; the owner empties
-    # the flood's every second.
-    max_sessions = args.honest + 16
+    # Slots for every honest player and the hostile address's quota, which
+    # the filler and the flood keep full.
+    max_sessions = args.honest + CLIENT_SESSIONS
     server = Server(args.clips, [dkg], "--max-sessions", str(max_sessions), "--threads", "8",
+                    "--max-client-sessions", str(CLIENT_SESSIONS),
                     "--read-timeout", str(READ_TIMEOUT), "--max-nodes", str(args.budget),
                     "--assist-nodes", str(args.budget), "--max-seconds", "1")
     token = None
@@ -149,11 +172,13 @@ def main():
     honest_ids = set()
     ids_lock = threading.Lock()
     stop = threading.Event()
+    attacked = threading.Event()  # the hostile, idle and filler clients run while it is set
+    idle_opened = [0]
     rss = {"start": 0, "peak": 0, "end": 0}
     t_start = time.time()
 
-    def honest_call(kind, method, path, body=None, expect=(200,)):
-        conn = http.client.HTTPConnection(HONEST_ADDR, port, timeout=120)
+    def honest_call(kind, method, path, body=None, expect=(200,), addr=HONEST_ADDR):
+        conn = http.client.HTTPConnection(HONEST_ADDR, port, timeout=120, source_address=(addr, 0))
         t0 = time.perf_counter()
         try:
             headers = {"Content-Type": "application/json"} if body is not None else {}
@@ -172,9 +197,6 @@ def main():
             payload = json.loads(raw)
         except ValueError:
             payload = None
-        if kind == "create" and status == 503 and isinstance(payload, dict) and "full" in payload.get("error", ""):
-            stats.record("create (full)", status)
-            return status, payload
         stats.record(kind, status, dt)
         if status not in expect or not isinstance(payload, dict):
             stats.fail("honest %s %s -> %s %s" % (method, path, status, raw[:200]))
@@ -196,12 +218,11 @@ def main():
 
     def honest(k):
         rng = random.Random(k)
+        addr = player_addr(k)
         while not stop.is_set():
             status, s = honest_call("create", "POST", "/api/sessions",
-                                    {"dataset": "doors-keys-gems", "problem": rng.choice(["e1", "e2"])}, expect=(201,))
-            if status == 503:
-                time.sleep(0.2 + rng.random() * 0.3)
-                continue
+                                    {"dataset": "doors-keys-gems", "problem": rng.choice(["e1", "e2"])}, expect=(201,),
+                                    addr=addr)
             if s is None:
                 time.sleep(0.5)
                 continue
@@ -212,20 +233,20 @@ def main():
             with ids_lock:
                 honest_ids.add(sid)
             url = "/api/sessions/" + sid
-            _, s = honest_call("hear", "POST", url + "/hear", {"utterance": rng.choice(UTTERANCES)})
+            _, s = honest_call("hear", "POST", url + "/hear", {"utterance": rng.choice(UTTERANCES)}, addr=addr)
             for step in range(rng.randint(3, 8)):
                 if stop.is_set() or not state_ok(s) or s.get("reached_goal"):
                     break
                 if s["turn"] == s["assistant"]:
-                    _, r = honest_call("assist", "POST", url + "/assist", {"apply": True})
+                    _, r = honest_call("assist", "POST", url + "/assist", {"apply": True}, addr=addr)
                     s = r.get("state") if r else None
                 elif s["actions"]:
-                    _, s = honest_call("observe", "POST", url + "/act", {"action": rng.choice(s["actions"])})
+                    _, s = honest_call("observe", "POST", url + "/act", {"action": rng.choice(s["actions"])}, addr=addr)
                 else:
                     break
                 if step % 3 == 2 and s is not None:
-                    _, s = honest_call("state", "GET", url)
-            honest_call("delete", "DELETE", url)
+                    _, s = honest_call("state", "GET", url, addr=addr)
+            honest_call("delete", "DELETE", url, addr=addr)
             with ids_lock:
                 honest_ids.discard(sid)
 
@@ -275,13 +296,15 @@ def main():
             ])
             return raw_exchange(port, req), want
         if kind == "flood":
-            return raw_exchange(port, post("/api/sessions", create)), {201, 503}
+            return raw_exchange(port, post("/api/sessions", create)), {201, 429}
         raise ValueError(kind)
 
     def hostile(k):
         rng = random.Random(1000 + k)
         kind = HOSTILE_KINDS[k % len(HOSTILE_KINDS)]
         while not stop.is_set():
+            if not attacked.wait(0.2):
+                continue
             try:
                 status, want = hostile_once(kind, rng)
             except OSError as e:
@@ -289,33 +312,62 @@ def main():
             stats.record(kind, status)
             if status not in want:
                 stats.fail("hostile %s -> %s (expected one of %s)" % (kind, status, sorted(map(str, want))))
-            if kind == "flood" and status == 503:
-                time.sleep(0.05)  # the server is full: try again soon
+            if kind == "flood" and status == 429:
+                time.sleep(0.05)  # the address's quota is full: try again soon
+
+    def filler():
+        """Creates sessions from HOSTILE_ADDR and never deletes them."""
+        while not stop.is_set():
+            if not attacked.wait(0.2):
+                continue
+            try:
+                status = raw_exchange(port, post("/api/sessions", create))
+            except OSError as e:
+                status = "error: %s" % e
+            stats.record("filler", status)
+            if status not in (201, 429):
+                stats.fail("filler -> %s (expected 201 or 429)" % status)
+            if status == 429:
+                time.sleep(0.05)
+
+    def idle():
+        """Keeps IDLE_CONNECTIONS silent connections open from IDLE_ADDRS."""
+        sel = selectors.DefaultSelector()
+        opened = 0
+        while not stop.is_set():
+            if not attacked.is_set():
+                for key in list(sel.get_map().values()):
+                    sel.unregister(key.fileobj)
+                    key.fileobj.close()
+                attacked.wait(0.2)
+                continue
+            while len(sel.get_map()) < IDLE_CONNECTIONS:
+                addr = IDLE_ADDRS[opened % len(IDLE_ADDRS)]
+                try:
+                    c = socket.create_connection((HONEST_ADDR, port), timeout=5, source_address=(addr, 0))
+                except OSError:
+                    time.sleep(0.05)
+                    break
+                c.setblocking(False)
+                sel.register(c, selectors.EVENT_READ)
+                opened += 1
+            for key, _ in sel.select(timeout=0.1):  # readable: the server replied or closed it
+                sel.unregister(key.fileobj)
+                key.fileobj.close()
+                stats.record("idle", "dropped")
+        for key in list(sel.get_map().values()):
+            key.fileobj.close()
+        idle_opened[0] = opened
 
     def owner():
-        # A session counts as abandoned once two sweeps in a row found it
-        # belonging to no player (a player's create may still be on its way
-        # back when the first sweep lists it).
-        suspects = set()
         while not stop.wait(1.0):
             try:
                 status, listing = owner_call("GET", "/api/sessions")
                 stats.record("owner-list", status)
                 if status != 200:
                     stats.fail("owner list -> %s" % status)
-                    continue
-                with ids_lock:
-                    others = {s["id"] for s in listing.get("sessions", []) if s.get("id") not in honest_ids}
-                abandoned, suspects = others & suspects, others - suspects
-                for sid in sorted(abandoned):
-                    with ids_lock:
-                        if sid in honest_ids:
-                            continue
-                    status, _ = owner_call("DELETE", "/api/sessions/" + sid)
-                    stats.record("owner-delete", status)
-                    # 404: the idle timeout or another sweep took it first.
-                    if status not in (200, 404):
-                        stats.fail("owner delete -> %s" % status)
+                elif len(listing.get("sessions", [])) > max_sessions:
+                    stats.fail("owner list: %d sessions, more than %d" % (len(listing["sessions"]), max_sessions))
             except (OSError, ValueError, http.client.HTTPException) as e:
                 stats.fail("owner: %s" % e)
 
@@ -342,12 +394,22 @@ def main():
         time.sleep(0.5)
         rss["start"] = rss["peak"] = server.rss_kib()
         t_load = time.time()
-        threads = [threading.Thread(target=monitor, daemon=True), threading.Thread(target=owner, daemon=True)]
+        threads = [threading.Thread(target=monitor, daemon=True), threading.Thread(target=owner, daemon=True),
+                   threading.Thread(target=filler, daemon=True), threading.Thread(target=idle, daemon=True)]
         threads += [threading.Thread(target=honest, args=(k,), daemon=True) for k in range(args.honest)]
         threads += [threading.Thread(target=hostile, args=(k,), daemon=True) for k in range(args.hostile)]
         for t in threads:
             t.start()
-        stop.wait(args.seconds)
+        # Quiet, attacked, quiet.
+        stop.wait(args.seconds * 0.2)
+        with stats.lock:
+            stats.phase = "attacked"
+        attacked.set()
+        stop.wait(args.seconds * 0.6)
+        attacked.clear()
+        with stats.lock:
+            stats.phase = "quiet"
+        stop.wait(args.seconds * 0.2)
         stop.set()
         hard_end = t_start + args.seconds + 180
         for t in threads:
@@ -375,8 +437,8 @@ def main():
     print("soak: %d honest + %d hostile clients, %.0f s of load (%.0f s in all), %d requests (%.0f req/s)"
           % (args.honest, args.hostile, load_seconds, wall, total, total / max(load_seconds, 1e-9)))
     print("%-14s %8s  %s" % ("kind", "requests", "statuses"))
-    for kind in ["create", "create (full)", "hear", "observe", "assist", "state", "delete"] + HOSTILE_KINDS + \
-            ["owner-list", "owner-delete"]:
+    for kind in ["create", "hear", "observe", "assist", "state", "delete"] + HOSTILE_KINDS + \
+            ["filler", "idle", "owner-list"]:
         if kind in stats.count:
             per = ", ".join("%s: %d" % (k, v) for k, v in sorted(stats.statuses[kind].items(), key=lambda kv: str(kv[0])))
             print("%-14s %8d  %s" % (kind, stats.count[kind], per))
@@ -388,6 +450,20 @@ def main():
         xs = stats.latency.get(k)
         if xs:
             print("  %-8s p50 %8.1f ms  p95 %8.1f ms" % (k, 1000 * percentile(xs, 0.5), 1000 * percentile(xs, 0.95)))
+    quiet, under = stats.phase_latency["quiet"], stats.phase_latency["attacked"]
+    q95, a95 = percentile(quiet, 0.95), percentile(under, 0.95)
+    print("honest p95 quiet %.1f ms (%d requests), attacked %.1f ms (%d requests): ratio %.2f (bound %.1f)" %
+          (1000 * q95, len(quiet), 1000 * a95, len(under), a95 / q95 if q95 > 0 else float("nan"), P95_FACTOR))
+    if not quiet or not under:
+        stats.fail("no honest requests in a phase (quiet %d, attacked %d)" % (len(quiet), len(under)))
+    elif a95 > P95_FACTOR * q95:
+        stats.fail("honest p95 attacked %.1f ms is more than %.1f x the quiet %.1f ms" % (1000 * a95, P95_FACTOR, 1000 * q95))
+    print("idle connections opened: %d (at most %d at once), dropped by the server: %d" %
+          (idle_opened[0], IDLE_CONNECTIONS, stats.count.get("idle", 0)))
+    if idle_opened[0] < IDLE_CONNECTIONS:
+        stats.fail("only %d idle connections were opened" % idle_opened[0])
+    if stats.statuses.get("filler", {}).get(429, 0) == 0:
+        stats.fail("the filler never reached its quota (429)")
     print("server RSS: start %.1f MiB, peak %.1f MiB, end %.1f MiB (bound: start + %d MiB); live sessions at the end: "
           "%s; exit code %s" % (rss["start"] / 1024, rss["peak"] / 1024, rss["end"] / 1024, GROWTH_BOUND_MIB,
                                 health.get("sessions"), code))

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "language/commands/term.hpp"
 #include "util/error.hpp"
 
 namespace clips::commands {
@@ -22,6 +23,21 @@ std::string read_file(const std::filesystem::path& path, const std::string& what
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+// Why a command's text is not "(action args...) ... [where (pred args...) ...]"
+// ("" when it is): said here, with the file and line, rather than when a
+// language model first reads the prompt.
+std::string command_syntax_problem(const std::string& command) {
+  const size_t where = command.find(" where ");
+  try {
+    if (parse_terms(std::string_view(command).substr(0, where)).empty()) return "no action before 'where'";
+    if (where != std::string::npos && parse_terms(std::string_view(command).substr(where + 7)).empty())
+      return "no condition after 'where'";
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
 }
 
 std::vector<std::string> split_tabs(std::string_view line) {
@@ -72,6 +88,8 @@ std::vector<FewShotExample> parse_fewshot_examples(std::string_view text, const 
       fail("index '" + index + "' is not a positive integer");
     ex.command = fields[2];
     if (ex.command.empty()) fail("empty command");
+    if (const std::string why = command_syntax_problem(ex.command); !why.empty())
+      fail("command '" + ex.command + "': " + why);
     ex.utterance = fields[3];
     if (ex.utterance.empty()) fail("empty utterance");
     if (fields[4] == "yes")

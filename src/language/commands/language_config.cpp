@@ -148,6 +148,11 @@ LanguageConfig parse_language_config(const std::string& json_text, const std::st
     if (actions[i].contains("agent_arg"))
       rule.agent_arg = r.positive_int(actions[i]["agent_arg"], key + ".agent_arg");
     rule.focal_arg = r.positive_int(r.field(actions[i], "focal_arg", key), key + ".focal_arg");
+    // One rule per action: the listener reads the first, and repeats would
+    // multiply the commands enumerated.
+    for (std::size_t j = 0; j < c.salient_actions.size(); ++j)
+      if (c.salient_actions[j].action == rule.action)
+        r.fail(key + ".action", "'" + rule.action + "' is already salient_actions[" + std::to_string(j) + "]");
     c.salient_actions.push_back(rule);
   }
 

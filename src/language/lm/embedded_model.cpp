@@ -15,6 +15,7 @@
 #include "language/lm/alignment_model.hpp"
 #include "language/lm/command_frame.hpp"
 #include "util/data_dir.hpp"
+#include "util/error.hpp"
 #include "util/hash.hpp"
 
 namespace clips::lm {
@@ -29,35 +30,40 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
+// A corpus file is input: its errors are InputErrors naming file:line (a
+// pack's embedded_corpus names such files).
 std::vector<TrainingPair> read_corpus(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw LmError("embedded LM: cannot open corpus file " + path);
+  if (!in)
+    throw InputError(SourceLoc{path, 0, 0}, "cannot open this embedded-LM corpus file (a pack's embedded_corpus "
+                                            "names files of the language data folder)");
   std::vector<TrainingPair> out;
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
     ++number;
     const std::string origin = path + ":" + std::to_string(number);
+    const SourceLoc here{path, number, 0};
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     const size_t tab = line.find('\t');
-    if (tab == std::string::npos) {
-      throw LmError("embedded LM: " + origin + ": expected \"command<TAB>utterance\"");
-    }
+    if (tab == std::string::npos) throw InputError(here, "corpus line: expected \"command<TAB>utterance\"");
     TrainingPair p;
     p.command = trim(line.substr(0, tab));
     p.utterance = trim(line.substr(tab + 1));
     p.origin = origin;
-    if (p.command.empty() || p.utterance.empty() || p.command[0] != '(') {
-      throw LmError("embedded LM: " + origin + ": empty utterance or command not starting with '('");
+    if (p.command.empty() || p.utterance.empty() || p.command[0] != '(')
+      throw InputError(here, "corpus line: empty utterance or command not starting with '('");
+    if (p.utterance.find('\t') != std::string::npos)
+      throw InputError(here, "corpus line: more than two tab-separated fields");
+    try {
+      parse_command_frame(p.command, origin);  // validate now, with file and line
+    } catch (const LmError& e) {
+      throw InputError(here, std::string("corpus line: ") + e.what());
     }
-    if (p.utterance.find('\t') != std::string::npos) {
-      throw LmError("embedded LM: " + origin + ": more than two tab-separated fields");
-    }
-    parse_command_frame(p.command, origin);  // validate now, with file and line
     out.push_back(std::move(p));
   }
-  if (out.empty()) throw LmError("embedded LM: corpus file " + path + " holds no pairs");
+  if (out.empty()) throw InputError(SourceLoc{path, 0, 0}, "this embedded-LM corpus file holds no pairs");
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <nlohmann/json.hpp>
@@ -92,7 +93,7 @@ std::optional<std::chrono::milliseconds> retry_after(
     char* end = nullptr;
     double ms = std::strtod(it->second.c_str(), &end);
     if (end != it->second.c_str() && std::isfinite(ms) && ms >= 0) {
-      return std::chrono::milliseconds(static_cast<long long>(ms));
+      return std::chrono::milliseconds(static_cast<long long>(std::min(ms, 1e12)));  // no overflow
     }
   }
   auto it = headers.find("retry-after");
@@ -100,7 +101,7 @@ std::optional<std::chrono::milliseconds> retry_after(
   char* end = nullptr;
   double seconds = std::strtod(it->second.c_str(), &end);
   if (end != it->second.c_str() && *end == '\0' && std::isfinite(seconds) && seconds >= 0) {
-    return std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0));
+    return std::chrono::milliseconds(static_cast<long long>(std::min(seconds, 1e9) * 1000.0));
   }
   std::time_t when = curl_getdate(it->second.c_str(), nullptr);
   if (when < 0) return std::nullopt;
@@ -123,6 +124,12 @@ std::string url_host(const std::string& url) {
 
 bool is_loopback(const std::string& host) {
   return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+}
+
+std::string seconds_text(std::chrono::milliseconds ms) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%g s", static_cast<double>(ms.count()) / 1000.0);
+  return buf;
 }
 
 std::string attempts_text(int n) {
@@ -188,6 +195,9 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
   auto backoff = options_.backoff_initial;
 
   int timeouts = 0;
+  // The waits a server asks for (Retry-After) add up to at most one request
+  // timeout: a server asking for a day must not hold the caller for a day.
+  std::chrono::milliseconds waited{0};
   for (int attempt = 1;; ++attempt) {
     Transfer t;
     t.max_body = options_.max_reply_bytes;
@@ -250,8 +260,18 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
       return HttpResponse{status, std::move(t.body), std::move(t.headers), attempt};
     }
 
-    auto wait = server_wait ? std::min(*server_wait, options_.retry_after_max)
-                            : std::min(backoff, options_.backoff_max);
+    auto wait = std::min(backoff, options_.backoff_max);
+    if (server_wait) {
+      const auto left = options_.total_timeout - waited;
+      if (left.count() <= 0)
+        throw LmError("POST " + url + ": HTTP " + std::to_string(status) + " after " + attempts_text(attempt) +
+                      ": the server asks to wait " + seconds_text(*server_wait) +
+                      " before trying again (Retry-After), and the waits between attempts may add up to the "
+                      "request timeout of " + seconds_text(options_.total_timeout) + " (--lm-timeout) at most: " +
+                      server_error_text(t.body));
+      wait = std::min({*server_wait, options_.retry_after_max, left});
+      waited += wait;
+    }
     std::this_thread::sleep_for(wait);
     backoff = std::chrono::milliseconds(
         static_cast<long long>(static_cast<double>(backoff.count()) * options_.backoff_factor));
@@ -261,6 +281,17 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
 nlohmann::json parse_choices_reply(const std::string& body, const std::string& context) {
   nlohmann::json j = nlohmann::json::parse(body, nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded()) {
+    // A number beyond a double's range (a log-probability of -1e999) is
+    // valid JSON text that no double holds: say so rather than "not JSON".
+    try {
+      (void)nlohmann::json::parse(body);
+    } catch (const nlohmann::json::out_of_range& e) {
+      std::string what = e.what();
+      if (const auto at = what.find("] "); at != std::string::npos) what = what.substr(at + 2);
+      throw LmError(context + "a number in the body is out of range for a double (" + what.substr(0, 120) +
+                    "); log-probabilities must be finite numbers");
+    } catch (const nlohmann::json::exception&) {
+    }
     throw LmError(context + "body is not valid JSON (" + std::to_string(body.size()) +
                   " bytes: " + server_error_text(body) + ")");
   }
@@ -287,6 +318,39 @@ std::string server_error_text(const std::string& body) {
   constexpr std::size_t kMax = 300;
   if (body.empty()) return "(empty body)";
   return body.size() <= kMax ? body : body.substr(0, kMax) + "...";
+}
+
+std::string base_url_problem(const std::string& url) {
+  size_t start = 0;
+  if (url.rfind("http://", 0) == 0) start = 7;
+  else if (url.rfind("https://", 0) == 0) start = 8;
+  else return "'" + url + "' is not an http:// or https:// URL";
+  const size_t end = url.find_first_of("/?#", start);
+  std::string authority = url.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  if (auto at = authority.rfind('@'); at != std::string::npos) authority = authority.substr(at + 1);
+  std::string port;
+  bool has_port = false;
+  if (!authority.empty() && authority.front() == '[') {
+    const size_t close = authority.find(']');
+    if (close == std::string::npos || close == 1) return "'" + url + "': malformed [IPv6] host";
+    const std::string rest = authority.substr(close + 1);
+    if (!rest.empty() && rest.front() != ':') return "'" + url + "': text after the ] of the [IPv6] host";
+    has_port = !rest.empty();
+    if (has_port) port = rest.substr(1);
+  } else {
+    const size_t colon = authority.find(':');
+    if (colon == 0 || authority.empty()) return "'" + url + "' has no host";
+    has_port = colon != std::string::npos;
+    if (has_port) port = authority.substr(colon + 1);
+  }
+  if (has_port) {
+    const bool digits = !port.empty() && port.size() <= 5 &&
+                        std::all_of(port.begin(), port.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits || std::stoi(port) < 1 || std::stoi(port) > 65535)
+      return "'" + url + "': the port after ':' must be a number from 1 to 65535" +
+             (port.empty() ? " (it is empty; leave the ':' out for the scheme's own port)" : ", got '" + port + "'");
+  }
+  return "";
 }
 
 std::string env_or(const char* name, const std::string& fallback) {

@@ -80,6 +80,11 @@ std::string server_error_text(const std::string& body);
 // LmError whose message starts with `context`.
 nlohmann::json parse_choices_reply(const std::string& body, const std::string& context);
 
+// Why `url` cannot be a server's base URL ("" when it can): the scheme must be
+// http or https, the host non-empty, and a port, when a colon announces one,
+// a number from 1 to 65535 (libcurl reads "http://host:/v1" as port 80).
+std::string base_url_problem(const std::string& url);
+
 // Helpers shared by the backends.
 std::string env_or(const char* name, const std::string& fallback);
 std::string join_url(const std::string& base, const std::string& path);

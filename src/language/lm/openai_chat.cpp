@@ -66,6 +66,8 @@ OpenAiChatClient::OpenAiChatClient(OpenAiChatOptions options) : http_(options.ht
   std::string base = options.base_url.empty()
                          ? env_or("CLIPS_CHAT_BASE_URL", "https://api.openai.com/v1")
                          : options.base_url;
+  if (const std::string why = base_url_problem(base); !why.empty())
+    throw LmError("base URL " + why + (options.base_url.empty() ? " ($CLIPS_CHAT_BASE_URL)" : ""));
   endpoint_ = join_url(base, "/chat/completions");
   model_ = options.model.empty() ? env_or("CLIPS_CHAT_MODEL", "gpt-4o") : options.model;
   api_key_ = options.api_key ? *options.api_key : env_or("OPENAI_API_KEY", "");

@@ -255,6 +255,8 @@ OpenAiCompletionsModel::OpenAiCompletionsModel(OpenAiCompletionsOptions options)
   std::string base = options_.base_url.empty()
                          ? env_or("CLIPS_LM_BASE_URL", "https://api.openai.com/v1")
                          : options_.base_url;
+  if (const std::string why = base_url_problem(base); !why.empty())
+    throw LmError("base URL " + why + (options_.base_url.empty() ? " ($CLIPS_LM_BASE_URL)" : ""));
   endpoint_ = join_url(base, "/completions");
   model_ = options_.model.empty() ? env_or("CLIPS_LM_MODEL", "davinci-002") : options_.model;
   api_key_ = options_.api_key ? *options_.api_key : env_or("OPENAI_API_KEY", "");
