@@ -35,7 +35,7 @@ set(CLIPS_SLOW_TESTS_search "StripsExport.SameOptimalCostFromMidPlanStates:Strip
 set(CLIPS_INTEGRATION_TESTS_engine "FrontEnds.*:AssistantWeights.*:ParticleOptionTable.ABadValueGivesTheSameErrorFromCliPythonAndServer:ParticleOptionTable.TheServerTakesASessionsParticleOptions")
 set(CLIPS_INTEGRATION_TESTS_api "Session.AssistsWithThePacksNoOpAndTurnPredicate:Session.ReplayMatchesClipsInferOnTheRepoExamples:Session.TwoSessionsOnTwoThreadsAgreeWithOneThread")
 set(CLIPS_INTEGRATION_TESTS_app "CliOwnDomain.*:GenerateCli.*:BenchFilesTest.PosteriorsResultsAndProvenance:CliNumbers.BadValuesAreRefusedAtParseTime:CliObservations.ErrorsNameTheAction:CliPlanLimits.*:CliCallLimits.*:UnreadableUtterance.*:BenchCli.*:CliBrokenPlan.*:CliExitCodes.*:CliStreams.*:CliSmaller.*:CliObservations.ActionsFromAPlanFile:CliObservations.AssistNamesTheAssistantsNextAction:CliObservations.InlineActionsReproduceTheDatasetPlan:CliObservations.TheUtteranceStepMatters:CliPlan.EmptyGoalsAreRejected:CliPlan.HelpSaysBudgetsArePerSearchAndOffersARunLimit:CliPlan.ProblemMustMatchFromPlan:BenchShardTest.*:BenchShardCli.BadShardValuesAreUsageErrors:BenchShardCli.EmptyShardWritesValidFilesAndMerges:BenchShardCli.UnloadablePlanIsShardedAndMergedLikeTheOthers")
-set(CLIPS_INTEGRATION_TESTS_eval "Issue46Cli.*:BenchLmFlags.*:InferCli.*:ParticleCli.*")
+set(CLIPS_INTEGRATION_TESTS_eval "Issue46Cli.*:BenchLmFlags.*:InferCli.*:ParticleCli.*:LmServersCli.*")
 set(CLIPS_INTEGRATION_TESTS_studies "ScalingRun.*")
 set(CLIPS_INTEGRATION_TESTS_generate "GenerateDataset.SmallSetLoadsAndEveryPlanChecks:GenerateDataset.TheSeedDecidesEveryByte")
 set(CLIPS_INTEGRATION_TESTS_report "BenchReportTest.ReportFilesAndHtml:BenchReportTest.ResultsCsvHasOneRowPerPlanAndMethod:BenchReportTest.SummaryJson")

@@ -11,6 +11,7 @@
 
 #include "engine/options.hpp"
 #include "util/error.hpp"
+#include "util/program_name.hpp"
 
 namespace clips::serve {
 
@@ -506,7 +507,8 @@ Reply Service::handle(const Request& request) {
       if (method == "POST") return create(body);
       if (!request.owner) {
         Reply r = error_reply(401, "listing or deleting every session needs the owner token "
-                                   "(header 'Authorization: Bearer TOKEN'; clips serve prints it at start)");
+                                   "(header 'Authorization: Bearer TOKEN'; " + util::program_name() +
+                                       " serve prints it at start)");
         r.headers.emplace_back("WWW-Authenticate", "Bearer");
         return r;
       }
