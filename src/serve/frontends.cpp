@@ -513,6 +513,7 @@ int run_stdio(Service& service, std::istream& in, std::ostream& out) {
                               " bytes (the body limit, --max-body, and 4096 for the envelope)";
       reply = {{"status", 413}, {"body", {{"error", msg}, {"status", 413}}}};
       out << reply.dump() << "\n" << std::flush;
+      if (service.exchange_log()) service.exchange_log()->stdio("", reply);
       continue;
     }
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -532,6 +533,7 @@ int run_stdio(Service& service, std::istream& in, std::ostream& out) {
       reply = {{"status", 400}, {"body", {{"error", std::string("malformed request line: ") + e.what()}, {"status", 400}}}};
     }
     out << reply.dump(-1, ' ', false, json::error_handler_t::replace) << "\n" << std::flush;
+    if (service.exchange_log()) service.exchange_log()->stdio(line, reply);
   }
   return 0;
 }

@@ -479,6 +479,12 @@ std::string Service::allowed_methods(const std::string& path) {
 }
 
 Reply Service::handle(const Request& request) {
+  Reply r = respond(request);
+  if (exchange_log_) exchange_log_->exchange(request.method, request.path, request.body, r.status, r.content_type, r.body);
+  return r;
+}
+
+Reply Service::respond(const Request& request) {
   const std::string method = request.method == "HEAD" ? "GET" : request.method;  // the front end drops the body
   const std::string& path = request.path;
   const std::string& body = request.body;

@@ -18,6 +18,7 @@
 
 #include "data/dataset.hpp"
 #include "language/lm/language_model.hpp"
+#include "serve/exchange_log.hpp"
 #include "serve/play_session.hpp"
 
 namespace clips::serve {
@@ -84,7 +85,7 @@ class Service {
   // corpus). Models are built at a domain's first session and kept.
   void set_domain_language_model(DomainLanguageModel f) { domain_lm_ = std::move(f); }
 
-  Reply handle(const Request& request);
+  Reply handle(const Request& request);  // logged to exchange_log() when there is one
   Reply handle(const std::string& method, const std::string& path, const std::string& body) {
     return handle(Request{method, path, body, false});
   }
@@ -98,6 +99,8 @@ class Service {
   size_t expire_idle();
   size_t live_sessions() const;
   const ServiceLimits& limits() const { return limits_; }
+  // $CLIPS_SERVE_EXCHANGE_LOG's log (serve/exchange_log.hpp), or null.
+  const std::shared_ptr<ExchangeLog>& exchange_log() const { return exchange_log_; }
 
  private:
   struct Entry {
@@ -113,6 +116,7 @@ class Service {
     std::mutex lm_mutex;  // held while its model is built: other folders' sessions do not wait
     std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex
   };
+  Reply respond(const Request& request);
   std::shared_ptr<Entry> find(const std::string& id);
   Reply create(const std::string& body);
   std::shared_ptr<lm::LanguageModel> dataset_lm(Served& served);
@@ -135,6 +139,7 @@ class Service {
   std::map<std::string, std::shared_ptr<Entry>> sessions_;
   size_t pending_ = 0;  // sessions being created (they hold a slot)
   std::mt19937_64 rng_;
+  std::shared_ptr<ExchangeLog> exchange_log_ = ExchangeLog::from_environment();
 };
 
 }  // namespace clips::serve
