@@ -71,7 +71,8 @@ std::string exit_code_help() {
          "  3  input error: a file or field is unreadable or invalid (the message names it)\n"
          "  4  no plan exists: the search proved the goal unreachable\n"
          "  5  a time, node or step limit stopped the search before it found a plan\n"
-         "  6  the language model or chat server failed (connection, HTTP status, malformed reply)\n"
+         "  6  the language model or chat server failed (connection, HTTP status, malformed reply), or the server "
+         "cannot score a given text (the start-up check)\n"
          "  7  out of memory\n"
          "  8  internal error (a bug; please report it with the command line)\n"
          "  9  serve: cannot listen (the port is in use, or the address cannot be bound)\n";
