@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build and tests need, but only those missing.
 # Quiet and fast (a dpkg query) when everything is already present.
+# Usage: install-deps.sh [PACKAGE...]: also the packages named (a test's own
+# tools, e.g. lintian for the .deb's check, which the build does not need).
 set -euo pipefail
 PKGS=(
   build-essential cmake pkg-config ccache
@@ -15,6 +17,8 @@ PKGS=(
   python3-venv python3-pip python3-setuptools python3-wheel
   clips libclips-dev
   python3-matplotlib python3-nbconvert python3-ipykernel
+  python3-jsonschema
+  "$@"
 )
 missing=()
 for p in "${PKGS[@]}"; do

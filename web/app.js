@@ -269,7 +269,7 @@ function drawGrid(sc) {
   const held = {};
   for (const o of sc.objects) if (o.held_by) (held[o.held_by] = held[o.held_by] || []).push(o);
   const order = { door: 0, gem: 1, key: 2, robot: 3, human: 4 };
-  const objs = sc.objects.filter((o) => !o.held_by).sort((a, b) => order[a.kind] - order[b.kind]);
+  const objs = sc.objects.filter((o) => !o.held_by && o.x !== undefined).sort((a, b) => order[a.kind] - order[b.kind]);
   for (const o of objs) {
     const [px, py] = at(o);
     if (o.kind === 'door') {

@@ -13,7 +13,9 @@ for the assistant's next action::
     print(clips_assist.goal_probabilities(s.posterior()), s.assist()["action"])
 
 Posteriors, steps and decisions are the engine's JSON form as plain dicts, the
-same the server and ``clips infer --json`` write (docs/api.md).
+same the server and ``clips infer --json`` write (docs/api.md); their keys are
+typed by the TypedDicts of :mod:`clips_assist.results` (Posterior, Step,
+Decision, ...). In Jupyter a session shows its scene and goal posterior.
 
 Long calls run without the GIL; Ctrl-C interrupts them (KeyboardInterrupt) and
 leaves the session as it was. observe, hear and assist also take
@@ -38,15 +40,20 @@ from ._core import (
     run_plan,
 )
 from ._core import _join_abandoned
+from . import _display  # noqa: F401  (Session._repr_png_ and _repr_html_)
+from .results import Decision, Posterior, Step
 
 __all__ = [
     "CancelledError",
+    "Decision",
     "InapplicableActionError",
     "InputError",
     "LanguageModelError",
     "Session",
     "TimeLimitError",
     "MemoryLimitError",
+    "Posterior",
+    "Step",
     "__version__",
     "data_directory",
     "example_dataset",
@@ -77,6 +84,6 @@ def example_dataset(name: str = "doors-keys-gems") -> str:
     return path
 
 
-def goal_probabilities(posterior: dict) -> dict:
+def goal_probabilities(posterior: Posterior) -> "dict[str, float]":
     """{goal label: probability} of a posterior dict (its ``goals`` list), in the goals' order."""
     return {g["goal"]: g["p"] for g in posterior["goals"]}

@@ -70,6 +70,11 @@ struct LmFlags {
   std::string base_url, model;
   double lm_timeout = 120;  // seconds per HTTP attempt (openai)
   double lm_max_reply_mb = 16;  // largest reply accepted (openai)
+  std::size_t lm_batch_size = 16;   // prompts per request (openai)
+  bool lm_single_prompt = false;    // one prompt per request, as a string (openai; Ollama)
+  bool lm_prompt_logprobs = false;  // vLLM's prompt_logprobs instead of echo (openai)
+  // What the start-up check learnt of the server (check_lm_server); set once.
+  std::optional<language::LanguageModelOptions> checked;
   std::string speaker_rule = "paper";  // CLIPS speaker commands: paper or code (the reference's)
   std::string utterance_timing = "after";  // state explaining an utterance: after (s_k) or before (s_{k-1})
   std::string assistant_turns = "taken";  // refinement at the assistant's turns (inference::AssistantTurns)
@@ -88,8 +93,14 @@ void add_assistance_options(CLI::App* cmd, LmFlags& flags);
 // inference's options (the same parsing for every subcommand).
 void apply_model_flags(const LmFlags& flags, eval::ExperimentOptions& options);
 void apply_model_flags(const LmFlags& flags, inference::InferenceOptions& options);
-// The options the --lm flags say, for every subcommand alike.
+// The options the --lm flags say, for every subcommand alike (after
+// check_lm_server, adapted to what the server takes).
 language::LanguageModelOptions lm_options(const LmFlags& flags);
+// --lm openai: asks the server once to score a short text, prints the
+// one-line outcome on stderr and keeps what it learnt in `flags`; throws
+// LmError (exit 6) with that line when the server cannot score a given text.
+// Nothing for the embedded model, or when already checked.
+void check_lm_server(LmFlags& flags);
 // --lm-timeout in milliseconds, rounded up (never 0, which libcurl reads as
 // "no timeout"); it also bounds each request of the multimodal chat method.
 std::chrono::milliseconds lm_timeout_ms(const LmFlags& flags);
@@ -97,9 +108,10 @@ std::chrono::milliseconds lm_timeout_ms(const LmFlags& flags);
 // A dataset whose stimuli.json is present but does not read is an input
 // error for infer, assist and bench too (validate reports it per plan).
 void require_stimuli(const data::Dataset& ds);
-std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags);
+// Both run check_lm_server first.
+std::shared_ptr<lm::LanguageModel> make_lm(LmFlags& flags);
 // The model for a dataset's domain (language::make_dataset_language_model).
-std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& flags, const data::Dataset& ds);
+std::shared_ptr<lm::LanguageModel> make_lm(LmFlags& flags, const data::Dataset& ds);
 
 void register_validate(CLI::App& app);
 void register_show(CLI::App& app);

@@ -21,6 +21,7 @@
 #include "eval/bench_shards.hpp"
 #include "report/report.hpp"
 #include "util/data_dir.hpp"
+#include "util/program_name.hpp"
 
 namespace clips::app {
 
@@ -104,8 +105,8 @@ void note_shard(const eval::BenchReport& rep) {
   if (rep.plans.empty())
     fmt::print(stderr,
                "bench: shard {}/{} has no plans (the sweep has {}, dealt round-robin); its files have no rows, "
-               "and `clips bench merge` takes it like any other shard\n",
-               k, rep.shards.count, rep.selection.size());
+               "and `{} bench merge` takes it like any other shard\n",
+               k, rep.shards.count, rep.selection.size(), util::program_name());
   else
     fmt::print(stderr, "bench: shard {}/{}: {} of the sweep's {} plans\n", k, rep.shards.count, rep.plans.size(),
                rep.selection.size());
@@ -125,7 +126,7 @@ void load_dataset_for_report(eval::BenchReport& rep, const std::string& given) {
 void register_merge(CLI::App* bench) {
   auto* cmd = bench->add_subcommand(
       "merge",
-      "Merge the --out folders of `clips bench --shard K/N` runs into the files of one unsharded run: plans in "
+      "Merge the --out folders of `" + util::program_name() + " bench --shard K/N` runs into the files of one unsharded run: plans in "
       "dataset order, means and standard errors over all of them (no plan runs again)");
   auto out = std::make_shared<std::string>();
   auto report = std::make_shared<std::string>();
@@ -136,7 +137,7 @@ void register_merge(CLI::App* bench) {
   auto* out_opt = cmd->add_option("--out", *out, "Write the merged summary.json, results.csv, posteriors.csv and "
                                                  "outcomes.json into this directory")
                       ->required();
-  auto* report_opt = cmd->add_option("--report", *report, "Also write DIR/report.html, as `clips bench --report`");
+  auto* report_opt = cmd->add_option("--report", *report, "Also write DIR/report.html, as `" + util::program_name() + " bench --report`");
   cmd->add_option("--dataset", *dataset,
                   "With --report: the dataset folder for the pictures (default: the one the shards recorded; its "
                   "fingerprint must be theirs)");
@@ -145,7 +146,7 @@ void register_merge(CLI::App* bench) {
   cmd->callback([=] {
     for (const CLI::Option* opt : bench->get_options())
       if (opt->count() > 0)
-        throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench merge`");
+        throw UsageError(opt->get_name() + " is an option of `" + util::program_name() + " bench`, not of `" + util::program_name() + " bench merge`");
     reject_empty(out_opt, *out);
     reject_empty(report_opt, *report);
     std::vector<eval::BenchPart> read;
@@ -192,7 +193,7 @@ void register_particles(CLI::App* bench) {
   cmd->callback([=] {
     for (const CLI::Option* opt : bench->get_options())
       if (opt->count() > 0)
-        throw UsageError(opt->get_name() + " is an option of `clips bench`, not of `clips bench particles`");
+        throw UsageError(opt->get_name() + " is an option of `" + util::program_name() + " bench`, not of `" + util::program_name() + " bench particles`");
     reject_empty(out_opt, *out);
     o->dataset = dataset_dir(o->dataset);
     const auto ds = data::Dataset::load(o->dataset);
@@ -229,7 +230,7 @@ void register_bench(CLI::App& app) {
   add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
   auto* out_opt = cmd->add_option("--out", *out,
                                   "Write results.csv, posteriors.csv (goal posterior per plan, method, step and goal), "
-                                  "summary.json and outcomes.json (every outcome at full precision, for `clips bench "
+                                  "summary.json and outcomes.json (every outcome at full precision, for `" + util::program_name() + " bench "
                                   "merge`) into this directory");
   cmd->add_option("--jobs,-j", o->jobs, "Plans evaluated in parallel (default: all cores; at most 256)")
       ->check(PositiveInteger)
@@ -250,7 +251,7 @@ void register_bench(CLI::App& app) {
                   "(evaluated ones or --plans, in dataset order; unloadable ones last) are dealt round-robin: the "
                   "plan at position i goes to part (i mod N)+1, so parts differ by at most one plan and each mixes "
                   "easy and hard problems. A part may have no plan. Join the parts' --out folders with "
-                  "`clips bench merge`")
+                  "`" + util::program_name() + " bench merge`")
       ->check(ShardValue);
   // issue 8: HTML report and the multimodal baseline's chat endpoint.
   auto report = std::make_shared<std::string>();
@@ -299,6 +300,7 @@ void register_bench(CLI::App& app) {
     reject_empty(report_opt, *report);
     o->dataset = dataset_dir(o->dataset);
     o->lm = lm->kind;  // with --lm-base-url, --lm-model, --lm-timeout, --lm-max-reply-mb
+    check_lm_server(*lm);
     o->lm_options = lm_options(*lm);
     apply_model_flags(*lm, o->experiment);
     o->experiment.multimodal.http.total_timeout = lm_timeout_ms(*lm);

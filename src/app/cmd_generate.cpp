@@ -102,6 +102,7 @@ void register_generate(CLI::App& app) {
     g.refine_nodes = o->max_nodes;
     g.temperature = o->temperature == "prior" ? std::nullopt : std::optional<double>(std::stod(o->temperature));
     g.lm = o->lm.kind;
+    check_lm_server(o->lm);
     g.lm_options = lm_options(o->lm);
     if (o->domain_file.empty() && domains::builtin_pack(o->domain)->generated_kinds().empty())
       throw InputError("the " + o->domain + " pack cannot generate problems (only doors-keys-gems can so far)");

@@ -15,6 +15,7 @@
 #include "language/listener.hpp"
 #include "language/lm/wordnet_lexicon.hpp"
 #include "pddl/sexpr.hpp"
+#include "util/program_name.hpp"
 #include "eval/experiment.hpp"
 
 namespace clips::app {
@@ -94,7 +95,8 @@ void print_derived(const data::Dataset& ds) {
 
 void register_validate(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "validate", "Simulate every observed plan and its completion; check the true goals; rehearse clips bench on one plan");
+      "validate", "Simulate every observed plan and its completion; check the true goals; rehearse " + util::program_name() +
+                      " bench on one plan");
   auto dataset = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
   auto plans_only = std::make_shared<bool>(false);
@@ -102,7 +104,7 @@ void register_validate(CLI::App& app) {
   add_dataset_option(cmd, *dataset, "Dataset directory (with domain.pddl, problems/, plans/)");
   cmd->add_flag("-q,--quiet", *quiet, "Print only failures, warnings and the final lines");
   cmd->add_flag("--plans-only", *plans_only,
-                "Check the plans only; skip the rehearsal of clips bench (every method's set-up on the first plan "
+                "Check the plans only; skip the rehearsal of " + util::program_name() + " bench (every method's set-up on the first plan "
                 "that checks, with tiny search budgets)");
   add_lm_options(cmd, *lm);
   cmd->callback([=] {

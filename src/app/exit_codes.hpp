@@ -16,7 +16,7 @@ enum ExitCode : int {
   kExitInput = 3,          // bad input data: unreadable file, malformed PDDL/plan/JSON, unknown object, ...
   kExitUnsolvable = 4,     // search finished and proved that no plan reaches the goal
   kExitLimit = 5,          // a time, node or step limit stopped the search before it found a plan
-  kExitLanguageModel = 6,  // the language model or chat server failed (network, HTTP, malformed reply)
+  kExitLanguageModel = 6,  // the language model or chat server failed (network, HTTP, malformed reply, cannot score)
   kExitOutOfMemory = 7,    // memory ran out
   kExitInternal = 8,       // an unexpected internal error (a bug: please report it)
   kExitCannotListen = 9,   // serve: the port is in use (or the address cannot be bound)

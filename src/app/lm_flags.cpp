@@ -1,10 +1,12 @@
 // Shared --lm flags of the subcommands.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "app/cli.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
+#include "util/program_name.hpp"
 
 namespace clips::app {
 
@@ -13,18 +15,30 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
       ->check(CLI::IsMember(language::language_model_kinds()));
   cmd->add_option("--lm-base-url", f.base_url,
                   "openai: completions API base URL, http:// or https:// (default $CLIPS_LM_BASE_URL, else "
-                  "https://api.openai.com/v1; the key is read from $OPENAI_API_KEY)")
+                  "$OPENAI_BASE_URL, else https://api.openai.com/v1; the key is read from $OPENAI_API_KEY). At "
+                  "start-up one short text is scored, and one line on stderr says whether and how the server "
+                  "can score (vLLM and servers that echo the prompt with logprobs can; llama.cpp and Ollama cannot)")
       ->check(HttpUrl);
   cmd->add_option("--lm-model", f.model, "openai: model name (default $CLIPS_LM_MODEL, else davinci-002)");
   cmd->add_option("--lm-timeout", f.lm_timeout,
                   "openai (and the multimodal method's chat server): seconds one request may take before it counts "
                   "as timed out (default 120; rounded up to whole milliseconds); a "
-                  "timed-out request is tried once more, connection failures and HTTP 429/5xx up to 4 more times")
+                  "timed-out request is tried once more, connection failures and HTTP 429/5xx up to 4 more times (not a 5xx "
+                  "that says a feature is not supported: that answer is final)")
       ->check(PositiveSeconds);
   cmd->add_option("--lm-max-reply-mb", f.lm_max_reply_mb,
                   "openai: largest reply accepted, in MiB (default 16); a longer reply is an error, so a server "
                   "that streams without end cannot fill memory")
       ->check(CLI::Range(0.001, 4096.0));
+  cmd->add_option("--lm-batch-size", f.lm_batch_size, "openai: prompts per request (default 16; 1 to 1024)")
+      ->check(PositiveInteger)
+      ->check(CLI::Range(1, 1024));
+  cmd->add_flag("--lm-single-prompt", f.lm_single_prompt,
+                "openai: send each prompt alone, as a string rather than an array (servers that refuse an array, "
+                "such as Ollama's; the start-up check switches to it by itself)");
+  cmd->add_flag("--lm-prompt-logprobs", f.lm_prompt_logprobs,
+                "openai: ask for vLLM's prompt_logprobs instead of echo + logprobs (as $CLIPS_LM_PROMPT_LOGPROBS=1; "
+                "the start-up check tries it by itself when the server refuses or ignores echo)");
 }
 
 void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
@@ -100,12 +114,23 @@ void apply_model_flags(const LmFlags& f, eval::ExperimentOptions& eo) {
 }
 
 language::LanguageModelOptions lm_options(const LmFlags& f) {
+  if (f.checked) return *f.checked;
   language::LanguageModelOptions o;
   o.base_url = f.base_url;
   o.model = f.model;
   o.timeout_seconds = f.lm_timeout;
   o.max_reply_mb = f.lm_max_reply_mb;
+  o.batch_size = f.lm_batch_size;
+  o.single_prompt = f.lm_single_prompt;
+  if (f.lm_prompt_logprobs) o.prompt_logprobs = true;
   return o;
+}
+
+void check_lm_server(LmFlags& f) {
+  if (f.kind != "openai" || f.checked) return;
+  const language::ServerCheck check = language::check_language_model_server(lm_options(f));
+  std::fprintf(stderr, "%s: %s\n", util::program_name().c_str(), check.line.c_str());
+  f.checked = check.options;
 }
 
 void require_stimuli(const data::Dataset& ds) {
@@ -117,9 +142,13 @@ std::chrono::milliseconds lm_timeout_ms(const LmFlags& f) {
   return std::chrono::milliseconds(std::max(1LL, static_cast<long long>(std::ceil(std::min(f.lm_timeout, 1e9) * 1000))));
 }
 
-std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f) { return language::make_language_model(f.kind, lm_options(f)); }
+std::shared_ptr<lm::LanguageModel> make_lm(LmFlags& f) {
+  check_lm_server(f);
+  return language::make_language_model(f.kind, lm_options(f));
+}
 
-std::shared_ptr<lm::LanguageModel> make_lm(const LmFlags& f, const data::Dataset& ds) {
+std::shared_ptr<lm::LanguageModel> make_lm(LmFlags& f, const data::Dataset& ds) {
+  check_lm_server(f);
   return language::make_dataset_language_model(f.kind, lm_options(f), ds);
 }
 

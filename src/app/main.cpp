@@ -17,6 +17,7 @@
 #include "language/lm/http_client.hpp"
 #include "language/lm/language_model.hpp"
 #include "util/error.hpp"
+#include "util/program_name.hpp"
 #include "util/version.hpp"
 
 namespace clips::app {
@@ -71,7 +72,8 @@ std::string exit_code_help() {
          "  3  input error: a file or field is unreadable or invalid (the message names it)\n"
          "  4  no plan exists: the search proved the goal unreachable\n"
          "  5  a time, node or step limit stopped the search before it found a plan\n"
-         "  6  the language model or chat server failed (connection, HTTP status, malformed reply)\n"
+         "  6  the language model or chat server failed (connection, HTTP status, malformed reply), or the server "
+         "cannot score a given text (the start-up check)\n"
          "  7  out of memory\n"
          "  8  internal error (a bug; please report it with the command line)\n"
          "  9  serve: cannot listen (the port is in use, or the address cannot be bound)\n";
@@ -155,8 +157,12 @@ std::string time_limit_message(const std::string& command, double seconds) {
 
 int main(int argc, char** argv) {
   using namespace clips::app;
-  CLI::App app{"clips: infer a human's goal from their actions and instructions, and help them reach it.\n"
-               "Implements Cooperative Language-Guided Inverse Plan Search (Zhi-Xuan et al., AAMAS 2024)."};
+  // "clips" in the build tree, "clips-assist" installed: every message, --help and --version say which.
+  clips::util::set_program_name(argc > 0 ? argv[0] : nullptr);
+  const std::string& self = clips::util::program_name();
+  CLI::App app{self + ": infer a human's goal from their actions and instructions, and help them reach it.\n"
+                      "Implements Cooperative Language-Guided Inverse Plan Search (Zhi-Xuan et al., AAMAS 2024).",
+               self};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   app.set_version_flag("--version", clips::util::version_line(), "Print the version (and git commit) and exit");
@@ -174,13 +180,13 @@ int main(int argc, char** argv) {
   register_serve(app);
   register_generate(app);
   require_finite_numbers(app);  // NaN and infinities, for every number any subcommand reads
-  const std::string exit_footer = "Exit status: 0 ok, 2 usage, 3 input error, ...; see clips --help.";
+  const std::string exit_footer = "Exit status: 0 ok, 2 usage, 3 input error, ...; see " + self + " --help.";
   for (CLI::App* sub : app.get_subcommands({})) {
     sub->footer(exit_footer);
     for (CLI::App* nested : sub->get_subcommands({})) nested->footer(exit_footer);  // e.g. bench merge
   }
-  auto fail = [](int code, const char* what) {
-    std::fprintf(stderr, "clips: error: %s\n", what);
+  auto fail = [&self](int code, const char* what) {
+    std::fprintf(stderr, "%s: error: %s\n", self.c_str(), what);
     return code;
   };
   try {
@@ -191,14 +197,14 @@ int main(int argc, char** argv) {
     if (app.get_subcommands().empty() && !app.remaining().empty() && dynamic_cast<const CLI::RequiredError*>(&e)) {
       std::string names;
       for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
-      std::fprintf(stderr, "clips: unknown subcommand '%s'; valid subcommands: %s\nRun with --help for more information.\n",
-                   app.remaining().front().c_str(), names.c_str());
+      std::fprintf(stderr, "%s: unknown subcommand '%s'; valid subcommands: %s\nRun with --help for more information.\n",
+                   self.c_str(), app.remaining().front().c_str(), names.c_str());
       return kExitUsage;
     }
     // --help and --version print and succeed; every other parse error is a usage error.
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "clips: error: %s\nRun with --help for more information.\n", e.what());
+    std::fprintf(stderr, "%s: error: %s\nRun with --help for more information.\n", self.c_str(), e.what());
     return kExitUsage;
   } catch (const clips::InputError& e) {
     return fail(kExitInput, e.what());
@@ -218,10 +224,10 @@ int main(int argc, char** argv) {
     // A thread that cannot start (EAGAIN: the memory or process limits) is the
     // machine's resources running out, not a bug.
     if (e.code() == std::errc::resource_unavailable_try_again) return fail(kExitOutOfMemory, e.what());
-    std::fprintf(stderr, "clips: internal error: %s\n", e.what());
+    std::fprintf(stderr, "%s: internal error: %s\n", self.c_str(), e.what());
     return kExitInternal;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "clips: internal error: %s\n", e.what());
+    std::fprintf(stderr, "%s: internal error: %s\n", self.c_str(), e.what());
     return kExitInternal;
   }
   return g_exit_code;

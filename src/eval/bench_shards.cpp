@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "util/error.hpp"
+#include "util/program_name.hpp"
 
 namespace clips::eval {
 
@@ -500,8 +501,8 @@ BenchReport read_bench_part(const std::string& dir) {
   for (const std::string& name : bench_file_names())
     if (!fs::exists(fs::path(dir) / name, ec))
       throw InputError(fmt::format("{}: {} is missing; a part needs all of summary.json, results.csv, "
-                                   "posteriors.csv and outcomes.json (did its `clips bench --out` finish?)",
-                                   dir, name));
+                                   "posteriors.csv and outcomes.json (did its `{} bench --out` finish?)",
+                                   dir, name, util::program_name()));
   const std::string file = (fs::path(dir) / "outcomes.json").string();
   return read_bench_outcomes(read_file(file), file);
 }

@@ -49,6 +49,39 @@ commands::TypeLookup type_lookup(const pddl::Task& task, const domains::Pack& pa
 
 std::vector<std::string> language_model_kinds() { return {"embedded", "openai"}; }
 
+namespace {
+
+lm::OpenAiCompletionsOptions openai_options(const LanguageModelOptions& options) {
+  lm::OpenAiCompletionsOptions o;
+  o.base_url = options.base_url;
+  o.model = options.model;
+  o.api_key = options.api_key;
+  if (options.timeout_seconds > 0) {
+    // Rounded up: a timeout below a millisecond must not become 0, which libcurl reads as "none".
+    o.http.total_timeout = std::chrono::milliseconds(
+        std::max(1LL, static_cast<long long>(std::ceil(std::min(options.timeout_seconds, 1e9) * 1000))));
+  }
+  if (options.max_reply_mb > 0) o.http.max_reply_bytes = static_cast<std::size_t>(options.max_reply_mb * 1048576.0);
+  if (options.batch_size > 0) o.batch_size = options.batch_size;
+  o.single_prompt = options.single_prompt;
+  o.prompt_logprobs = options.prompt_logprobs;
+  o.try_max_tokens_zero = !options.max_tokens_one;
+  return o;
+}
+
+}  // namespace
+
+ServerCheck check_language_model_server(const LanguageModelOptions& options) {
+  lm::OpenAiCompletionsModel model(openai_options(options));
+  const lm::ScoringCheck check = model.check_scoring();
+  if (!check.can_score) throw lm::LmError(check.line);
+  ServerCheck out{check.line, options};
+  out.options.single_prompt = model.single_prompt();
+  out.options.prompt_logprobs = model.using_prompt_logprobs();
+  out.options.max_tokens_one = model.using_max_tokens_fallback();
+  return out;
+}
+
 std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, const LanguageModelOptions& options) {
   std::shared_ptr<lm::LanguageModel> inner;
   if (kind.empty() || kind == "embedded") {
@@ -56,17 +89,7 @@ std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, 
     o.data_dir = options.data_dir;
     inner = std::make_shared<lm::EmbeddedLanguageModel>(o);
   } else if (kind == "openai") {
-    lm::OpenAiCompletionsOptions o;
-    o.base_url = options.base_url;
-    o.model = options.model;
-    o.api_key = options.api_key;
-    if (options.timeout_seconds > 0) {
-      // Rounded up: a timeout below a millisecond must not become 0, which libcurl reads as "none".
-      o.http.total_timeout = std::chrono::milliseconds(
-          std::max(1LL, static_cast<long long>(std::ceil(std::min(options.timeout_seconds, 1e9) * 1000))));
-    }
-    if (options.max_reply_mb > 0) o.http.max_reply_bytes = static_cast<std::size_t>(options.max_reply_mb * 1048576.0);
-    inner = std::make_shared<lm::OpenAiCompletionsModel>(o);
+    inner = std::make_shared<lm::OpenAiCompletionsModel>(openai_options(options));
   } else {
     throw InputError("unknown language model '" + kind + "' (known: embedded, openai)");
   }

@@ -8,6 +8,7 @@
 // The functions take a grounded task and a state rather than a dataset, so the
 // listener works on any problem of the two domains (the CLI does the dataset
 // loading).
+#include <cstddef>
 #include <map>
 #include <memory>
 #include <optional>
@@ -39,12 +40,30 @@ struct LanguageModelOptions {
   double timeout_seconds = 0;
   // openai: largest reply accepted, in MiB (0 = the backend's default, 16).
   double max_reply_mb = 0;
+  // openai: prompts per request (0 = the backend's default, 16); one prompt
+  // per request, sent as a string (Ollama refuses an array); vLLM's
+  // prompt_logprobs instead of echo (nullopt: $CLIPS_LM_PROMPT_LOGPROBS);
+  // max_tokens=1 from the start (a server known to refuse 0).
+  std::size_t batch_size = 0;
+  bool single_prompt = false;
+  std::optional<bool> prompt_logprobs;
+  bool max_tokens_one = false;
   // embedded: directory of the corpus files ("" = the backend's default).
   std::string data_dir;
 };
 
 // Names accepted by make_language_model, default first.
 std::vector<std::string> language_model_kinds();
+
+// What an openai server said to one short scoring request: the one line to
+// show the user and the options adapted to what the server takes (a single
+// prompt, max_tokens=1, prompt_logprobs). Throws LmError, whose message is
+// that line, when the server cannot score a given text or cannot be reached.
+struct ServerCheck {
+  std::string line;
+  LanguageModelOptions options;
+};
+ServerCheck check_language_model_server(const LanguageModelOptions& options);
 
 // "embedded" (or "") -> EmbeddedLanguageModel, "openai" -> OpenAiCompletionsModel,
 // each wrapped in a CachedLanguageModel because inference and the listener

@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "serve/http_guard.hpp"
+#include "util/program_name.hpp"
 
 namespace clips::serve {
 
@@ -548,8 +549,8 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   else if (!server.bind_to_port(options.host, port)) port = -1;
   if (port < 0) {
     const int err = errno;
-    log << "clips serve: error: cannot listen on " << url_authority(options.host, options.port) << ": "
-        << (err == EADDRINUSE ? "the port is already in use (is another clips serve running?)"
+    log << clips::util::program_name() << " serve: error: cannot listen on " << url_authority(options.host, options.port) << ": "
+        << (err == EADDRINUSE ? "the port is already in use (is another " + clips::util::program_name() + " serve running?)"
                               : err ? std::strerror(err) : "the address cannot be bound")
         << "\n"
         << std::flush;
@@ -587,11 +588,11 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   });
 
   if (options.host != "127.0.0.1" && options.host != "localhost" && options.host != "::1")
-    log << "clips serve: note: listening on " << options.host << ", not loopback only: anyone who can reach it may use it\n";
+    log << clips::util::program_name() << " serve: note: listening on " << options.host << ", not loopback only: anyone who can reach it may use it\n";
   if (!options.owner_token.empty())
-    log << "clips serve: owner token " << options.owner_token
+    log << clips::util::program_name() << " serve: owner token " << options.owner_token
         << " (GET or DELETE /api/sessions with the header 'Authorization: Bearer TOKEN' lists or deletes every session)\n";
-  log << "clips serve: listening on http://" << url_authority(options.host, port) << "/\n" << std::flush;
+  log << clips::util::program_name() << " serve: listening on http://" << url_authority(options.host, port) << "/\n" << std::flush;
   server.listen_after_bind();  // returns after stop(), once in-flight requests are answered
 
   // listen_after_bind can also end on its own (socket error): wake the stopper.
@@ -601,7 +602,7 @@ int run_http(Service& service, const HttpOptions& options, std::ostream& log) {
   }
   stopper.join();
   sweeper.join();
-  log << "clips serve: stopped\n" << std::flush;
+  log << clips::util::program_name() << " serve: stopped\n" << std::flush;
   return 0;
 }
 
@@ -641,6 +642,7 @@ int run_stdio(Service& service, std::istream& in, std::ostream& out) {
                               " bytes (the body limit, --max-body, and 4096 for the envelope)";
       reply = {{"status", 413}, {"body", {{"error", msg}, {"status", 413}}}};
       out << reply.dump() << "\n" << std::flush;
+      if (service.exchange_log()) service.exchange_log()->stdio("", reply);
       continue;
     }
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -661,6 +663,7 @@ int run_stdio(Service& service, std::istream& in, std::ostream& out) {
       reply = {{"status", 400}, {"body", {{"error", std::string("malformed request line: ") + e.what()}, {"status", 400}}}};
     }
     out << reply.dump(-1, ' ', false, json::error_handler_t::replace) << "\n" << std::flush;
+    if (service.exchange_log()) service.exchange_log()->stdio(line, reply);
   }
   return 0;
 }

@@ -296,8 +296,9 @@ json PlaySession::scene() const {
     json objs = json::array();
     for (const auto& o : g.objects) {
       json oj = {{"name", o.name}, {"kind", kind_name(o.kind)}, {"colour", o.colour}};
-      if (o.held_by.empty()) oj["x"] = o.x, oj["y"] = o.y;
-      else oj["held_by"] = o.held_by;
+      // On the grid (1-based), carried, or neither: a key used up on a door.
+      if (!o.held_by.empty()) oj["held_by"] = o.held_by;
+      else if (o.x >= 1 && o.y >= 1) oj["x"] = o.x, oj["y"] = o.y;
       if (o.kind == render::ObjectKind::Door) oj["locked"] = o.locked;
       objs.push_back(std::move(oj));
     }

@@ -16,6 +16,7 @@
 
 #include "engine/options.hpp"
 #include "util/error.hpp"
+#include "util/program_name.hpp"
 
 namespace clips::serve {
 
@@ -597,6 +598,12 @@ std::string Service::allowed_methods(const std::string& path) {
 }
 
 Reply Service::handle(const Request& request) {
+  Reply r = respond(request);
+  if (exchange_log_) exchange_log_->exchange(request.method, request.path, request.body, r.status, r.content_type, r.body);
+  return r;
+}
+
+Reply Service::respond(const Request& request) {
   t_text_problem = false;
   const std::string method = request.method == "HEAD" ? "GET" : request.method;  // the front end drops the body
   const std::string& path = request.path;
@@ -627,7 +634,8 @@ Reply Service::handle(const Request& request) {
       if (method == "POST") return create(body, request.owner ? "" : request.client);
       if (!request.owner) {
         Reply r = error_reply(401, "listing or deleting every session needs the owner token "
-                                   "(header 'Authorization: Bearer TOKEN'; clips serve prints it at start)");
+                                   "(header 'Authorization: Bearer TOKEN'; " + util::program_name() +
+                                       " serve prints it at start)");
         r.headers.emplace_back("WWW-Authenticate", "Bearer");
         return r;
       }

@@ -17,6 +17,7 @@
 
 #include "data/dataset.hpp"
 #include "language/lm/language_model.hpp"
+#include "serve/exchange_log.hpp"
 #include "serve/play_session.hpp"
 
 namespace clips::serve {
@@ -106,7 +107,7 @@ class Service {
   // whoever knows one may read and play that session.
   void set_random_source(RandomSource source) { random_ = std::move(source); }
 
-  Reply handle(const Request& request);
+  Reply handle(const Request& request);  // logged to exchange_log() when there is one
   Reply handle(const std::string& method, const std::string& path, const std::string& body) {
     return handle(Request{method, path, body, false, ""});
   }
@@ -120,6 +121,8 @@ class Service {
   size_t expire_idle();
   size_t live_sessions() const;
   const ServiceLimits& limits() const { return limits_; }
+  // $CLIPS_SERVE_EXCHANGE_LOG's log (serve/exchange_log.hpp), or null.
+  const std::shared_ptr<ExchangeLog>& exchange_log() const { return exchange_log_; }
 
  private:
   struct Entry {
@@ -136,6 +139,7 @@ class Service {
     std::mutex lm_mutex;  // held while its model is built: other folders' sessions do not wait
     std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex
   };
+  Reply respond(const Request& request);
   std::shared_ptr<Entry> find(const std::string& id);
   Reply create(const std::string& body, const std::string& client);
   std::shared_ptr<lm::LanguageModel> dataset_lm(Served& served);
@@ -162,6 +166,7 @@ class Service {
   size_t pending_ = 0;  // sessions being created (they hold a slot)
   std::map<std::string, size_t> pending_by_client_;
   RandomSource random_ = os_random_bytes;
+  std::shared_ptr<ExchangeLog> exchange_log_ = ExchangeLog::from_environment();
 };
 
 }  // namespace clips::serve

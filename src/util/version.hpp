@@ -8,7 +8,8 @@ namespace clips::util {
 
 std::string version();     // e.g. "0.1.0", from project() in CMakeLists.txt
 std::string git_commit();  // abbreviated hash, "" when unknown (no git at configure time)
-// "clips 0.1.0 (commit 1234abcd)" or "clips 0.1.0" without a commit.
+// "clips 0.1.0 (commit 1234abcd)" or "clips 0.1.0" without a commit; the name
+// is util::program_name() ("clips-assist 0.1.0" installed).
 std::string version_line();
 
 }  // namespace clips::util

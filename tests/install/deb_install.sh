@@ -8,7 +8,12 @@
 #   1. the installed CLI, clips-assist, runs inference on the installed example;
 #   2. a C++ consumer (a copy of examples/consumer) builds with
 #      find_package(ClipsAssist) and with pkg-config, and reads /usr/share/clips-assist;
-#   3. the README's Python example runs on Debian's python3 with the installed module.
+#   3. the README's Python example runs on Debian's python3 with the installed module,
+#      whose dist-info importlib.metadata reads;
+#   4. it feels native: `lintian` finds no error, `man clips-assist` renders the
+#      manual page, the bash completion completes, --version and messages say
+#      clips-assist, the changelog is there, the shared library has its soname
+#      and a program links with it (lintian comes through scripts/install-deps.sh).
 # The package is removed at the end. Needs root and dpkg: otherwise it skips
 # (exit 77); so does a machine where clips-assist is already installed.
 # Usage: deb_install.sh BUILD_DIR SOURCE_DIR
@@ -48,10 +53,23 @@ deb=$(ls "$debbuild"/clips-assist_*.deb)
 [ "$(dpkg-deb -f "$deb" Package)" = clips-assist ] || fail "the package is not named clips-assist"
 dpkg-deb -c "$deb" | awk '{print $6}' >"$tmp/files"
 for f in ./usr/bin/clips-assist ./usr/include/clips-assist/clips/clips.hpp ./usr/share/clips-assist/language/corpus-dkg.tsv \
-         ./usr/share/clips-assist/examples/doors-keys-gems/domain.pddl ./usr/lib/python3/dist-packages/clips_assist/__init__.py; do
+         ./usr/share/clips-assist/examples/doors-keys-gems/domain.pddl ./usr/lib/python3/dist-packages/clips_assist/__init__.py \
+         ./usr/share/man/man1/clips-assist.1.gz ./usr/share/bash-completion/completions/clips-assist \
+         ./usr/share/doc/clips-assist/changelog.gz ./usr/share/doc/clips-assist/copyright \
+         ./usr/share/clips-assist/schema/serve-api.openapi.json \
+         ./usr/lib/python3/dist-packages/clips_assist-$(dpkg-deb -f "$deb" Version).dist-info/METADATA; do
   grep -qx "$f" "$tmp/files" || fail "the package lacks $f"
 done
 grep -Eq '^\./usr/lib/.*libclips_assist\.a$' "$tmp/files" || fail "the package lacks libclips_assist.a"
+grep -Eq '^\./usr/lib/.*libclips_assist\.so\.[0-9]+\.[0-9]+$' "$tmp/files" || fail "the package lacks libclips_assist.so.X.Y"
+dpkg-deb -f "$deb" Maintainer | grep -Eq '^[^<>]+ <[^@<> ]+@[^@<> ]+\.[a-z]+>$' \
+  || fail "Maintainer has no e-mail address: $(dpkg-deb -f "$deb" Maintainer)"
+
+# lintian (a Debian package the build does not need: installed for this test).
+bash "$src/scripts/install-deps.sh" lintian || fail "cannot install lintian"
+lintian --no-tag-display-limit "$deb" >"$tmp/lintian.txt" 2>&1 || true
+cat "$tmp/lintian.txt"
+if grep -q '^E: ' "$tmp/lintian.txt"; then fail "lintian reports errors: $(grep '^E: ' "$tmp/lintian.txt" | head -5)"; fi
 grep -Eq '^\./usr/lib/python3/dist-packages/clips_assist/_core\..*\.so$' "$tmp/files" || fail "the package lacks the module"
 # No file of Debian's clips packages, nor any path they use.
 dpkg -L clips libclips-dev | sed 's|^|.|' | sort >"$tmp/theirs"
@@ -116,4 +134,29 @@ echo "$pyout" | grep -Eq '^assistant: \(.*robot.*\)$' || fail "the Python exampl
 got=$("${run[@]}" /usr/bin/python3 -c 'import clips_assist as c; print(c.__file__); print(c.data_directory())')
 [ "$got" = "/usr/lib/python3/dist-packages/clips_assist/__init__.py
 /usr/share/clips-assist" ] || fail "python3 imported $got"
+[ "$("${run[@]}" /usr/bin/python3 -c 'import importlib.metadata as m; print(m.version("clips-assist"))')" = \
+  "$(dpkg-deb -f "$deb" Version)" ] || fail "importlib.metadata does not see the installed clips-assist"
+
+# 4. Native: the manual page, the completion, the name in --version and messages, the shared library.
+man_out=$("${run[@]}" MANWIDTH=100 man clips-assist 2>"$tmp/man.err") || fail "man clips-assist failed: $(cat "$tmp/man.err")"
+printf "%s\n" "$man_out" | sed -n 1,12p
+grep -q "^NAME" <<<"$man_out" && grep -q "clips-assist infer" <<<"$man_out" && grep -q "EXIT STATUS" <<<"$man_out" \
+  || fail "man clips-assist does not render the manual page"
+"${run[@]}" man --warnings -E UTF-8 -l /usr/share/man/man1/clips-assist.1.gz 2>"$tmp/man.warn" >/dev/null
+[ ! -s "$tmp/man.warn" ] || fail "groff warns on the manual page: $(head -3 "$tmp/man.warn")"
+completed=$("${run[@]}" bash -c 'source /usr/share/bash-completion/completions/clips-assist
+  COMP_WORDS=(clips-assist inf); COMP_CWORD=1; _clips_assist; echo "${COMPREPLY[*]}"
+  COMP_WORDS=(clips-assist infer --lm ""); COMP_CWORD=3; _clips_assist; echo "${COMPREPLY[*]}"')
+[ "$completed" = "infer
+embedded openai" ] || fail "the bash completion completed: $completed"
+"${run[@]}" clips-assist --version | grep -Eq '^clips-assist [0-9]+\.[0-9]+\.[0-9]+' || fail "--version does not say clips-assist"
+err=$("${run[@]}" clips-assist infer --dataset /nonexistent 2>&1 >/dev/null || true)
+echo "$err" | grep -q '^clips-assist: error: ' || fail "an error message does not start with clips-assist: $err"
+so=$(dpkg -L clips-assist | grep -E '/libclips_assist\.so\.[0-9]+\.[0-9]+$' || true)
+[ -n "$so" ] || fail "dpkg -L lists no libclips_assist.so.X.Y"
+objdump -p "$so" | grep -Eq 'SONAME +libclips_assist\.so\.[0-9]+\.[0-9]+$' || fail "$so has no soname"
+"${run[@]}" sh -c 'g++ -std=c++17 main.cpp -I/usr/include/clips-assist -lclips_assist -o consumer-so' \
+  || fail "a program does not link with the shared library"
+ldd "$tmp/work/consumer-so" | grep -q "libclips_assist.so" || fail "consumer-so is not linked with libclips_assist.so"
+[ "$("${run[@]}" ./consumer-so "$example")" = "$out" ] || fail "the program linked with the shared library printed something else"
 echo "deb_install: OK"

@@ -64,8 +64,20 @@ std::size_t on_header(char* data, std::size_t size, std::size_t count, void* use
   return size * count;
 }
 
-bool is_retryable_status(long status) {
-  return status == 408 || status == 429 || (status >= 500 && status <= 599);
+// A 5xx that names a missing feature is the server's final word: asking
+// again gets the same answer (llama.cpp: 500 "Only no echo is supported").
+bool is_permanent_refusal(long status, const std::string& body) {
+  if (status == 501 || status == 505) return true;
+  if (status < 500 || status > 599) return false;
+  std::string why = server_error_text(body);
+  std::transform(why.begin(), why.end(), why.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const char* phrase : {"not supported", "unsupported", "not implemented", "only no echo"})
+    if (why.find(phrase) != std::string::npos) return true;
+  return false;
+}
+
+bool is_retryable_status(long status, const std::string& body) {
+  return (status == 408 || status == 429 || (status >= 500 && status <= 599)) && !is_permanent_refusal(status, body);
 }
 
 bool is_timeout(CURLcode code) { return code == CURLE_OPERATION_TIMEDOUT; }
@@ -249,7 +261,7 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
         throw LmError("POST " + url + " failed after " + attempts_text(attempt) + ": " + detail +
                       " (curl error " + std::to_string(static_cast<int>(code)) + ")");
       }
-    } else if (is_retryable_status(status)) {
+    } else if (is_retryable_status(status, t.body)) {
       if (attempt >= max_attempts) {
         throw LmError("POST " + url + ": HTTP " + std::to_string(status) + " after " +
                       attempts_text(attempt) + ", retry budget exhausted: " +

@@ -18,7 +18,9 @@ namespace clips::lm {
 struct HttpOptions {
   std::chrono::milliseconds connect_timeout{10'000};
   std::chrono::milliseconds total_timeout{120'000};  // whole request, per attempt
-  // Extra attempts after the first one, for 429, 5xx, connection errors and timeouts.
+  // Extra attempts after the first one, for 429, 5xx, connection errors and
+  // timeouts. A 5xx that names a missing feature ("not supported", "not
+  // implemented", 501) is final and returned at once, as a 4xx is.
   int max_retries = 4;
   std::chrono::milliseconds backoff_initial{500};
   double backoff_factor = 2.0;
@@ -55,7 +57,7 @@ class HttpClient {
   HttpClient& operator=(const HttpClient&) = delete;
 
   // POSTs `body` as application/json. Retries transient failures; returns the
-  // first non-retryable response (2xx or other 4xx), or throws LmError when the
+  // first non-retryable response (2xx, other 4xx, a 5xx refusal), or throws LmError when the
   // transport fails or the retry budget is used up.
   HttpResponse post_json(const std::string& url, const std::string& body,
                          const std::vector<std::string>& extra_headers) const;

@@ -240,12 +240,53 @@ std::vector<double> parse_completions_reply(const std::string& body,
 
 namespace {
 
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+bool mentions(const std::string& text, const char* phrase) { return lower(text).find(phrase) != std::string::npos; }
+
 bool mentions_max_tokens(const std::string& text) {
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower.find("max_tokens") != std::string::npos ||
-         lower.find("max tokens") != std::string::npos;
+  return mentions(text, "max_tokens") || mentions(text, "max tokens");
+}
+
+// Ollama's /v1 (Go): "json: cannot unmarshal array into Go struct field
+// CompletionRequest.prompt of type string".
+bool refuses_array_prompt(const std::string& why) {
+  return mentions(why, "unmarshal array") || (mentions(why, "prompt") && mentions(why, "array") && mentions(why, "string"));
+}
+
+bool truthy(std::string v) {
+  v = lower(std::move(v));
+  return v == "1" || v == "true" || v == "yes" || v == "on";
+}
+
+// What every "cannot score" line ends with: which servers can, and the offline way.
+constexpr const char* kWhatWorks =
+    "Scoring needs the log-probabilities of the prompt's own tokens: vLLM gives them (echo + logprobs, or "
+    "prompt_logprobs), as do OpenAI-compatible /v1/completions servers that echo the prompt with logprobs "
+    "(OpenAI's davinci-002 and babbage-002, llama-cpp-python); llama.cpp's server and Ollama do not. "
+    "The embedded model (--lm embedded) needs no server.";
+
+// llama.cpp's own /completion endpoint: {"content": ..} (or an array of them), no "choices".
+bool looks_like_llama_native(const json& j) {
+  const json* first = j.is_array() && !j.empty() ? &j[0] : &j;
+  return first->is_object() && !first->contains("choices") &&
+         (first->contains("content") || first->contains("completion_probabilities") || first->contains("tokens"));
+}
+
+// Which server a failed check was talking to, when the reply says so ("" when unknown).
+std::string server_hint(const json& reply, const std::string& why) {
+  if (mentions(why, "only no echo")) return ", as llama.cpp's server does";
+  if (mentions(why, "go struct") || (reply.is_object() && reply.value("system_fingerprint", json()) == "fp_ollama"))
+    return ", as Ollama does";
+  if (reply.is_object() && reply.contains("choices") && reply["choices"].is_array() && !reply["choices"].empty()) {
+    const json& c = reply["choices"][0];
+    if (c.is_object() && c.contains("logprobs") && c["logprobs"].is_object() && c["logprobs"].contains("content"))
+      return ", as llama.cpp's server does";
+  }
+  return "";
 }
 
 }  // namespace
@@ -253,7 +294,7 @@ bool mentions_max_tokens(const std::string& text) {
 OpenAiCompletionsModel::OpenAiCompletionsModel(OpenAiCompletionsOptions options)
     : options_(std::move(options)), http_(options_.http) {
   std::string base = options_.base_url.empty()
-                         ? env_or("CLIPS_LM_BASE_URL", "https://api.openai.com/v1")
+                         ? env_or("CLIPS_LM_BASE_URL", env_or("OPENAI_BASE_URL", "https://api.openai.com/v1"))
                          : options_.base_url;
   if (const std::string why = base_url_problem(base); !why.empty())
     throw LmError("base URL " + why + (options_.base_url.empty() ? " ($CLIPS_LM_BASE_URL)" : ""));
@@ -268,10 +309,11 @@ OpenAiCompletionsModel::OpenAiCompletionsModel(OpenAiCompletionsOptions options)
   fallback_ = !options_.try_max_tokens_zero;
   if (options_.prompt_logprobs) {
     prompt_logprobs_ = *options_.prompt_logprobs;
+    prompt_logprobs_chosen_ = true;
   } else {
-    std::string v = env_or("CLIPS_LM_PROMPT_LOGPROBS", "");
-    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    prompt_logprobs_ = v == "1" || v == "true" || v == "yes" || v == "on";
+    const std::string v = env_or("CLIPS_LM_PROMPT_LOGPROBS", "");
+    prompt_logprobs_ = truthy(v);
+    prompt_logprobs_chosen_ = !v.empty();
   }
 }
 
@@ -290,8 +332,9 @@ std::vector<double> OpenAiCompletionsModel::score(const std::vector<ScoreRequest
 
   std::vector<double> unique_scores;
   unique_scores.reserve(unique.size());
-  for (std::size_t start = 0; start < unique.size(); start += options_.batch_size) {
-    std::size_t stop = std::min(unique.size(), start + options_.batch_size);
+  const std::size_t per_request = options_.single_prompt ? 1 : options_.batch_size;
+  for (std::size_t start = 0; start < unique.size(); start += per_request) {
+    std::size_t stop = std::min(unique.size(), start + per_request);
     std::vector<const ScoreRequest*> chunk(unique.begin() + static_cast<std::ptrdiff_t>(start),
                                            unique.begin() + static_cast<std::ptrdiff_t>(stop));
     for (double s : score_chunk(chunk)) unique_scores.push_back(s);
@@ -302,17 +345,16 @@ std::vector<double> OpenAiCompletionsModel::score(const std::vector<ScoreRequest
   return out;
 }
 
-std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const ScoreRequest*>& chunk) {
+HttpResponse OpenAiCompletionsModel::post_chunk(const std::vector<const ScoreRequest*>& chunk) {
   json prompts = json::array();
   for (const auto* r : chunk) prompts.push_back(r->prompt + r->continuation);
   std::vector<std::string> headers;
   if (!api_key_.empty()) headers.push_back("Authorization: Bearer " + api_key_);
 
-  HttpResponse reply;
   for (;;) {
     const bool fallback = fallback_.load();
     json body = {{"model", model_},
-                 {"prompt", prompts},
+                 {"prompt", options_.single_prompt && prompts.size() == 1 ? prompts[0] : prompts},
                  {"max_tokens", fallback ? 1 : 0},
                  {"temperature", options_.temperature}};
     if (prompt_logprobs_) {
@@ -322,8 +364,8 @@ std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const 
       body["echo"] = true;
       body["logprobs"] = options_.logprobs;
     }
-    reply = http_.post_json(endpoint_, body.dump(), headers);
-    if (reply.status >= 200 && reply.status < 300) break;
+    HttpResponse reply = http_.post_json(endpoint_, body.dump(), headers);
+    if (reply.status >= 200 && reply.status < 300) return reply;
     const std::string why = server_error_text(reply.body);
     // vLLM: 400 "max_tokens must be at least 1"; pydantic-based servers: 422.
     if (!fallback && (reply.status == 400 || reply.status == 422) &&
@@ -331,11 +373,85 @@ std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const 
       fallback_ = true;
       continue;
     }
-    throw LmError("POST " + endpoint_ + ": HTTP " + std::to_string(reply.status) + ": " + why);
+    return reply;
   }
+}
 
+std::vector<double> OpenAiCompletionsModel::score_chunk(const std::vector<const ScoreRequest*>& chunk) {
+  const HttpResponse reply = post_chunk(chunk);
+  if (reply.status < 200 || reply.status >= 300)
+    throw LmError("POST " + endpoint_ + ": HTTP " + std::to_string(reply.status) + ": " + server_error_text(reply.body));
   return detail::parse_completions_reply(reply.body, chunk, options_.temperature,
                                          "reply from " + endpoint_ + ": ");
+}
+
+ScoringCheck OpenAiCompletionsModel::check_scoring() {
+  const ScoreRequest probe{"Input: (pickup you key1)\nOutput:", " Get the key.\n"};
+  const std::vector<const ScoreRequest*> chunk{&probe};
+  const std::string who = "language model " + endpoint_ + " (model " + model_ + ")";
+  const bool prompt_logprobs_before = prompt_logprobs_;
+  std::string echo_problem;  // why echo failed, while prompt_logprobs is tried instead
+  auto cannot = [&](const std::string& why) {
+    prompt_logprobs_ = prompt_logprobs_before;
+    return ScoringCheck{false, who + " cannot score a given text: " + why + ". " + kWhatWorks};
+  };
+  // Each round changes one thing (array -> single prompt, echo -> prompt_logprobs), so a few suffice.
+  for (int round = 0; round < 4; ++round) {
+    const HttpResponse reply = post_chunk(chunk);
+    const json j = json::parse(reply.body, nullptr, /*allow_exceptions=*/false);
+    const std::string why = server_error_text(reply.body);
+    const std::string status = "HTTP " + std::to_string(reply.status) + " \"" + why + "\"";
+    if (reply.status >= 200 && reply.status < 300) {
+      try {
+        detail::parse_completions_reply(reply.body, chunk, 1.0, "");
+      } catch (const LmError& e) {
+        if (!j.is_discarded() && looks_like_llama_native(j))
+          return cannot("the reply has no choices but llama.cpp's own fields (content): this is llama.cpp's native "
+                        "completion endpoint, whose log-probabilities cover generated tokens only (its /v1 "
+                        "endpoint cannot score either)");
+        if (j.is_discarded() || !j.is_object() || !j.contains("choices") || !j["choices"].is_array())
+          return ScoringCheck{false, who + ": the reply is not an OpenAI completions reply (" + e.what() + ")"};
+        const std::string problem = "it ignores echo: the reply's log-probabilities do not cover the prompt (" +
+                                    std::string(e.what()) + ")" + server_hint(j, why);
+        if (!prompt_logprobs_ && !prompt_logprobs_chosen_) {
+          echo_problem = problem;
+          prompt_logprobs_ = true;
+          continue;
+        }
+        return cannot(echo_problem.empty() ? problem : echo_problem);
+      }
+      const json& first = j["choices"][0];
+      const bool read_prompt_logprobs = first.contains("prompt_logprobs") && !first["prompt_logprobs"].is_null();
+      std::string how = read_prompt_logprobs ? "vLLM's prompt_logprobs" : "echo + logprobs";
+      if (!echo_problem.empty()) how += " (echo did not work)";
+      if (options_.single_prompt) how += ", one prompt per request";
+      if (fallback_) how += ", max_tokens=1";
+      return ScoringCheck{true, who + " scores given text with " + how};
+    }
+    if (!options_.single_prompt && refuses_array_prompt(why)) {
+      options_.single_prompt = true;
+      continue;
+    }
+    // prompt_logprobs, tried because echo failed, is refused too: echo's failure is the reason.
+    if (!echo_problem.empty()) return cannot(echo_problem);
+    if (!prompt_logprobs_ && mentions(why, "echo")) {
+      const std::string problem = "it refuses echo (" + status + ")" + server_hint(j, why);
+      if (!prompt_logprobs_chosen_) {
+        echo_problem = problem;
+        prompt_logprobs_ = true;
+        continue;
+      }
+      return cannot(problem);
+    }
+    if (prompt_logprobs_ && mentions(why, "prompt_logprobs")) return cannot("it refuses prompt_logprobs (" + status + ")");
+    if (reply.status == 401 || reply.status == 403)
+      return ScoringCheck{false, who + " refused the request (" + status + "): check $OPENAI_API_KEY"};
+    if (reply.status == 404)
+      return ScoringCheck{false, who + ": " + status +
+                                     ": no completions endpoint there (an OpenAI-compatible base URL usually ends in /v1)"};
+    return ScoringCheck{false, who + ": the scoring request failed: " + status};
+  }
+  return cannot("it refused every form of request tried");
 }
 
 }  // namespace clips::lm

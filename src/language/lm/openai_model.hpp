@@ -21,11 +21,14 @@
 namespace clips::lm {
 
 struct OpenAiCompletionsOptions {
-  std::string base_url;                // "" -> $CLIPS_LM_BASE_URL, else https://api.openai.com/v1
+  std::string base_url;                // "" -> $CLIPS_LM_BASE_URL, else $OPENAI_BASE_URL, else https://api.openai.com/v1
   std::string model;                   // "" -> $CLIPS_LM_MODEL, else davinci-002
   std::optional<std::string> api_key;  // nullopt -> $OPENAI_API_KEY; "" -> no Authorization header
   double temperature = 1.0;            // sent to the server; scores are divided by it (> 0)
   std::size_t batch_size = 16;         // prompts per HTTP request
+  // Send each prompt alone, as a string rather than an array of one:
+  // Ollama's /v1 refuses an array ("cannot unmarshal array").
+  bool single_prompt = false;
   // Top-k alternatives asked for. 1 rather than 0 because some servers treat
   // logprobs=0 as "no logprobs"; only the chosen token's log-prob is used.
   int logprobs = 1;
@@ -40,9 +43,24 @@ struct OpenAiCompletionsOptions {
   HttpOptions http;
 };
 
+// What a server said to one short scoring request (check_scoring).
+struct ScoringCheck {
+  bool can_score = false;
+  // One line for the user: how the server scores text, or why it cannot and
+  // which servers can.
+  std::string line;
+};
+
 class OpenAiCompletionsModel : public LanguageModel {
  public:
   explicit OpenAiCompletionsModel(OpenAiCompletionsOptions options = {});
+
+  // Asks the server to score one short text, once, and adapts this model to
+  // what the server takes: a single prompt per request when it refuses an
+  // array, max_tokens=1 when it refuses 0, and prompt_logprobs when echo is
+  // refused or ignored and prompt_logprobs was not chosen either way. Throws
+  // LmError when the server cannot be reached (after the usual retries).
+  ScoringCheck check_scoring();
 
   std::string name() const override;  // "openai:<model>"
   std::vector<double> score(const std::vector<ScoreRequest>& batch) override;
@@ -53,10 +71,15 @@ class OpenAiCompletionsModel : public LanguageModel {
   bool using_max_tokens_fallback() const { return fallback_.load(); }
   // True when requests ask for prompt_logprobs (vLLM) instead of echo.
   bool using_prompt_logprobs() const { return prompt_logprobs_; }
+  // True when each request carries one prompt, as a string.
+  bool single_prompt() const { return options_.single_prompt; }
 
  private:
   // Scores one HTTP request's worth of (prompt, continuation) pairs.
   std::vector<double> score_chunk(const std::vector<const ScoreRequest*>& chunk);
+  // POSTs one request for `chunk` (switching to max_tokens=1 when the server
+  // refuses 0) and returns the reply, whatever its status.
+  HttpResponse post_chunk(const std::vector<const ScoreRequest*>& chunk);
 
   OpenAiCompletionsOptions options_;
   std::string endpoint_;
@@ -65,6 +88,7 @@ class OpenAiCompletionsModel : public LanguageModel {
   HttpClient http_;
   std::atomic<bool> fallback_{false};
   bool prompt_logprobs_ = false;
+  bool prompt_logprobs_chosen_ = false;  // by the options or the environment, not by check_scoring
 };
 
 namespace detail {
