@@ -143,8 +143,11 @@ struct AssistDecision {
   // Literal: the most probable command of the latest instruction ("" when none).
   std::string command;
   double command_probability = 0;
-  // Q_MDP's request rule broke a tie in favour of `request_command`.
+  // Q_MDP's request rule broke a tie in favour of `request_command`, or
+  // carried out `request_command`, what the instruction most probably asked
+  // of the assistant (followed_request).
   bool broke_tie = false;
+  bool followed_request = false;
   std::string request_command;
 };
 

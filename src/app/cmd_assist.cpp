@@ -49,9 +49,9 @@ void register_assist(CLI::App& app) {
   add_time_limit_option(cmd, o->time_limit, "the whole run (inference, then the decision or the assistance episode)");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->add_flag("--explain", o->explain,
-                "Also print each decision where actions tied in value: the tied actions with their values and how "
-                "much of the request each carries out, the action taken and the command that broke the tie "
-                "(request rule; in --json: \"ties\")");
+                "Also print each decision the request rule made: where the assistant carried out what it was asked, "
+                "why; where actions tied in value, the tied actions with their values and how much of the request "
+                "each carries out, the action taken and the command that broke the tie (in --json: \"ties\")");
   cmd->callback([o, mm] {
     check_observation_flags(o->obs);  // before loading anything
     const bool adhoc = !o->obs.problem.empty();
@@ -164,8 +164,8 @@ void register_assist(CLI::App& app) {
                  r->precision, r->recall);
       if (r->p_true_goal) fmt::print("P(true goal) = {:.3f}\n", *r->p_true_goal);
       if (o->explain) {
-        fmt::print("ties in value ({}; the request rule breaks them{}):\n", r->ties.size(),
-                   r->ties.empty() ? ", none met" : "");
+        fmt::print("request rule ({} decisions: requests carried out, ties broken{}):\n", r->ties.size(),
+                   r->ties.empty() ? "; none met" : "");
         for (const auto& t : r->ties) fmt::print("  {}\n", t);
       }
     }

@@ -5,10 +5,14 @@
 #include <limits>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <optional>
 
 #include "heuristics/basic.hpp"
 #include "model/spec.hpp"
+#include "search/astar.hpp"
 #include "search/tied_rollouts.hpp"
+#include "util/error.hpp"
 
 namespace clips::assist {
 
@@ -159,6 +163,168 @@ struct RequestMatcher {
   }
 };
 
+// The net effect of an assistant part (adds true, deletes false; the turn
+// predicate left out), as sorted (atom, value) pairs: a request's meaning,
+// whatever place its ground actions were said at.
+std::vector<std::pair<int, bool>> net_effect(const AssistSetup& setup, const std::vector<ActionId>& part) {
+  const pddl::Task& task = *setup.task;
+  const auto turn = task.domain().find_predicate(setup.turn_predicate);
+  std::vector<std::pair<int, bool>> net;
+  auto set = [&](int bit, bool v) {
+    if (turn && task.atom_info(bit).first == *turn) return;
+    for (auto& [b, val] : net)
+      if (b == bit) {
+        val = v;
+        return;
+      }
+    net.emplace_back(bit, v);
+  };
+  for (ActionId a : part) {
+    const auto& ga = task.action(a);
+    for (int b : ga.eff.del) set(b, false);
+    for (int b : ga.eff.add) set(b, true);
+  }
+  std::sort(net.begin(), net.end());
+  return net;
+}
+
+// AssistRule::Request's commitment: what the live hypotheses most probably
+// asked the assistant to do, when at least kAskingShare of their weight reads
+// the words as asking the assistant for something and kCommitShare of that
+// asks for it (by its net effect), it is not yet done in s, and doing it leaves
+// the goals of most of their weight no costlier (their heuristic estimate
+// after it at most the cheapest action's cost above the estimate now):
+// the first step of the assistant's own plan for it, the principal frozen.
+struct Commitment {
+  ActionId action = -1;
+  std::string command;
+  double share = 0;
+};
+constexpr double kCommitShare = 0.5;
+constexpr double kAskingShare = 0.5;
+
+std::optional<Commitment> committed_request(const AssistSetup& setup, const std::vector<const Hypothesis*>& live,
+                                            const State& s) {
+  const pddl::Task& task = *setup.task;
+  struct Asked {
+    std::vector<std::pair<int, bool>> effect;
+    double weight = 0;
+    std::map<std::string, double> texts;
+  };
+  std::vector<Asked> asked;
+  double total = 0, asking = 0;
+  for (const Hypothesis* h : live) {
+    total += h->weight;
+    if (!h->request) continue;
+    for (const RequestedCommand& c : *h->request) {
+      if (c.assistant_part.empty() || !(c.probability > 0)) continue;
+      auto effect = net_effect(setup, c.assistant_part);
+      if (effect.empty()) continue;
+      auto it = std::find_if(asked.begin(), asked.end(), [&](const Asked& a) { return a.effect == effect; });
+      if (it == asked.end()) {
+        asked.push_back({std::move(effect), 0, {}});
+        it = asked.end() - 1;
+      }
+      it->weight += h->weight * c.probability;
+      it->texts[c.text] += h->weight * c.probability;
+      asking += h->weight * c.probability;
+    }
+  }
+  // Shares are of the readings that ask the assistant for something: a goal
+  // statement read beside a request ("I want the red can, could you get
+  // it?") neither asks nor refuses. Yet the words must mostly ask.
+  if (asked.empty() || !(total > 0) || asking < kAskingShare * total) return std::nullopt;
+  const Asked& top = *std::max_element(asked.begin(), asked.end(),
+                                       [](const Asked& a, const Asked& b) { return a.weight < b.weight; });
+  if (top.weight < kCommitShare * asking) return std::nullopt;
+  bool done = true;
+  for (const auto& [bit, v] : top.effect) done = done && pddl::get_bit(s.data(), bit) == v;
+  if (done) return std::nullopt;
+  // The goal: what the request makes true (what it deletes, for a request
+  // that only deletes, as an unlock does).
+  std::string goal;
+  for (const auto& [bit, v] : top.effect)
+    if (v) goal += " " + task.atom_str(bit);
+  if (goal.empty())
+    for (const auto& [bit, v] : top.effect) goal += " (not " + task.atom_str(bit) + ")";
+  const Hypothesis* heaviest = *std::max_element(live.begin(), live.end(),
+                                                 [](const Hypothesis* a, const Hypothesis* b) { return a->weight < b->weight; });
+  std::shared_ptr<model::Specification> spec;
+  try {
+    spec = std::make_shared<model::Specification>(setup.task, "(and" + goal + ")", heaviest->policy->spec().profile());
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  State start = s;
+  const bool can_freeze = model::can_freeze(task, setup.principal);
+  if (can_freeze) start = model::freeze(task, s, setup.principal);
+  heuristics::FFHeuristic ff;
+  ff.prepare(*spec, start);
+  search::SearchOptions o = setup.refine_options;
+  o.max_nodes = std::min<size_t>(o.max_nodes, size_t{1} << 16);
+  const search::SearchResult r = search::astar(*spec, ff, start, o);
+  if (r.status != search::SearchStatus::Success || r.plan.empty() || !task.applicable(r.plan.front(), s.data()))
+    return std::nullopt;
+  // Where the request leaves the world, the principal free again.
+  State end = start;
+  for (ActionId a : r.plan) end = task.apply(end, a);
+  if (can_freeze) end = model::unfreeze(task, end, setup.principal);
+  double cheapest = kInf;
+  for (ActionId a : task.applicable_actions(s)) cheapest = std::min(cheapest, heaviest->policy->spec().cost(a));
+  const double tolerance = std::isfinite(cheapest) ? std::max(cheapest, 1.0) : 1.0;
+  double costlier = 0;
+  for (const Hypothesis* h : live) {
+    heuristics::Heuristic& est = h->policy->heuristic();
+    const double before = est.estimate(s.data()), after = est.estimate(end.data());
+    if (!(after <= before + tolerance)) costlier += h->weight;
+  }
+  if (costlier > 0.5 * total) return std::nullopt;
+  Commitment c;
+  c.action = r.plan.front();
+  c.share = top.weight / asking;
+  double best = -1;
+  for (const auto& [text, w] : top.texts)
+    if (w > best) {
+      best = w;
+      c.command = text;
+    }
+  return c;
+}
+
+std::string with_value(const char* what, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s %.3f", what, v);
+  return buf;
+}
+
+// The rule that decided a Q_MDP choice, with its numbers. `best`: the
+// candidate of highest expected value (waiting left out after a round of
+// waits: `waited` is then the assistant's no-op, else -1).
+std::string qmdp_reason(const Decision& d, const std::vector<ActionId>& acts, size_t best,
+                        ActionId waited) {
+  auto value_of = [&](ActionId a) {
+    for (size_t i = 0; i < acts.size() && i < d.values.size(); ++i)
+      if (acts[i] == a) return d.values[i];
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  if (d.followed_request) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.0f%%", 100 * d.request_share);
+    return "doing what was asked: \"" + d.request_command + "\" (" + buf +
+           " of the readings that ask the assistant for something ask for it, and it makes no likely goal "
+           "costlier); this is the first step of the assistant's plan for it";
+  }
+  if (d.broke_tie)
+    return "tied with the best expected value (" + with_value("best", best < d.values.size() ? d.values[best] : 0.0) +
+           "); this one carries out the request \"" + d.request_command + "\"";
+  if (d.unanimous) return "every likely goal's plan takes this action next";
+  std::string why = "highest expected value over the goal posterior (" + with_value("value", value_of(d.action));
+  if (waited >= 0 && d.action != waited && !std::isnan(value_of(waited)) && value_of(waited) > value_of(d.action))
+    return "both agents waited last round, so not waiting again: the best other action (" +
+           with_value("value", value_of(d.action)) + ", " + with_value("waiting", value_of(waited)) + ")";
+  return why + ")";
+}
+
 // The Q_MDP choice at timestep t: the common best action when
 // every hypothesis above the threshold agrees, else the argmax of the
 // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
@@ -193,6 +359,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
                                         [](const Hypothesis* h) { return h->request && !h->request->empty(); });
   if (d.unanimous && !values_always && !request_rule) {
     d.action = *common;
+    d.reason = "every likely goal's plan takes this action next";
     return d;
   }
   d.candidates = task.applicable_actions(s);
@@ -220,6 +387,14 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
     if (!excluded(i) && qa[i] > qa[best]) best = i;
   d.action = d.unanimous ? *common : acts[best];
   if (request_rule) {
+    if (auto c = committed_request(setup, live, s)) {
+      d.action = c->action;
+      d.followed_request = true;
+      d.request_command = c->command;
+      d.request_share = c->share;
+    }
+  }
+  if (request_rule && !d.followed_request) {
     // Ties at the best value go to the action whose continuation (each
     // hypothesis' own plan after it) carries out most of the request.
     // The tolerance in cost units: a share of the cheapest candidate's cost
@@ -346,6 +521,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       }
     }
   }
+  d.reason = qmdp_reason(d, acts, best, restless ? assistant_wait : -1);
   if (debug_qmdp()) {
     // CLIPS_DEBUG_QMDP=1: each contested decision, per live hypothesis.
     std::fprintf(stderr, "qmdp t=%d choose %s\n", t, task.action_name(acts[best]).c_str());
@@ -450,10 +626,13 @@ struct Episode {
 
   ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t, bool stalled) const {
     const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false, stalled);
-    if (!d.request_scores.empty()) tie_notes.push_back(explain_tie(*setup.task, d, t));
+    if (d.followed_request)
+      tie_notes.push_back("step " + std::to_string(t) + ": " + d.reason + "; took " + task.action_name(d.action));
+    else if (!d.request_scores.empty())
+      tie_notes.push_back(explain_tie(*setup.task, d, t));
     return d.action;
   }
-  // The request rule's ties met in the episode, in order (AssistResult::ties).
+  // The request rule's decisions in the episode, in order (AssistResult::ties).
   mutable std::vector<std::string> tie_notes;
 
   // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true
@@ -690,6 +869,9 @@ Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>&
   if (d.candidates.empty()) throw InputError("no action is applicable in the assistance state");
   d.action = d.candidates[best];
   d.unanimous = all_same && common.has_value();
+  d.reason = d.unanimous ? "every likely goal's plan takes this action next"
+                         : with_value("the action the goal posterior's policies take most often (probability",
+                                      d.values[best]) + ")";
   return d;
 }
 

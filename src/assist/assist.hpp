@@ -137,9 +137,10 @@ struct AssistResult {
   double success = 0;                     // probability of reaching the goal
   std::map<std::string, double> options;  // option -> probability
   std::vector<double> decision_seconds;   // wall time of each assistant decision (Q_MDP)
-  // Q_MDP with the request rule: each decision where several actions tied,
-  // the tied actions with their values and request scores, the action taken
-  // and the command that broke the tie (for `clips assist --explain`).
+  // Q_MDP with the request rule: each decision it made, in order: where it
+  // carried out what was asked, the reason (Decision::reason); where several
+  // actions tied, the tied actions with their values and request scores, the
+  // action taken and the command that broke the tie (`clips assist --explain`).
   std::vector<std::string> ties;
 };
 
@@ -183,6 +184,15 @@ struct Decision {
   std::vector<double> request_scores;
   std::string request_command;
   bool broke_tie = false;
+  // AssistRule::Request: the action is the first step of the assistant's plan
+  // for what the live hypotheses most probably asked of it
+  // (`request_command`), which `request_share` of the weight of the
+  // readings that ask the assistant for something asks for.
+  bool followed_request = false;
+  double request_share = 0;
+  // Why this action, in words: the rule that decided, with its numbers
+  // (the same text for every front end and `clips assist --explain`).
+  std::string reason;
 };
 // The weight at or above which a hypothesis takes part in a decision: the
 // setup's weight_threshold, at most half the largest weight. qmdp_decision and

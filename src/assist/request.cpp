@@ -16,7 +16,7 @@ std::vector<std::shared_ptr<const Request>> requests_from(const pddl::Task& task
   };
   for (const inference::HypothesisUtterance& h : record.hypotheses) {
     auto req = std::make_shared<Request>();
-    for (const inference::CommandScore& c : h.commands) {
+    for (const inference::CommandScore& c : h.requests.empty() ? h.commands : h.requests) {
       if (!(c.posterior > 0)) continue;
       RequestedCommand rc;
       rc.probability = c.posterior;

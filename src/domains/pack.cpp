@@ -627,6 +627,38 @@ std::vector<std::string> location_predicates(const pddl::Domain& d, const std::s
     if (std::any_of(places.begin(), places.end(), [&](pddl::TypeId t) { return related(types[1], t); }))
       out.push_back(d.predicates[static_cast<size_t>(p)].name);
   }
+  // Where an agent leaves what it held, when that is no place anyone stands
+  // (a shelf, a bed, a cabinet): an action that deletes (Q ?agent ?x) and
+  // adds (P ?x ?y), neither ?x nor ?y an agent nor of related types (a
+  // block on a block is a thing, not a place).
+  for (const pddl::ActionSchema& a : d.actions) {
+    std::vector<const pddl::Effect*> adds, dels;
+    std::vector<const pddl::Effect*> stack{&a.effect};
+    while (!stack.empty()) {
+      const pddl::Effect* e = stack.back();
+      stack.pop_back();
+      if (e->kind == pddl::Effect::Kind::Add) adds.push_back(e);
+      if (e->kind == pddl::Effect::Kind::Del) dels.push_back(e);
+      if (e->kind == pddl::Effect::Kind::And)
+        for (const auto& k : e->kids) stack.push_back(&k);
+    }
+    auto param_type = [&](const pddl::TermRef& arg) {
+      return arg.index >= 0 && static_cast<size_t>(arg.index) < a.param_types.size()
+                 ? a.param_types[static_cast<size_t>(arg.index)]
+                 : pddl::TypeId{0};
+    };
+    for (const pddl::Effect* add : adds) {
+      if (add->args.size() != 2 || !add->args[0].is_var || !add->args[1].is_var) continue;
+      const pddl::TypeId x = param_type(add->args[0]), y = param_type(add->args[1]);
+      if (agentish(x) || agentish(y) || related(x, y) || x == 0 || y == 0) continue;
+      const bool from_hands = std::any_of(dels.begin(), dels.end(), [&](const pddl::Effect* del) {
+        return del->args.size() == 2 && del->args[0].is_var && del->args[1].is_var &&
+               agentish(param_type(del->args[0])) && del->args[1].index == add->args[0].index;
+      });
+      const std::string& name = d.predicates[static_cast<size_t>(add->pred)].name;
+      if (from_hands && std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+    }
+  }
   return out;
 }
 

@@ -182,6 +182,20 @@ struct InferenceSettings {
   // themselves. 0: the cooperative plans alone (the paper packs).
   // docs/decisions.md, "A speaker who would hand over any part".
   double speaker_delegates = 0.15;
+  // Reading what an instruction asks the assistant to do, for assistance
+  // only (the goal posterior does not change): besides the joint plans the
+  // speaker model explains the words with, the commands of a sparing plan
+  // (the joint plan in which the principal's own actions cost ten times as
+  // much, so the assistant does all it can), in this share of the prior.
+  // "Could you bring me the blue one?" then asks for the blue one's
+  // hand-over even where every joint plan leaves the fetch to the principal.
+  // 0: requests from the speaker model's commands alone (the paper packs).
+  double request_plans = 0.15;
+  // The share of the speaker model's plans that are sparing plans (above),
+  // for the goal posterior: a speaker who asks for what they could fetch
+  // themselves is then still explained by their goal. 0: none (the paper
+  // packs).
+  double sparing_plans = 0.15;
 };
 
 struct LiteralSettings {

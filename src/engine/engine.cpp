@@ -646,10 +646,8 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
   d.unanimous = dec.unanimous;
   d.broke_tie = dec.broke_tie;
   d.request_command = dec.request_command;
-  d.reason = dec.broke_tie ? "tied at the best value; this one carries out the request \"" + dec.request_command + "\""
-             : dec.unanimous ? "every likely goal agrees"
-             : m.options.assistance == Assistance::QMdp ? "highest expected value over the goal posterior"
-                                                        : "the action the goal posterior's policies take most often";
+  d.followed_request = dec.followed_request;
+  d.reason = dec.reason;
   for (size_t i = 0; i < dec.candidates.size(); ++i)
     d.candidates.push_back({dec.candidates[i], task.action_name(dec.candidates[i]), dec.values[i]});
   m.belief = belief;

@@ -58,6 +58,10 @@ json to_json(const AssistDecision& d) {
     j["command"] = d.command;
     j["command_probability"] = d.command_probability;
   }
+  if (!d.request_command.empty()) {
+    j["request"] = d.request_command;
+    j["followed_request"] = d.followed_request;
+  }
   j["goals"] = d.goals;
   j["goal_weights"] = d.goal_weights;
   return j;

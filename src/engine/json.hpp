@@ -12,7 +12,8 @@
 //   step       {"t", "action", "agent", "evidence", "utterances", "posterior", "seconds"}
 //   decision   {"method", "assistant_turn", "action", "id", "reason", "unanimous",
 //               "candidates": [{"id", "action", "value"}], "goals", "goal_weights"}
-//               (+ "command", "command_probability" for literal)
+//               (+ "command", "command_probability" for literal; + "request",
+//               "followed_request" when Q_MDP's request rule acted on one)
 #include <nlohmann/json.hpp>
 
 #include "clips/types.hpp"

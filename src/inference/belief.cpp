@@ -1,15 +1,20 @@
 #include "inference/belief.hpp"
 
+#include "language/deixis.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "language/lm/readability.hpp"
 #include "pddl/plan.hpp"
+#include "search/astar.hpp"
 #include "util/error.hpp"
 
 namespace clips::inference {
@@ -114,6 +119,9 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
       delegates_.emplace_back(spec, pack_->make_heuristic(hname, *task_), graph_);
     }
   }
+  heuristic_name_ = hname;
+  if (search_ && settings.request_plans > 0) request_share_ = settings.request_plans;
+  if (search_ && settings.sparing_plans > 0) spare_share_ = settings.sparing_plans;
   const double n = static_cast<double>(hyps_.size());
   log_prior_.assign(hyps_.size(), -std::log(n));
   action_ll_.assign(hyps_.size(), 0.0);
@@ -149,6 +157,25 @@ void check_options(const InferenceOptions& o) {
     throw InputError(fmt::format("rejuvenation moves must be 0 or more, not {}", o.rejuvenation_moves));
   if (o.proposal_groups < 1)
     throw InputError(fmt::format("proposal groups must be 1 or more, not {}", o.proposal_groups));
+}
+
+void Belief::note_deixis(pddl::ActionId action) {
+  if (!is_speaker_action(action) || speaker_ < 0) return;
+  const auto& ga = task_->action(action);
+  const commands::SalientActionRule* rule =
+      utterance_model_->config().salient_rule(task_->domain().actions[static_cast<size_t>(ga.schema)].name);
+  if (!rule || rule->focal_is_place || rule->focal_arg < 1 || rule->focal_arg > static_cast<int>(ga.args.size())) return;
+  const pddl::ObjectId focal = ga.args[static_cast<size_t>(rule->focal_arg - 1)];
+  deictic_type_ = task_->domain().types[static_cast<size_t>(task_->problem().objects[static_cast<size_t>(focal)].type)].name;
+}
+
+std::vector<std::string> Belief::resolved(const std::vector<std::string>& utterances) const {
+  if (deictic_type_.empty()) return utterances;
+  const language::KindNoun kind = language::kind_noun(deictic_type_);
+  std::vector<std::string> out;
+  out.reserve(utterances.size());
+  for (const std::string& u : utterances) out.push_back(language::resolve_deixis(u, kind));
+  return out;
 }
 
 bool Belief::is_speaker_action(pddl::ActionId a) const {
@@ -264,6 +291,14 @@ std::vector<SpeakerPlans> Belief::speaker_plans(const pddl::State& s, const std:
   auto one = [&](size_t i) {
     search::Policy& p = policies_[static_cast<size_t>(speakers[i])];
     plans[i] = tied ? utterance_model_->speaker_plans(p, s, options_.refine) : utterance_model_->single_plan(p, s);
+    if (spare_share_ > 0) {
+      SpeakerPlans spare = sparing_plan(static_cast<size_t>(speakers[i]), s);
+      if (!spare.empty()) {
+        for (SpeakerPlan& plan : plans[i]) plan.weight *= 1 - spare_share_;
+        spare.front().weight = spare_share_;
+        plans[i].push_back(std::move(spare.front()));
+      }
+    }
     if (!tied || delegate_of_.empty()) return;
     search::Policy& d = delegates_[static_cast<size_t>(delegate_of_[static_cast<size_t>(speakers[i])])];
     for (SpeakerPlan& plan : plans[i]) plan.weight *= 1 - delegate_share_;
@@ -305,7 +340,29 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
   if (!lm) throw InputError("an utterance was observed but no language model was given");
   std::vector<int> all(policies_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
-  auto scores = utterance_model_->score(speaker_plans(s, all), goal_statements(s, all), s, utterances, *lm);
+  const std::vector<std::string> texts = resolved(utterances);
+  auto scores = utterance_model_->score(speaker_plans(s, all), goal_statements(s, all), s, texts, *lm);
+  if (request_share_ > 0) read_requests(s, texts, scores, *lm);
+  if (std::getenv("CLIPS_DEBUG_UTTERANCE")) {
+    // CLIPS_DEBUG_UTTERANCE=1: each hypothesis' likelihood and its most probable readings.
+    for (size_t u = 0; u < texts.size(); ++u) {
+      std::fprintf(stderr, "utterance \"%s\" read as \"%s\"\n", utterances[u].c_str(), texts[u].c_str());
+      for (size_t h = 0; h < scores[u].size(); ++h) {
+        const HypothesisUtterance& r = scores[u][h];
+        std::fprintf(stderr, "  %s | %s: log L %.2f\n", goals_[static_cast<size_t>(hyps_[h].goal)].label.c_str(),
+                     profiles_[static_cast<size_t>(hyps_[h].profile)].name.c_str(), r.log_likelihood);
+        std::vector<const CommandScore*> top;
+        for (const CommandScore& c : r.commands) top.push_back(&c);
+        std::sort(top.begin(), top.end(), [](auto* a, auto* b) { return a->posterior > b->posterior; });
+        for (size_t k = 0; k < top.size() && k < 4; ++k)
+          std::fprintf(stderr, "    %.3f (lm %.2f, prior %.3f) %s\n", top[k]->posterior, top[k]->log_lm, top[k]->prior,
+                       top[k]->command.c_str());
+        for (const CommandScore& c : r.requests)
+          if (c.posterior > 0.05)
+            std::fprintf(stderr, "    request %.3f (lm %.2f) %s\n", c.posterior, c.log_lm, c.command.c_str());
+      }
+    }
+  }
   for (size_t u = 0; u < utterances.size(); ++u) {
     UtteranceRecord rec;
     rec.text = utterances[u];
@@ -321,6 +378,45 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
     out.push_back(std::move(rec));
   }
   return out;
+}
+
+namespace {
+// How much dearer a sparing principal's own actions are (Belief::sparing_plan).
+constexpr double kSparingFactor = 10;
+}  // namespace
+
+SpeakerPlans Belief::sparing_plan(size_t h, const pddl::State& s) {
+  const model::Specification& base = *hyps_[h].spec;
+  const domains::Roles& roles = pack_->spec().roles;
+  model::Specification spec(task_, base.goal_text(),
+                            model::scaled_assistant(base.profile(), base.profile().name + "-sparing", roles.principal,
+                                                    roles.noop_action, kSparingFactor));
+  std::shared_ptr<heuristics::Heuristic> heur = pack_->make_heuristic(heuristic_name_, *task_);
+  heur->prepare(spec, s);
+  search::SearchOptions o = options_.refine;
+  o.max_nodes = std::min<size_t>(o.max_nodes, size_t{1} << 16);
+  const search::SearchResult r = search::astar(spec, *heur, s, o);
+  if (r.status != search::SearchStatus::Success) return {};
+  return {SpeakerPlan{1.0, r.plan}};
+}
+
+void Belief::read_requests(const pddl::State& s, const std::vector<std::string>& texts,
+                           std::vector<std::vector<HypothesisUtterance>>& scores, lm::LanguageModel& lm) {
+  // The plan in which the assistant does all it can for each speaker's goal.
+  std::vector<int> speakers;
+  std::vector<SpeakerPlans> sparing;
+  for (size_t h = 0; h < hyps_.size(); ++h) {
+    if (base_of_[h] != static_cast<int>(h)) continue;
+    speakers.push_back(static_cast<int>(h));
+    sparing.push_back(sparing_plan(h, s));
+  }
+  auto sparing_scores = utterance_model_->score(sparing, s, texts, lm);
+  for (size_t u = 0; u < texts.size(); ++u)
+    for (size_t h = 0; h < hyps_.size(); ++h) {
+      const size_t k = static_cast<size_t>(std::find(speakers.begin(), speakers.end(), base_of_[h]) - speakers.begin());
+      if (k >= sparing.size() || sparing[k].empty()) continue;
+      scores[u][h].requests = merge_requests(scores[u][h], sparing_scores[u][k], request_share_);
+    }
 }
 
 double log_background(const std::vector<HypothesisUtterance>& hs, double noise) {
@@ -412,6 +508,7 @@ StepRecord Belief::observe(pddl::ActionId action, const pddl::State& state, cons
   const auto t0 = std::chrono::steady_clock::now();
   parallel_saved_ = 0;
   const pddl::State s = state;  // `state` may alias state_
+  note_deixis(action);
   if (particle_mode()) {
     const bool evidence = is_speaker_action(action);
     const RefineWhat what = refine_what(action, evidence, utterances);

@@ -305,7 +305,8 @@ class Belief {
     pddl::State state;
     pddl::ActionId action = -1;             // Act; Refine: >= 0 refines toward this action only
     bool keep_stored = false;               // Refine: as RefineWhat::keep_stored
-    std::vector<std::string> texts{};       // Speak
+    std::vector<std::string> texts{};       // Speak: as scored (deixis resolved)
+    std::vector<std::string> said{};        // Speak: as heard
     std::vector<double> weights{};          // Speak: each text's evidence weight (set when first scored)
     std::vector<double> backgrounds{};      // Speak: each text's log B (set when first scored)
     double before = 0, after = 0;           // Speak: goal-independent log factors around the texts
@@ -393,6 +394,22 @@ class Belief {
   std::vector<search::Policy> delegates_;
   std::vector<int> delegate_of_;
   double delegate_share_ = 0;
+  // The request reading's share (domains::InferenceSettings::request_plans;
+  // 0: off) and the heuristic its plans search with.
+  double request_share_ = 0;
+  std::string heuristic_name_;
+  // The share of the speaker model's plans that spare the principal's own
+  // effort (sparing_plan); 0: none.
+  double spare_share_ = 0;
+  // The joint plan of hypothesis h from s in which the principal's own
+  // actions (not its no-op) cost kSparingFactor times as much: the assistant
+  // does all it can, the principal only what the assistant cannot. Empty
+  // when the search finds none within its budget.
+  SpeakerPlans sparing_plan(size_t h, const pddl::State& s);
+  // Adds HypothesisUtterance::requests to `scores` (per utterance, per
+  // hypothesis) of `texts` heard in s.
+  void read_requests(const pddl::State& s, const std::vector<std::string>& texts,
+                     std::vector<std::vector<HypothesisUtterance>>& scores, lm::LanguageModel& lm);
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)
   std::vector<search::Policy> policies_;
   std::vector<TemperatureBelief> temps_;
@@ -400,6 +417,13 @@ class Belief {
   pddl::State state_;
   int t_ = 0;
   pddl::ObjectId speaker_ = -1;
+  // The kind of the object the speaker last acted on (a salient action's
+  // focal object): what "one more of these" names (language/deixis.hpp).
+  std::string deictic_type_;
+  // Notes the speaker's action for deictic_type_.
+  void note_deixis(pddl::ActionId action);
+  // The utterances as the language model reads them (deixis resolved).
+  std::vector<std::string> resolved(const std::vector<std::string>& utterances) const;
   std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
   // Scheduling only: per acting agent (the first argument of the state's
   // first applicable action, -1 if none), each hypothesis' last refinement time.

@@ -18,7 +18,8 @@ Belief::Event Belief::speak_event(const pddl::State& s, const std::vector<std::s
   Event e;
   e.kind = Event::Kind::Speak;
   e.state = s;
-  e.texts = texts;
+  e.texts = resolved(texts);
+  e.said = texts;
   if (options_.speak_factors) {
     // The same goal-independent factors, in the same order, as the exact
     // belief adds them (score_utterances before the texts, hear after).
@@ -131,7 +132,7 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
     last.backgrounds.assign(last.texts.size(), kNegInf);
     for (size_t u = 0; u < last.texts.size(); ++u) {
       UtteranceRecord rec;
-      rec.text = last.texts[u];
+      rec.text = u < last.said.size() ? last.said[u] : last.texts[u];
       // Hypotheses no particle holds are not scored: NaN log-likelihood.
       rec.hypotheses.assign(hyps_.size(), HypothesisUtterance{std::numeric_limits<double>::quiet_NaN(), {}});
       for (size_t i = 0; i < need.size(); ++i) rec.hypotheses[need[i]] = std::move(scores[u][i]);

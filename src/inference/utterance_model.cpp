@@ -8,8 +8,11 @@
 #include <limits>
 
 #include "language/commands/enumerate.hpp"
+#include "language/lm/wordnet_lexicon.hpp"
+#include "language/lm_domain.hpp"
 #include "language/commands/salient.hpp"
 #include "util/error.hpp"
+#include "util/numbered_names.hpp"
 
 namespace clips::inference {
 
@@ -26,7 +29,47 @@ double log_sum_exp(const std::vector<double>& x) {
   return m + std::log(z);
 }
 
+// log(exp(a) - exp(b)) for a >= b; -inf when they are (nearly) equal.
+double log_minus(double a, double b) {
+  if (!(a > b)) return kNegInf;
+  return a + std::log1p(-std::exp(b - a));
+}
+
 }  // namespace
+
+std::vector<CommandScore> merge_requests(const HypothesisUtterance& own, const HypothesisUtterance& alone,
+                                         double share) {
+  std::vector<CommandScore> out;
+  std::vector<double> terms;  // per entry of out, its log weight
+  std::vector<double> rest;   // the readings that ask for no command
+  auto add = [&](const HypothesisUtterance& r, double log_share) {
+    std::vector<double> mine;
+    for (const CommandScore& c : r.commands) {
+      if (!(c.prior > 0)) continue;
+      const double t = log_share + std::log(c.prior) + c.log_lm;
+      mine.push_back(t - log_share);
+      auto it = std::find_if(out.begin(), out.end(), [&](const CommandScore& o) { return o.command == c.command; });
+      if (it == out.end()) {
+        out.push_back(c);
+        terms.push_back(t);
+      } else {
+        double& w = terms[static_cast<size_t>(it - out.begin())];
+        w = log_sum_exp({w, t});
+      }
+    }
+    // What the commands leave of the likelihood: the empty prompt's part.
+    rest.push_back(log_share + log_minus(r.log_likelihood, log_sum_exp(mine)));
+  };
+  add(own, std::log1p(-share));
+  add(alone, std::log(share));
+  std::vector<double> all = terms;
+  all.insert(all.end(), rest.begin(), rest.end());
+  const double z = log_sum_exp(all);
+  for (size_t i = 0; i < out.size(); ++i) {
+    out[i].posterior = z == kNegInf ? 0.0 : std::exp(terms[i] - z);
+  }
+  return out;
+}
 
 SpeakerRule parse_speaker_rule(const std::string& text) {
   if (text == "paper") return SpeakerRule::Paper;
@@ -60,6 +103,9 @@ UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::
   examples_ = pack->fewshot(/*literal=*/false, options_.language_dir);
   const pddl::Task& t = *task_;
   const auto& dom = t.domain();
+  // Places said by their number: commands and the examples' commands mark it.
+  config_.numbered_names = language::numbered_place_names(dom, t.problem(), config_);
+  for (commands::FewShotExample& ex : examples_) ex.command = util::mark_numbered(ex.command, config_.numbered_names);
   for (int o = 0; o < t.num_objects(); ++o)
     type_of_[t.object_name(o)] = dom.types[t.problem().objects[o].type].name;
   // Qualifier candidates: every (object, value) pair whose atom is dynamic or
@@ -79,6 +125,8 @@ UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::
           for (int i = 0; i < 2; ++i)
             typed = typed && dom.is_subtype(t.problem().objects[args[i]].type, dom.predicates[*pred].arg_types[i]);
           if (!typed) continue;
+          // A place named by a code ("c3-4") is nothing a speaker says.
+          if (config_.is_location(name) && !lm::WordNetLexicon::instance().sayable_name(t.object_name(v))) continue;
           auto ref = t.atom(*pred, args);
           if (ref.bit >= 0 || ref.value) q.of_object[t.object_name(o)].push_back({t.object_name(v), ref});
         }
@@ -150,7 +198,8 @@ std::vector<commands::Command> UtteranceModel::plan_commands(const std::vector<p
   if (config_.destinations)
     for (commands::SalientAction& a : salient)
       if (const commands::SalientActionRule* r = config_.salient_rule(a.action.name);
-          r && r->destination_arg > 0 && static_cast<size_t>(r->destination_arg) <= a.action.args.size())
+          r && r->destination_arg > 0 && static_cast<size_t>(r->destination_arg) <= a.action.args.size() &&
+          lm::WordNetLexicon::instance().sayable_name(a.action.args[static_cast<size_t>(r->destination_arg - 1)]))
         a.predicates.push_back({commands::kDestinationPredicate,
                                 {a.focal, a.action.args[static_cast<size_t>(r->destination_arg - 1)]}});
   return commands::enumerate_commands(salient, config_, [this](const std::string& o) {
@@ -242,15 +291,34 @@ commands::Command UtteranceModel::goal_statement(const std::string& label, const
   std::vector<std::string> words;
   auto add = [&](const std::string& w) {
     // Type nouns stay nouns (the corpus does not name goals with them either).
-    if (w.size() > 1 && !task_->domain().find_type(w) && std::find(words.begin(), words.end(), w) == words.end())
+    if ((w.size() > 1 || std::isdigit(static_cast<unsigned char>(w[0]))) && !task_->domain().find_type(w) &&
+        std::find(words.begin(), words.end(), w) == words.end())
       words.push_back(w);
   };
-  for (const auto& w : name_words(label)) add(w);
+  // A numbered place's number is a word of its own ("shelf3": shelf, 3).
+  auto add_name = [&](const std::string& name) {
+    for (const auto& w : name_words(name)) add(w);
+    if (std::find(config_.numbered_names.begin(), config_.numbered_names.end(), name) != config_.numbered_names.end()) {
+      const std::string marked = util::number_marked(name);
+      add(marked.substr(marked.find('#') + 1));
+    }
+  };
+  {
+    std::string part;
+    for (char ch : label + "-") {
+      if (ch == '-' || ch == '_' || std::isspace(static_cast<unsigned char>(ch))) {
+        if (!part.empty()) add_name(part);
+        part.clear();
+      } else {
+        part.push_back(ch);
+      }
+    }
+  }
   // The objects the condition names (not the agents), and their qualifiers.
   std::string token;
   auto object = [&](const std::string& name) {
     if (name.empty() || name == config_.speaker || name == config_.listener || !task_->find_object(name)) return;
-    for (const auto& w : name_words(name)) add(w);
+    add_name(name);
     for (const auto& q : qualifiers(name, s))
       for (const auto& a : q.args)
         if (a != name)

@@ -99,7 +99,20 @@ using SpeakerPlans = std::vector<SpeakerPlan>;
 struct HypothesisUtterance {
   double log_likelihood = 0;          // log P(u | s, π_h)
   std::vector<CommandScore> commands; // empty: scored with the "\n" prompt
+  // What the words ask the assistant to do, for assistance (the request
+  // reading, domains::InferenceSettings::request_plans): `commands` and the
+  // commands of the plan in which the assistant reaches the goal alone,
+  // with their posterior under both. Empty: read the requests off `commands`.
+  std::vector<CommandScore> requests;
 };
+
+// The request reading of one hypothesis (HypothesisUtterance::requests):
+// its speaker model's reading `own` and the same words read under the
+// commands of the plan in which the assistant reaches its goal alone
+// (`alone`), mixed with prior weights 1 - share and share; the commands'
+// posteriors under the mixture, the same command from both summed.
+std::vector<CommandScore> merge_requests(const HypothesisUtterance& own, const HypothesisUtterance& alone,
+                                         double share);
 
 class UtteranceModel {
  public:

@@ -18,6 +18,7 @@
 #include "language/lm/openai_model.hpp"
 #include "util/data_dir.hpp"
 #include "util/error.hpp"
+#include "util/numbered_names.hpp"
 
 namespace clips::language {
 
@@ -200,8 +201,9 @@ std::vector<commands::Command> literal_commands(const pddl::Task& task, const pd
   // Qualifiers (colours, item types) are static facts of the problem, so they
   // are looked up in the task rather than the state.
   const commands::QualifierLookup qualifier_of = setup.pack->qualifier_of(task);
-  return commands::enumerate_literal_candidates(candidates, setup.config, qualifier_of,
-                                                type_lookup(task, *setup.pack));
+  commands::LanguageConfig config = setup.config;
+  config.numbered_names = numbered_place_names(task.domain(), task.problem(), config);
+  return commands::enumerate_literal_candidates(candidates, config, qualifier_of, type_lookup(task, *setup.pack));
 }
 
 // ---- scoring ------------------------------------------------------------------
@@ -215,9 +217,16 @@ ListenerResult rank_commands(const std::vector<commands::Command>& commands, con
   if (commands.empty()) return result;
 
   const std::string continuation = commands::utterance_continuation(utterance);
+  // The examples name numbered places as the commands do ("shelf#3").
+  std::vector<std::string> numbered;
+  for (const auto& c : commands)
+    for (const auto& n : c.numbered)
+      if (std::find(numbered.begin(), numbered.end(), n) == numbered.end()) numbered.push_back(n);
+  std::vector<commands::FewShotExample> examples = setup.examples;
+  for (commands::FewShotExample& ex : examples) ex.command = util::mark_numbered(ex.command, numbered);
   std::vector<lm::ScoreRequest> batch;
   batch.reserve(commands.size());
-  for (const auto& c : commands) batch.push_back({commands::build_prompt(setup.examples, c.llm_form()), continuation});
+  for (const auto& c : commands) batch.push_back({commands::build_prompt(examples, c.llm_form()), continuation});
   const std::vector<double> scores = lm.score(batch);
   if (scores.size() != commands.size())
     throw lm::LmError(lm.name() + ": returned " + std::to_string(scores.size()) + " scores for " +

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "language/lm/wordnet_lexicon.hpp"
+#include "util/numbered_names.hpp"
+
 namespace clips::language {
 
 lm::DomainDescription describe_for_language_model(const pddl::Domain& domain, const pddl::Problem& problem,
@@ -29,7 +32,8 @@ lm::DomainDescription describe_for_language_model(const pddl::Domain& domain, co
   }
   for (const pddl::InitAtom& atom : problem.init_atoms) {
     const std::string& name = domain.predicates[static_cast<size_t>(atom.pred)].name;
-    if (atom.args.size() == 2 && config.is_location(name))
+    if (atom.args.size() == 2 && config.is_location(name) &&
+        lm::WordNetLexicon::instance().sayable_name(problem.objects[static_cast<size_t>(atom.args[1])].name))
       out.locations.push_back({name, problem.objects[static_cast<size_t>(atom.args[0])].name,
                                problem.objects[static_cast<size_t>(atom.args[1])].name});
   }
@@ -41,7 +45,32 @@ lm::DomainDescription describe_for_language_model(const pddl::Domain& domain, co
   out.listener = config.listener;
   out.speaker_pronoun = config.speaker_pronoun;
   out.listener_pronoun = config.listener_pronoun;
+  out.numbered = numbered_place_names(domain, problem, config);
   return out;
+}
+
+std::vector<std::string> numbered_place_names(const pddl::Domain& domain, const pddl::Problem& problem,
+                                              const commands::LanguageConfig& config) {
+  // The types commands lift: the focal parameters of salient actions that
+  // are not about a place, and the agents.
+  std::vector<pddl::TypeId> lifted;
+  for (const commands::SalientActionRule& r : config.salient_actions) {
+    if (r.focal_is_place) continue;
+    for (const pddl::ActionSchema& a : domain.actions) {
+      if (a.name != r.action) continue;
+      if (r.focal_arg >= 1 && r.focal_arg <= static_cast<int>(a.param_types.size()))
+        lifted.push_back(a.param_types[static_cast<size_t>(r.focal_arg - 1)]);
+      if (r.agent_arg >= 1 && r.agent_arg <= static_cast<int>(a.param_types.size()))
+        lifted.push_back(a.param_types[static_cast<size_t>(r.agent_arg - 1)]);
+    }
+  }
+  std::vector<std::string> names;
+  for (const pddl::ObjectDef& o : problem.objects) {
+    const bool is_lifted = std::any_of(lifted.begin(), lifted.end(),
+                                       [&](pddl::TypeId t) { return domain.is_subtype(o.type, t); });
+    if (!is_lifted && o.name != config.speaker && o.name != config.listener) names.push_back(o.name);
+  }
+  return util::numbered_names(names);
 }
 
 }  // namespace clips::language

@@ -21,4 +21,10 @@ lm::DomainDescription describe_for_language_model(const pddl::Domain& domain, co
                                                   const commands::LanguageConfig& config,
                                                   const std::vector<std::string>& qualifier_predicates = {});
 
+// The names of the problem's objects that commands name by their number
+// (commands::numbered_names over the objects commands do not lift: places
+// and fixtures, not the things a salient action is about, nor agents).
+std::vector<std::string> numbered_place_names(const pddl::Domain& domain, const pddl::Problem& problem,
+                                              const commands::LanguageConfig& config);
+
 }  // namespace clips::language

@@ -89,4 +89,13 @@ pddl::State freeze(const pddl::Task& task, const pddl::State& s, const std::stri
   return out;
 }
 
+bool can_freeze(const pddl::Task& task, const std::string& agent) { return task.atom("frozen", {agent}).bit >= 0; }
+
+pddl::State unfreeze(const pddl::Task& task, const pddl::State& s, const std::string& agent) {
+  pddl::State out = s;
+  auto ref = task.atom("frozen", {agent});
+  if (ref.bit >= 0) task.set(out, ref, false);
+  return out;
+}
+
 }  // namespace clips::model

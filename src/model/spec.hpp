@@ -90,5 +90,8 @@ class Specification {
 // Returns a copy of `s` with `(frozen agent)` set (the agent may only wait or
 // hand over what it holds). Throws if the task has no such predicate.
 pddl::State freeze(const pddl::Task& task, const pddl::State& s, const std::string& agent);
+// Whether freeze() can freeze `agent` in this task; s with `agent` free again.
+bool can_freeze(const pddl::Task& task, const std::string& agent);
+pddl::State unfreeze(const pddl::Task& task, const pddl::State& s, const std::string& agent);
 
 }  // namespace clips::model

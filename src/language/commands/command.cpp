@@ -6,6 +6,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "util/numbered_names.hpp"
+
 namespace clips::commands {
 
 namespace {
@@ -67,8 +69,9 @@ std::string Command::display_form() const {
 std::string Command::llm_form() const {
   const auto bare = [](const std::string& name) { return lowercase_first(name); };
   if (printed_form == PrintedForm::WhereClause)
-    return with_where(render_all(printed_actions.empty() ? actions : printed_actions, bare, keep_all),
-                      render_all(predicates, bare, keep_all));
+    return util::mark_numbered(with_where(render_all(printed_actions.empty() ? actions : printed_actions, bare, keep_all),
+                                    render_all(predicates, bare, keep_all)),
+                         numbered);
 
   // VH: the item type is already in the variable name, so the qualifier
   // predicates and the variables they do not mention (fixtures) are dropped.
@@ -188,6 +191,12 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
     return name;
   };
 
+  // A named place whose number people say (LanguageConfig::numbered_names).
+  const auto note_numbered = [&](const std::string& name) {
+    if (std::binary_search(config.numbered_names.begin(), config.numbered_names.end(), name) &&
+        std::find(cmd.numbered.begin(), cmd.numbered.end(), name) == cmd.numbered.end())
+      cmd.numbered.push_back(name);
+  };
   for (const auto& s : subset) {
     Term action{s.action.name, {}}, printed{s.action.name, {}};
     const SalientActionRule* rule = config.salient_rule(s.action.name);
@@ -196,12 +205,15 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
       const std::string pronoun = config.to_pronoun(arg);
       const bool is_agent = pronoun != arg || config.is_pronoun(arg);
       const bool focal = rule && static_cast<int>(i) + 1 == rule->focal_arg;
-      if (is_agent || is_variable(arg))
+      if (is_agent || is_variable(arg)) {
         action.args.push_back(pronoun);
-      else if (focal && rule->focal_is_place)
+      } else if (focal && rule->focal_is_place) {
         action.args.push_back(arg);
-      else
+        note_numbered(arg);
+      }
+      else {
         action.args.push_back("?" + variable_for(arg));
+      }
       if (is_agent || focal) printed.args.push_back(action.args.back());
     }
     cmd.actions.push_back(std::move(action));
@@ -214,7 +226,9 @@ Command lift_command(const std::vector<SalientAction>& subset, const LanguageCon
       for (std::size_t i = 0; i < p.args.size(); ++i) {
         const std::string& arg = p.args[i];
         auto it = variable_of.find(arg);
-        lifted.args.push_back(it == variable_of.end() || (location && i > 0) ? arg : "?" + it->second);
+        const bool named = it == variable_of.end() || (location && i > 0);
+        lifted.args.push_back(named ? arg : "?" + it->second);
+        if (named) note_numbered(arg);
       }
       cmd.predicates.push_back(std::move(lifted));
     }
@@ -233,6 +247,8 @@ Command merge_commands(const Command& first, const Command& second) {
   append_unique(merged.actions, second.actions);
   append_unique(merged.printed_actions, second.printed_actions);
   append_unique(merged.predicates, second.predicates);
+  for (const auto& n : second.numbered)
+    if (std::find(merged.numbered.begin(), merged.numbered.end(), n) == merged.numbered.end()) merged.numbered.push_back(n);
   for (const auto& v : second.variables) {
     auto it = std::find_if(merged.variables.begin(), merged.variables.end(),
                            [&](const Variable& m) { return m.name == v.name; });

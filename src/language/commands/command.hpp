@@ -39,6 +39,9 @@ struct Command {
   // The actions as the language model reads them when the config prints
   // agents and focal objects only; empty: `actions`.
   std::vector<Term> printed_actions;
+  // The places it names whose number people say (LanguageConfig::
+  // numbered_names): llm_form marks their numbers ("shelf#3").
+  std::vector<std::string> numbered;
 
   // Actions, then " where " and the predicates if any; variables as "?key1".
   std::string display_form() const;

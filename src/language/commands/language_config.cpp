@@ -1,6 +1,8 @@
 #include "language/commands/language_config.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <fstream>
 #include <set>
 #include <sstream>

@@ -138,6 +138,12 @@ struct LanguageConfig {
   // {"(has $2 $3)", "(pickedup-by $1 $3)"}.
   std::map<std::string, std::vector<std::string>> goal_atoms;
   GoalVariables goal_variables = GoalVariables::Existential;
+  // Objects of the task that people tell apart by the number in their name
+  // ("shelf 3" for shelf3 beside shelf1 and shelf2): a command that names one
+  // prints it with its number marked (util::number_marked), so the language model
+  // reads the number as a word of its own. Set per task (numbered_names);
+  // empty in a pack.
+  std::vector<std::string> numbered_names;
 
   const SalientActionRule* salient_rule(const std::string& action) const;
   // `qualifier` then `more_qualifiers`.

@@ -103,6 +103,8 @@ inline constexpr double kMisboundCopy = 0.02; // copy weight left to a colour bo
 inline constexpr int kMaxHeadDistance = 3;    // the head noun follows within this many tokens
 // Contradicted colours (header, item 7).
 inline constexpr double kContradictedColour = 0.02;  // factor on a token that miscolours the command's object
+// Tokens after a negator that its scope may cover ("not the big red one").
+inline constexpr size_t kMaxNegationScope = 6;
 
 // Lexical class bits of a closed-class word (kWord* above); english_reader.cpp.
 uint8_t closed_class_flags(std::string_view w);
@@ -151,7 +153,7 @@ struct AlignmentModel::Bound {
   struct Group {
     bool speaker;
     bool to_speaker = false;  // action group handing its objects to the speaker
-    int kind;         // 0 = action group, 1 = recipient, 2 = attribute value
+    int kind;         // 0 = action group, 1 = recipient, 2 = attribute value, 3 = a place's number
     int parent = -1;  // for an optional unit: index of its action group
     double unit_weight = 0;  // its weight relative to the group's own fields (which sum to 1)
     double log_on, log_off;
@@ -177,8 +179,8 @@ struct AlignmentModel::Counts {
   std::vector<double> bg;
   double copy = 0;
   double non_copy = 0;
-  double mention_on[3] = {0, 0, 0};
-  double mention_all[3] = {0, 0, 0};
+  double mention_on[4] = {0, 0, 0, 0};
+  double mention_all[4] = {0, 0, 0, 0};
   std::vector<std::vector<double>> length;  // [bucket][n]
 };
 

@@ -286,6 +286,22 @@ std::shared_ptr<const AlignmentModel::Bound> AlignmentModel::bind(const std::str
       at.fields.push_back(Bound::Field{residual, residual_index, 1 - copy_alpha_, true});
       b->groups.push_back(std::move(at));
     }
+    // The number of a numbered place ("shelf 3"): a unit of its own, as
+    // heavy as one attribute, with its own mention rate (most places are
+    // named without one).
+    for (const std::string& num : g.numbers) {
+      Bound::Group nu;
+      nu.speaker = b->groups[static_cast<size_t>(parent)].speaker;
+      nu.kind = 3;
+      nu.parent = parent;
+      nu.unit_weight = kWeightAttribute / z / static_cast<double>(std::max<size_t>(1, g.attributes.size()));
+      nu.log_on = std::log(mention_[3]);
+      nu.log_off = std::log(1 - mention_[3]);
+      auto it = word_ids_.find(num);
+      nu.copies.push_back(Bound::Copy{it == word_ids_.end() ? -1 : it->second, num, copy_alpha_});
+      nu.fields.push_back(Bound::Field{residual, residual_index, 1 - copy_alpha_, true});
+      b->groups.push_back(std::move(nu));
+    }
     if (g.to_speaker) {
       Bound::Group rec;
       rec.speaker = false;
@@ -390,6 +406,17 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
     }
     return !valued;
   };
+  // Whether action group g's object is known to have value `id` of those kinds.
+  auto has = [&](size_t g, int id, unsigned token_kinds) {
+    for (size_t k = 0; k < G; ++k) {
+      const Bound::Group& unit = c.groups[k];
+      if (unit.parent != static_cast<int>(g) || unit.kind != 2) continue;
+      if ((qualifier_kinds(c, k) & token_kinds) == 0) continue;
+      for (const Bound::Copy& cp : unit.copies)
+        if (cp.id == id) return true;
+    }
+    return false;
+  };
   // Whether value token i's noun phrase is headed by "one"/"ones" ("the red
   // one", "the big red one"): only other values may stand between them.
   auto names_a_one = [&](size_t i) {
@@ -407,6 +434,9 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
       if (id < 0 || static_cast<size_t>(id) >= attribute_word_.size() || !attribute_word_[static_cast<size_t>(id)])
         continue;
       const unsigned token_kinds = static_cast<unsigned char>(attribute_word_[static_cast<size_t>(id)]);
+      // A negated value ("not the red one") contradicts the objects that have it.
+      const bool neg = i < u.negated.size() && u.negated[i] != 0;
+      auto fits = [&](size_t g) { return neg ? !has(g, id, token_kinds) : may_be(g, id, token_kinds); };
       for (int t = 0; t < 2; ++t) {
         bool typed = false, contradicted = true;
         for (int j : u.noun_heads[i]) {
@@ -430,14 +460,14 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
             const double own = std::max(grp.type_nouns[0]->at(hid, hw), grp.type_nouns[1]->at(hid, hw));
             if (own < kBindRatio * best) continue;
             named = true;
-            consistent = consistent || may_be(g, id, token_kinds);
+            consistent = consistent || fits(g);
           }
           if (!named || consistent) {
             contradicted = false;
             break;
           }
         }
-        if (!typed && contradicted && names_a_one(i)) {
+        if (!typed && contradicted && (names_a_one(i) || neg)) {
           // "the red one": no noun, but it is one of the clause's role's
           // objects (a request's "it" reads the listener's), so it
           // contradicts a command none of whose such objects can be red.
@@ -448,7 +478,7 @@ std::vector<double> AlignmentModel::colour_contradictions(const Bound& c, const 
             const Bound::Group& grp = c.groups[g];
             if (grp.kind != 0 || !in_role(grp, statement)) continue;
             any = true;
-            consistent = may_be(g, id, token_kinds);
+            consistent = fits(g);
           }
           typed = any;
           contradicted = any && !consistent;
@@ -500,8 +530,10 @@ AlignmentModel::TokenSources AlignmentModel::token_sources(const Bound& c, const
       }
       for (const Bound::Field& f : c.groups[g].fields)
         v += f.weight * f.table->at(id, w) * (f.number ? colour_binding(c, g, u, i) : 1.0);
+      // A negated value is no mention of it ("not the red one").
+      const bool negated = i < u.negated.size() && u.negated[i] != 0;
       for (const Bound::Copy& cp : c.groups[g].copies) {
-        if (id >= 0 ? id == cp.id : w == cp.word) v += cp.weight * colour_binding(c, g, u, i);
+        if (!negated && (id >= 0 ? id == cp.id : w == cp.word)) v += cp.weight * colour_binding(c, g, u, i);
       }
       p_group[g * n + i] = v;
     }
@@ -943,7 +975,7 @@ std::string AlignmentModel::explain(const std::string& command, const std::strin
   const Table& mod = *tables_[static_cast<size_t>(table_ids_.at("M"))];
   std::string out = "alpha=" + std::to_string(copy_alpha_) + " rho_group=" + std::to_string(mention_[0]) +
                     " rho_recipient=" + std::to_string(mention_[1]) +
-                    " rho_attribute=" + std::to_string(mention_[2]) +
+                    " rho_attribute=" + std::to_string(mention_[2]) + " rho_number=" + std::to_string(mention_[3]) +
                     " log_len=" + std::to_string(length_log_prob(c->num_actions, static_cast<int>(u.words.size()), true)) +
                     "\n";
   for (size_t i = 0; i < u.words.size(); ++i) {

@@ -199,6 +199,11 @@ struct EncodedUtterance {
   // statement, each with kMarkedClause rather than kRequestClause; in the
   // latter only the speaker's groups anchor at full weight.
   std::vector<char> subject;
+  // negated[i] != 0: token i is a qualifier value or adjective in the scope
+  // of a negation ("not the red one", "any except the green ones", "I don't
+  // need the big one"): it says what the object is not, so it is no mention
+  // of that value, and it contradicts an object that has it.
+  std::vector<char> negated;
 };
 
 inline constexpr char kSubjectUnmarked = 0;
@@ -298,6 +303,8 @@ class AlignmentModel {
   // The qualifier value an out-of-vocabulary word names by WordNet ("big" ->
   // large, "tiny" -> small, "wood" -> wooden), or "" if none or several do.
   std::string attribute_synonym(const std::string& w) const;
+  void read_place_numbers(EncodedUtterance& u) const;
+  void mark_negations(EncodedUtterance& u) const;
   void mark_modifiers(EncodedUtterance& u) const;
   void mark_pronoun_antecedents(EncodedUtterance& u) const;
   void mark_clause_subjects(EncodedUtterance& u) const;
@@ -320,7 +327,8 @@ class AlignmentModel {
   double copy_alpha_ = 0.8;
   bool function_words_ = false;
   NounSenses noun_senses_;
-  double mention_[3] = {0.85, 0.85, 0.85};  // rho: action groups, recipients, attribute values
+  // rho: action groups, recipients, attribute values, numbers of numbered places
+  double mention_[4] = {0.85, 0.85, 0.85, 0.85};
   std::vector<std::vector<double>> length_;  // [actions][n] for n <= kMaxLen
   std::vector<double> length_tail_scale_;    // weight of the base beyond kMaxLen
   std::vector<double> length_mean_;

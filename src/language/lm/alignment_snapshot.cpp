@@ -14,7 +14,7 @@ namespace clips::lm {
 
 namespace {
 
-constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '2'};
+constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '3'};
 
 // FNV-1a over the payload, stored last: a snapshot damaged on disk (a flipped
 // bit in a probability) is rejected instead of scoring silently wrong.

@@ -318,7 +318,7 @@ struct Trainer {
         for (const auto& [id, p] : t.base) t.prob[static_cast<size_t>(id)] += t.kappa * p / (total + t.kappa);
       }
       set_background(counts.bg);
-      for (int kind = 0; kind < 3; ++kind) {
+      for (int kind = 0; kind < 4; ++kind) {
         M.mention_[kind] = (counts.mention_on[kind] + 2 * kMention) / (counts.mention_all[kind] + 2);
         M.mention_[kind] = std::clamp(M.mention_[kind], 0.05, 0.95);
       }

@@ -93,10 +93,14 @@ CommandFrame parse_command_frame(std::string_view command, std::string_view what
   // people say: no trailing digits, the last part of a compound ("patch").
   std::map<std::string, std::string> type_override;
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> attributes;  // value, predicate
+  std::map<std::string, std::vector<std::string>> numbers;
   for (const Term& p : predicates) {
     if (p.size() != 3) continue;  // only (pred var value) carries lexical content
     if (p[0] == "itemtype" || p[0] == "type") {
       type_override[p[1]] = lower(p[2]);
+    } else if (const size_t hash = p[2].find('#'); hash != std::string::npos && hash > 0 && hash + 1 < p[2].size()) {
+      attributes[p[1]].emplace_back(value_word(p[2].substr(0, hash)), p[0]);
+      numbers[p[1]].push_back(p[2].substr(hash + 1));
     } else {
       attributes[p[1]].emplace_back(value_word(p[2]), p[0]);
     }
@@ -118,20 +122,29 @@ CommandFrame parse_command_frame(std::string_view command, std::string_view what
       if (!is_pronoun(a[k])) focal = a[k];
     }
     if (agent == "me") to_speaker = false;
-    std::string type;
+    std::string type, focal_number;
     if (!focal.empty()) {
       auto it = type_override.find(focal);
-      type = it != type_override.end() ? it->second : variable_type(focal);
+      // A named place said with its number ("(open you door#2)").
+      const size_t hash = focal.find('#');
+      if (it == type_override.end() && hash != std::string::npos && hash > 0 && hash + 1 < focal.size())
+        focal_number = focal.substr(hash + 1);
+      type = it != type_override.end() ? it->second : variable_type(focal.substr(0, hash));
     }
     auto g = std::find_if(frame.groups.begin(), frame.groups.end(), [&](const FrameGroup& x) {
       return x.agent == agent && x.action == a[0] && x.type == type && x.to_speaker == to_speaker;
     });
     if (g == frame.groups.end()) {
-      frame.groups.push_back(FrameGroup{agent, a[0], to_speaker, type, 0, {}, {}});
+      frame.groups.push_back(FrameGroup{agent, a[0], to_speaker, type, 0, {}, {}, {}});
       g = frame.groups.end() - 1;
     }
     ++g->count;
+    if (!focal_number.empty() && std::find(g->numbers.begin(), g->numbers.end(), focal_number) == g->numbers.end())
+      g->numbers.push_back(focal_number);
     if (!focal.empty()) {
+      if (auto nt = numbers.find(focal); nt != numbers.end())
+        for (const std::string& v : nt->second)
+          if (std::find(g->numbers.begin(), g->numbers.end(), v) == g->numbers.end()) g->numbers.push_back(v);
       auto at = attributes.find(focal);
       if (at != attributes.end()) {
         for (const auto& [v, predicate] : at->second) {

@@ -16,7 +16,8 @@
 // '?' and trailing digits removed; an (itemtype v T) predicate overrides it.
 // Any other two-argument predicate (p v value) attaches `value` to v as an
 // attribute (a qualifier: colour, size, material, owner, ...), remembering
-// which predicate it came from.
+// which predicate it came from. A value marked with its number ("shelf#3",
+// util::number_marked) also gives the group that number.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,9 @@ struct FrameGroup {
   // The qualifier predicate each attribute came from ("iscolor", "issize"),
   // parallel to `attributes`: a value only contradicts values of its own kind.
   std::vector<std::string> attribute_predicates;
+  // The numbers of numbered place values ("shelf#3" -> attribute "shelf",
+  // number "3"), each a unit of its own that people may or may not say.
+  std::vector<std::string> numbers;
 };
 
 struct CommandFrame {

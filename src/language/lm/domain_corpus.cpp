@@ -11,6 +11,7 @@
 #include "language/lm/alignment_model.hpp"
 #include "language/lm/language_model.hpp"
 #include "language/lm/wordnet_lexicon.hpp"
+#include "util/numbered_names.hpp"
 
 namespace clips::lm {
 namespace {
@@ -49,6 +50,17 @@ std::string name_as_words(std::string_view name) {
   }
   while (!out.empty() && out.back() == ' ') out.pop_back();
   return out;
+}
+
+// A number in words: "three" (cardinal) or "third" (ordinal); digits beyond twelve.
+std::string number_in_words(const std::string& digits, bool ordinal) {
+  static const std::vector<std::string> cardinal = {"zero", "one", "two", "three", "four", "five", "six",
+                                                    "seven", "eight", "nine", "ten", "eleven", "twelve"};
+  static const std::vector<std::string> ordinals = {"zeroth", "first", "second", "third", "fourth", "fifth", "sixth",
+                                                    "seventh", "eighth", "ninth", "tenth", "eleventh", "twelfth"};
+  const int n = digits.size() <= 3 ? std::stoi(digits) : -1;
+  if (n < 0 || n > 12) return ordinal ? digits + "th" : digits;
+  return ordinal ? ordinals[static_cast<size_t>(n)] : cardinal[static_cast<size_t>(n)];
 }
 
 // Words of an action or type: the pack's own words, then WordNet's.
@@ -173,8 +185,37 @@ class Generator {
     if (r.destination_arg < 1 || r.destination_arg > static_cast<int>(s.parameter_types.size())) return out;
     const std::string& want = s.parameter_types[static_cast<size_t>(r.destination_arg - 1)];
     for (const DomainObject& obj : d_.objects)
-      if (obj.name != d_.speaker && obj.name != d_.listener && is_a(obj.type, want)) out.push_back(&obj);
+      if (obj.name != d_.speaker && obj.name != d_.listener && is_a(obj.type, want) &&
+          WordNetLexicon::instance().sayable_name(obj.name))
+        out.push_back(&obj);
     return out;
+  }
+  bool numbered(const std::string& name) const {
+    return std::find(d_.numbered.begin(), d_.numbered.end(), name) != d_.numbered.end();
+  }
+  // A place as commands print it: marked with its number when people say it.
+  std::string printed_place(const std::string& name) const {
+    return numbered(name) ? util::number_marked(name) : name;
+  }
+  // A numbered place as people say it: "shelf 3", "shelf three", "shelf
+  // number 3", "the third shelf" (no article but for the ordinal form).
+  std::string said_number(const std::string& name) {
+    const std::string marked = util::number_marked(name);
+    const std::string stem = name_as_words(marked.substr(0, marked.find('#')));
+    const std::string digits = marked.substr(marked.find('#') + 1);
+    switch (dice_.below(4)) {
+      case 0: return stem + " " + digits;
+      case 1: return stem + " " + number_in_words(digits, false);
+      case 2: return stem + " number " + digits;
+      default: return "the " + number_in_words(digits, true) + " " + stem;
+    }
+  }
+  // "<preposition> the <place>", or for a numbered place "<preposition> <its number phrase>".
+  std::string place_after(const std::string& prep_the, const std::string& name) {
+    if (!numbered(name)) return prep_the + " " + name_as_words(name);
+    std::string prep = prep_the;
+    if (prep.size() >= 4 && prep.compare(prep.size() - 4, 4, " the") == 0) prep.resize(prep.size() - 4);
+    return prep + " " + said_number(name);
   }
   const QualifierFact* location_of(const std::string& object) const {
     for (const QualifierFact& f : d_.locations)
@@ -217,7 +258,8 @@ class Generator {
     for (const PlannedAction& a : actions) {
       auto [it, fresh] = variable.emplace(a.focal->name, "");
       if (fresh)
-        it->second = a.rule->focal_is_place ? a.focal->name : a.focal->type + std::to_string(++counter[a.focal->type]);
+        it->second = a.rule->focal_is_place ? printed_place(a.focal->name)
+                                            : a.focal->type + std::to_string(++counter[a.focal->type]);
       out += (out.empty() ? "(" : " (") + a.schema->name;
       for (size_t j = 0; j < a.schema->parameter_types.size(); ++j) {
         const int pos = static_cast<int>(j) + 1;
@@ -231,8 +273,10 @@ class Generator {
       }
       out += ")";
       for (const QualifierFact* f : a.facts) where += " (" + f->predicate + " " + it->second + " " + f->value + ")";
-      if (a.location) where += " (" + a.location->predicate + " " + it->second + " " + a.location->value + ")";
-      if (a.destination) where += " (" + d_.destination_predicate + " " + it->second + " " + a.destination->name + ")";
+      if (a.location)
+        where += " (" + a.location->predicate + " " + it->second + " " + printed_place(a.location->value) + ")";
+      if (a.destination)
+        where += " (" + d_.destination_predicate + " " + it->second + " " + printed_place(a.destination->name) + ")";
     }
     return where.empty() ? out : out + " where" + where;
   }
@@ -304,13 +348,17 @@ class Generator {
     // A place is said by its name ("the greenhouse"), as commands print it,
     // unless the name only numbers its type (fridge1). The type's noun is
     // drawn all the same, so the rest of the corpus draws as before.
-    if (a.rule->focal_is_place && head != "one" && name_as_words(a.focal->name) != name_as_words(a.focal->type))
+    if (a.rule->focal_is_place && head != "one" && numbered(a.focal->name)) {
+      np = said_number(a.focal->name);  // "door 2", "the second door"
+      head.clear();
+    } else if (a.rule->focal_is_place && head != "one" && name_as_words(a.focal->name) != name_as_words(a.focal->type)) {
       head = name_as_words(a.focal->name);
-    np += " " + head;
+    }
+    if (!head.empty()) np += " " + head;
     if (a.location) {
       static const std::vector<std::string> preps = {"from the", "in the", "on the", "at the", "over at the",
                                                      "by the", "from the"};
-      np += " " + dice_.pick(preps) + " " + name_as_words(a.location->value);
+      np += " " + place_after(dice_.pick(preps), a.location->value);
     }
     return np;
   }
@@ -319,7 +367,7 @@ class Generator {
     if (a.destination) {
       static const std::vector<std::string> to = {"to the", "over to the", "at the", "in the", "on the",
                                                   "by the", "to the", "down at the", "into the"};
-      vp += " " + dice_.pick(to) + " " + name_as_words(a.destination->name);
+      vp += " " + place_after(dice_.pick(to), a.destination->name);
     }
     return vp;
   }
@@ -399,7 +447,7 @@ class Generator {
         "the {}, please.", "we need to get the {} done.", "I'm trying to make a {}.", "I want to {}."};
     for (int k = 0; k < o_.goal_statements; ++k) {
       const std::string& name = dice_.pick(names);
-      const std::string words = name_as_words(name);
+      std::string words = name_as_words(name);
       std::string where;
       size_t start = 0;
       while (start < words.size()) {
@@ -408,6 +456,28 @@ class Generator {
         const std::string w = words.substr(start, end - start);
         if (w.size() > 1 && !type_words.count(w)) where += " (named goal1 " + w + ")";
         start = end + 1;
+      }
+      // A numbered place in the goal's name is said with its number ("shelf 3").
+      if (!d_.numbered.empty()) {
+        std::string said, part;
+        bool any = false;
+        for (char ch : name + "-") {
+          if (ch != '-' && ch != '_' && ch != ' ') {
+            part.push_back(ch);
+            continue;
+          }
+          if (part.empty()) continue;
+          if (numbered(part)) {
+            const std::string marked = util::number_marked(part);
+            where += " (named goal1 " + marked.substr(marked.find('#') + 1) + ")";
+            said += (said.empty() ? "" : " ") + said_number(part);
+            any = true;
+          } else if (const std::string w = name_as_words(part); !w.empty()) {
+            said += (said.empty() ? "" : " ") + w;
+          }
+          part.clear();
+        }
+        if (any) words = said;
       }
       if (where.empty()) continue;
       std::string u = dice_.pick(frames);

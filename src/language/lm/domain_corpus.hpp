@@ -87,6 +87,10 @@ struct DomainDescription {
   // Optional words a domain pack may add for its own actions and types, tried
   // before the WordNet-derived ones (e.g. "unlock" -> {"open"}).
   std::map<std::string, std::vector<std::string>> extra_verbs;
+  // Places people tell apart by their number (commands::numbered_names):
+  // commands print them marked ("shelf#3") and utterances say the number
+  // ("shelf 3", "the third shelf").
+  std::vector<std::string> numbered;
   std::map<std::string, std::vector<std::string>> extra_nouns;
 };
 

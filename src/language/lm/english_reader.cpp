@@ -8,7 +8,10 @@
 #include <mutex>
 #include <set>
 #include <string_view>
+#include <unordered_map>
 #include <unordered_set>
+#include <cctype>
+#include <string>
 
 #include "language/lm/alignment_internal.hpp"
 #include "language/lm/utterance_tokens.hpp"
@@ -201,10 +204,115 @@ EncodedUtterance AlignmentModel::encode(const std::string& text) const {
   if (u.clause_end.empty() || u.clause_end.back() != static_cast<int>(u.words.size())) {
     u.clause_end.push_back(static_cast<int>(u.words.size()));
   }
+  read_place_numbers(u);
   mark_modifiers(u);
   mark_pronoun_antecedents(u);
   mark_clause_subjects(u);
+  mark_negations(u);
   return u;
+}
+
+// Negated noun phrases: after "not", "except", "excluding", "without",
+// "never", "other than", "rather than", "instead of", "apart from", "any(thing)
+// but", and "no" before a noun phrase ("no red ones"), the values and
+// adjectives up to the phrase's head (a noun, "one", "ones"), within the
+// clause and a few tokens, say what is not meant. "No, the big one" is a
+// correction, not a negation: the clause after "no" is read as usual.
+void AlignmentModel::mark_negations(EncodedUtterance& u) const {
+  const size_t n = u.words.size();
+  u.negated.assign(n, 0);
+  static const std::unordered_set<std::string> single = {"not", "except", "excluding", "without", "never"};
+  static const std::unordered_set<std::string> any = {"any", "anything", "all", "everything", "anyone", "one"};
+  auto negator_ends_at = [&](size_t i) -> size_t {  // the last token of a negator starting at i, or n
+    const std::string& w = u.words[i];
+    if (single.count(w) != 0) return i;
+    if (i + 1 < n) {
+      const std::string& next = u.words[i + 1];
+      if ((w == "other" || w == "rather") && next == "than") return i + 1;
+      if ((w == "instead" && next == "of") || (w == "apart" && next == "from")) return i + 1;
+      if (w == "no" && !is_clause_end(next) && !is_punctuation_token(next)) return i;
+      if (w == "but" && i > 0 && any.count(u.words[i - 1]) != 0) return i;
+    }
+    return n;
+  };
+  for (size_t i = 0; i < n; ++i) {
+    const size_t end = negator_ends_at(i);
+    if (end >= n) continue;
+    for (size_t j = end + 1, k = 0; j < n && k < kMaxNegationScope; ++j, ++k) {
+      if (is_clause_end(u.words[j]) || is_punctuation_token(u.words[j])) break;
+      const uint8_t f = word_flags(u.ids[j], u.words[j]);
+      const bool value = u.ids[j] >= 0 && static_cast<size_t>(u.ids[j]) < attribute_word_.size() &&
+                         attribute_word_[static_cast<size_t>(u.ids[j])] != 0;
+      if (value || ((f & kWordModifier) != 0 && (f & kWordFunction) == 0)) {
+        u.negated[j] = 1;
+        continue;
+      }
+      if (u.words[j] == "one" || u.words[j] == "ones") break;
+      const bool head = (f & kWordNoun) != 0 && (f & (kWordFunction | kWordVerb)) == 0;
+      if (head) break;
+    }
+    i = end;
+  }
+}
+
+namespace {
+
+// The number a cardinal or ordinal word says ("three", "third", "3rd"), or 0.
+int number_word_value(const std::string& w) {
+  static const std::unordered_map<std::string, int> words = {
+      {"one", 1},        {"two", 2},          {"three", 3},       {"four", 4},        {"five", 5},
+      {"six", 6},        {"seven", 7},        {"eight", 8},       {"nine", 9},        {"ten", 10},
+      {"eleven", 11},    {"twelve", 12},      {"first", 1},       {"second", 2},      {"third", 3},
+      {"fourth", 4},     {"fifth", 5},        {"sixth", 6},       {"seventh", 7},     {"eighth", 8},
+      {"ninth", 9},      {"tenth", 10},       {"eleventh", 11},   {"twelfth", 12}};
+  if (auto it = words.find(w); it != words.end()) return it->second;
+  // "3rd", "12th"
+  size_t k = 0;
+  while (k < w.size() && std::isdigit(static_cast<unsigned char>(w[k]))) ++k;
+  if (k > 0 && k < w.size() && k + 2 == w.size()) {
+    const std::string suffix = w.substr(k);
+    if (suffix == "st" || suffix == "nd" || suffix == "rd" || suffix == "th") return std::stoi(w.substr(0, k));
+  }
+  return 0;
+}
+
+bool is_ordinal_word(const std::string& w) {
+  return number_word_value(w) > 0 && !std::isdigit(static_cast<unsigned char>(w.back())) &&
+         (w.size() > 2 && (w.compare(w.size() - 2, 2, "th") == 0 || w == "first" || w == "second" || w == "third" ||
+                           w.compare(w.size() - 2, 2, "st") == 0 || w.compare(w.size() - 2, 2, "nd") == 0 ||
+                           w.compare(w.size() - 2, 2, "rd") == 0));
+}
+
+}  // namespace
+
+// The number of a numbered place said in words ("shelf three", "the third
+// shelf", "bed number 2", "bay no. 4", "the 3rd shelf") read as the digits
+// its name carries ("3"), when the model has such numbers in its vocabulary
+// (a domain whose commands name numbered places: commands::numbered_names).
+// A cardinal is a place's number after a noun or "number"/"no" ("one" only
+// after those two); an ordinal also before a noun. "two cans" stays a
+// quantity, "the red one" a pronoun.
+void AlignmentModel::read_place_numbers(EncodedUtterance& u) const {
+  const size_t n = u.words.size();
+  for (size_t i = 0; i < n; ++i) {
+    const int value = number_word_value(u.words[i]);
+    if (value <= 0) continue;
+    const std::string digits = std::to_string(value);
+    auto it = word_ids_.find(digits);
+    if (it == word_ids_.end()) continue;
+    auto place_word = [&](size_t j) {
+      const uint8_t f = word_flags(u.ids[j], u.words[j]);
+      return (f & kWordFunction) == 0 && !is_punctuation_token(u.words[j]) && number_word_value(u.words[j]) == 0 &&
+             ((f & kWordNoun) != 0 || (f & kWordModifier) != 0);
+    };
+    bool place_number = false;
+    if (i > 0 && (u.words[i - 1] == "number" || u.words[i - 1] == "no" || u.words[i - 1] == "num")) place_number = true;
+    else if (i > 0 && place_word(i - 1) && u.words[i] != "one") place_number = true;
+    else if (is_ordinal_word(u.words[i]) && i + 1 < n && place_word(i + 1)) place_number = true;
+    if (!place_number) continue;
+    u.words[i] = digits;
+    u.ids[i] = it->second;
+  }
 }
 
 namespace {

@@ -348,6 +348,19 @@ std::string WordNetLexicon::noun_lemma(const std::string& word) {
   return forms.empty() ? word : forms.front();
 }
 
+bool WordNetLexicon::sayable_name(const std::string& name) {
+  std::string part;
+  for (char c : name + "-") {
+    if (std::isalpha(static_cast<unsigned char>(c))) {
+      part.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+      continue;
+    }
+    if (part.size() >= 3 && knows(part)) return true;
+    part.clear();
+  }
+  return false;
+}
+
 bool WordNetLexicon::knows(const std::string& word) {
   static std::unordered_map<std::string, bool> memo;
   std::lock_guard<std::mutex> lock(wordnet_mutex());

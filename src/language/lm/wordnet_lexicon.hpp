@@ -68,6 +68,10 @@ class WordNetLexicon {
   // Whether WordNet lists the word, or a base form of it, under any part of
   // speech (used to tell a misspelling from a word the corpus never had).
   bool knows(const std::string& word);
+  // Whether an object's name holds a word people could say ("shelf3",
+  // "fume-hood", "pantry1"), not just a code ("c3-4", "p12"): some part of
+  // three or more letters that WordNet knows.
+  bool sayable_name(const std::string& name);
 
   // Words that name the kind of a qualifier predicate, for what an attribute
   // field says when it does not copy the value: "iscolor" -> colored,

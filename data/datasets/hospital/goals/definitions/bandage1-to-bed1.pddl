@@ -1,0 +1,1 @@
+(on bandage1 bed1)

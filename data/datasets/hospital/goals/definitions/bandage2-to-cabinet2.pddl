@@ -1,0 +1,1 @@
+(on bandage2 cabinet2)

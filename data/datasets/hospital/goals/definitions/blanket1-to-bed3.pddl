@@ -1,0 +1,1 @@
+(on blanket1 bed3)

@@ -1,0 +1,1 @@
+(on blanket2 bed2)

@@ -1,0 +1,1 @@
+(on inhaler1 bed2)

@@ -1,0 +1,1 @@
+(on inhaler2 bed2)

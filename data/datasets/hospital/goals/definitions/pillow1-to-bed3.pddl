@@ -1,0 +1,1 @@
+(on pillow1 bed3)

@@ -1,0 +1,1 @@
+(on pillow2 bed3)

@@ -1,0 +1,1 @@
+(on pillow3 bed1)

@@ -1,0 +1,1 @@
+(on pills1 cabinet2)

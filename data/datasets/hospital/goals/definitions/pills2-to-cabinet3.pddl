@@ -1,0 +1,1 @@
+(on pills2 cabinet3)

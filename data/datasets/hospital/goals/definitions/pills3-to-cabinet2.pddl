@@ -1,0 +1,1 @@
+(on pills3 cabinet2)

@@ -1,0 +1,1 @@
+(on splint1 bed3)

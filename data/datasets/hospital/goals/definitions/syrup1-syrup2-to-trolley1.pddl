@@ -1,0 +1,1 @@
+(and (on syrup1 trolley1) (on syrup2 trolley1))

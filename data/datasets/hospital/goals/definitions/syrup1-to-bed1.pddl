@@ -1,0 +1,1 @@
+(on syrup1 bed1)

@@ -1,0 +1,1 @@
+(on syrup2 bed3)

@@ -1,0 +1,1 @@
+(on thermometer2 cabinet1)

@@ -1,0 +1,1 @@
+(holding human thermometer2)

@@ -1,0 +1,1 @@
+(on towel1 bed2)

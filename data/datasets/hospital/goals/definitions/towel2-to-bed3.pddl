@@ -1,0 +1,1 @@
+(on towel2 bed3)

@@ -1,0 +1,7 @@
+(move robot lobby office)
+(wait human)
+(pickup robot thermometer1 office)
+(wait human)
+(move robot office lobby)
+(wait human)
+(handover robot human thermometer1 lobby)

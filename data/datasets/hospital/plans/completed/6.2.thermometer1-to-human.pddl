@@ -1,0 +1,7 @@
+(move robot lobby storeroom)
+(wait human)
+(pickup robot thermometer1 storeroom)
+(wait human)
+(move robot storeroom lobby)
+(wait human)
+(handover robot human thermometer1 lobby)

@@ -1,0 +1,10 @@
+(move human east-ward landing)
+(wait robot)
+(move human landing nurses-station)
+(wait robot)
+(pickup human keycard1 nurses-station)
+(wait robot)
+(move human nurses-station landing)
+(wait robot)
+(ride human landing lobby)
+; Here, take this. The red ones go in cabinet one.

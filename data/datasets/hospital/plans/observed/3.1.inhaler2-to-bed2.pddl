@@ -1,0 +1,10 @@
+(move human north-ward landing)
+(wait robot)
+(ride human landing lobby)
+(wait robot)
+(open human lobby office)
+(wait robot)
+(move human lobby office)
+(wait robot)
+(pickup human keycard1 office)
+; I'm setting up bed 2 for the asthma patient. Orange inhaler.

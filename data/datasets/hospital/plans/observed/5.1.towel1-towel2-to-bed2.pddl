@@ -1,0 +1,10 @@
+(move human south-ward landing)
+(wait robot)
+(ride human landing lobby)
+(wait robot)
+(open human lobby laundry)
+(wait robot)
+(move human lobby laundry)
+(wait robot)
+(pickup human towel2 laundry)
+; One more of those for bed two, please.

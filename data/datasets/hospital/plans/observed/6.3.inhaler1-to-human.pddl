@@ -1,0 +1,10 @@
+(move human north-ward landing)
+(wait robot)
+(ride human landing lobby)
+(wait robot)
+(open human lobby storeroom)
+(wait robot)
+(move human lobby storeroom)
+(wait robot)
+(pickup human keycard1 storeroom)
+; I've got the card. The blue inhaler, not the white one. Can you go in and get it?

@@ -1,0 +1,1 @@
+(and (on bag1 shelf3) (on bag3 shelf3))

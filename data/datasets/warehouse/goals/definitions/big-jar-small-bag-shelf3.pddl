@@ -1,0 +1,1 @@
+(and (on jar2 shelf3) (on bag2 shelf3))

@@ -1,0 +1,1 @@
+(and (on box3 shelf4) (on can1 shelf4))

@@ -1,0 +1,1 @@
+(and (on box1 shelf3) (on box2 shelf3))

@@ -1,0 +1,1 @@
+(and (holding human crate2) (holding human jar1))

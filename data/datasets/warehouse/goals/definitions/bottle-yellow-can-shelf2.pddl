@@ -1,0 +1,1 @@
+(and (on bottle1 shelf2) (on can2 shelf2))

@@ -1,0 +1,1 @@
+(and (on crate2 shelf2) (on bag2 shelf2))

@@ -1,0 +1,1 @@
+(and (on can1 shelf3) (on bottle1 shelf3))

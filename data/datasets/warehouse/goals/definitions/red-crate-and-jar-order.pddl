@@ -1,0 +1,1 @@
+(and (holding human crate1) (holding human jar1))

@@ -1,0 +1,1 @@
+(and (on crate1 shelf1) (on crate3 shelf1))

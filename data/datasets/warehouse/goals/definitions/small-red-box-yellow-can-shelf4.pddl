@@ -1,0 +1,1 @@
+(and (on box2 shelf4) (on can2 shelf4))

@@ -1,0 +1,1 @@
+(and (on bottle2 shelf2) (on bottle3 shelf2))

@@ -1,0 +1,1 @@
+(and (on can3 shelf3) (on bottle1 shelf3))

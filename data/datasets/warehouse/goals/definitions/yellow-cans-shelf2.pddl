@@ -1,0 +1,1 @@
+(and (on can2 shelf2) (on can3 shelf2))

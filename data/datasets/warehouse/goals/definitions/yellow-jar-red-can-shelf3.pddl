@@ -1,0 +1,1 @@
+(and (on jar3 shelf3) (on can1 shelf3))

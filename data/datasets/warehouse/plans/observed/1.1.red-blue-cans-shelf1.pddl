@@ -1,0 +1,10 @@
+(up human c4-4 c4-3)
+(wait robot)
+(up human c4-3 c4-2)
+(wait robot)
+(up human c4-2 c4-1)
+(wait robot)
+(left human c4-1 c3-1)
+(wait robot)
+(pickup human can2 c3-1)
+; Could you grab me one more of these?

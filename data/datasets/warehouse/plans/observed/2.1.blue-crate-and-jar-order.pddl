@@ -1,0 +1,12 @@
+(down human c4-4 c4-5)
+(wait robot)
+(down human c4-5 c4-6)
+(wait robot)
+(left human c4-6 c3-6)
+(wait robot)
+(left human c3-6 c2-6)
+(wait robot)
+(left human c2-6 c1-6)
+(wait robot)
+(pickup human jar1 c1-6)
+; Fetch me a crate, would you - not the red one though.

@@ -1,0 +1,10 @@
+(left human c4-4 c3-4)
+(wait robot)
+(left human c3-4 c2-4)
+(wait robot)
+(left human c2-4 c1-4)
+; I'll take the red crate; you go and get the jar for me.
+(wait robot)
+(up human c1-4 c1-3)
+(wait robot)
+(up human c1-3 c1-2)

@@ -1,0 +1,12 @@
+(left human c4-5 c3-5)
+(wait robot)
+(left human c3-5 c2-5)
+(wait robot)
+(left human c2-5 c1-5)
+(wait robot)
+(up human c1-5 c1-4)
+(wait robot)
+(up human c1-4 c1-3)
+(wait robot)
+(pickup human jar2 c1-3)
+; Would you bring me the small yellow jar?

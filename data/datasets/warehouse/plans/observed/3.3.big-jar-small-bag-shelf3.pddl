@@ -1,0 +1,12 @@
+(left human c4-5 c3-5)
+(wait robot)
+(down human c3-5 c3-6)
+(wait robot)
+(down human c3-6 c3-7)
+(wait robot)
+(left human c3-7 c2-7)
+(wait robot)
+(left human c2-7 c1-7)
+(wait robot)
+(pickup human bag2 c1-7)
+; Right, I'm doing shelf three today.

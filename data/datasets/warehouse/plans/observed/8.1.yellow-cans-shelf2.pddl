@@ -1,0 +1,12 @@
+(right human c4-5 c5-5)
+(wait robot)
+(right human c5-5 c6-5)
+(wait robot)
+(right human c6-5 c7-5)
+(wait robot)
+(down human c7-5 c7-6)
+(wait robot)
+(down human c7-6 c7-7)
+(wait robot)
+(pickup human can3 c7-7)
+; Put another one of these on the second shelf, please.

@@ -1,0 +1,12 @@
+(left human c4-5 c3-5)
+(wait robot)
+(up human c3-5 c3-4)
+(wait robot)
+(up human c3-4 c3-3)
+(wait robot)
+(left human c3-3 c2-3)
+(wait robot)
+(left human c2-3 c1-3)
+(wait robot)
+(pickup human box1 c1-3)
+; Time to stock up the third shelf.
