@@ -66,7 +66,7 @@ bool bit_of(const pddl::State& s, int bit) { return (s.data()[bit / 64] >> (bit 
 }  // namespace
 
 std::string why_goal_never_holds(const pddl::Task& task, const pddl::CompiledCondition& goal, const pddl::State& from) {
-  if (goal.is_const_false()) return "it is false in every state (it contradicts the problem's fixed facts)";
+  if (goal.is_const_false()) return "it is false in every state (it contradicts itself or the problem's fixed facts)";
   const auto clauses = dnf(goal, goal.root());
   if (!clauses) return "";
   // Delete relaxation: atoms some sequence of actions could make true, and

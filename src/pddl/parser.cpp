@@ -468,13 +468,9 @@ TypeId ensure_type(Domain& d, const std::string& name) {
   return static_cast<TypeId>(d.types.size() - 1);
 }
 
-// Every type is declared as a name of :types before it is a parent, and at
-// most once with a parent of its own: "car - vehicle" without "vehicle", or
-// "car - vehicle car - toy", would otherwise pass unnoticed.
+// Every type has at most one parent: "car - vehicle car - toy" is an error.
 void parse_types(Domain& d, const SExpr& sec) {
   std::map<std::string, TypedName> declared;  // type -> its declaration with an explicit parent
-  std::set<std::string> named;
-  std::vector<TypedName> parents;  // each first use of a name as a parent
   for (auto& tn : typed_list(sec.items, 1, sec)) {
     if (tn.type.rfind("(either", 0) == 0)
       fail(tn.type_loc, "type '" + tn.name + "' cannot have a union " + tn.type + " as its parent: name one type");
@@ -483,8 +479,6 @@ void parse_types(Domain& d, const SExpr& sec) {
       if (tn.type != "object") fail(tn.loc, "cyclic type hierarchy: the root type 'object' cannot be a subtype of '" + tn.type + "'");
       continue;
     }
-    named.insert(tn.name);
-    if (tn.type != "object" && !d.find_type(tn.type)) parents.push_back(tn);
     if (tn.type != "object") {
       auto [it, fresh] = declared.emplace(tn.name, tn);
       if (!fresh && it->second.type != tn.type)
@@ -496,9 +490,9 @@ void parse_types(Domain& d, const SExpr& sec) {
     if (d.is_subtype(parent, t)) fail(tn.loc, "cyclic type hierarchy at '" + tn.name + "'");
     if (tn.type != "object" || d.types[t].parent <= 0) d.types[t].parent = parent;
   }
-  for (const TypedName& tn : parents)
-    if (!named.count(tn.type))
-      fail(tn.type_loc, "type '" + tn.type + "' (the parent of '" + tn.name + "') is not declared in :types");
+  // A parent never declared itself ("car - vehicle" alone) is a type of its
+  // own under object, as other planners read it: domains rely on it (the
+  // agent type a pack names, IPC domains' implicit supertypes).
 }
 
 // Adds the union types `(either a b)` the domain writes anywhere (parameters,

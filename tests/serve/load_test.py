@@ -49,7 +49,9 @@ def main():
     # Small search budgets: a random walk sends the human's policies far off
     # any plan, and every request's compute is bounded by these (the belief
     # stays exact; only lookahead is cut, which the state reports).
-    server = Server(args.clips, [dkg], "--max-sessions", str(args.sessions + 4), "--threads", "8",
+    # Every player connects from 127.0.0.1: one client, so its quota is the server's.
+    server = Server(args.clips, [dkg], "--max-sessions", str(args.sessions + 4),
+                    "--max-client-sessions", str(args.sessions + 4), "--threads", "8",
                     "--max-nodes", str(args.budget), "--assist-nodes", str(args.budget), "--max-seconds", "1")
     latencies = {}
     failures = []
