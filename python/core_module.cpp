@@ -625,6 +625,9 @@ py::dict run_bench(const std::string& dataset, std::vector<std::string> methods,
       r["rel_human_cost"] = m.has_relative ? py::object(py::float_(m.rel_human_cost)) : py::object(py::none());
       r["seconds"] = m.seconds;
       r["error"] = m.error;
+      // instructions.tsv's explicit request and whether this method's assistant did it (None: nothing asked).
+      r["requested"] = p.requested;
+      r["request_done"] = m.request_done ? py::object(py::bool_(*m.request_done)) : py::object(py::none());
       rows.append(r);
     }
   }

@@ -451,6 +451,7 @@ void apply_instruction_table(const std::string& text, const std::string& path, s
   };
   int line_no = 0;
   bool header = false;
+  size_t columns = 3;
   size_t start = 0;
   while (start <= text.size()) {
     size_t end = text.find('\n', start);
@@ -472,12 +473,17 @@ void apply_instruction_table(const std::string& text, const std::string& path, s
     }
     const SourceLoc loc{path, line_no, 1};
     if (!header) {
-      if (cols.size() != 3 || cols[0] != "plan" || cols[1] != "split" || cols[2] != "categories")
-        throw InputError(loc, "expected the header line \"plan<TAB>split<TAB>categories\"");
+      if ((cols.size() != 3 && cols.size() != 4) || cols[0] != "plan" || cols[1] != "split" || cols[2] != "categories" ||
+          (cols.size() == 4 && cols[3] != "requested"))
+        throw InputError(loc, "expected the header line \"plan<TAB>split<TAB>categories\" (optionally with "
+                              "\"<TAB>requested\")");
+      columns = cols.size();
       header = true;
       continue;
     }
-    if (cols.size() != 3) throw InputError(loc, "expected 3 tab-separated columns, found " + std::to_string(cols.size()));
+    if (cols.size() != columns)
+      throw InputError(loc, "expected " + std::to_string(columns) + " tab-separated columns, found " +
+                                std::to_string(cols.size()));
     const std::string& id = cols[0];
     if (!seen.insert(id).second) throw InputError(loc, "plan " + id + " is listed twice");
     if (cols[1] != "dev" && cols[1] != "test")
@@ -501,6 +507,15 @@ void apply_instruction_table(const std::string& text, const std::string& path, s
     }
     it->second->split = cols[1];
     it->second->categories = std::move(cats);
+    if (columns == 4) {
+      std::string req = cols[3];
+      while (!req.empty() && req.front() == ' ') req.erase(req.begin());
+      while (!req.empty() && req.back() == ' ') req.pop_back();
+      if (!req.empty() && (req.front() != '(' || req.back() != ')'))
+        throw InputError(loc, "requested atoms of plan " + id + " must be ground atoms in parentheses, as "
+                              "\"(holding human can1) (not (locked shed))\", not '" + req + "'");
+      it->second->requested = std::move(req);
+    }
   }
   if (!header) throw InputError(SourceLoc{path, 1, 1}, "empty file: expected the header line \"plan<TAB>split<TAB>categories\"");
 }

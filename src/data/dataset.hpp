@@ -60,6 +60,12 @@ struct PlanRecord {
   // of instruction it holds ("synonym", "joint", ...). Empty otherwise.
   std::string split;
   std::vector<std::string> categories;
+  // From instructions.tsv's optional `requested` column: the ground atoms
+  // (`(holding human can1)`, `(not (locked shed))`) that the instruction
+  // explicitly asks the assistant to bring about, in the writer's reading;
+  // empty when it asks nothing of the assistant. `clips bench` reports
+  // whether each method's assistant did it.
+  std::string requested;
 };
 
 using GoalSpec = domains::GoalSpec;
@@ -152,9 +158,10 @@ std::map<std::string, StimulusInfo> parse_stimuli(const std::string& text, const
                                                   const std::vector<BrokenPlan>& broken = {});
 std::vector<std::string> parse_goal_set(const std::string& text, const std::string& path,
                                         const std::map<std::string, std::string>& goal_defs);
-// instructions.tsv: a header line "plan<TAB>split<TAB>categories", then one
-// line per plan: its id, "dev" or "test", and comma-separated category names
-// (lower-case words and hyphens). Sets each listed plan's split and
+// instructions.tsv: a header line "plan<TAB>split<TAB>categories" (and
+// optionally "<TAB>requested"), then one line per plan: its id, "dev" or
+// "test", comma-separated category names (lower-case words and hyphens) and,
+// with the fourth column, the requested atoms (PlanRecord::requested). Sets each listed plan's split and
 // categories; a plan listed twice, an unknown plan (one neither loaded nor
 // set aside in `broken`), a bad split or category name is an InputError at
 // path:line.

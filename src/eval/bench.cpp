@@ -389,6 +389,32 @@ void summarise(BenchReport& rep) {
   }
 }
 
+namespace {
+
+// Explicit requests asked and done, per method and split ("" = all plans).
+struct RequestCount {
+  int asked = 0, done = 0;
+};
+std::map<std::string, std::map<std::string, RequestCount>> request_counts(const BenchReport& r) {
+  std::map<std::string, std::map<std::string, RequestCount>> out;
+  for (const auto& p : r.plans) {
+    if (!p.error.empty() || p.requested.empty()) continue;
+    for (const auto& m : p.methods) {
+      if (!m.error.empty() || !m.request_done) continue;
+      auto count = [&](const std::string& split) {
+        RequestCount& c = out[m.method][split];
+        ++c.asked;
+        if (*m.request_done) ++c.done;
+      };
+      count("");
+      if (!p.split.empty()) count(p.split);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string summary_json(const BenchReport& r) {
   nlohmann::ordered_json j;
   j["domain"] = r.domain;
@@ -422,6 +448,7 @@ std::string summary_json(const BenchReport& r) {
                    {"partial", r.shards.partial()},
                    {"selection_plans", r.selection.size()}};
   nlohmann::ordered_json methods = nlohmann::ordered_json::object();
+  const auto counts = request_counts(r);
   for (auto& s : r.summary) {
     nlohmann::ordered_json m = nlohmann::ordered_json::object();
     int n = 0;  // plans the method ran on without an error
@@ -432,6 +459,14 @@ std::string summary_json(const BenchReport& r) {
       auto it = s.metrics.find(name);
       if (it == s.metrics.end()) continue;
       m[name] = {{"mean", it->second.mean}, {"se", it->second.se}};
+    }
+    if (auto it = counts.find(s.method); it != counts.end()) {
+      // Plans whose instruction explicitly asked the assistant for something
+      // (instructions.tsv's `requested`), and how many of those it did.
+      nlohmann::ordered_json req = nlohmann::ordered_json::object();
+      for (const auto& [split, c] : it->second)
+        req[split.empty() ? "all" : split] = {{"asked", c.asked}, {"done", c.done}};
+      m["requests"] = req;
     }
     methods[s.method] = m;
   }
@@ -459,13 +494,16 @@ std::string summary_json(const BenchReport& r) {
 // are read by name; `domain` was added last so no position moved.
 std::string results_csv(const BenchReport& r) {
   std::string out = "plan,method,p_true_goal,assist_precision,assist_recall,plan_length,human_cost,plan_cost,"
-                    "rel_plan_length,rel_human_cost,goal_success,seconds,options,goal_posterior,error,domain\n";
+                    "rel_plan_length,rel_human_cost,goal_success,seconds,options,goal_posterior,error,domain,requested,"
+                    "request_done\n";
   // Six significant digits: fast plans take well under a millisecond.
   const auto secs = [](double v) { return fmt::format("{:.6g}", v); };
   for (auto& p : r.plans) {
     if (!p.error.empty()) {
-      // plan, 10 empty metric fields, seconds, options, goal_posterior, error, domain: the header's 16 fields.
-      out += p.plan_id + std::string(11, ',') + secs(p.seconds) + ",,," + csv_quote(p.error) + "," + r.domain + "\n";
+      // plan, 10 empty metric fields, seconds, options, goal_posterior, error, domain, requested,
+      // request_done: the header's 18 fields.
+      out += p.plan_id + std::string(11, ',') + secs(p.seconds) + ",,," + csv_quote(p.error) + "," + r.domain + "," +
+             (p.requested.empty() ? "" : csv_quote(p.requested)) + ",\n";
       continue;
     }
     for (auto& m : p.methods) {
@@ -474,11 +512,12 @@ std::string results_csv(const BenchReport& r) {
       for (size_t g = 0; g < m.goal_posterior.size(); ++g)
         post += (g ? ";" : "") + p.goals[g] + "=" + fmt::format("{:.4g}", m.goal_posterior[g]);
       auto relative = [&](double v) { return m.has_relative ? fmt::format("{:.6g}", v) : std::string(); };
-      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{},{},{},{},{}\n", p.plan_id,
+      out += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{},{},{},{},{},{},{}\n", p.plan_id,
                          m.method, m.p_true_goal ? fmt::format("{:.6g}", *m.p_true_goal) : "", m.precision, m.recall,
                          m.plan_length, m.human_cost, m.plan_cost, relative(m.rel_plan_length),
                          relative(m.rel_human_cost), m.goal_success, secs(m.seconds), csv_quote(opts), csv_quote(post),
-                         m.error.empty() ? "" : csv_quote(m.error), r.domain);
+                         m.error.empty() ? "" : csv_quote(m.error), r.domain,
+                         p.requested.empty() ? "" : csv_quote(p.requested), m.request_done ? (*m.request_done ? "1" : "0") : "");
     }
   }
   return out;
@@ -583,6 +622,17 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
     for (auto& m : p.methods)
       if (!m.error.empty()) out += fmt::format("{} failed on {}: {}\n", m.method, p.plan_id, m.error);
   out += breakdown_table(breakdown(r));
+  if (const auto counts = request_counts(r); !counts.empty()) {
+    out += "\nExplicit requests done (plans whose instruction asked the assistant for something; instructions.tsv):\n";
+    for (const auto& s : r.summary) {
+      auto it = counts.find(s.method);
+      if (it == counts.end()) continue;
+      std::string line = fmt::format("  {:<18}", s.method);
+      for (const auto& [split, c] : it->second)
+        line += fmt::format(" {} {}/{}", split.empty() ? "all" : split, c.done, c.asked);
+      out += line + "\n";
+    }
+  }
   return out;
 }
 

@@ -67,7 +67,8 @@ ojson method_json(const MethodResult& m) {
           {"decision_seconds", reals(m.decision_seconds)},
           {"seconds", real(m.seconds)},
           {"error", m.error},
-          {"notes", m.notes}};
+          {"notes", m.notes},
+          {"request_done", m.request_done ? ojson(*m.request_done) : ojson()}};
 }
 
 ojson plan_json(const PlanOutcome& p) {
@@ -85,6 +86,7 @@ ojson plan_json(const PlanOutcome& p) {
           {"split", p.split},
           {"categories", p.categories},
           {"instruction_step", p.instruction_step},
+          {"requested", p.requested},
           {"seconds", real(p.seconds)},
           {"error", p.error},
           {"methods", methods}};
@@ -205,6 +207,8 @@ MethodResult read_method(const FieldReader& in, const json& j, const std::string
   m.seconds = in.real(j, "seconds", at);
   m.error = in.text(j, "error", at);
   m.notes = in.texts(j, "notes", at);
+  // Written before requests were counted: none.
+  if (j.contains("request_done") && !j["request_done"].is_null()) m.request_done = in.flag(j, "request_done", at);
   return m;
 }
 
@@ -230,6 +234,7 @@ PlanOutcome read_plan(const FieldReader& in, const json& j, const std::string& a
   if (j.contains("split")) p.split = in.text(j, "split", at);
   if (j.contains("categories")) p.categories = in.texts(j, "categories", at);
   if (j.contains("instruction_step")) p.instruction_step = static_cast<int>(in.integer(j, "instruction_step", at));
+  if (j.contains("requested")) p.requested = in.text(j, "requested", at);
   p.seconds = in.real(j, "seconds", at);
   p.error = in.text(j, "error", at);
   const std::string here = FieldReader::join(at, "methods");

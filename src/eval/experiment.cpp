@@ -1,5 +1,7 @@
 #include "eval/experiment.hpp"
 
+#include "eval/requested.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <set>
@@ -105,9 +107,11 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
   out.plan_id = p.id;
   out.split = p.split;
   out.categories = p.categories;
+  out.requested = p.requested;
   if (!p.observed.utterances.empty()) out.instruction_step = p.observed.utterances.back().index;
   try {
     auto task = ds.task(p.problem_id);
+    if (!p.requested.empty()) parse_requested(*task, p.requested, requested_where(ds, p));  // a bad entry fails the plan
     const domains::Pack& pack = ds.pack();
     out.true_options = data::true_options(ds, p);
     auto methods = opts.methods.empty() ? default_methods(pack, opts.all_assistance) : opts.methods;

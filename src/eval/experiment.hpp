@@ -38,6 +38,9 @@ struct MethodResult {
 
   std::vector<double> decision_seconds;  // per assistant decision (Q_MDP)
   std::vector<std::string> ties;         // the request rule's ties (assist::AssistResult::ties)
+  // Whether the assistant did what the instruction explicitly asked of it
+  // (PlanOutcome::requested, eval/requested.hpp); nullopt: nothing asked.
+  std::optional<bool> request_done;
   double seconds = 0;
   // (issue 8) A method that failed on this plan (e.g. the multimodal endpoint
   // or its answer); such results are left out of the aggregates.
@@ -64,6 +67,9 @@ struct PlanOutcome {
   std::string split;
   std::vector<std::string> categories;
   int instruction_step = -1;
+  // What the instruction explicitly asked the assistant to bring about
+  // (data::PlanRecord::requested); empty: nothing.
+  std::string requested;
   // (issue 43) The inference's per-step times ([0]: the start at s_0), wall
   // and summed over its refinement threads (StepRecord::work_seconds: the
   // time on one thread), and those threads.

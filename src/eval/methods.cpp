@@ -7,6 +7,7 @@
 #include "engine/hypotheses.hpp"
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
+#include "eval/requested.hpp"
 #include "language/commands/utterance_merge.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
@@ -26,6 +27,13 @@ void score_assistance(const PlanContext& ctx, const assist::AssistResult& a, Met
   r.decision_seconds = a.decision_seconds;
   r.ties = a.ties;
   r.actions = a.plan;
+  if (!ctx.plan.requested.empty()) {
+    const auto assistant = ctx.task->find_object(ctx.dataset.pack().roles().assistant);
+    if (assistant)
+      r.request_done = request_done(*ctx.task, ctx.setup.start, *assistant,
+                                    parse_requested(*ctx.task, ctx.plan.requested, requested_where(ctx.dataset, ctx.plan)),
+                                    a.plan);
+  }
   // Printed once, here: the rest of the pipeline keeps action ids.
   for (auto act : a.plan) r.plan.push_back(ctx.task->action_name(act));
 }

@@ -80,8 +80,10 @@ TEST(BenchCsv, EveryRowHasTheHeadersFieldCount) {
   const auto rows = parse_csv(results_csv(report_with_failures()));
   ASSERT_EQ(rows.size(), 4u);
   const auto& header = rows[0];
-  EXPECT_EQ(header.size(), 16u);
-  EXPECT_EQ(header.back(), "domain");
+  EXPECT_EQ(header.size(), 18u);
+  EXPECT_EQ(header[15], "domain");
+  EXPECT_EQ(header[16], "requested");
+  EXPECT_EQ(header.back(), "request_done");
   for (const auto& row : rows) EXPECT_EQ(row.size(), header.size()) << row[0];
   const auto& fail = rows[3];
   EXPECT_EQ(fail[0], "2.1.keys");

@@ -211,3 +211,22 @@ TEST(InstructionTable, BadRowsNameTheFileAndLine) {
   EXPECT_NE(e.find("header"), std::string::npos) << e;
   EXPECT_EQ(w.load_error("plan\tsplit\tcategories\n1.1.table\ttest\tdirect, deixis\n"), "");
 }
+
+// The optional fourth column: what the instruction explicitly asks of the
+// assistant, checked for its shape when the table loads.
+TEST(InstructionTable, RequestedAtomsReachThePlans) {
+  WorkshopCopy w;
+  EXPECT_EQ(w.load_error("plan\tsplit\tcategories\trequested\n1.1.table\tdev\tdirect\t(holding human saw1)\n"
+                         "3.3.birdhouse\ttest\tgoal\t\n"),
+            "");
+  const auto ds = clips::data::Dataset::load(w.dir.string());
+  EXPECT_EQ(ds.plan("1.1.table").requested, "(holding human saw1)");
+  EXPECT_EQ(ds.plan("3.3.birdhouse").requested, "");
+  std::string e = w.load_error("plan\tsplit\tcategories\trequested\n1.1.table\tdev\tdirect\n");
+  EXPECT_NE(e.find("expected 4 tab-separated columns"), std::string::npos) << e;
+  e = w.load_error("plan\tsplit\tcategories\twanted\n");
+  EXPECT_NE(e.find("header"), std::string::npos) << e;
+  e = w.load_error("plan\tsplit\tcategories\trequested\n1.1.table\tdev\tdirect\tholding human saw1\n");
+  EXPECT_NE(e.find("instructions.tsv:2"), std::string::npos) << e;
+  EXPECT_NE(e.find("ground atoms in parentheses"), std::string::npos) << e;
+}
