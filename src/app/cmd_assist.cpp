@@ -49,8 +49,8 @@ void register_assist(CLI::App& app) {
   add_time_limit_option(cmd, o->time_limit, "the whole run (inference, then the decision or the assistance episode)");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->add_flag("--explain", o->explain,
-                "Also print each decision the request rule made: where the assistant carried out what it was asked, "
-                "why; where actions tied in value, the tied actions with their values and how much of the request "
+                "Also say why: with --problem, the rule that decided the next action; with --plan, each decision "
+                "the request rule made: where the assistant carried out what it was asked, why; where actions tied in value, the tied actions with their values and how much of the request "
                 "each carries out, the action taken and the command that broke the tie (in --json: \"ties\")");
   cmd->callback([o, mm] {
     check_observation_flags(o->obs);  // before loading anything
@@ -92,9 +92,10 @@ void register_assist(CLI::App& app) {
         fmt::print("problem {} after {} observed action{} (method {})\n", obs.problem_id, obs.observed.actions.size(),
                    obs.observed.actions.size() == 1 ? "" : "s", o->method);
         for (size_t g = 0; g < goals.size(); ++g) fmt::print("  P({}) = {:.4f}\n", goals[g], d.goal_posterior[g]);
-        if (d.action)
+        if (d.action) {
           fmt::print("assistant's next action: {}\n", *d.action);
-        else
+          if (o->explain && !d.decision.reason.empty()) fmt::print("why: {}\n", d.decision.reason);
+        } else
           fmt::print("next to act: {} (the assistant has nothing to decide)\n", d.next_actor);
       }
       return;

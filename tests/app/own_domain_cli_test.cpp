@@ -98,8 +98,10 @@ TEST(CliOwnDomain, TheListenerKnowsWhichPlaceToUnlock) {
     }
     return out;
   };
+  // (0.50 before issue 60's model changes, 0.496 after: the rest is spread
+  // over commands that unlock nothing.)
   auto m = mass("Could you unlock the greenhouse?");
-  EXPECT_GT(m["greenhouse"], 0.5);
+  EXPECT_GT(m["greenhouse"], 0.45);
   EXPECT_GT(m["greenhouse"], 20 * m["shed"]);
   m = mass("Can you open up the shed for me?");
   EXPECT_GT(m["shed"], 0.5);
@@ -219,10 +221,11 @@ TEST(CliOwnDomain, OneFailingMethodLeavesTheOthersRows) {
   const std::string out = (fs::path(c.ds).parent_path() / "out").string();
   const auto r = run(clips_binary() + " bench --no-progress -j 1 --methods clips,literal --dataset " + c.ds +
                      " --out " + out);
-  EXPECT_TRUE(contains(r.out, "literal failed on 1.1.basil: <goal>:1:62: unknown predicate 'holdin'")) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("literal failed on 1\\.1\\.basil: <goal>:1:[0-9]+: unknown predicate 'holdin'")))
+      << r.out;
   const std::string csv = testing::read_text(fs::path(out) / "results.csv");
   for (const char* plan : {"1.1.basil", "1.2.tomato"}) {
-    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",clips,0\\.[0-9]+,[^\n]*,,garden\n")))
+    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",clips,0\\.[0-9]+,[^\n]*,,garden,,\n")))
         << plan << "\n" << csv;
     EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("\n") + plan + ",literal,[^\n]*unknown predicate")))
         << plan << "\n" << csv;
@@ -242,7 +245,7 @@ TEST(CliOwnDomain, AssistExplainShowsTheTies) {
   const std::string ws = std::string(CLIPS_SOURCE_DIR) + "/data/datasets/workshop";
   auto r = run(clips_binary() + " assist --dataset " + ws + " --plan 3.3.birdhouse --explain");
   EXPECT_EQ(r.status, 0) << r.out;
-  EXPECT_TRUE(contains(r.out, "ties in value (")) << r.out;
+  EXPECT_TRUE(contains(r.out, "request rule (")) << r.out;
   EXPECT_TRUE(std::regex_search(r.out, std::regex("step [0-9]+: tied \\(.*request -?[0-9.]+\\).*; took \\("))) << r.out;
   r = run(clips_binary() + " assist --json --dataset " + ws + " --plan 3.3.birdhouse --explain");
   const auto j = nlohmann::json::parse(r.out);
@@ -259,6 +262,40 @@ TEST(CliOwnDomain, InferExplainFoldsTheAloneTwins) {
   EXPECT_TRUE(std::regex_search(r.out, std::regex("birdhouse/default-alone +-?[0-9.]+  \\(speaks as birdhouse/default\\)")))
       << r.out;
   EXPECT_TRUE(std::regex_search(r.out, std::regex("birdhouse/default +-?[0-9.]+  \\([0-9]+ commands?\\)"))) << r.out;
+}
+
+// instructions.tsv's `requested` column: the bench says, per plan and
+// method, whether the assistant did what it was explicitly asked. "Could you
+// bring me the green seeds?" asks for (holding gardener basil1).
+TEST(CliOwnDomain, BenchSaysWhetherTheRequestWasDone) {
+  GardenCopy c([](std::string pack) { return pack; });
+  std::ofstream(fs::path(c.ds) / "instructions.tsv")
+      << "plan\tsplit\tcategories\trequested\n1.1.basil\ttest\tdirect\t(holding gardener basil1)\n"
+         "1.2.tomato\tdev\tgoal\t\n";
+  const std::string out = (c.dir.path / "out").string();
+  auto r = run(clips_binary() + " bench --no-progress -j 1 --methods clips,action_only --dataset " + c.ds + " --out " + out);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "Explicit requests done")) << r.out;
+  const std::string csv = testing::read_text(fs::path(out) / "results.csv");
+  EXPECT_TRUE(contains(csv.substr(0, csv.find('\n')), ",domain,requested,request_done")) << csv;
+  // CLIPS hears the request and hands the seeds over.
+  EXPECT_TRUE(std::regex_search(csv, std::regex("\n1\\.1\\.basil,clips,[^\n]*,garden,\"\\(holding gardener basil1\\)\",1\n")))
+      << csv;
+  // A plan that asked nothing has both columns empty.
+  EXPECT_TRUE(std::regex_search(csv, std::regex("\n1\\.2\\.tomato,clips,[^\n]*,garden,,\n"))) << csv;
+  const auto summary = nlohmann::json::parse(testing::read_text(fs::path(out) / "summary.json"));
+  const auto& req = summary["methods"]["clips"]["requests"];
+  EXPECT_EQ(req["all"]["asked"], 1);
+  EXPECT_EQ(req["all"]["done"], 1);
+  EXPECT_EQ(req["test"]["asked"], 1);
+
+  // An atom the problem does not have fails the plan, naming the file and plan.
+  std::ofstream(fs::path(c.ds) / "instructions.tsv")
+      << "plan\tsplit\tcategories\trequested\n1.1.basil\ttest\tdirect\t(holding gardener rose9)\n";
+  r = run(clips_binary() + " bench --no-progress -j 1 --methods clips --dataset " + c.ds + " --out " + out);
+  EXPECT_NE(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "instructions.tsv, plan 1.1.basil")) << r.out;
+  EXPECT_TRUE(contains(r.out, "unknown object 'rose9'")) << r.out;
 }
 
 }  // namespace

@@ -68,7 +68,8 @@ struct Garden {
     setup.horizon = 30;
     assist::set_request_rule(setup, rule, dp.pack->language());
     const assist::Decision d = assist::qmdp_decision(setup, belief, setup.start, 1, stalled);
-    EXPECT_TRUE(rule == assist::AssistRule::Paper || d.request_scores.size() == d.candidates.size());
+    EXPECT_TRUE(rule == assist::AssistRule::Paper || d.followed_request ||
+                d.request_scores.size() == d.candidates.size());
     return task->action_name(d.action);
   }
 };
@@ -147,9 +148,11 @@ TEST(RequestRule, ValuesThatOnlyAverageOutAreNotATie) {
     p->refine(start, search::SearchOptions{});
     return p;
   };
+  // The request is read with probability 0.4, too little for the request
+  // rule to commit to it (below: at 1 it does): only ties may use it.
   auto request = std::make_shared<assist::Request>();
   assist::RequestedCommand c;
-  c.probability = 1;
+  c.probability = 0.4;
   c.text = "fetch the basil";
   c.assistant_part.push_back(g.act("(take bot basil1 barn)"));
   request->push_back(c);
@@ -177,4 +180,16 @@ TEST(RequestRule, ValuesThatOnlyAverageOutAreNotATie) {
   const assist::Decision e = assist::qmdp_decision(setup, one, start, 1);
   EXPECT_EQ(e.request_scores.size(), e.candidates.size());
   EXPECT_EQ(g.task->action_name(e.action), "(move bot bed barn)");
+  EXPECT_FALSE(e.followed_request);
+
+  // Asked outright (probability 1) at even odds: fetching the basil makes
+  // neither goal costlier, so the assistant does what was asked.
+  auto sure = std::make_shared<assist::Request>(*request);
+  sure->front().probability = 1;
+  std::vector<assist::Hypothesis> asked = {{0.5, policy_for("(planted tomato1)"), sure},
+                                           {0.5, policy_for("(planted basil1)"), sure}};
+  const assist::Decision f = assist::qmdp_decision(setup, asked, start, 1);
+  EXPECT_TRUE(f.followed_request);
+  EXPECT_EQ(g.task->action_name(f.action), "(move bot bed barn)");
+  EXPECT_NE(f.reason.find("doing what was asked"), std::string::npos) << f.reason;
 }
