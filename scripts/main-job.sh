@@ -10,7 +10,7 @@ CLIPS="$BUILD_DIR/clips"
 status=0
 echo "== validate: bundled examples and the workshop domain"
 "$CLIPS" validate --dataset data/examples/doors-keys-gems --quiet || status=1
-for d in workshop kitchen garden lab; do "$CLIPS" validate --dataset "data/datasets/$d" --quiet || status=1; done
+for d in workshop kitchen garden lab hospital warehouse; do "$CLIPS" validate --dataset "data/datasets/$d" --quiet || status=1; done
 for dom in doors-keys-gems virtual-home; do
   if [ -f "$DATASET/$dom/domain.pddl" ]; then
     echo "== validate: $DATASET/$dom"

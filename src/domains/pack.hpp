@@ -195,7 +195,7 @@ struct InferenceSettings {
   // for the goal posterior: a speaker who asks for what they could fetch
   // themselves is then still explained by their goal. 0: none (the paper
   // packs).
-  double sparing_plans = 0.15;
+  double sparing_plans = 0.05;
 };
 
 struct LiteralSettings {

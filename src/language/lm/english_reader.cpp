@@ -307,7 +307,10 @@ void AlignmentModel::read_place_numbers(EncodedUtterance& u) const {
     };
     bool place_number = false;
     if (i > 0 && (u.words[i - 1] == "number" || u.words[i - 1] == "no" || u.words[i - 1] == "num")) place_number = true;
-    else if (i > 0 && place_word(i - 1) && u.words[i] != "one") place_number = true;
+    // "shelf three", but not "we need two glasses": a cardinal before a noun
+    // phrase counts it.
+    else if (i > 0 && place_word(i - 1) && u.words[i] != "one" && !(i + 1 < n && place_word(i + 1)))
+      place_number = true;
     else if (is_ordinal_word(u.words[i]) && i + 1 < n && place_word(i + 1)) place_number = true;
     if (!place_number) continue;
     u.words[i] = digits;
