@@ -67,7 +67,9 @@ else
   printf 'domain\tproblem\tstatus\tcost\texpanded\tseconds\tcpu\tfd_status\tfd_cost\tfd_seconds\tverdict\tmessage\n' >"$out"
 fi
 total=0 ok=0 fd_solved=0 both=0 ours_t=0 fd_t=0 missed=""
-while IFS=$'\t' read -r dom prob search fd_status fd_cost fd_secs; do
+# Tabs are whitespace to read, which would merge an empty fd_cost with the
+# next field: read the table with the unit separator instead.
+while IFS=$'\037' read -r dom prob search fd_status fd_cost fd_secs; do
   [ "$dom" = domain ] && continue
   [ -n "$only" ] && ! [[ "$dom" =~ $only ]] && continue
   dir="$ipc/$dom"
@@ -113,7 +115,7 @@ while IFS=$'\t' read -r dom prob search fd_status fd_cost fd_secs; do
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$dom" "$p" "$status" "$cost" "$expanded" "$secs" \
       "$cpu" "$fd_status" "$fd_cost" "$fd_secs" "$verdict" "$msg" >>"$out"
   done
-done <"$ref"
+done < <(tr '\t' '\037' <"$ref")
 if [ "$ground" = 1 ]; then
   echo "ipc-bench: $ok of $total problems parsed and grounded${missed:+; not:$missed}" >&2
   [ "$ok" = "$total" ]
