@@ -134,7 +134,7 @@ std::vector<UtteranceRecord> Belief::particle_step(lm::LanguageModel* lm) {
       UtteranceRecord rec;
       rec.text = u < last.said.size() ? last.said[u] : last.texts[u];
       // Hypotheses no particle holds are not scored: NaN log-likelihood.
-      rec.hypotheses.assign(hyps_.size(), HypothesisUtterance{std::numeric_limits<double>::quiet_NaN(), {}});
+      rec.hypotheses.assign(hyps_.size(), HypothesisUtterance{std::numeric_limits<double>::quiet_NaN(), {}, {}});
       for (size_t i = 0; i < need.size(); ++i) rec.hypotheses[need[i]] = std::move(scores[u][i]);
       rec.log_background = log_background(rec.hypotheses, noise_);
       weigh_utterance(rec);

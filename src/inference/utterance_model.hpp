@@ -101,15 +101,15 @@ struct HypothesisUtterance {
   std::vector<CommandScore> commands; // empty: scored with the "\n" prompt
   // What the words ask the assistant to do, for assistance (the request
   // reading, domains::InferenceSettings::request_plans): `commands` and the
-  // commands of the plan in which the assistant reaches the goal alone,
-  // with their posterior under both. Empty: read the requests off `commands`.
+  // commands of a sparing plan (the principal's own actions ten times
+  // dearer), with their posterior under both. Empty: read the requests off
+  // `commands`.
   std::vector<CommandScore> requests;
 };
 
 // The request reading of one hypothesis (HypothesisUtterance::requests):
 // its speaker model's reading `own` and the same words read under the
-// commands of the plan in which the assistant reaches its goal alone
-// (`alone`), mixed with prior weights 1 - share and share; the commands'
+// commands of a sparing plan (`alone`), mixed with prior weights 1 - share and share; the commands'
 // posteriors under the mixture, the same command from both summed.
 std::vector<CommandScore> merge_requests(const HypothesisUtterance& own, const HypothesisUtterance& alone,
                                          double share);

@@ -49,8 +49,11 @@ TEST(MapWords, NumberedShelvesAreToldApartByTheirNumber) {
     const auto p = posterior(u);
     ASSERT_FALSE(p.empty());
     const double shelf3 = p.at("blue-can-big-box-shelf3");
-    for (const auto& [goal, q] : p)
-      if (goal != "blue-can-big-box-shelf3") EXPECT_GT(shelf3, q + 0.1) << u << ": " << goal;
+    for (const auto& [goal, q] : p) {
+      if (goal != "blue-can-big-box-shelf3") {
+        EXPECT_GT(shelf3, q + 0.1) << u << ": " << goal;
+      }
+    }
   }
   const auto one = posterior("I want to fill shelf 1.");
   ASSERT_FALSE(one.empty());

@@ -296,7 +296,7 @@ nlohmann::json parse_choices_reply(const std::string& body, const std::string& c
     // A number beyond a double's range (a log-probability of -1e999) is
     // valid JSON text that no double holds: say so rather than "not JSON".
     try {
-      (void)nlohmann::json::parse(body);
+      [[maybe_unused]] const nlohmann::json again = nlohmann::json::parse(body);  // throws: which error?
     } catch (const nlohmann::json::out_of_range& e) {
       std::string what = e.what();
       if (const auto at = what.find("] "); at != std::string::npos) what = what.substr(at + 2);
