@@ -154,9 +154,13 @@ err=$("${run[@]}" clips-assist infer --dataset /nonexistent 2>&1 >/dev/null || t
 echo "$err" | grep -q '^clips-assist: error: ' || fail "an error message does not start with clips-assist: $err"
 so=$(dpkg -L clips-assist | grep -E '/libclips_assist\.so\.[0-9]+\.[0-9]+$' || true)
 [ -n "$so" ] || fail "dpkg -L lists no libclips_assist.so.X.Y"
-objdump -p "$so" | grep -Eq 'SONAME +libclips_assist\.so\.[0-9]+\.[0-9]+$' || fail "$so has no soname"
+# (Into a file first: under pipefail, grep -q quitting at the match would
+# fail the pipeline whenever objdump is still writing.)
+objdump -p "$so" >"$tmp/so-headers.txt" || fail "objdump -p $so failed"
+grep -Eq 'SONAME +libclips_assist\.so\.[0-9]+\.[0-9]+$' "$tmp/so-headers.txt" || fail "$so has no soname"
 "${run[@]}" sh -c 'g++ -std=c++17 main.cpp -I/usr/include/clips-assist -lclips_assist -o consumer-so' \
   || fail "a program does not link with the shared library"
-ldd "$tmp/work/consumer-so" | grep -q "libclips_assist.so" || fail "consumer-so is not linked with libclips_assist.so"
+ldd "$tmp/work/consumer-so" >"$tmp/consumer-so.ldd" || fail "ldd consumer-so failed"
+grep -q "libclips_assist.so" "$tmp/consumer-so.ldd" || fail "consumer-so is not linked with libclips_assist.so"
 [ "$("${run[@]}" ./consumer-so "$example")" = "$out" ] || fail "the program linked with the shared library printed something else"
 echo "deb_install: OK"
