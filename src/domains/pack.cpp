@@ -717,6 +717,19 @@ void derive_destinations(PackSpec& spec, const pddl::Domain& domain) {
 
 // ---- finding a pack -----------------------------------------------------------------
 
+namespace {
+// A parent type nothing declares is a slip (`car - vehical`) unless it is the
+// agents' type, which docs/domains.md lets a domain leave implicit.
+void check_implicit_types(const PackSpec& spec, const pddl::Domain& d) {
+  for (const auto& [name, loc] : d.implicit_parents) {
+    if (name == spec.roles.agent_type) continue;
+    throw InputError(loc, "type '" + name + "' is named as a parent but never declared; declare it in :types ('" +
+                              name + " - object'), or correct the name (only the agents' type '" +
+                              spec.roles.agent_type + "', roles.agent_type, may be left undeclared)");
+  }
+}
+}  // namespace
+
 PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
   std::optional<PackSpec> spec;
   bool declared = true;
@@ -741,12 +754,14 @@ PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
     declared = false;  // nothing to check: `clips plan` works on any domain
   }
   if (declared) return pack_for_domain(std::move(*spec), domain);
+  check_implicit_types(*spec, domain);
   derive_goal_atoms(*spec, domain);
   derive_location_predicates(*spec, domain);
   return make_pack(std::move(*spec));
 }
 
 PackPtr pack_for_domain(PackSpec spec, const pddl::Domain& domain) {
+  check_implicit_types(spec, domain);
   check_pack_against(spec, domain);
   spec.transform = plan_task_transform(spec, domain);
   derive_goal_atoms(spec, domain);

@@ -139,6 +139,10 @@ struct Domain {
   std::vector<ActionSchema> actions;
   std::vector<DerivedRule> derived;
   std::optional<FuncId> total_cost;  // (total-cost) when :action-costs is used
+  // Types named only as a parent (`car - vehicle`, no `vehicle` of its own),
+  // where first named: the parser makes each a type under object, and the
+  // pack layer decides whether that is the agents' type or a slip.
+  std::vector<std::pair<std::string, SourceLoc>> implicit_parents;
 
   std::optional<TypeId> find_type(const std::string& n) const;
   std::optional<PredId> find_predicate(const std::string& n) const;

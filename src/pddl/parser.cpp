@@ -491,8 +491,16 @@ void parse_types(Domain& d, const SExpr& sec) {
     if (tn.type != "object" || d.types[t].parent <= 0) d.types[t].parent = parent;
   }
   // A parent never declared itself ("car - vehicle" alone) is a type of its
-  // own under object, as other planners read it: domains rely on it (the
-  // agent type a pack names, IPC domains' implicit supertypes).
+  // own under object, as other planners read it; it is recorded, so the pack
+  // layer can refuse a slip (`vehical`) and let the agents' type pass.
+  std::map<std::string, SourceLoc> named_as_parent;
+  std::set<std::string> named_itself;
+  for (const auto& tn : typed_list(sec.items, 1, sec)) {
+    named_itself.insert(tn.name);
+    if (tn.type != "object") named_as_parent.emplace(tn.type, tn.type_loc);
+  }
+  for (const auto& [name, loc] : named_as_parent)
+    if (!named_itself.count(name)) d.implicit_parents.emplace_back(name, loc);
 }
 
 // Adds the union types `(either a b)` the domain writes anywhere (parameters,

@@ -214,6 +214,24 @@ TEST(TaskTransform, ErrorsNameTheActionOrTheField) {
   EXPECT_NE(e.find("roles.noop_action"), std::string::npos) << e;
 }
 
+TEST(TaskTransform, OnlyTheAgentsTypeMayBeAnUndeclaredParent) {
+  // kPassDomain never declares `agent` itself: that passes, with a pack or without.
+  const std::string pack = R"j({"domain": "pass", "roles": {"principal": "ann", "assistant": "rob"}})j";
+  EXPECT_EQ(error_of([&] { Folder(kPassDomain, pack).load(); }), "");
+  EXPECT_EQ(error_of([&] { Folder(kPassDomain, "").load(); }), "");
+  // A slip in another parent's name is refused where it is written.
+  const std::string slip = std::string(kPassDomain).replace(std::string(kPassDomain).find("thing place - object"), 20,
+                                                            "thing - thngs place - object");
+  for (const std::string& p : {pack, std::string()}) {
+    const std::string e = error_of([&] { Folder(slip, p).load(); });
+    EXPECT_NE(e.find("domain.pddl:3:"), std::string::npos) << e;
+    EXPECT_NE(e.find("type 'thngs' is named as a parent but never declared"), std::string::npos) << e;
+  }
+  // Declared, it passes.
+  const std::string declared = std::string(slip).replace(slip.find("place - object"), 14, "place thngs - object");
+  EXPECT_EQ(error_of([&] { Folder(declared, pack).load(); }), "");
+}
+
 TEST(TaskTransform, TheGenericPackAddsNothing) {
   Folder f(kPassDomain, "");
   auto [domain, pack] = f.load();
