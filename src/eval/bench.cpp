@@ -15,12 +15,16 @@
 #include <fstream>
 #include <sstream>
 #include <mutex>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "language/commands/fewshot.hpp"
 #include "language/listener.hpp"
+#include "language/lm_domain.hpp"
+#include "pddl/parser.hpp"
 #include "util/hash.hpp"
+#include "util/numbered_names.hpp"
 #include "util/version.hpp"
 
 namespace clips::eval {
@@ -203,10 +207,13 @@ std::string multimodal_model(const ExperimentOptions& e) {
 }  // namespace
 
 // The embedded model trains (or loads from its cache) one model per prompt
-// block of few-shot examples, on first use and under a lock: score one
-// example under the speaker model's block, the literal listener's and the
-// empty prompt's.
-void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds) {
+// block of few-shot examples, on first use: score one example under each
+// block the plans will use (the speaker model's, whose commands mark the
+// numbered places of each problem as the utterance model does; the literal
+// listener's; the empty prompt's) in one batch, so that they train side by
+// side before the plans start.
+void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds,
+                            const std::vector<const data::PlanRecord*>& plans) {
   std::vector<lm::ScoreRequest> batch;
   try {
     auto add = [&](const std::vector<commands::FewShotExample>& examples) {
@@ -214,7 +221,18 @@ void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds) {
         batch.push_back({commands::build_prompt(examples, examples.front().command),
                          commands::utterance_continuation(examples.front().utterance)});
     };
-    add(ds.pack().fewshot(/*literal=*/false));
+    const std::vector<commands::FewShotExample> speaker = ds.pack().fewshot(/*literal=*/false);
+    std::set<std::string> problems;
+    std::set<std::vector<std::string>> numberings;
+    for (const data::PlanRecord* plan : plans) {
+      if (!problems.insert(plan->problem_id).second) continue;
+      const pddl::Problem problem = pddl::load_problem(*ds.domain(), ds.problem_path(plan->problem_id), false);
+      const auto numbered = language::numbered_place_names(*ds.domain(), problem, ds.pack().language());
+      if (!numberings.insert(numbered).second) continue;
+      std::vector<commands::FewShotExample> marked = speaker;
+      for (commands::FewShotExample& ex : marked) ex.command = util::mark_numbered(ex.command, numbered);
+      add(marked);
+    }
     if (ds.pack().spec().literal.enabled) add(language::literal_listener_setup(ds.pack_ptr()).examples);
     // The empty prompt (a joint plan with nothing to say) has a model of its own.
     batch.push_back({std::string(commands::kEmptyCommandPrompt), commands::utterance_continuation("ok")});
@@ -258,7 +276,7 @@ BenchReport run_bench(const BenchOptions& opts) {
   // that is model loading, not a step of the first plan to hear an
   // instruction, so it happens before the plans start (their step times are
   // reported). Other backends are not called for it.
-  if (rep.lm.find("embedded") != std::string::npos) warm_up_language_model(*lm, ds0);
+  if (rep.lm.find("embedded") != std::string::npos) warm_up_language_model(*lm, ds0, todo);
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);
   rep.qa_floor = assist::to_string(opts.experiment.qa_floor);

@@ -82,8 +82,33 @@ TEST(GoalFormula, AFocalPlaceIsNamed) {
   config.salient_actions[0].focal_is_place = false;
   const Command lifted = lift_command(salient, config, type_of);
   EXPECT_EQ(lifted.llm_form(), "(unlock you place1)");
-  const std::string any_place = "(exists (?key1 - key ?place1 - place ?place2 - place) (and (not (locked ?place1))";
-  EXPECT_EQ(lifted.to_goal_formula(config).rfind(any_place, 0), 0u);
+  // Any place: the key and the place stood at name no goal atom, so they are not quantified.
+  EXPECT_EQ(lifted.to_goal_formula(config), "(exists (?place1 - place) (and (not (locked ?place1))))");
+}
+
+// A put's destination cell (where the agent stands) is in the command but in
+// no goal atom: quantifying it would multiply a grid's expansion by its cells.
+TEST(GoalFormula, OnlyMentionedVariablesAreQuantified) {
+  LanguageConfig config;
+  config.speaker = "human";
+  config.listener = "robot";
+  config.print_agents_and_focal_only = true;
+  config.qualifier = "iscolour";
+  config.salient_actions = {SalientActionRule{"put", 1, 2, 0, false}};
+  config.goal_atoms["put"] = {"(on $2 $3)"};
+  const auto type_of = [](const std::string& object) -> std::string {
+    return object.rfind("can", 0) == 0 ? "can" : object.rfind("shelf", 0) == 0 ? "shelf" : "cell";
+  };
+  const auto salient = salient_of("(put robot can2 shelf3 c4-5) (put robot can1 shelf1 c1-1)",
+                                  "(iscolour can2 red) (iscolour can1 blue)", config);
+  const Command cmd = lift_command(salient, config, type_of);
+  EXPECT_EQ(cmd.display_form(), "(put you ?can1 ?shelf1 ?cell1) (put you ?can2 ?shelf2 ?cell2) where "
+                                "(iscolour ?can1 red) (iscolour ?can2 blue)");
+  EXPECT_EQ(cmd.to_goal_formula(config),
+            "(exists (?can1 - can ?shelf1 - shelf ?can2 - can ?shelf2 - shelf) (and (on ?can1 ?shelf1)"
+            " (on ?can2 ?shelf2) (not (= ?can1 ?shelf1)) (not (= ?can1 ?can2)) (not (= ?can1 ?shelf2))"
+            " (not (= ?shelf1 ?can2)) (not (= ?shelf1 ?shelf2)) (not (= ?can2 ?shelf2))"
+            " (iscolour ?can1 red) (iscolour ?can2 blue)))");
 }
 
 TEST(GoalFormula, UnknownActionIsAnError) {

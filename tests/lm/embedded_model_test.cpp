@@ -641,3 +641,30 @@ TEST(EmbeddedCache, OffByEnvironment) {
 
 }  // namespace
 }  // namespace clips::lm
+
+namespace clips::lm {
+namespace {
+
+TEST(EmbeddedTraining, TheModelDoesNotDependOnTheNumberOfThreads) {
+  // The E-step runs on several threads and makes its additions in pair order:
+  // the saved model is the same bytes on one thread and on three.
+  std::ifstream in(std::string(CLIPS_SOURCE_DIR) + "/data/language/corpus-dkg.tsv");
+  ASSERT_TRUE(in) << "data/language/corpus-dkg.tsv";
+  std::vector<TrainingPair> pairs;
+  std::string line;
+  while (std::getline(in, line) && pairs.size() < 240) {
+    const size_t tab = line.find('\t');
+    if (line.empty() || line[0] == '#' || tab == std::string::npos) continue;
+    pairs.push_back({line.substr(0, tab), line.substr(tab + 1), 1.0, "corpus-dkg.tsv"});
+  }
+  ASSERT_EQ(pairs.size(), 240u);
+  const std::string one = AlignmentModel::train(pairs, 4, {}, 1)->save();
+  const std::string three = AlignmentModel::train(pairs, 4, {}, 3)->save();
+  EXPECT_GT(one.size(), 1000u);
+  EXPECT_TRUE(one == three);
+  // And the training moved the model: fewer iterations save other bytes.
+  EXPECT_FALSE(AlignmentModel::train(pairs, 1, {}, 3)->save() == three);
+}
+
+}  // namespace
+}  // namespace clips::lm

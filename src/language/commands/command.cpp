@@ -142,14 +142,29 @@ std::string Command::to_goal_formula(const LanguageConfig& config) const {
   const bool lifted = !variables.empty() && std::any_of(atoms.begin(), atoms.end(), mentions_variable);
   if (!lifted) return "(and " + render_atoms() + ")";
 
-  std::string typed;
-  for (const auto& v : variables) typed += (typed.empty() ? "" : " ") + pddl_variable(v.name) + " - " + v.type;
-  std::string body = render_atoms();
-  for (std::size_t i = 0; i < variables.size(); ++i)
-    for (std::size_t j = i + 1; j < variables.size(); ++j)
-      body += " (not (= " + pddl_variable(variables[i].name) + " " + pddl_variable(variables[j].name) + "))";
+  // Only the variables the goal atoms or qualifiers mention are quantified: a
+  // destination cell of a put names no goal atom, and quantifying it would
+  // only multiply the expansion by the cells (millions of instances on a
+  // grid) for a formula that means the same (the paper's packs mention every
+  // variable, so their formulas are unchanged).
+  std::vector<Term> qualifiers;
   for (const auto& p : predicates)
-    if (mentions_variable(p)) body += " " + render(p, pddl_variable, keep_all);
+    if (mentions_variable(p)) qualifiers.push_back(p);
+  const auto mentioned = [&](const std::string& name) {
+    const std::string var = "?" + name;
+    const auto in = [&](const Term& t) { return std::find(t.args.begin(), t.args.end(), var) != t.args.end(); };
+    return std::any_of(atoms.begin(), atoms.end(), in) || std::any_of(qualifiers.begin(), qualifiers.end(), in);
+  };
+  std::vector<const Variable*> quantified;
+  for (const auto& v : variables)
+    if (mentioned(v.name)) quantified.push_back(&v);
+  std::string typed;
+  for (const Variable* v : quantified) typed += (typed.empty() ? "" : " ") + pddl_variable(v->name) + " - " + v->type;
+  std::string body = render_atoms();
+  for (std::size_t i = 0; i < quantified.size(); ++i)
+    for (std::size_t j = i + 1; j < quantified.size(); ++j)
+      body += " (not (= " + pddl_variable(quantified[i]->name) + " " + pddl_variable(quantified[j]->name) + "))";
+  for (const auto& p : qualifiers) body += " " + render(p, pddl_variable, keep_all);
   return "(exists (" + typed + ") (and " + body + "))";
 }
 

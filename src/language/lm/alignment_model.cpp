@@ -583,7 +583,7 @@ double AlignmentModel::rescale_tiny_tokens(TokenSources& s, const EncodedUtteran
 }
 
 double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool complete,
-                                Counts* counts, double weight) const {
+                                Counts* counts, double weight, DeferredAdds* deferred) const {
   const size_t n = u.ids.size();
   const size_t G = c.groups.size();
   const bool have_spans = u.in_modifier.size() == n;
@@ -851,8 +851,12 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
   if (counts == nullptr) return total;
 
   // E-step: distribute `weight` over mentions, clause types and sources.
+  const auto add = [deferred](double& slot, double v) {
+    if (deferred != nullptr) deferred->emplace_back(&slot, v);
+    else slot += v;
+  };
   const size_t bucket = static_cast<size_t>(actions_bucket(c.num_actions));
-  if (n <= static_cast<size_t>(kMaxLen)) counts->length[bucket][n] += weight;
+  if (n <= static_cast<size_t>(kMaxLen)) add(counts->length[bucket][n], weight);
   const int id_you = table_ids_.at("A:you");
   const int id_me = table_ids_.at("A:me");
   const int id_gen = table_ids_.at("GEN");
@@ -866,8 +870,8 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
     for (size_t g = 0; g < G && enumerate; ++g) {
       const Bound::Group& grp = c.groups[g];
       if (grp.parent >= 0 && !on[static_cast<size_t>(grp.parent)]) continue;
-      counts->mention_all[grp.kind] += weight * pm;
-      if (on[g]) counts->mention_on[grp.kind] += weight * pm;
+      add(counts->mention_all[grp.kind], weight * pm);
+      if (on[g]) add(counts->mention_on[grp.kind], weight * pm);
     }
     size_t start = 0;
     for (size_t k = 0; k < clauses; ++k) {
@@ -890,9 +894,9 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
           if (m <= 0) continue;
           const double r = wt / m;
           const size_t uid = static_cast<size_t>(id);
-          counts->bg[uid] += r * kPiBackground * p_bg[i];
-          counts->table[static_cast<size_t>(speaker ? id_me : id_you)][uid] += r * kPiAgent * p_agent;
-          counts->table[static_cast<size_t>(id_gen)][uid] += r * kPiContent * gen_share * p_gen[i];
+          add(counts->bg[uid], r * kPiBackground * p_bg[i]);
+          add(counts->table[static_cast<size_t>(speaker ? id_me : id_you)][uid], r * kPiAgent * p_agent);
+          add(counts->table[static_cast<size_t>(id_gen)][uid], r * kPiContent * gen_share * p_gen[i]);
           if (active == 0) continue;
           const double share = r * kPiContent * (1 - kGenericShare) / active;
           for (size_t g = 0; g < G; ++g) {
@@ -902,15 +906,15 @@ double AlignmentModel::evaluate(const Bound& c, const EncodedUtterance& u, bool 
             if (!in_role(c.groups[owner], own)) continue;
             const double unit = share * (grp.parent >= 0 ? grp.unit_weight : 1.0) / den[owner];
             const bool in_mod = have_spans && u.in_modifier[i] != 0 && grp.kind == 0;
-            if (in_mod) counts->table[static_cast<size_t>(id_mod)][uid] += unit * grp.nonverb_weight * p_mod[i];
+            if (in_mod) add(counts->table[static_cast<size_t>(id_mod)][uid], unit * grp.nonverb_weight * p_mod[i]);
             for (const Bound::Field& f : grp.fields) {
               if (in_mod && !f.verb) continue;
               const double e = unit * f.weight * f.table->at(id, u.words[i]);
-              if (f.table_index >= 0) counts->table[static_cast<size_t>(f.table_index)][uid] += e;
-              if (f.residual) counts->non_copy += e;
+              if (f.table_index >= 0) add(counts->table[static_cast<size_t>(f.table_index)][uid], e);
+              if (f.residual) add(counts->non_copy, e);
             }
             for (const Bound::Copy& cp : grp.copies) {
-              if (id == cp.id) counts->copy += unit * cp.weight * colour_binding(c, g, u, i);
+              if (id == cp.id) add(counts->copy, unit * cp.weight * colour_binding(c, g, u, i));
             }
           }
         }

@@ -156,6 +156,7 @@
 #include <shared_mutex>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "language/lm/command_frame.hpp"
@@ -218,8 +219,10 @@ class AlignmentModel {
   // command cannot be parsed).
   // `senses`: the WordNet sense the domain means by a type name where it is
   // not the first (lexical bases of its nouns follow it).
+  // `threads` (0: the machine's cores, at most 8) share each E-step; the
+  // model is the same, bit for bit, whatever their number.
   static std::shared_ptr<AlignmentModel> train(const std::vector<TrainingPair>& pairs, int iterations,
-                                               const NounSenses& senses = {});
+                                               const NounSenses& senses = {}, int threads = 0);
 
   struct Bound;  // a command frame bound to this model's tables
   std::shared_ptr<const Bound> bind(const std::string& command) const;
@@ -284,8 +287,12 @@ class AlignmentModel {
   double bg_prob(int id, const std::string& w) const;
   // The steps of log_prob() and of the E-step (alignment_model.cpp).
   struct TokenSources;  // each token's probability under every source of the mixture
+  // With `deferred`, the E-step's additions to `counts` are listed there, in
+  // order, instead of made: training evaluates pairs in parallel and replays
+  // the lists in pair order, so the sums are the sequential ones, bit for bit.
+  using DeferredAdds = std::vector<std::pair<double*, double>>;
   double evaluate(const Bound& c, const EncodedUtterance& u, bool complete, Counts* counts,
-                  double weight) const;
+                  double weight, DeferredAdds* deferred = nullptr) const;
   double best_noun_mass(int id, const std::string& w) const;
   double colour_binding(const Bound& c, size_t g, const EncodedUtterance& u, size_t i) const;
   std::vector<double> colour_contradictions(const Bound& c, const EncodedUtterance& u) const;

@@ -2,17 +2,20 @@
 #include "language/lm/alignment_model.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <mutex>
 #include <set>
 #include <string_view>
+#include <thread>
 #include <unordered_set>
 
 #include "language/lm/alignment_internal.hpp"
 #include "language/lm/language_model.hpp"
 #include "language/lm/utterance_tokens.hpp"
 #include "language/lm/wordnet_lexicon.hpp"
+#include "util/worker_pool.hpp"
 
 namespace clips::lm {
 
@@ -20,7 +23,7 @@ namespace clips::lm {
 
 struct Trainer {
   static std::shared_ptr<AlignmentModel> run(const std::vector<TrainingPair>& pairs, int iterations,
-                                             const NounSenses& senses) {
+                                             const NounSenses& senses, int threads) {
     std::shared_ptr<AlignmentModel> m(new AlignmentModel());
     AlignmentModel& M = *m;
     M.noun_senses_ = senses;
@@ -296,14 +299,31 @@ struct Trainer {
     std::vector<EncodedUtterance> encoded;
     for (const TrainingPair& p : pairs) encoded.push_back(M.encode(p.utterance));
 
+    constexpr size_t kBatch = 16;  // each pair lists tens of thousands of additions
+    util::WorkerPool pool(threads);
+    std::vector<AlignmentModel::DeferredAdds> adds(kBatch);
     for (int it = 0; it < std::max(1, iterations); ++it) {
       AlignmentModel::Counts counts;
       counts.table.assign(M.tables_.size(), std::vector<double>(V2, 0.0));
       counts.bg = punct_pseudo;
       counts.length.assign(kMaxActionsBucket + 1, std::vector<double>(kMaxLen + 1, 0.0));
-      for (size_t p = 0; p < pairs.size(); ++p) {
+      // The E-step: on one thread, pair by pair; on several, in batches whose
+      // pairs list their additions, then made in pair order, so the counts do
+      // not depend on the threads.
+      for (size_t p = 0; threads == 1 && p < pairs.size(); ++p) {
         auto b = M.bind(pairs[p].command);
         M.evaluate(*b, encoded[p], true, &counts, pairs[p].weight);
+      }
+      for (size_t first = 0; threads > 1 && first < pairs.size(); first += kBatch) {
+        const size_t count = std::min(kBatch, pairs.size() - first);
+        std::vector<std::shared_ptr<const AlignmentModel::Bound>> bound(count);
+        for (size_t k = 0; k < count; ++k) bound[k] = M.bind(pairs[first + k].command);
+        pool.run(count, [&](size_t k) {
+          adds[k].clear();
+          M.evaluate(*bound[k], encoded[first + k], true, &counts, pairs[first + k].weight, &adds[k]);
+        });
+        for (size_t k = 0; k < count; ++k)
+          for (const auto& [slot, v] : adds[k]) *slot += v;
       }
       // M-step.
       for (size_t ti = 0; ti < M.tables_.size(); ++ti) {
@@ -391,8 +411,17 @@ struct Trainer {
 };
 
 std::shared_ptr<AlignmentModel> AlignmentModel::train(const std::vector<TrainingPair>& pairs, int iterations,
-                                                      const NounSenses& senses) {
-  auto m = Trainer::run(pairs, iterations, senses);
+                                                      const NounSenses& senses, int threads) {
+  // By default the cores are shared among the trainings running at the time
+  // (the embedded model trains a prompt's blocks side by side).
+  static std::atomic<int> running{0};
+  const int others = running.fetch_add(1);
+  struct Leave {
+    std::atomic<int>& n;
+    ~Leave() { n.fetch_sub(1); }
+  } leave{running};
+  const int cores = std::min(8, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  auto m = Trainer::run(pairs, iterations, senses, threads > 0 ? threads : std::max(1, cores / (others + 1)));
   // Mass of the closed-class words and punctuation, for log_prob_unprimed.
   double closed = 0;
   for (size_t id = 0; id < m->words_.size() && id < m->bg_.size() && id < m->word_flags_.size(); ++id) {

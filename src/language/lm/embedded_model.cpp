@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <shared_mutex>
 #include <sstream>
 #include <unordered_map>
@@ -299,15 +300,30 @@ size_t EmbeddedLanguageModel::cache_hits() const {
 
 EmbeddedLanguageModel::~EmbeddedLanguageModel() = default;
 
+struct EmbeddedLanguageModel::BlockSlot {
+  std::once_flag once;
+  std::shared_ptr<BlockState> state;  // set once `once` has run
+};
+
 size_t EmbeddedLanguageModel::trained_blocks() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return blocks_.size();
+  return trained_;
 }
 
 std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::block_state(const std::string& block) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  auto it = blocks_.find(block);
-  if (it != blocks_.end()) return it->second;
+  std::shared_ptr<BlockSlot> slot;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& s = blocks_[block];
+    if (!s) s = std::make_shared<BlockSlot>();
+    slot = s;
+  }
+  // A training that throws leaves the flag unset: the next caller tries again.
+  std::call_once(slot->once, [&] { slot->state = train_block(block); });
+  return slot->state;
+}
+
+std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::train_block(const std::string& block) {
   std::vector<TrainingPair> pairs = corpus_;
   int index = 0;
   for (const auto& [cmd, utt] : parse_fewshot_block(block)) {
@@ -321,6 +337,7 @@ std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::block_
                                                         options_.em_iterations) + ".bin");
     state->model = load_cached(file);
     if (state->model) {
+      std::lock_guard<std::mutex> lock(mutex_);
       ++cache_hits_;
     } else {
       state->model = AlignmentModel::train(pairs, options_.em_iterations, options_.noun_senses);
@@ -331,7 +348,8 @@ std::shared_ptr<EmbeddedLanguageModel::BlockState> EmbeddedLanguageModel::block_
   }
   state->model->set_function_words(options_.function_words);
   state->model->set_noun_senses(options_.noun_senses);
-  blocks_.emplace(block, state);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++trained_;
   return state;
 }
 
@@ -350,6 +368,24 @@ double EmbeddedLanguageModel::score_one(const std::string& prompt, const std::st
 }
 
 std::vector<double> EmbeddedLanguageModel::score(const std::vector<ScoreRequest>& batch) {
+  // Blocks the batch needs that are not trained yet train side by side (each
+  // on its own thread; a model does not depend on which thread trains it).
+  std::vector<std::string> untrained;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const ScoreRequest& r : batch) {
+      std::string block = split_prompt(r.prompt).first;
+      if (!blocks_.count(block) && std::find(untrained.begin(), untrained.end(), block) == untrained.end())
+        untrained.push_back(std::move(block));
+    }
+  }
+  if (untrained.size() > 1) {
+    std::vector<std::future<void>> training;
+    for (size_t i = 1; i < untrained.size(); ++i)
+      training.push_back(std::async(std::launch::async, [this, &untrained, i] { block_state(untrained[i]); }));
+    block_state(untrained[0]);
+    for (auto& t : training) t.get();  // rethrows a training's error
+  }
   std::vector<double> out;
   out.reserve(batch.size());
   for (const ScoreRequest& r : batch) out.push_back(score_one(r.prompt, r.continuation));

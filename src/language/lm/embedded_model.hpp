@@ -86,6 +86,7 @@ class EmbeddedLanguageModel : public LanguageModel {
  private:
   struct BlockState;
   std::shared_ptr<BlockState> block_state(const std::string& block);
+  std::shared_ptr<BlockState> train_block(const std::string& block);  // or load it from the cache
 
   EmbeddedModelOptions options_;
   std::string data_dir_;
@@ -93,8 +94,12 @@ class EmbeddedLanguageModel : public LanguageModel {
   std::string cache_dir_;         // empty: no cache
   std::string cache_identity_;    // executable and WordNet files, part of every key
   size_t cache_hits_ = 0;
-  mutable std::mutex mutex_;  // guards blocks_ and serialises training
-  std::map<std::string, std::shared_ptr<BlockState>> blocks_;
+  size_t trained_ = 0;
+  // Each block trains once, outside mutex_: two threads that need different
+  // blocks (two bench plans, two sessions) train them at the same time.
+  struct BlockSlot;
+  mutable std::mutex mutex_;  // guards blocks_, trained_ and cache_hits_
+  std::map<std::string, std::shared_ptr<BlockSlot>> blocks_;
 };
 
 // Split a prompt into (few-shot block, query command). Throws LmError if the
