@@ -23,21 +23,32 @@ std::mutex& wordnet_mutex() {
 
 // --- raw WordNet access; callers hold wordnet_mutex() ---------------------------
 
+// Both are asked about the same words again and again (every model's
+// vocabulary, every type's table), and each answer costs the C library a
+// binary search with seeks in the index files: remembered here.
 bool wn_has(const std::string& word, int pos) {
   if (word.empty()) return false;
-  std::string buf = word;
-  return in_wn(buf.data(), pos) != 0;
+  static std::map<std::pair<int, std::string>, bool> memo;
+  auto [it, fresh] = memo.try_emplace({pos, word}, false);
+  if (fresh) {
+    std::string buf = word;
+    it->second = in_wn(buf.data(), pos) != 0;
+  }
+  return it->second;
 }
 
 std::vector<std::string> wn_base_forms(const std::string& word, int pos) {
-  std::vector<std::string> out;
-  std::string buf = word;
-  char* r = morphstr(buf.data(), pos);
-  while (r != nullptr) {
-    out.emplace_back(r);
-    r = morphstr(nullptr, pos);
+  static std::map<std::pair<int, std::string>, std::vector<std::string>> memo;
+  auto [it, fresh] = memo.try_emplace({pos, word});
+  if (fresh) {
+    std::string buf = word;
+    char* r = morphstr(buf.data(), pos);
+    while (r != nullptr) {
+      it->second.emplace_back(r);
+      r = morphstr(nullptr, pos);
+    }
   }
-  return out;
+  return it->second;
 }
 
 // Is `form` an inflection of `lemma` according to WordNet's morphology?
