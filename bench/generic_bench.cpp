@@ -31,7 +31,10 @@ static void BM_GenericBeliefUpdateStep(benchmark::State& st, const std::string& 
   auto lm = language::make_dataset_language_model("embedded", {}, ds);
   std::vector<double> steps, starts;
   // The embedded LM loads (or trains) on first use: not a belief update.
-  eval::warm_up_language_model(*lm, ds);
+  std::vector<const data::PlanRecord*> plans;
+  for (const auto& p : ds.plans())
+    if (p.evaluated) plans.push_back(&p);
+  eval::warm_up_language_model(*lm, ds, plans);
   for (auto _ : st) {
     steps.clear();
     starts.clear();

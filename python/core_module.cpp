@@ -554,7 +554,7 @@ py::dict run_plan(const std::string& dataset, const std::string& plan_id, const 
   auto run = interruptible([dataset, plan_id, lm_kind, threads] {
     auto ds = clips::data::Dataset::load(dataset);
     const auto& plan = ds.plan(plan_id);
-    auto lm = clips::language::make_language_model(lm_kind);
+    auto lm = clips::language::make_dataset_language_model(lm_kind, {}, ds);  // the model `clips infer` hears with
     clips::inference::InferenceOptions o;
     o.threads = static_cast<int>(threads);
     return clips::engine::run_observations(ds, plan, *lm, o, /*known_truth=*/true);

@@ -33,7 +33,9 @@ set(CLIPS_SLOW_DATASET_TESTS_search "StripsExport.SameOptimalCostOnTheDataset")
 set(CLIPS_SLOW_TESTS_app "IpcPlan.*")
 set(CLIPS_SLOW_TESTS_search "StripsExport.SameOptimalCostFromMidPlanStates:StripsExport.SameOptimalCostOnExampleProblems:StripsExport.ConjunctiveGoalsAndUnsupportedGoals:AStar.HMaxMatchesUniformCostSearchOnExampleProblems")
 
-set(CLIPS_INTEGRATION_TESTS_engine "FrontEnds.*:AssistantWeights.*:ParticleOptionTable.ABadValueGivesTheSameErrorFromCliPythonAndServer:ParticleOptionTable.TheServerTakesASessionsParticleOptions")
+# Trains the six repo datasets' models for the CLI, the test and Python when the cache is cold (about 2.5 min).
+set(CLIPS_SLOW_TESTS_engine "FrontEnds.EveryRepoDatasetIsHeardAlikeByEveryFrontEnd")
+set(CLIPS_INTEGRATION_TESTS_engine "FrontEnds.CliSessionPythonAndServerAgreeStepByStep:AssistantWeights.*:ParticleOptionTable.ABadValueGivesTheSameErrorFromCliPythonAndServer:ParticleOptionTable.TheServerTakesASessionsParticleOptions")
 set(CLIPS_INTEGRATION_TESTS_api "Session.AssistsWithThePacksNoOpAndTurnPredicate:Session.ReplayMatchesClipsInferOnTheRepoExamples:Session.TwoSessionsOnTwoThreadsAgreeWithOneThread")
 set(CLIPS_INTEGRATION_TESTS_app "MapWords.*:CliOwnDomain.*:GenerateCli.*:BenchFilesTest.PosteriorsResultsAndProvenance:CliNumbers.BadValuesAreRefusedAtParseTime:CliObservations.ErrorsNameTheAction:CliPlanLimits.*:CliCallLimits.*:UnreadableUtterance.*:BenchCli.*:CliBrokenPlan.*:CliExitCodes.*:CliStreams.*:CliSmaller.*:CliObservations.ActionsFromAPlanFile:CliObservations.AssistNamesTheAssistantsNextAction:CliObservations.InlineActionsReproduceTheDatasetPlan:CliObservations.TheUtteranceStepMatters:CliPlan.EmptyGoalsAreRejected:CliPlan.HelpSaysBudgetsArePerSearchAndOffersARunLimit:CliPlan.ProblemMustMatchFromPlan:BenchShardTest.*:BenchShardCli.BadShardValuesAreUsageErrors:BenchShardCli.EmptyShardWritesValidFilesAndMerges:BenchShardCli.UnloadablePlanIsShardedAndMergedLikeTheOthers")
 set(CLIPS_INTEGRATION_TESTS_eval "Issue46Cli.*:Issue61Cli.*:BenchLmFlags.*:InferCli.*:ParticleCli.*:LmServersCli.*")

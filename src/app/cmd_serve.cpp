@@ -167,6 +167,10 @@ void register_serve(CLI::App& app) {
       if (flags.kind != "embedded" || !pack.spec().embedded_corpus.empty()) return lm;
       return language::make_domain_language_model(flags.kind, lm_options(flags), pack, domain, problems);
     });
+    service.set_dataset_language_model([lm, flags = o->lm](const data::Dataset& ds) {
+      if (flags.kind != "embedded" || !ds.pack().spec().embedded_corpus.empty()) return lm;
+      return language::make_dataset_language_model(flags.kind, lm_options(flags), ds);
+    });
     if (o->stdio) {
       g_exit_code = serve::run_stdio(service, std::cin, std::cout);
       return;

@@ -120,6 +120,23 @@ std::shared_ptr<lm::LanguageModel> engine_language_model(const LanguageModelOpti
   return m;
 }
 
+// A session on a dataset's problem hears as `clips infer` and `clips serve`
+// do on that dataset (language::make_dataset_language_model), shared by the
+// sessions on the same folder.
+std::shared_ptr<lm::LanguageModel> dataset_language_model(const LanguageModelOptions& o, const data::Dataset& ds) {
+  if (o.backend != "embedded") return shared_language_model(o);
+  static std::mutex mu;
+  static std::map<std::string, std::weak_ptr<lm::LanguageModel>> models;
+  std::error_code ec;
+  const fs::path dir = fs::weakly_canonical(ds.dir(), ec);
+  const std::string key = ec ? ds.dir() : dir.string();
+  std::lock_guard<std::mutex> lock(mu);
+  if (auto m = models[key].lock()) return m;
+  std::shared_ptr<lm::LanguageModel> m = language::make_dataset_language_model(o.backend, {}, ds);
+  models[key] = m;
+  return m;
+}
+
 void check_backend(const std::string& backend) {
   for (const auto& k : language::language_model_kinds())
     if (k == backend) return;
@@ -389,7 +406,9 @@ struct Engine::Impl {
   }
 
   lm::LanguageModel& language_model() {
-    if (!lm) lm = engine_language_model(options.language_model, *problem.pack, *problem.task, goal_labels);
+    if (!lm)
+      lm = problem.owner ? dataset_language_model(options.language_model, *problem.owner)
+                         : engine_language_model(options.language_model, *problem.pack, *problem.task, goal_labels);
     return *lm;
   }
 

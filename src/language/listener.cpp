@@ -153,17 +153,35 @@ std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string
                                                                const data::Dataset& dataset) {
   if ((!kind.empty() && kind != "embedded") || !dataset.pack().spec().embedded_corpus.empty())
     return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), {});
+  // The problems of the recorded plans, in the plans' order, with their
+  // candidate goals' labels; a folder without plans: every problem, with the
+  // pack's goals for it. A problem that does not ground has no session.
+  std::vector<data::PlanRecord> problem_only;
+  std::vector<const data::PlanRecord*> sources;
+  for (const auto& p : dataset.plans()) sources.push_back(&p);
+  if (sources.empty()) {
+    for (const std::string& id : dataset.problem_ids()) {
+      data::PlanRecord only;
+      only.id = only.problem_id = id;
+      problem_only.push_back(std::move(only));
+    }
+    for (const auto& p : problem_only) sources.push_back(&p);
+  }
   std::vector<std::shared_ptr<const pddl::Task>> tasks;
   std::vector<const pddl::Problem*> problems;
   std::set<std::string> ids;
   std::vector<std::string> goal_names;
-  for (const auto& p : dataset.plans())
-    if (ids.insert(p.problem_id).second) {
-      tasks.push_back(dataset.task(p.problem_id));
-      problems.push_back(&tasks.back()->problem());
-      for (const auto& g : dataset.candidate_goals(p))
-        if (std::find(goal_names.begin(), goal_names.end(), g.label) == goal_names.end()) goal_names.push_back(g.label);
+  for (const data::PlanRecord* p : sources) {
+    if (!ids.insert(p->problem_id).second) continue;
+    try {
+      tasks.push_back(dataset.task(p->problem_id));
+    } catch (const InputError&) {
+      continue;
     }
+    problems.push_back(&tasks.back()->problem());
+    for (const auto& g : dataset.candidate_goals(*p))
+      if (std::find(goal_names.begin(), goal_names.end(), g.label) == goal_names.end()) goal_names.push_back(g.label);
+  }
   return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), problems, goal_names);
 }
 

@@ -95,6 +95,10 @@ lm::NounSenses dataset_noun_senses(const data::Dataset& dataset);
 // for `clips validate`; empty for a pack with a hand-written corpus.
 std::map<std::string, std::string> dataset_type_nouns(const data::Dataset& dataset);
 
+// The model every front end hears a dataset's sessions with (`clips infer`,
+// `bench`, `serve`, Python and C++ sessions opened on the folder): the
+// embedded model over the problems of its recorded plans and their candidate
+// goals (a folder without plans: over every problem), or the pack's corpora.
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,
                                                                const LanguageModelOptions& options,
                                                                const data::Dataset& dataset);

@@ -332,24 +332,9 @@ Reply Service::datasets() const {
 }
 
 std::shared_ptr<lm::LanguageModel> Service::dataset_lm(Served& served) {
-  if (!domain_lm_) return lm_;
+  if (!dataset_lm_) return lm_;
   std::lock_guard lock(served.lm_mutex);
-  if (served.lm) return served.lm;
-  const data::Dataset& ds = *served.dataset;
-  // The problems of the recorded plans (as `clips infer` trains on), else every problem.
-  std::vector<std::string> ids;
-  for (const auto& p : ds.plans())
-    if (std::find(ids.begin(), ids.end(), p.problem_id) == ids.end()) ids.push_back(p.problem_id);
-  if (ids.empty()) ids = ds.problem_ids();
-  std::vector<std::shared_ptr<const pddl::Task>> tasks;
-  std::vector<const pddl::Problem*> problems;
-  for (const auto& id : ids) try {
-      tasks.push_back(ds.task(id));
-      problems.push_back(&tasks.back()->problem());
-    } catch (const InputError&) {
-      // A problem that does not ground has no session either.
-    }
-  served.lm = domain_lm_(ds.pack(), *ds.domain(), problems);
+  if (!served.lm) served.lm = dataset_lm_(*served.dataset);
   return served.lm;
 }
 

@@ -88,6 +88,9 @@ const std::map<std::string, Asset>& web_assets();  // "/index.html", "/app.js", 
 // and the problems it will hear about); the server's own model when unset.
 using DomainLanguageModel = std::function<std::shared_ptr<lm::LanguageModel>(
     const domains::Pack&, const pddl::Domain&, const std::vector<const pddl::Problem*>&)>;
+// The same for the sessions of a served dataset (language::make_dataset_language_model,
+// as `clips infer` hears them).
+using DatasetLanguageModel = std::function<std::shared_ptr<lm::LanguageModel>(const data::Dataset&)>;
 
 class Service {
  public:
@@ -102,6 +105,7 @@ class Service {
   // language model (e.g. the embedded model trained on a domain's own
   // corpus). Models are built at a domain's first session and kept.
   void set_domain_language_model(DomainLanguageModel f) { domain_lm_ = std::move(f); }
+  void set_dataset_language_model(DatasetLanguageModel f) { dataset_lm_ = std::move(f); }
   // Where session ids come from (16 bytes each, written as 32 hex digits):
   // os_random_bytes unless a test says otherwise. Ids must not be guessable:
   // whoever knows one may read and play that session.
@@ -158,7 +162,8 @@ class Service {
   std::shared_ptr<lm::LanguageModel> lm_;
   std::function<Clock::time_point()> now_;
   std::map<std::string, Served> datasets_;
-  DomainLanguageModel domain_lm_;
+  DomainLanguageModel domain_lm_;    // sessions on PDDL text
+  DatasetLanguageModel dataset_lm_;  // sessions on a served dataset
   std::mutex lm_mutex_;  // guards text_lms_; held while one of them is built
   std::vector<std::pair<std::string, std::shared_ptr<lm::LanguageModel>>> text_lms_;  // newest last
   mutable std::mutex mutex_;  // guards sessions_, pending_, pending_by_client_, random_

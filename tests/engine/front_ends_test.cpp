@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clips/clips.hpp"
+#include "data/dataset.hpp"
 #include "engine/json.hpp"
 #include "language/listener.hpp"
 #include "serve/service.hpp"
@@ -188,6 +189,127 @@ TEST(FrontEnds, CliSessionPythonAndServerAgreeStepByStep) {
   expect_same(session, cli_run(), "cli");
   expect_same(session, server_run(), "server");
   expect_same(session, python_run(), "python");
+}
+
+// ---- every repo dataset: the model trained on the domain's own corpus -------
+
+// The goal posterior at each checkpoint t = 0..T of a plan: after t observed
+// actions, with the utterances said then heard first at t = 0 and t = T and
+// after the checkpoint otherwise (where `clips infer` scores them: in the
+// step that follows).
+using Checkpoints = std::vector<std::vector<double>>;
+
+Checkpoints cli_checkpoints(const std::string& dir, const std::string& plan) {
+  const json j = json::parse(stdout_of(std::string(CLIPS_BINARY_DIR) + "/clips infer --json --dataset " + dir +
+                                       " --plan " + plan));
+  Checkpoints out;
+  for (const auto& st : j["steps"]) {
+    std::vector<double> p;
+    for (const auto& g : st["posterior"]["goals"]) p.push_back(g["p"]);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+// Drives one front end through the plan: observe(action), hear(text), read().
+template <class Observe, class Hear, class Read>
+Checkpoints replay(const clips::data::PlanRecord& plan, Observe observe, Hear hear, Read read) {
+  const int T = static_cast<int>(plan.observed.actions.size());
+  Checkpoints out;
+  for (int t = 0; t <= T; ++t) {
+    if (t > 0) observe(plan.observed.actions[static_cast<size_t>(t - 1)].text);
+    auto hear_all = [&] {
+      for (const auto& u : plan.observed.utterances)
+        if (u.index == t) hear(u.text);
+    };
+    if (t == 0 || t == T) hear_all();
+    out.push_back(read());
+    if (t != 0 && t != T) hear_all();
+  }
+  return out;
+}
+
+Checkpoints session_checkpoints(const std::string& dir, const clips::data::PlanRecord& plan) {
+  auto s = clips::Session::open_dataset(dir, plan.id);
+  return replay(
+      plan, [&](const std::string& a) { s.observe(a); }, [&](const std::string& u) { s.hear(u); },
+      [&] { return s.posterior().goal_probabilities; });
+}
+
+Checkpoints server_checkpoints(const std::string& dir, const clips::data::PlanRecord& plan) {
+  // As `clips serve` sets it up (cmd_serve.cpp): the dataset's own model.
+  clips::serve::Service service({dir}, {}, clips::language::make_language_model("embedded"));
+  service.set_dataset_language_model([](const clips::data::Dataset& ds) {
+    return clips::language::make_dataset_language_model("embedded", {}, ds);
+  });
+  auto call = [&](const std::string& method, const std::string& path, const json& body) {
+    const auto reply = service.handle(method, path, body.is_null() ? "" : body.dump());
+    EXPECT_LT(reply.status, 300) << path << ": " << reply.body;
+    return json::parse(reply.body);
+  };
+  const std::string name = std::filesystem::path(dir).filename().string();
+  const std::string id = call("POST", "/api/sessions", {{"dataset", name}, {"problem", plan.problem_id}, {"plan", plan.id}})["id"];
+  return replay(
+      plan, [&](const std::string& a) { call("POST", "/api/sessions/" + id + "/act", {{"action", a}}); },
+      [&](const std::string& u) { call("POST", "/api/sessions/" + id + "/hear", {{"utterance", u}}); },
+      [&] {
+        const json j = call("GET", "/api/sessions/" + id + "/posterior", nullptr);
+        std::vector<double> p;
+        for (const auto& g : (j.contains("posterior") ? j["posterior"] : j)["goals"]) p.push_back(g["p"]);
+        return p;
+      });
+}
+
+// A Python session driven as above, and (in `run_plan`) clips_assist.run_plan's
+// posteriors, which are `clips infer`'s steps.
+Checkpoints python_checkpoints(const std::string& dir, const clips::data::PlanRecord& plan, Checkpoints* run_plan) {
+  const std::string base = std::string(CLIPS_BINARY_DIR) + "/front_ends_repo_test";
+  json events = {{"dir", dir}, {"plan", plan.id}, {"actions", json::array()}, {"said", json::array()}};
+  for (const auto& a : plan.observed.actions) events["actions"].push_back(a.text);
+  for (const auto& u : plan.observed.utterances) events["said"].push_back({u.index, u.text});
+  std::ofstream(base + ".json") << events.dump();
+  {
+    std::ofstream f(base + ".py");
+    f << "import json, sys, clips_assist\n"
+      << "e = json.load(open(sys.argv[1]))\n"
+      << "s = clips_assist.Session.open_dataset(e['dir'], e['plan'])\n"
+      << "T = len(e['actions'])\n"
+      << "def hear(t):\n"
+      << "    for i, u in e['said']:\n"
+      << "        if i == t: s.hear(u)\n"
+      << "out = []\n"
+      << "for t in range(T + 1):\n"
+      << "    if t > 0: s.observe(e['actions'][t - 1])\n"
+      << "    if t in (0, T): hear(t)\n"
+      << "    out.append([g['p'] for g in s.posterior()['goals']])\n"
+      << "    if t not in (0, T): hear(t)\n"
+      << "whole = clips_assist.run_plan(e['dir'], e['plan'])\n"
+      << "ran = [[g['p'] for g in st['posterior']['clips']['goals']] for st in whole['steps']]\n"
+      << "print(json.dumps({'session': out, 'run_plan': ran}))\n";
+  }
+  const json j = json::parse(stdout_of("PYTHONPATH=" + std::string(CLIPS_BINARY_DIR) + "/python /usr/bin/python3 " +
+                                       base + ".py " + base + ".json"));
+  *run_plan = j["run_plan"].get<Checkpoints>();
+  return j["session"].get<Checkpoints>();
+}
+
+TEST(FrontEnds, EveryRepoDatasetIsHeardAlikeByEveryFrontEnd) {
+  // One plan with an instruction per dataset: posteriors equal, not close.
+  for (const std::string name : {"garden", "hospital", "kitchen", "lab", "warehouse", "workshop"}) {
+    const std::string dir = clips::paths::source_dir() + "/data/datasets/" + name;
+    const auto ds = clips::data::Dataset::load(dir);
+    const clips::data::PlanRecord* plan = nullptr;
+    for (const auto& p : ds.plans())
+      if (!plan && !p.observed.utterances.empty()) plan = &p;
+    ASSERT_NE(plan, nullptr) << name;
+    const Checkpoints cli = cli_checkpoints(dir, plan->id);
+    ASSERT_EQ(cli.size(), plan->observed.actions.size() + 1) << name;
+    EXPECT_EQ(session_checkpoints(dir, *plan), cli) << name << " " << plan->id << ": C++ session";
+    EXPECT_EQ(server_checkpoints(dir, *plan), cli) << name << " " << plan->id << ": server";
+    Checkpoints run_plan;
+    EXPECT_EQ(python_checkpoints(dir, *plan, &run_plan), cli) << name << " " << plan->id << ": Python session";
+    EXPECT_EQ(run_plan, cli) << name << " " << plan->id << ": Python run_plan";
+  }
 }
 
 }  // namespace
