@@ -80,14 +80,7 @@ bool Session::undo(const CallLimits& limits) {
 
 void Session::reset() { impl_->engine.reset(); }
 
-bool Session::goal_holds(const std::string& goal) const {
-  const auto& labels = impl_->engine.goal_labels();
-  for (size_t g = 0; g < labels.size(); ++g)
-    if (labels[g] == goal) return impl_->engine.goal_holds(static_cast<int>(g));
-  std::string known;
-  for (const auto& l : labels) known += (known.empty() ? "" : ", ") + l;
-  throw InputError("no candidate goal '" + goal + "' (goals: " + known + ")");
-}
+bool Session::goal_holds(const std::string& goal) const { return impl_->engine.goal_holds(goal); }
 
 Posterior Session::posterior() const { return impl_->engine.posterior(); }
 

@@ -98,10 +98,38 @@ std::shared_ptr<lm::LanguageModel> shared_language_model(const LanguageModelOpti
 // infer` and `clips serve` use on this domain (trained on the pack's corpora,
 // else on a corpus generated from the domain, its problem and its goals);
 // shared by engines on the same domain, problem and goals.
+std::shared_ptr<lm::LanguageModel> dataset_language_model(const LanguageModelOptions& o, const data::Dataset& ds);
+
+// The dataset folder a problem file belongs to (DIR/problems/P.pddl, with
+// DIR/domain.pddl and recorded plans in DIR/plans/observed), if any.
+std::optional<std::string> dataset_folder_of(const pddl::Problem& problem) {
+  if (problem.file.empty()) return std::nullopt;
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(problem.file, ec);
+  if (ec || file.parent_path().filename() != "problems") return std::nullopt;
+  const fs::path dir = file.parent_path().parent_path();
+  if (!fs::exists(dir / "domain.pddl", ec) || !fs::is_directory(dir / "plans" / "observed", ec)) return std::nullopt;
+  return dir.string();
+}
+
 std::shared_ptr<lm::LanguageModel> engine_language_model(const LanguageModelOptions& o, const domains::Pack& pack,
                                                          const pddl::Task& task,
                                                          const std::vector<std::string>& goal_labels) {
   if (o.backend != "embedded") return shared_language_model(o);
+  // A problem of a dataset folder, opened as a file (Session::open_domain,
+  // `clips assist --problem`), hears as the dataset's sessions do.
+  if (const auto dir = dataset_folder_of(task.problem())) {
+    static std::mutex mu;
+    static std::map<std::string, std::shared_ptr<const data::Dataset>> datasets;
+    std::shared_ptr<const data::Dataset> ds;
+    {
+      std::lock_guard<std::mutex> lock(mu);
+      auto& slot = datasets[*dir];
+      if (!slot) slot = std::make_shared<const data::Dataset>(data::Dataset::load(*dir));
+      ds = slot;
+    }
+    if (ds->pack().name() == pack.name()) return dataset_language_model(o, *ds);
+  }
   static std::mutex mu;
   static std::map<std::string, std::weak_ptr<lm::LanguageModel>> models;
   // A problem read from a file is known by its path; one sent as text is not
@@ -719,6 +747,15 @@ bool Engine::goal_holds(int goal) const {
   for (const auto& h : impl_->belief->hypotheses())
     if (h.goal == goal) return h.spec->is_goal(state());
   return false;
+}
+
+bool Engine::goal_holds(const std::string& label) const {
+  const auto& labels = impl_->goal_labels;
+  for (size_t g = 0; g < labels.size(); ++g)
+    if (labels[g] == label) return goal_holds(static_cast<int>(g));
+  std::string known;
+  for (const auto& l : labels) known += (known.empty() ? "" : ", ") + l;
+  throw InputError("no candidate goal '" + clip_message(label, 200) + "' (goals: " + known + ")");
 }
 
 std::optional<int> Engine::reached_goal() const {

@@ -159,6 +159,8 @@ class Engine {
   std::vector<CandidateAction> applicable_actions() const;
   // Whether candidate goal `goal` (index) holds now; the first that does.
   bool goal_holds(int goal) const;
+  // The same for a goal's label; InputError naming the candidates for another.
+  bool goal_holds(const std::string& label) const;
   std::optional<int> reached_goal() const;
   const std::vector<std::string>& goal_labels() const;
   const std::vector<std::string>& profile_names() const;

@@ -154,11 +154,13 @@ std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string
   if ((!kind.empty() && kind != "embedded") || !dataset.pack().spec().embedded_corpus.empty())
     return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), {});
   // The problems of the recorded plans, in the plans' order, with their
-  // candidate goals' labels; a folder without plans: every problem, with the
-  // pack's goals for it. A problem that does not ground has no session.
+  // candidate goals' labels (an error in one stops here, as the bench would
+  // on its plans); a folder without plans: every problem, with the pack's
+  // goals for it, but for those that do not ground (they have no session).
   std::vector<data::PlanRecord> problem_only;
   std::vector<const data::PlanRecord*> sources;
   for (const auto& p : dataset.plans()) sources.push_back(&p);
+  const bool skip_bad = sources.empty();
   if (sources.empty()) {
     for (const std::string& id : dataset.problem_ids()) {
       data::PlanRecord only;
@@ -173,13 +175,17 @@ std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string
   std::vector<std::string> goal_names;
   for (const data::PlanRecord* p : sources) {
     if (!ids.insert(p->problem_id).second) continue;
+    std::vector<data::GoalSpec> goals;
     try {
       tasks.push_back(dataset.task(p->problem_id));
+      goals = dataset.candidate_goals(*p);
     } catch (const InputError&) {
+      if (!skip_bad) throw;
+      if (tasks.size() > problems.size()) tasks.pop_back();
       continue;
     }
     problems.push_back(&tasks.back()->problem());
-    for (const auto& g : dataset.candidate_goals(*p))
+    for (const auto& g : goals)
       if (std::find(goal_names.begin(), goal_names.end(), g.label) == goal_names.end()) goal_names.push_back(g.label);
   }
   return make_domain_language_model(kind, options, dataset.pack(), *dataset.domain(), problems, goal_names);

@@ -106,6 +106,8 @@ class PlaySession {
   nlohmann::json trace() const;
   const std::string& method() const { return method_; }
   int steps() const { return engine_.t(); }
+  // Whether the candidate goal with this label holds now (HTTP 400 for another label).
+  bool goal_holds(const std::string& label) const { return engine_.goal_holds(label); }
 
  private:
   nlohmann::json scene() const;

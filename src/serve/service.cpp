@@ -514,6 +514,11 @@ Reply Service::on_session(const std::string& method, const std::string& id, cons
       op == "undo" ? s.undo() : s.reset();
       return with_id(s.state());
     }
+    if (op == "goal_holds") {
+      const json j = parse_body(body, {"goal"});
+      const std::string goal = string_field(j, "goal", true);
+      return json_reply(200, json{{"goal", goal}, {"holds", s.goal_holds(goal)}, {"t", s.steps()}});
+    }
     if (op == "method") {
       const json j = parse_body(body, {"method"});
       s.set_method(string_field(j, "method", true));
@@ -577,7 +582,9 @@ std::string Service::allowed_methods(const std::string& path) {
   if (parts.size() == 4 && parts[1] == "sessions") {
     const std::string& op = parts[3];
     if (op == "posterior" || op == "trace") return "GET, HEAD";
-    if (op == "act" || op == "hear" || op == "assist" || op == "undo" || op == "reset" || op == "method") return "POST";
+    if (op == "act" || op == "hear" || op == "assist" || op == "undo" || op == "reset" || op == "method" ||
+        op == "goal_holds")
+      return "POST";
   }
   return "";
 }

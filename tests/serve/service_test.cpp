@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "data/dataset.hpp"
 #include "language/listener.hpp"
 #include "serve/frontends.hpp"
 #include "serve/service.hpp"
@@ -273,6 +274,44 @@ TEST_F(Fixture, PlayHearAssistUndoResetAndSwitchMethod) {
   EXPECT_EQ(body(r)["t"], 0);
   EXPECT_EQ(s->handle("POST", url + "/undo", "").status, 409);
   EXPECT_EQ(s->handle("POST", url + "/method", R"j({"method":"oracle"})j").status, 400);
+}
+
+TEST_F(Fixture, GoalHoldsAnswersForACandidateGoalAsThePlanGoesOn) {
+  auto s = make();
+  const std::string url = "/api/sessions/" + create(*s);
+  const auto ds = clips::data::Dataset::load(kExamples);
+  const auto& plan = ds.plan("e1.1.keys");
+  const auto goals = ds.candidate_goals(plan);
+  const std::string truth = goals.at(static_cast<size_t>(ds.true_goal_index(plan))).label;
+  auto holds = [&](const std::string& goal) {
+    const Reply r = s->handle("POST", url + "/goal_holds", json{{"goal", goal}}.dump());
+    EXPECT_EQ(r.status, 200) << r.body;
+    const json j = body(r);
+    EXPECT_EQ(j["goal"], goal);
+    return j.value("holds", false);
+  };
+  for (const auto& g : goals) EXPECT_FALSE(holds(g.label)) << g.label;
+  // The whole plan (observed, then its completion) reaches the true goal and no other.
+  int acted = 0;
+  std::vector<clips::pddl::PlanLine> whole = plan.observed.actions;
+  whole.insert(whole.end(), plan.completed.actions.begin(), plan.completed.actions.end());
+  for (const auto& a : whole) {
+    const Reply r = s->handle("POST", url + "/act", json{{"action", a.text}}.dump());
+    ASSERT_EQ(r.status, 200) << a.text << ": " << r.body;
+    ++acted;
+  }
+  ASSERT_GT(acted, 0);
+  for (const auto& g : goals) EXPECT_EQ(holds(g.label), g.label == truth) << g.label;
+  EXPECT_EQ(body(s->handle("POST", url + "/goal_holds", json{{"goal", truth}}.dump()))["t"], acted);
+  // Not a candidate, no label, another verb: errors that say so.
+  Reply r = s->handle("POST", url + "/goal_holds", json{{"goal", "gem99"}}.dump());
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(r.body.find("no candidate goal 'gem99'"), std::string::npos) << r.body;
+  EXPECT_NE(r.body.find(truth), std::string::npos) << r.body;
+  r = s->handle("POST", url + "/goal_holds", "{}");
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(r.body.find("goal"), std::string::npos) << r.body;
+  EXPECT_EQ(s->handle("GET", url + "/goal_holds", "").status, 405);
 }
 
 TEST_F(Fixture, ParticleSessionsRefineOnlyWhatTheParticlesHold) {
