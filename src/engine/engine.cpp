@@ -94,11 +94,26 @@ std::shared_ptr<lm::LanguageModel> shared_language_model(const LanguageModelOpti
   return m;
 }
 
-// The model an engine hears with: for the embedded backend, the one `clips
-// infer` and `clips serve` use on this domain (trained on the pack's corpora,
-// else on a corpus generated from the domain, its problem and its goals);
-// shared by engines on the same domain, problem and goals.
-std::shared_ptr<lm::LanguageModel> dataset_language_model(const LanguageModelOptions& o, const data::Dataset& ds);
+// A session on a dataset's problem hears as `clips infer` and `clips serve`
+// do on that dataset (language::make_dataset_language_model), one model per
+// folder; `dataset` is called only to build it (null: no such dataset).
+std::shared_ptr<lm::LanguageModel> dataset_language_model(
+    const LanguageModelOptions& o, const std::string& dir,
+    const std::function<std::shared_ptr<const data::Dataset>()>& dataset) {
+  if (o.backend != "embedded") return shared_language_model(o);
+  static std::mutex mu;
+  static std::map<std::string, std::weak_ptr<lm::LanguageModel>> models;
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(dir, ec);
+  const std::string key = ec ? dir : canonical.string();
+  std::lock_guard<std::mutex> lock(mu);
+  if (auto m = models[key].lock()) return m;
+  const auto ds = dataset();
+  if (!ds) return nullptr;
+  std::shared_ptr<lm::LanguageModel> m = language::make_dataset_language_model(o.backend, {}, *ds);
+  models[key] = m;
+  return m;
+}
 
 // The dataset folder a problem file belongs to (DIR/problems/P.pddl, with
 // DIR/domain.pddl and recorded plans in DIR/plans/observed), if any.
@@ -112,6 +127,10 @@ std::optional<std::string> dataset_folder_of(const pddl::Problem& problem) {
   return dir.string();
 }
 
+// The model an engine hears with: for the embedded backend, the one `clips
+// infer` and `clips serve` use on this domain (trained on the pack's corpora,
+// else on a corpus generated from the domain, its problem and its goals);
+// shared by engines on the same domain, problem and goals.
 std::shared_ptr<lm::LanguageModel> engine_language_model(const LanguageModelOptions& o, const domains::Pack& pack,
                                                          const pddl::Task& task,
                                                          const std::vector<std::string>& goal_labels) {
@@ -119,16 +138,11 @@ std::shared_ptr<lm::LanguageModel> engine_language_model(const LanguageModelOpti
   // A problem of a dataset folder, opened as a file (Session::open_domain,
   // `clips assist --problem`), hears as the dataset's sessions do.
   if (const auto dir = dataset_folder_of(task.problem())) {
-    static std::mutex mu;
-    static std::map<std::string, std::shared_ptr<const data::Dataset>> datasets;
-    std::shared_ptr<const data::Dataset> ds;
-    {
-      std::lock_guard<std::mutex> lock(mu);
-      auto& slot = datasets[*dir];
-      if (!slot) slot = std::make_shared<const data::Dataset>(data::Dataset::load(*dir));
-      ds = slot;
-    }
-    if (ds->pack().name() == pack.name()) return dataset_language_model(o, *ds);
+    auto m = dataset_language_model(o, *dir, [&]() -> std::shared_ptr<const data::Dataset> {
+      auto ds = std::make_shared<const data::Dataset>(data::Dataset::load(*dir));
+      return ds->pack().name() == pack.name() ? ds : nullptr;
+    });
+    if (m) return m;
   }
   static std::mutex mu;
   static std::map<std::string, std::weak_ptr<lm::LanguageModel>> models;
@@ -145,23 +159,6 @@ std::shared_ptr<lm::LanguageModel> engine_language_model(const LanguageModelOpti
   std::shared_ptr<lm::LanguageModel> m =
       language::make_domain_language_model(o.backend, {}, pack, task.domain(), {&task.problem()}, goal_labels);
   if (shared) models[key] = m;
-  return m;
-}
-
-// A session on a dataset's problem hears as `clips infer` and `clips serve`
-// do on that dataset (language::make_dataset_language_model), shared by the
-// sessions on the same folder.
-std::shared_ptr<lm::LanguageModel> dataset_language_model(const LanguageModelOptions& o, const data::Dataset& ds) {
-  if (o.backend != "embedded") return shared_language_model(o);
-  static std::mutex mu;
-  static std::map<std::string, std::weak_ptr<lm::LanguageModel>> models;
-  std::error_code ec;
-  const fs::path dir = fs::weakly_canonical(ds.dir(), ec);
-  const std::string key = ec ? ds.dir() : dir.string();
-  std::lock_guard<std::mutex> lock(mu);
-  if (auto m = models[key].lock()) return m;
-  std::shared_ptr<lm::LanguageModel> m = language::make_dataset_language_model(o.backend, {}, ds);
-  models[key] = m;
   return m;
 }
 
@@ -435,7 +432,8 @@ struct Engine::Impl {
 
   lm::LanguageModel& language_model() {
     if (!lm)
-      lm = problem.owner ? dataset_language_model(options.language_model, *problem.owner)
+      lm = problem.owner ? dataset_language_model(options.language_model, problem.owner->dir(),
+                                                  [this] { return problem.owner; })
                          : engine_language_model(options.language_model, *problem.pack, *problem.task, goal_labels);
     return *lm;
   }

@@ -175,16 +175,17 @@ std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string
   std::vector<std::string> goal_names;
   for (const data::PlanRecord* p : sources) {
     if (!ids.insert(p->problem_id).second) continue;
+    std::shared_ptr<const pddl::Task> task;
     std::vector<data::GoalSpec> goals;
     try {
-      tasks.push_back(dataset.task(p->problem_id));
+      task = dataset.task(p->problem_id);
       goals = dataset.candidate_goals(*p);
     } catch (const InputError&) {
       if (!skip_bad) throw;
-      if (tasks.size() > problems.size()) tasks.pop_back();
       continue;
     }
-    problems.push_back(&tasks.back()->problem());
+    tasks.push_back(task);
+    problems.push_back(&task->problem());
     for (const auto& g : goals)
       if (std::find(goal_names.begin(), goal_names.end(), g.label) == goal_names.end()) goal_names.push_back(g.label);
   }

@@ -471,7 +471,11 @@ TypeId ensure_type(Domain& d, const std::string& name) {
 // Every type has at most one parent: "car - vehicle car - toy" is an error.
 void parse_types(Domain& d, const SExpr& sec) {
   std::map<std::string, TypedName> declared;  // type -> its declaration with an explicit parent
+  std::map<std::string, SourceLoc> named_as_parent;
+  std::set<std::string> named_itself;
   for (auto& tn : typed_list(sec.items, 1, sec)) {
+    named_itself.insert(tn.name);
+    if (tn.type != "object") named_as_parent.emplace(tn.type, tn.type_loc);
     if (tn.type.rfind("(either", 0) == 0)
       fail(tn.type_loc, "type '" + tn.name + "' cannot have a union " + tn.type + " as its parent: name one type");
     if (tn.name == "object") {
@@ -493,12 +497,6 @@ void parse_types(Domain& d, const SExpr& sec) {
   // A parent never declared itself ("car - vehicle" alone) is a type of its
   // own under object, as other planners read it; it is recorded, so the pack
   // layer can refuse a slip (`vehical`) and let the agents' type pass.
-  std::map<std::string, SourceLoc> named_as_parent;
-  std::set<std::string> named_itself;
-  for (const auto& tn : typed_list(sec.items, 1, sec)) {
-    named_itself.insert(tn.name);
-    if (tn.type != "object") named_as_parent.emplace(tn.type, tn.type_loc);
-  }
   for (const auto& [name, loc] : named_as_parent)
     if (!named_itself.count(name)) d.implicit_parents.emplace_back(name, loc);
 }
