@@ -32,11 +32,10 @@ if(CLIPS_FUZZ)
               ${CMAKE_BINARY_DIR}/web_assets.cpp)
   target_link_libraries(clips_fuzz_serve PUBLIC clips_engine clips_render clips_data)
   set(clips_fuzz_lib_serve clips_fuzz_serve)
-  # The JSON-lines front end: the handlers and the front ends' file (which
-  # holds the HTTP server too, so cpp-httplib comes along).
-  add_library(clips_fuzz_stdio STATIC ${CMAKE_SOURCE_DIR}/src/serve/frontends.cpp
-              ${CMAKE_SOURCE_DIR}/src/serve/http_guard.cpp)
-  target_link_libraries(clips_fuzz_stdio PUBLIC clips_fuzz_serve PkgConfig::HTTPLIB)
+  # The JSON-lines front end: the handlers and the front ends' file (the
+  # HTTP server is a module of its own, src/serve/http/).
+  add_library(clips_fuzz_stdio STATIC ${CMAKE_SOURCE_DIR}/src/serve/frontends.cpp)
+  target_link_libraries(clips_fuzz_stdio PUBLIC clips_fuzz_serve)
   set(clips_fuzz_lib_stdio clips_fuzz_stdio)
   set(fuzz_bins)
   set(fuzz_smoke_bins)

@@ -25,30 +25,37 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ -d "$dataset/problems" ] || { echo "dkg-plan-times: no $dataset/problems (give --dataset DIR)" >&2; exit 2; }
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-printf 'problem\tgem\tstatus\tcost\texpanded\tsearch_seconds\twall\tcpu\n' >"$out"
-n=0 wall_sum=0 cpu_sum=0
-for f in "$dataset"/problems/*.pddl; do
-  p="$(basename "$f" .pddl)"
-  for g in $(grep -o 'gem[0-9]\+' "$f" | sort -u); do
-    t0=$(date +%s.%N)
-    /usr/bin/time -f "%U %S" -o "$tmp/cpu" "$clips" plan --dataset "$dataset" --problem "$p" \
-      --goal "(has human $g)" --json >"$tmp/out" 2>/dev/null
-    t1=$(date +%s.%N)
-    wall=$(python3 -c "print('%.3f' % ($t1 - $t0))")
-    cpu=$(awk 'NF == 2 && $1 ~ /^[0-9.]+$/ { printf "%.3f", $1 + $2 }' "$tmp/cpu")
-    fields=$(python3 -c '
-import json, sys
-try:
-    j = json.loads(open(sys.argv[1]).read().strip().splitlines()[-1])
-    print("%s\t%g\t%s\t%.4f" % (j["status"], j["cost"], j["expanded"], j["seconds"]))
-except Exception:
-    print("error\t\t\t")' "$tmp/out")
-    printf '%s\t%s\t%s\t%s\t%s\n' "$p" "$g" "$fields" "$wall" "$cpu" >>"$out"
-    n=$((n + 1))
-    wall_sum=$(python3 -c "print($wall_sum + $wall)")
-    cpu_sum=$(python3 -c "print($cpu_sum + ${cpu:-0})")
-  done
-done
-echo "dkg-plan-times: $n tasks, ${wall_sum}s wall, ${cpu_sum}s cpu in all" >&2
+# One Python process starts every call and times it (wall: from the fork to
+# the exit; CPU: the child's user + system time from wait4), so that the
+# figures are the calls' own, not the shell's around them.
+exec /usr/bin/python3 - "$clips" "$dataset" "$out" <<'PY'
+import json, os, re, subprocess, sys, time
+clips, dataset, out = sys.argv[1:4]
+rows = ["problem\tgem\tstatus\tcost\texpanded\tsearch_seconds\twall\tcpu"]
+n = wall_sum = cpu_sum = 0
+for f in sorted(os.listdir(os.path.join(dataset, "problems"))):
+    if not f.endswith(".pddl"):
+        continue
+    p = f[:-5]
+    text = open(os.path.join(dataset, "problems", f)).read()
+    for g in sorted(set(re.findall(r"gem[0-9]+", text))):
+        t0 = time.perf_counter()
+        proc = subprocess.Popen([clips, "plan", "--dataset", dataset, "--problem", p, "--goal", "(has human %s)" % g,
+                                 "--json"], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+        stdout = proc.stdout.read()
+        _, _, usage = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - t0
+        cpu = usage.ru_utime + usage.ru_stime
+        try:
+            j = json.loads(stdout.decode().strip().splitlines()[-1])
+            fields = "%s\t%g\t%s\t%.4f" % (j["status"], j["cost"], j["expanded"], j["seconds"])
+        except Exception:
+            fields = "error\t\t\t"
+        rows.append("%s\t%s\t%s\t%.4f\t%.4f" % (p, g, fields, wall, cpu))
+        n += 1
+        wall_sum += wall
+        cpu_sum += cpu
+with open(out, "w") as o:
+    o.write("\n".join(rows) + "\n")
+print("dkg-plan-times: %d tasks, %.3f s wall, %.3f s cpu in all" % (n, wall_sum, cpu_sum), file=sys.stderr)
+PY

@@ -126,7 +126,8 @@ void register_plan(CLI::App& app) {
     pddl::State start;
     if (!o->dataset.empty()) {
       if (o->problem.empty() && o->from_plan.empty()) throw InputError("--problem or --from-plan is required with --dataset");
-      auto ds = data::Dataset::load(o->dataset);
+      // A plan's files only when one is asked for.
+      auto ds = o->from_plan.empty() ? data::Dataset::load_problems(o->dataset) : data::Dataset::load(o->dataset);
       ds.set_grounding_limits(limits);
       pack = ds.pack_ptr();
       if (!o->from_plan.empty()) {

@@ -145,7 +145,10 @@ void register_serve(CLI::App& app) {
     sigemptyset(&stop);
     sigaddset(&stop, SIGINT);
     sigaddset(&stop, SIGTERM);
-    if (!o->stdio) pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+    if (!o->stdio) {
+      pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+      serve::load_http_module();
+    }
     std::vector<std::string> dirs = o->datasets;
     if (dirs.empty()) {
       const char* env = std::getenv("CLIPS_DATASET");

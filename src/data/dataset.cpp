@@ -320,7 +320,13 @@ std::vector<GoalSpec> folder_goal_set(const std::string& dir_in, const std::stri
   return out;
 }
 
-Dataset Dataset::load(const std::string& dir_in, bool require_plans) {
+Dataset Dataset::load(const std::string& dir, bool require_plans) {
+  return load(dir, require_plans ? PlanFiles::required : PlanFiles::optional);
+}
+
+Dataset Dataset::load_problems(const std::string& dir) { return load(dir, PlanFiles::skipped); }
+
+Dataset Dataset::load(const std::string& dir_in, PlanFiles plan_files_wanted) {
   if (debug_load()) std::fprintf(stderr, "dataset: loading %s\n", dir_in.c_str());
   Dataset ds;
   ds.dir_ = dir_in;
@@ -335,8 +341,8 @@ Dataset Dataset::load(const std::string& dir_in, bool require_plans) {
 
   fs::path obs_dir = dir / "plans" / "observed";
   fs::path comp_dir = dir / "plans" / "completed";
-  const bool has_plans = fs::is_directory(obs_dir);
-  if (!has_plans && require_plans) throw InputError("dataset directory '" + dir_in + "' has no plans/observed/");
+  const bool has_plans = plan_files_wanted != PlanFiles::skipped && fs::is_directory(obs_dir);
+  if (!has_plans && plan_files_wanted == PlanFiles::required) throw InputError("dataset directory '" + dir_in + "' has no plans/observed/");
   // Compiled once: compiling a std::regex writes libstdc++'s shared
   // ctype<char>::narrow cache (GCC PR 77704), a race when datasets load on
   // several threads at once; matching only reads.
@@ -423,6 +429,7 @@ Dataset Dataset::load(const std::string& dir_in, bool require_plans) {
         ds.goal_sets_[e.path().stem().string()] = parse_goal_set(pddl::read_text_file(path), path, ds.goal_defs_);
       }
   }
+  if (plan_files_wanted == PlanFiles::skipped) return ds;
   if (fs::path table = dir / "instructions.tsv"; fs::exists(table))
     apply_instruction_table(pddl::read_text_file(table.string()), table.string(), ds.plans_, ds.broken_);
   // stimuli.json (Doors-Keys-Gems) is optional: only `validate` reads it, to

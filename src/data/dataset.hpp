@@ -87,6 +87,10 @@ class Dataset {
   // `require_plans = false` also accepts a folder without plans/observed/ (a
   // domain folder with problems only: `clips serve`, Session::open_dataset).
   static Dataset load(const std::string& dir, bool require_plans = true);
+  // The domain, its pack, problems and goal sets only: no plan, utterance,
+  // instructions.tsv or stimuli.json is read (`clips plan --problem`, whose
+  // start-up time is most of a short search's).
+  static Dataset load_problems(const std::string& dir);
 
   const std::string& dir() const { return dir_; }
   // What clips knows about the domain beyond its PDDL.
@@ -123,6 +127,9 @@ class Dataset {
   const std::string& stimuli_error() const { return stimuli_error_; }
 
  private:
+  enum class PlanFiles { required, optional, skipped };
+  static Dataset load(const std::string& dir, PlanFiles plan_files);
+
   std::string dir_;
   domains::PackPtr pack_;
   std::shared_ptr<const pddl::Domain> domain_;

@@ -1,4 +1,5 @@
 #include "render/draw.hpp"
+#include "render/cairo_api.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "render/draw.hpp"
+#include "render/cairo_api.hpp"
 #include "render/render.hpp"
 #include "render/theme.hpp"
 

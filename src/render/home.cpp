@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/draw.hpp"
+#include "render/cairo_api.hpp"
 #include "render/render.hpp"
 #include "render/theme.hpp"
 

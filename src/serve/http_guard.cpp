@@ -207,7 +207,7 @@ std::optional<Reply> screen_request(const RequestHead& head, const GuardPolicy& 
     return r;
   }
   if (head.target.front() != '/') return error(400, "request target must be a path starting with '/'");
-  const std::string allow_api = Service::allowed_methods(path);
+  const std::string allow_api = policy.allowed_methods ? policy.allowed_methods(path) : "";
   if (allow_api.empty()) return error(404, "no route " + echo(head.method, 16) + " " + echo(path));
   const std::string allow = allow_api + ", OPTIONS";
   if (head.method == "OPTIONS") {

@@ -5,13 +5,14 @@
 // (405 with Allow, OPTIONS), and what a POST must declare (411/413/415).
 // Pure functions of the bytes received, so tests and fuzzers call them
 // without a socket; src/serve/frontends.cpp applies them per connection.
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "serve/service.hpp"
+#include "serve/messages.hpp"
 
 namespace clips::serve {
 
@@ -43,6 +44,9 @@ struct GuardPolicy {
   std::string listen_host;                // --host
   std::vector<std::string> allow_origins;  // --allow-origin ("*": any)
   size_t max_body_bytes = 64 * 1024;
+  // The methods a path answers ("GET, HEAD"; "" for no such path):
+  // Service::allowed_methods.
+  std::function<std::string(const std::string& path)> allowed_methods;
 };
 
 // The Host header's name without its port, lower-cased ("[::1]" keeps its brackets).
@@ -59,7 +63,7 @@ enum class OriginVerdict { none, same, allowed_cross, refused };
 OriginVerdict check_origin(const RequestHead& head, const GuardPolicy& policy);
 
 // The reply a request gets without reaching the handlers, or nothing when it
-// may go on. The Allow list of a path comes from Service::allowed_methods.
+// may go on. The Allow list of a path comes from policy.allowed_methods.
 std::optional<Reply> screen_request(const RequestHead& head, const GuardPolicy& policy);
 
 // A complete HTTP/1.1 response (with "Connection: close") for `reply`.

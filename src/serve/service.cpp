@@ -197,13 +197,6 @@ std::string json_error_text(const std::exception& e) {
   return echo(what.rfind("[json.exception.", 0) == 0 && tag != std::string::npos ? what.substr(tag + 2) : what, 300);
 }
 
-std::string echo(const std::string& text, size_t max_bytes) {
-  if (text.size() <= max_bytes) return text;
-  size_t cut = max_bytes;
-  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside a character
-  return text.substr(0, cut) + "... (" + std::to_string(text.size()) + " bytes)";
-}
-
 json parse_json_unique(const std::string& text) {
   // One set of keys per object being read, innermost last.
   std::vector<std::set<std::string>> open;

@@ -18,6 +18,7 @@
 #include "data/dataset.hpp"
 #include "language/lm/language_model.hpp"
 #include "serve/exchange_log.hpp"
+#include "serve/messages.hpp"
 #include "serve/play_session.hpp"
 
 namespace clips::serve {
@@ -38,25 +39,6 @@ struct ServiceLimits {
   PlayLimits play;
 };
 
-struct Reply {
-  int status = 200;
-  std::string body;
-  std::string content_type = "application/json";
-  std::vector<std::pair<std::string, std::string>> headers;  // extra headers (e.g. Allow on a 405)
-};
-
-// One request as the handlers see it. `owner`: the request proved it comes
-// from whoever started the server (HTTP: the owner token; stdio: always),
-// which may list and delete every session. `client`: who sent it, for the
-// per-client quotas (HTTP: the peer's address; "" when unknown).
-struct Request {
-  std::string method;
-  std::string path;
-  std::string body;
-  bool owner = false;
-  std::string client;
-};
-
 // Fills `out` with `n` bytes from the operating system's cryptographic
 // source (getrandom(2); /dev/urandom where it is missing). Throws
 // std::system_error when neither answers.
@@ -67,10 +49,6 @@ using RandomSource = std::function<void(void* out, size_t n)>;
 // library's "[json.exception.parse_error.101]" tag, quoting at most a few
 // bytes of the input.
 std::string json_error_text(const std::exception& e);
-
-// At most `max_bytes` bytes of `text` (cut at a UTF-8 character boundary,
-// with a note of the full length), for echoing request values in errors.
-std::string echo(const std::string& text, size_t max_bytes = 64);
 
 // Parses a JSON text, rejecting an object that repeats a key (anywhere in
 // the text): throws nlohmann::json::exception or std::invalid_argument

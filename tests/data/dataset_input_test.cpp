@@ -500,5 +500,22 @@ TEST_F(DatasetInput, BadStimuliFileDoesNotBlockThePlans) {
   for (const auto& r : rep.results) EXPECT_THAT(r.error, HasSubstr("stimuli.json")) << r.plan_id;
 }
 
+// `clips plan --problem` reads the problems only: a broken plan file or no
+// plans at all do not concern it.
+TEST_F(DatasetInput, ProblemsLoadWithoutReadingThePlans) {
+  fs::path dir = dkg_copy();
+  write(dir / "plans" / "observed" / "e1.9.bad.pddl", "(this is not a plan");
+  auto ds = Dataset::load_problems(dir.string());
+  EXPECT_TRUE(ds.plans().empty());
+  EXPECT_TRUE(ds.broken_plans().empty());
+  EXPECT_EQ(ds.problem_ids(), (std::vector<std::string>{"e1", "e2"}));
+  EXPECT_GT(ds.task("e2")->num_actions(), 0u);
+  // The full load still sees both.
+  EXPECT_THAT(load_error(dir), HasSubstr("e1.9.bad"));
+  fs::remove_all(dir / "plans");
+  EXPECT_EQ(Dataset::load_problems(dir.string()).problem_ids().size(), 2u);
+  EXPECT_THAT(load_error(dir), HasSubstr("has no plans/observed/"));
+}
+
 }  // namespace
 }  // namespace clips::data

@@ -61,6 +61,12 @@ for f in ./usr/bin/clips-assist ./usr/include/clips-assist/clips/clips.hpp ./usr
   grep -qx "$f" "$tmp/files" || fail "the package lacks $f"
 done
 grep -Eq '^\./usr/lib/.*libclips_assist\.a$' "$tmp/files" || fail "the package lacks libclips_assist.a"
+# The HTTP server is a module the CLI opens; libcurl and cairo are opened at
+# run time too, so the package must depend on them by name.
+grep -Eq '^\./usr/lib/.*/clips-assist/clips-http\.so$' "$tmp/files" || fail "the package lacks the HTTP module clips-http.so"
+for dep in libcurl4 libcairo2 libcpp-httplib; do
+  dpkg-deb -f "$deb" Depends | grep -q "$dep" || fail "Depends lacks $dep: $(dpkg-deb -f "$deb" Depends)"
+done
 grep -Eq '^\./usr/lib/.*libclips_assist\.so\.[0-9]+\.[0-9]+$' "$tmp/files" || fail "the package lacks libclips_assist.so.X.Y"
 dpkg-deb -f "$deb" Maintainer | grep -Eq '^[^<>]+ <[^@<> ]+@[^@<> ]+\.[a-z]+>$' \
   || fail "Maintainer has no e-mail address: $(dpkg-deb -f "$deb" Maintainer)"
@@ -106,6 +112,15 @@ example=/usr/share/clips-assist/examples/doors-keys-gems
 [ "$(command -v clips-assist)" = /usr/bin/clips-assist ] || fail "clips-assist is not /usr/bin/clips-assist"
 "${run[@]}" clips-assist infer --dataset "$example" --plan e1.1.keys --json >"$tmp/infer.json" || fail "clips-assist infer failed"
 grep -q '"posterior"' "$tmp/infer.json" || fail "clips-assist infer printed no posterior"
+# The installed CLI finds its HTTP module.
+"${run[@]}" clips-assist serve --port 0 --dataset "$example" >"$tmp/serve.log" 2>&1 &
+serve_pid=$!
+for _ in $(seq 100); do grep -q "listening on" "$tmp/serve.log" && break; sleep 0.1; done
+url=$(grep -o 'http://[^ ]*/' "$tmp/serve.log" | head -1)
+health=$(python3 -c 'import sys, urllib.request; print(urllib.request.urlopen(sys.argv[1], timeout=10).read().decode())' \
+         "${url}api/health" 2>&1 || true)
+kill "$serve_pid" 2>/dev/null; wait "$serve_pid" 2>/dev/null
+echo "$health" | grep -q '"sessions"' || fail "the installed clips-assist serve did not answer /api/health: $(cat "$tmp/serve.log")"
 
 # 2. A C++ consumer, both ways.
 cp "$src/examples/consumer/CMakeLists.txt" "$src/examples/consumer/main.cpp" "$tmp/work/"

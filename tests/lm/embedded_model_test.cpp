@@ -1,5 +1,7 @@
 // EmbeddedLanguageModel: normalisation, determinism, prompt handling, errors.
 #include <gtest/gtest.h>
+#include <iomanip>
+#include <map>
 
 #include <unistd.h>
 
@@ -588,6 +590,26 @@ TEST(EmbeddedCache, SecondInstanceLoadsWhatTheFirstTrainedAndScoresAlike) {
   EXPECT_EQ(fourth.score(batch), reference);
   EXPECT_EQ(fourth.cache_hits(), fourth.trained_blocks());
   std::filesystem::remove_all(dir);
+}
+
+// Cached models are shared by every build with the same training version,
+// so the version must move whenever training produces another model. The
+// scores a small reference training gives, recorded for the version: when
+// they change, bump kEmbeddedTrainingVersion and record the new ones.
+TEST(EmbeddedCache, TheTrainingVersionGoesWithWhatTrainingProduces) {
+  const std::map<int, std::vector<double>> recorded = {
+      {1, {-38.15526606519726, -31.461070506912517, -23.598095674832585, -35.386005874968397}},
+  };
+  const auto batch = probe_batch();
+  const std::vector<ScoreRequest> probes = {batch[0], batch[3], batch[10], batch.back()};
+  const std::vector<double> scores = EmbeddedLanguageModel(with_cache("off")).score(probes);
+  const auto it = recorded.find(kEmbeddedTrainingVersion);
+  ASSERT_NE(it, recorded.end()) << "record the scores of training version " << kEmbeddedTrainingVersion;
+  ASSERT_EQ(scores.size(), it->second.size());
+  for (size_t i = 0; i < scores.size(); ++i)
+    EXPECT_NEAR(scores[i], it->second[i], 1e-6 * std::max(1.0, std::abs(it->second[i])))
+        << "probe " << i << ": training changed what it produces (score " << std::setprecision(12) << scores[i]
+        << "); bump kEmbeddedTrainingVersion (src/language/lm/embedded_model.hpp) and record the new scores";
 }
 
 TEST(EmbeddedCache, DifferentTrainingDataGetsItsOwnEntry) {

@@ -2,6 +2,7 @@
 // socket: head parsing and its limits, Host and Origin rules, method and body
 // declarations; plus the duplicate-key JSON reader and the echo cut.
 #include "serve/http_guard.hpp"
+#include "serve/service.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +17,14 @@ RequestHead parse(const std::string& text) {
   return head;
 }
 
+// The service's routes, as `clips serve` gives them to the guard.
+GuardPolicy with_routes(GuardPolicy policy) {
+  policy.allowed_methods = &Service::allowed_methods;
+  return policy;
+}
+
 int screened(const std::string& text, const GuardPolicy& policy = {}) {
-  auto r = screen_request(parse(text), policy);
+  auto r = screen_request(parse(text), with_routes(policy));
   return r ? r->status : 0;
 }
 

@@ -1,6 +1,5 @@
 #include "language/lm/embedded_model.hpp"
 
-#include <dlfcn.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -107,29 +106,10 @@ std::vector<fs::path> regular_files(const fs::path& dir) {
   return out;
 }
 
-// The file holding this code: the executable, or the shared object (the
-// Python module) it was loaded from; "" if neither can be found.
-fs::path code_file() {
-  std::error_code ec;
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&code_file), &info) != 0 && info.dli_fname != nullptr && *info.dli_fname != '\0') {
-    const fs::path p = fs::canonical(info.dli_fname, ec);
-    if (!ec && fs::is_regular_file(p, ec)) return p;
-  }
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path() : exe;
-}
-
-// What a trained model depends on besides its training pairs: the code that
-// trains it (the file this code was loaded from: the executable, or the
-// Python module, whose interpreter stays the same when it is rebuilt) and
-// the WordNet database. "" if that file cannot be identified: then nothing
-// is cached.
+// What a trained model depends on besides its training pairs: the training
+// code's version and the WordNet database (its files' sizes and times).
 std::string cache_identity() {
-  const fs::path code = code_file();
-  if (code.empty()) return "";
-  std::string id = file_stamp(code);
-  if (id.empty()) return "";
+  std::string id = "training " + std::to_string(kEmbeddedTrainingVersion);
   std::string wn_dir = env_or_empty("WNSEARCHDIR");
   if (wn_dir.empty()) wn_dir = "/usr/share/wordnet";
   std::vector<std::string> stamps;

@@ -32,6 +32,13 @@ namespace clips::lm {
 
 class AlignmentModel;
 
+// What training produces, as far as the model cache is concerned: bump it
+// with any change to the code that trains (features, EM, the snapshot's
+// parameters), so that no build reads a model another training made. The
+// test EmbeddedCache.TheTrainingVersionGoesWithWhatTrainingProduces holds the
+// scores of a reference training for this version and fails when they move.
+inline constexpr int kEmbeddedTrainingVersion = 1;
+
 struct EmbeddedModelOptions {
   // Directory holding the corpus files. Empty: the language/ folder of
   // util::data_dir() ($CLIPS_DATA_DIR, the install prefix or the source tree).
@@ -49,8 +56,9 @@ struct EmbeddedModelOptions {
   // second; loading a snapshot a few milliseconds). Empty: $CLIPS_LM_CACHE_DIR
   // if set, else $XDG_CACHE_HOME/clips, else $HOME/.cache/clips. "off" (also
   // as the variable's value) disables the cache. An entry is keyed by the
-  // training pairs, the iterations, this executable's file and the WordNet
-  // database files, so a rebuilt program or changed data never reads a stale one.
+  // training pairs, the iterations, the noun senses, kEmbeddedTrainingVersion
+  // and the WordNet database files: a rebuilt program (or the Python module)
+  // with the same training reads what another trained.
   std::string cache_dir;
   // Let commands' objects also emit what they are for, from WordNet
   // (AlignmentModel::set_function_words); for domains read through a
@@ -92,7 +100,7 @@ class EmbeddedLanguageModel : public LanguageModel {
   std::string data_dir_;
   std::vector<TrainingPair> corpus_;
   std::string cache_dir_;         // empty: no cache
-  std::string cache_identity_;    // executable and WordNet files, part of every key
+  std::string cache_identity_;    // training version and WordNet files, part of every key
   size_t cache_hits_ = 0;
   size_t trained_ = 0;
   // Each block trains once, outside mutex_: two threads that need different

@@ -12,12 +12,47 @@
 #include <optional>
 #include <thread>
 
+#include "util/shared_library.hpp"
+
 namespace clips::lm {
+
+namespace {
+
+// libcurl, opened on first use: a call of the CLI that talks to no server
+// does not load it (with its TLS, SSH, LDAP and Kerberos libraries, most of
+// a short call's start-up time).
+struct Curl {
+  template <class F>
+  F get(const char* name) const { return lib.function<F>(name); }
+  util::SharedLibrary lib{{"libcurl.so.4"}, "the LM client needs libcurl (Debian: apt-get install libcurl4)"};
+  decltype(&::curl_global_init) global_init = get<decltype(&::curl_global_init)>("curl_global_init");
+  decltype(&::curl_getdate) getdate = get<decltype(&::curl_getdate)>("curl_getdate");
+  decltype(&::curl_easy_init) easy_init = get<decltype(&::curl_easy_init)>("curl_easy_init");
+  decltype(&::curl_easy_reset) easy_reset = get<decltype(&::curl_easy_reset)>("curl_easy_reset");
+  decltype(&::curl_easy_cleanup) easy_cleanup = get<decltype(&::curl_easy_cleanup)>("curl_easy_cleanup");
+  decltype(&::curl_easy_setopt) easy_setopt = get<decltype(&::curl_easy_setopt)>("curl_easy_setopt");
+  decltype(&::curl_easy_perform) easy_perform = get<decltype(&::curl_easy_perform)>("curl_easy_perform");
+  decltype(&::curl_easy_getinfo) easy_getinfo = get<decltype(&::curl_easy_getinfo)>("curl_easy_getinfo");
+  decltype(&::curl_easy_strerror) easy_strerror = get<decltype(&::curl_easy_strerror)>("curl_easy_strerror");
+  decltype(&::curl_slist_append) slist_append = get<decltype(&::curl_slist_append)>("curl_slist_append");
+  decltype(&::curl_slist_free_all) slist_free_all = get<decltype(&::curl_slist_free_all)>("curl_slist_free_all");
+};
+
+const Curl& curl() {
+  try {
+    static const Curl c;  // a failed load leaves it unset: the next call tries again
+    return c;
+  } catch (const util::SharedLibraryError& e) {
+    throw LmError(std::string("libcurl: ") + e.what());
+  }
+}
+
+}  // namespace
 
 void ensure_curl_initialised() {
   static std::once_flag once;
   std::call_once(once, [] {
-    if (curl_global_init(CURL_GLOBAL_DEFAULT) != CURLE_OK) {
+    if (curl().global_init(CURL_GLOBAL_DEFAULT) != CURLE_OK) {
       throw LmError("libcurl: curl_global_init failed");
     }
   });
@@ -115,7 +150,7 @@ std::optional<std::chrono::milliseconds> retry_after(
   if (end != it->second.c_str() && *end == '\0' && std::isfinite(seconds) && seconds >= 0) {
     return std::chrono::milliseconds(static_cast<long long>(std::min(seconds, 1e9) * 1000.0));
   }
-  std::time_t when = curl_getdate(it->second.c_str(), nullptr);
+  std::time_t when = curl().getdate(it->second.c_str(), nullptr);
   if (when < 0) return std::nullopt;
   auto wait = std::chrono::system_clock::from_time_t(when) - std::chrono::system_clock::now();
   return std::max(std::chrono::milliseconds(0),
@@ -156,7 +191,7 @@ HttpClient::HttpClient(HttpOptions options) : options_(options) {
 }
 
 HttpClient::~HttpClient() {
-  for (void* h : pool_) curl_easy_cleanup(static_cast<CURL*>(h));
+  for (void* h : pool_) curl().easy_cleanup(static_cast<CURL*>(h));
 }
 
 void* HttpClient::acquire_handle() const {
@@ -165,11 +200,11 @@ void* HttpClient::acquire_handle() const {
     if (!pool_.empty()) {
       void* h = pool_.back();
       pool_.pop_back();
-      curl_easy_reset(static_cast<CURL*>(h));  // keeps its connection cache
+      curl().easy_reset(static_cast<CURL*>(h));  // keeps its connection cache
       return h;
     }
   }
-  CURL* h = curl_easy_init();
+  CURL* h = curl().easy_init();
   if (h == nullptr) throw LmError("libcurl: curl_easy_init failed");
   return h;
 }
@@ -179,7 +214,7 @@ void HttpClient::release_handle(void* handle) const {
   if (pool_.size() < kMaxPooledHandles) {
     pool_.push_back(handle);
   } else {
-    curl_easy_cleanup(static_cast<CURL*>(handle));
+    curl().easy_cleanup(static_cast<CURL*>(handle));
   }
 }
 
@@ -193,13 +228,13 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
   } lease{this, static_cast<CURL*>(acquire_handle())};
 
   curl_slist* header_list = nullptr;
-  header_list = curl_slist_append(header_list, "Content-Type: application/json");
-  header_list = curl_slist_append(header_list, "Accept: application/json");
-  header_list = curl_slist_append(header_list, "Expect:");  // no 100-continue round trip
-  for (const auto& h : extra_headers) header_list = curl_slist_append(header_list, h.c_str());
+  header_list = curl().slist_append(header_list, "Content-Type: application/json");
+  header_list = curl().slist_append(header_list, "Accept: application/json");
+  header_list = curl().slist_append(header_list, "Expect:");  // no 100-continue round trip
+  for (const auto& h : extra_headers) header_list = curl().slist_append(header_list, h.c_str());
   struct ListGuard {
     curl_slist* l;
-    ~ListGuard() { curl_slist_free_all(l); }
+    ~ListGuard() { curl().slist_free_all(l); }
   } list_guard{header_list};
 
   const bool loopback = is_loopback(url_host(url));
@@ -215,30 +250,30 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
     t.max_body = options_.max_reply_bytes;
     char errbuf[CURL_ERROR_SIZE] = {0};
     CURL* h = lease.h;
-    curl_easy_setopt(h, CURLOPT_URL, url.c_str());
+    curl().easy_setopt(h, CURLOPT_URL, url.c_str());
     // HTTP(S) only: a file:// (or any other) base URL is refused by libcurl.
-    curl_easy_setopt(h, CURLOPT_PROTOCOLS_STR, "http,https");
-    curl_easy_setopt(h, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
-    curl_easy_setopt(h, CURLOPT_POST, 1L);
-    curl_easy_setopt(h, CURLOPT_POSTFIELDS, body.data());
-    curl_easy_setopt(h, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(body.size()));
-    curl_easy_setopt(h, CURLOPT_HTTPHEADER, header_list);
-    curl_easy_setopt(h, CURLOPT_WRITEFUNCTION, on_body);
-    curl_easy_setopt(h, CURLOPT_WRITEDATA, &t);
-    curl_easy_setopt(h, CURLOPT_HEADERFUNCTION, on_header);
-    curl_easy_setopt(h, CURLOPT_HEADERDATA, &t);
-    curl_easy_setopt(h, CURLOPT_ERRORBUFFER, errbuf);
-    curl_easy_setopt(h, CURLOPT_NOSIGNAL, 1L);  // timeouts without SIGALRM: threads are safe
-    curl_easy_setopt(h, CURLOPT_CONNECTTIMEOUT_MS,
+    curl().easy_setopt(h, CURLOPT_PROTOCOLS_STR, "http,https");
+    curl().easy_setopt(h, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
+    curl().easy_setopt(h, CURLOPT_POST, 1L);
+    curl().easy_setopt(h, CURLOPT_POSTFIELDS, body.data());
+    curl().easy_setopt(h, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(body.size()));
+    curl().easy_setopt(h, CURLOPT_HTTPHEADER, header_list);
+    curl().easy_setopt(h, CURLOPT_WRITEFUNCTION, on_body);
+    curl().easy_setopt(h, CURLOPT_WRITEDATA, &t);
+    curl().easy_setopt(h, CURLOPT_HEADERFUNCTION, on_header);
+    curl().easy_setopt(h, CURLOPT_HEADERDATA, &t);
+    curl().easy_setopt(h, CURLOPT_ERRORBUFFER, errbuf);
+    curl().easy_setopt(h, CURLOPT_NOSIGNAL, 1L);  // timeouts without SIGALRM: threads are safe
+    curl().easy_setopt(h, CURLOPT_CONNECTTIMEOUT_MS,
                      static_cast<long>(options_.connect_timeout.count()));
-    curl_easy_setopt(h, CURLOPT_TIMEOUT_MS, static_cast<long>(options_.total_timeout.count()));
-    curl_easy_setopt(h, CURLOPT_ACCEPT_ENCODING, "");  // whatever libcurl can decode
+    curl().easy_setopt(h, CURLOPT_TIMEOUT_MS, static_cast<long>(options_.total_timeout.count()));
+    curl().easy_setopt(h, CURLOPT_ACCEPT_ENCODING, "");  // whatever libcurl can decode
     // Local inference servers are never reached through a proxy.
-    if (loopback) curl_easy_setopt(h, CURLOPT_NOPROXY, "*");
+    if (loopback) curl().easy_setopt(h, CURLOPT_NOPROXY, "*");
 
-    CURLcode code = curl_easy_perform(h);
+    CURLcode code = curl().easy_perform(h);
     long status = 0;
-    if (code == CURLE_OK) curl_easy_getinfo(h, CURLINFO_RESPONSE_CODE, &status);
+    if (code == CURLE_OK) curl().easy_getinfo(h, CURLINFO_RESPONSE_CODE, &status);
 
     std::optional<std::chrono::milliseconds> server_wait;
     if (t.too_large) {
@@ -251,7 +286,7 @@ HttpResponse HttpClient::post_json(const std::string& url, const std::string& bo
       const bool retry = is_transient(code) || (is_timeout(code) && options_.retry_on_timeout &&
                                                 timeouts <= options_.max_timeout_retries);
       if (!retry || attempt >= max_attempts) {
-        std::string detail = errbuf[0] != '\0' ? std::string(errbuf) : curl_easy_strerror(code);
+        std::string detail = errbuf[0] != '\0' ? std::string(errbuf) : curl().easy_strerror(code);
         if (is_timeout(code)) {
           throw LmError("POST " + url + " timed out after " + attempts_text(attempt) +
                         " (connect timeout " + std::to_string(options_.connect_timeout.count()) +
