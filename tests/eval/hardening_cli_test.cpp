@@ -25,7 +25,7 @@ using testing::run;
 
 std::string clips() { return "timeout 120 " + testing::clips_binary(); }
 
-TEST(Issue46Cli, LmTimeoutBelowAMillisecondStillTimesOut) {
+TEST(CliHardening, LmTimeoutBelowAMillisecondStillTimesOut) {
   FakeOpenAiServer server;
   lm::fake::FakeFaults slow;
   slow.delay_ms = 3000;
@@ -42,7 +42,7 @@ TEST(Issue46Cli, LmTimeoutBelowAMillisecondStillTimesOut) {
   server.stop();
 }
 
-TEST(Issue46Cli, MultimodalAssistHonoursLmTimeout) {
+TEST(CliHardening, MultimodalAssistHonoursLmTimeout) {
   FakeOpenAiServer server;
   lm::fake::FakeFaults slow;
   slow.delay_ms = 3000;
@@ -58,7 +58,7 @@ TEST(Issue46Cli, MultimodalAssistHonoursLmTimeout) {
   server.stop();
 }
 
-TEST(Issue46Cli, BaseUrlsMustBeHttp) {
+TEST(CliHardening, BaseUrlsMustBeHttp) {
   const std::string listen = clips() + " listen --dataset " + testing::examples_dkg() + " --plan e1.1.keys";
   auto r = run(listen + " --lm-base-url ''");
   EXPECT_EQ(r.status, 2) << r.out;
@@ -75,7 +75,7 @@ TEST(Issue46Cli, BaseUrlsMustBeHttp) {
   EXPECT_TRUE(contains(r.out, "is not an http:// or https:// URL ($CLIPS_LM_BASE_URL)")) << r.out;
 }
 
-TEST(Issue46Cli, OptionsThatCannotRunAreUsageErrors) {
+TEST(CliHardening, OptionsThatCannotRunAreUsageErrors) {
   const std::string infer = clips() + " infer --dataset " + testing::examples_dkg() + " --plan e1.1.keys --particles 8";
   for (const std::string& cmd :
        {infer + " --rejuvenation-moves 1e9", infer + " --rejuvenation-moves 101", infer + " --proposal-groups 1000000000",
@@ -87,7 +87,7 @@ TEST(Issue46Cli, OptionsThatCannotRunAreUsageErrors) {
   }
 }
 
-TEST(Issue46Cli, FifoCorruptStimuliAndLatin1NamesAreInputErrors) {
+TEST(CliHardening, FifoCorruptStimuliAndLatin1NamesAreInputErrors) {
   {
     testing::ExamplesCopy copy("issue46-fifo");
     fs::remove(copy.file("domain.pddl"));
@@ -128,7 +128,7 @@ TEST(Issue46Cli, FifoCorruptStimuliAndLatin1NamesAreInputErrors) {
   }
 }
 
-TEST(Issue46Cli, UtterancesAreEchoedWithControlCharactersEscaped) {
+TEST(CliHardening, UtterancesAreEchoedWithControlCharactersEscaped) {
   const auto r = run(clips() + " listen --dataset " + testing::examples_dkg() +
                      " --plan e1.1.keys --utterance \"$(printf '\\033[31mCan you get the red key?')\"");
   EXPECT_EQ(r.status, 0) << r.out;

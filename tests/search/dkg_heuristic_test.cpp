@@ -631,9 +631,14 @@ TEST(DkgDistanceHeuristic, AdmissibleOnDatasetStates) {
   EXPECT_GT(checked, 0);
 }
 
-// ============================================ MST over-estimation measurement
+// ============================================ MST over-estimation
 
-TEST(DkgMstHeuristic, MeasureOverestimationOnSmallMaps) {
+// The paper's MST heuristic is not admissible, but close: on random states
+// of small hand-made maps and of the dataset's, it knows exactly which
+// states are dead ends, over-estimates on a few per cent of states and by
+// at most 15%. (Measured: 1.7% of states, at most 14%, under C1; 0.8%, 4%
+// under C3.) Its speed is bench/dkg_heuristic_bench.cpp's BM_DkgMstEstimate.
+TEST(DkgMstHeuristic, OverestimatesRarelyAndLittleAndFindsEveryDeadEnd) {
   struct Case {
     std::string label;
     std::shared_ptr<const pddl::Task> task;
@@ -691,38 +696,20 @@ TEST(DkgMstHeuristic, MeasureOverestimationOnSmallMaps) {
               << (n ? 100.0 * over / n : 0) << "%), mean excess " << (over ? sum_excess / over : 0)
               << ", max excess " << max_excess << " (" << worst << "), max ratio " << max_ratio
               << ", inf mismatches " << inf_mismatch << "\n";
-    EXPECT_GT(n, 0);
+    EXPECT_GT(n, ds ? 100 : 20);
+    EXPECT_EQ(inf_mismatch, 0);
+    EXPECT_LE(over, n / 20);
+    EXPECT_LE(max_ratio, 1.15) << worst;
   }
-  // The quirk on map D by itself: the free route is ignored.
+  // The quirk on map D by itself: the free route is ignored, and the
+  // estimate of the start stays below the true cost.
   Hand d = make_map_d();
   auto spec = d.spec("(has human gem1)", 1);
   Exact ex = exact_cost(*d.task, spec, d.task->initial_state(), 1000000);
-  std::cout << "[dkg-mst] map D s0: H = " << mst(d, "(has human gem1)", d.task->initial_state())
-            << ", h* = " << ex.cost << "\n";
-}
-
-TEST(DkgMstHeuristic, EstimateSpeedOnDataset) {
-  const std::string dir = dataset_dir();
-  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no dataset at " << dir;
-  auto ds = data::Dataset::load(dir);
-  for (const char* pid : {"1", "8", "11", "13"}) {
-    auto task = ds.task(pid);
-    model::Specification spec(task, "(has human gem2)", fixtures::dkg_profile(3));
-    DkgMstHeuristic h;
-    h.prepare(spec, task->initial_state());
-    std::mt19937 rng(1);
-    std::vector<State> states;
-    for (int i = 0; i < 2000; ++i) states.push_back(random_walk(*task, task->initial_state(), i % 60, rng));
-    double sink = 0;
-    for (auto& s : states) sink += std::min(h.estimate(s), 1e6);  // warm the memo
-    auto t0 = std::chrono::steady_clock::now();
-    for (int rep = 0; rep < 10; ++rep)
-      for (auto& s : states) sink += std::min(h.estimate(s), 1e6);
-    double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
-                (10.0 * states.size());
-    std::cout << "[dkg-mst] problem " << pid << ": " << ns << " ns per estimate (checksum " << sink << ")\n";
-    EXPECT_GT(sink, 0);
-  }
+  ASSERT_TRUE(ex.complete);
+  const double at_start = mst(d, "(has human gem1)", d.task->initial_state());
+  std::cout << "[dkg-mst] map D s0: H = " << at_start << ", h* = " << ex.cost << "\n";
+  EXPECT_LT(at_start, ex.cost);
 }
 
 // estimate() passes its running minimum down as a bound, so a clause that

@@ -1,4 +1,4 @@
-// issue 61 against a real `clips serve` on loopback: connections opened and
+// A real `clips serve` on loopback under hostile connections: connections opened and
 // left silent cannot lock other clients out (the oldest idle one is dropped
 // for a new one), and ::1 cannot serve beside 127.0.0.1 on the same port
 // (its URL printed with brackets).
@@ -32,7 +32,7 @@ struct Idle {
   }
 };
 
-TEST(Issue61Loopback, SilentConnectionsCannotLockOthersOut) {
+TEST(ServeConnections, SilentConnectionsCannotLockOthersOut) {
   ServerProcess server({}, {"--dataset", kExamples, "--max-connections", "16", "--max-client-connections", "8",
                             "--read-timeout", "60"});
   ASSERT_GT(server.port, 0) << server.all_lines();
@@ -50,7 +50,7 @@ TEST(Issue61Loopback, SilentConnectionsCannotLockOthersOut) {
   EXPECT_EQ(health(server.port, "127.0.0.9"), 200);
 }
 
-TEST(Issue61Loopback, Ipv6LoopbackBesideIpv4OnOnePortIsRefused) {
+TEST(ServeConnections, Ipv6LoopbackBesideIpv4OnOnePortIsRefused) {
   ServerProcess v4({}, {"--dataset", kExamples});
   ASSERT_GT(v4.port, 0) << v4.all_lines();
   ServerProcess v6({}, {"--host", "::1", "--dataset", kExamples}, v4.port);

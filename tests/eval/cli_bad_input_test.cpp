@@ -1,4 +1,4 @@
-// issue 61 on the command line: the hostile-user probe's reproductions, one
+// Bad input on the command line: a hostile user's probes, one
 // test each. Every one must end with a clear message and an exit status
 // below 8 (no internal error, no signal) within its limit; every command
 // runs under `timeout`, so a hang is a failure, not a stuck suite.
@@ -49,7 +49,7 @@ struct WorkshopCopy {
   std::string infer() const { return clips() + " infer --dataset " + ds + " --plan 1.1.table"; }
 };
 
-TEST(Issue61Cli, NanAndInfinityAreRefusedByEveryNumberFlag) {
+TEST(CliRefusesBadInput, NanAndInfinityAreRefusedByEveryNumberFlag) {
   const std::string infer = clips() + " infer --dataset " + ex() + " --plan e1.1.keys";
   const std::string plan = clips() + " plan --dataset " + ex() + " --problem e1 --goal '(has human gem1)'";
   const std::string listen = clips() + " listen --dataset " + ex() + " --plan e1.1.keys";
@@ -75,7 +75,7 @@ TEST(Issue61Cli, NanAndInfinityAreRefusedByEveryNumberFlag) {
   EXPECT_TRUE(contains(run(infer + " --utterance-exponent nan").out, "not a finite number"));
 }
 
-TEST(Issue61Cli, GenerateRefusesCountsItCannotFinish) {
+TEST(CliRefusesBadInput, GenerateRefusesCountsItCannotFinish) {
   testing::TempDir tmp("issue61-generate");
   const auto t0 = std::chrono::steady_clock::now();
   const auto r = run(clips(30) + " generate --problems 1000000000 --out " + tmp.str() + "/g");
@@ -90,7 +90,7 @@ TEST(Issue61Cli, GenerateRefusesCountsItCannotFinish) {
   }
 }
 
-TEST(Issue61Cli, BaseUrlWithAnEmptyPortIsRefused) {
+TEST(CliRefusesBadInput, BaseUrlWithAnEmptyPortIsRefused) {
   const std::string listen = clips() + " listen --dataset " + ex() + " --plan e1.1.keys";
   // libcurl reads "http://127.0.0.1:/v1" as port 80.
   auto r = run(listen + " --lm openai --lm-base-url http://127.0.0.1:/v1");
@@ -119,7 +119,7 @@ struct LmScore {
   }
 };
 
-TEST(Issue61Cli, RetryAfterIsCappedByTheTimeout) {
+TEST(CliRefusesBadInput, RetryAfterIsCappedByTheTimeout) {
   for (const std::string& wait : {std::string("100000"), std::string("Thu, 01 Jan 2099 00:00:00 GMT")}) {
     FakeOpenAiServer server;
     lm::fake::FakeFaults f;
@@ -141,7 +141,7 @@ TEST(Issue61Cli, RetryAfterIsCappedByTheTimeout) {
   }
 }
 
-TEST(Issue61Cli, ALogProbBeyondADoubleIsNamed) {
+TEST(CliRefusesBadInput, ALogProbBeyondADoubleIsNamed) {
   FakeOpenAiServer server;
   lm::fake::FakeFaults f;
   f.reply = lm::fake::FakeReply::HugeNumber;
@@ -156,7 +156,7 @@ TEST(Issue61Cli, ALogProbBeyondADoubleIsNamed) {
   EXPECT_FALSE(contains(r.out, "not valid JSON")) << r.out;
 }
 
-TEST(Issue61Cli, ANoOpActionWithTwoParametersIsRefusedAtLoad) {
+TEST(CliRefusesBadInput, ANoOpActionWithTwoParametersIsRefusedAtLoad) {
   WorkshopCopy w("issue61-noop");
   json p = w.pack();
   p["roles"]["noop_action"] = "move";  // (move ?a ?from ?to)
@@ -166,7 +166,7 @@ TEST(Issue61Cli, ANoOpActionWithTwoParametersIsRefusedAtLoad) {
   EXPECT_TRUE(contains(r.out, "roles.noop_action: action 'move' has 3 parameters")) << r.out;
 }
 
-TEST(Issue61Cli, ARoleThatCannotActIsRefusedAtLoad) {
+TEST(CliRefusesBadInput, ARoleThatCannotActIsRefusedAtLoad) {
   WorkshopCopy w("issue61-principal");
   json p = w.pack();
   p["roles"]["principal"] = "rack";  // a station
@@ -177,7 +177,7 @@ TEST(Issue61Cli, ARoleThatCannotActIsRefusedAtLoad) {
   EXPECT_TRUE(contains(r.out, "the roles must be agents")) << r.out;
 }
 
-TEST(Issue61Cli, AGoalThatCanNeverHoldIsRefusedByInferBenchAndValidate) {
+TEST(CliRefusesBadInput, AGoalThatCanNeverHoldIsRefusedByInferBenchAndValidate) {
   WorkshopCopy w("issue61-goal");
   w.write("goals/definitions/table.pddl", "(and (made table) (not (made table)))\n");
   const auto t0 = std::chrono::steady_clock::now();
@@ -198,7 +198,7 @@ TEST(Issue61Cli, AGoalThatCanNeverHoldIsRefusedByInferBenchAndValidate) {
   EXPECT_TRUE(contains(v.out, "can never hold")) << v.out;
 }
 
-TEST(Issue61Cli, CodeOfAnotherDomainIsNamed) {
+TEST(CliRefusesBadInput, CodeOfAnotherDomainIsNamed) {
   WorkshopCopy w("issue61-code");
   json p = w.pack();
   p["code"] = "doors-keys-gems";
@@ -209,7 +209,7 @@ TEST(Issue61Cli, CodeOfAnotherDomainIsNamed) {
   EXPECT_FALSE(contains(r.out, "unknown function")) << r.out;
 }
 
-TEST(Issue61Cli, FewShotAndCorpusErrorsAreInputErrors) {
+TEST(CliRefusesBadInput, FewShotAndCorpusErrorsAreInputErrors) {
   WorkshopCopy w("issue61-fewshot");
   // A few-shot line with a field missing, and one whose command the
   // language model cannot read (it was exit 6 at the first scoring, naming
@@ -237,7 +237,7 @@ TEST(Issue61Cli, FewShotAndCorpusErrorsAreInputErrors) {
   EXPECT_TRUE(contains(r.out, "embedded_corpus")) << r.out;
 }
 
-TEST(Issue61Cli, ACorpusLineErrorIsAnInputErrorNamingFileAndLine) {
+TEST(CliRefusesBadInput, ACorpusLineErrorIsAnInputErrorNamingFileAndLine) {
   testing::TempDir tmp("issue61-corpus-line");
   std::ofstream(tmp.path / "mine.tsv") << "# a corpus\n(pickup you key1)\tGet the key.\n(pickup you key1 where\tOops.\n";
   lm::EmbeddedModelOptions o;
@@ -252,7 +252,7 @@ TEST(Issue61Cli, ACorpusLineErrorIsAnInputErrorNamingFileAndLine) {
   }
 }
 
-TEST(Issue61Cli, AHugePackValueIsNotEchoedWhole) {
+TEST(CliRefusesBadInput, AHugePackValueIsNotEchoedWhole) {
   WorkshopCopy w("issue61-huge");
   json p = w.pack();
   p["roles"]["noop_action"] = std::string(1 << 20, 'w');
@@ -264,7 +264,7 @@ TEST(Issue61Cli, AHugePackValueIsNotEchoedWhole) {
   EXPECT_LT(r.out.size(), 4000u);
 }
 
-TEST(Issue61Cli, ManyProfilesAndRepeatedSalientActionsAreRefusedQuickly) {
+TEST(CliRefusesBadInput, ManyProfilesAndRepeatedSalientActionsAreRefusedQuickly) {
   WorkshopCopy w("issue61-profiles");
   json p = w.pack();
   json profiles = json::array();

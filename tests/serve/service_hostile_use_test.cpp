@@ -1,4 +1,4 @@
-// issue 61 in the request handlers of `clips serve` (no socket): session ids
+// The request handlers of `clips serve` under hostile use (no socket): session ids
 // from the OS source, per-client quotas, room made on a full server, JSON
 // errors in our own words, a domain without a pack, and a problem too large
 // for the planner's tables answered 4xx.
@@ -42,7 +42,7 @@ struct FakeClock {
   }
 };
 
-struct Issue61Service : ::testing::Test {
+struct ServiceUnderHostileUse : ::testing::Test {
   FakeClock clock;
   std::unique_ptr<Service> make(ServiceLimits limits = {}) {
     return std::make_unique<Service>(std::vector<std::string>{kExamples}, limits, shared_lm(),
@@ -58,7 +58,7 @@ struct Issue61Service : ::testing::Test {
   }
 };
 
-TEST_F(Issue61Service, SessionIdsAreTheRandomSourcesBytes) {
+TEST_F(ServiceUnderHostileUse, SessionIdsAreTheRandomSourcesBytes) {
   auto s = make();
   // A source that counts: each id must be the next 16 bytes, in hex, and
   // nothing else (no generator of our own between the source and the id).
@@ -72,7 +72,7 @@ TEST_F(Issue61Service, SessionIdsAreTheRandomSourcesBytes) {
   EXPECT_EQ(*next, 32u);
 }
 
-TEST_F(Issue61Service, TheDefaultSourceIsTheKernels) {
+TEST_F(ServiceUnderHostileUse, TheDefaultSourceIsTheKernels) {
   // The server's ids come from os_random_bytes unless a test replaces it,
   // and os_random_bytes reads getrandom(2), not a generator seeded once.
   const std::string source = read(std::string(CLIPS_SOURCE_DIR) + "/src/serve/service.cpp");
@@ -99,7 +99,7 @@ TEST_F(Issue61Service, TheDefaultSourceIsTheKernels) {
   EXPECT_EQ(ids.size(), 8u);
 }
 
-TEST_F(Issue61Service, OneClientCannotTakeEverySession) {
+TEST_F(ServiceUnderHostileUse, OneClientCannotTakeEverySession) {
   ServiceLimits lim;
   lim.max_sessions = 6;
   lim.max_client_sessions = 2;
@@ -115,7 +115,7 @@ TEST_F(Issue61Service, OneClientCannotTakeEverySession) {
   EXPECT_EQ(s->live_sessions(), 4u);
 }
 
-TEST_F(Issue61Service, AFullServerMakesRoomFromTheBiggestHolderOnceItIsIdle) {
+TEST_F(ServiceUnderHostileUse, AFullServerMakesRoomFromTheBiggestHolderOnceItIsIdle) {
   ServiceLimits lim;
   lim.max_sessions = 3;
   lim.max_client_sessions = 0;  // only the total: the filler may take all
@@ -137,7 +137,7 @@ TEST_F(Issue61Service, AFullServerMakesRoomFromTheBiggestHolderOnceItIsIdle) {
   EXPECT_EQ(s->live_sessions(), 3u);
 }
 
-TEST_F(Issue61Service, MalformedJsonIsDescribedInOurWords) {
+TEST_F(ServiceUnderHostileUse, MalformedJsonIsDescribedInOurWords) {
   auto s = make();
   const Reply r = s->handle("POST", "/api/sessions", R"j({"dataset": doors})j");
   ASSERT_EQ(r.status, 400);
@@ -151,7 +151,7 @@ TEST_F(Issue61Service, MalformedJsonIsDescribedInOurWords) {
   EXPECT_NE(body(big)["error"].get<std::string>().find("the number 1e999 is too large"), std::string::npos) << big.body;
 }
 
-TEST_F(Issue61Service, DomainAndProblemWithoutAPackPlayWithTheServersPack) {
+TEST_F(ServiceUnderHostileUse, DomainAndProblemWithoutAPackPlayWithTheServersPack) {
   auto s = make();
   const json request = {{"domain", read(kExamples + "/domain.pddl")}, {"problem", read(kExamples + "/problems/e1.pddl")}};
   const Reply r = s->handle("POST", "/api/sessions", request.dump());
@@ -161,7 +161,7 @@ TEST_F(Issue61Service, DomainAndProblemWithoutAPackPlayWithTheServersPack) {
 
 // 45 objects and one three-object action: 91,125 actions applicable in the
 // first state, more than the state graph's 65,535 (the probe's 500).
-TEST_F(Issue61Service, AProblemTooLargeForThePlannersTablesIs4xx) {
+TEST_F(ServiceUnderHostileUse, AProblemTooLargeForThePlannersTablesIs4xx) {
   std::string objects;
   for (int i = 0; i < 45; ++i) objects += " o" + std::to_string(i);
   const std::string domain =
