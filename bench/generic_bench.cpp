@@ -31,10 +31,10 @@ static void BM_GenericBeliefUpdateStep(benchmark::State& st, const std::string& 
   auto lm = language::make_dataset_language_model("embedded", {}, ds);
   std::vector<double> steps, starts;
   // The embedded LM loads (or trains) on first use: not a belief update.
-  std::vector<const data::PlanRecord*> plans;
+  std::vector<std::string> problems;
   for (const auto& p : ds.plans())
-    if (p.evaluated) plans.push_back(&p);
-  eval::warm_up_language_model(*lm, ds, plans);
+    if (p.evaluated) problems.push_back(p.problem_id);
+  language::warm_up_language_model(*lm, ds, problems);
   for (auto _ : st) {
     steps.clear();
     starts.clear();

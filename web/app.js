@@ -1,8 +1,10 @@
 // The clips play page: talks to the JSON API of `clips serve` (docs/api.md).
 // Plain JS, no libraries, nothing fetched from outside the server.
 //
-// Every request goes through one queue (enqueue/pump): keys pressed while the
-// robot thinks wait their turn and are applied in order, never dropped.
+// Requests go one at a time (enqueue/pump). While one is in flight the
+// assistant is thinking: the page says so, Start, Say, the menus and the move
+// buttons are disabled, and a key pressed then is not played (nor queued for
+// later, in a state the player has not seen); it is counted in ui.ignoredKeys.
 'use strict';
 
 const COLOURS = { red: '#d62728', yellow: '#e6b800', blue: '#1f77b4', green: '#2ca02c', pink: '#e377c2',
@@ -17,7 +19,7 @@ const KEY_MOVES = { ArrowUp: 'up', ArrowDown: 'down', ArrowLeft: 'left', ArrowRi
 const $ = (id) => document.getElementById(id);
 
 const ui = { catalogue: null, session: null, state: null, busy: false, queue: [], maxQueued: 0, chartStyles: [],
-             utteranceBytes: 500 };
+             utteranceBytes: 500, ignoredKeys: 0, thinkingTimer: null };
 window.clips = ui;  // for tests and the curious
 
 async function api(method, path, body) {
@@ -97,7 +99,7 @@ function showError(message) {
 
 function showQueue() {
   const moves = ui.queue.filter((t) => t.kind === 'move').length;
-  ui.maxQueued = Math.max(ui.maxQueued, moves);  // the most keys that ever waited (tests read it)
+  if (ui.busy) ui.maxQueued = Math.max(ui.maxQueued, moves);  // the most keys that ever waited behind a request (tests read it)
   $('status').dataset.queued = String(moves);
   const q = $('queued');
   if (q) q.textContent = moves ? ` (${moves} key${moves > 1 ? 's' : ''} queued)` : '';
@@ -105,6 +107,11 @@ function showQueue() {
 
 function setEnabled(on) {
   document.body.dataset.busy = on ? '0' : '1';
+  // Said after a moment, so that quick answers do not flicker.
+  clearTimeout(ui.thinkingTimer);
+  if (on) $('thinking').hidden = true;
+  else ui.thinkingTimer = setTimeout(() => { $('thinking').hidden = !ui.busy; }, 150);
+  for (const e of document.querySelectorAll('#start, #dataset, #problem, #plan, #method')) e.disabled = !on;
   const done = !!(ui.state && ui.state.reached_goal);
   for (const b of document.querySelectorAll('#undo, #reset')) b.disabled = !on || !ui.session;
   for (const b of document.querySelectorAll('#controls button')) b.disabled = !on || !ui.session || done;
@@ -165,6 +172,11 @@ function act(action) {
 // in the state the earlier keys and the robot's replies led to.
 function move(dir) {
   if (!ui.session) return;
+  if (ui.busy) {  // thinking: the key is not played
+    ui.ignoredKeys++;
+    $('thinking').hidden = false;
+    return;
+  }
   if (ui.state && ui.state.reached_goal && !ui.busy) { log(goalNote(), 'err'); return; }
   enqueue('move', async () => {
     if (ui.state.reached_goal) { log(goalNote(), 'err'); return; }
@@ -208,7 +220,7 @@ function updateBytes() {
   const over = n > max;
   $('bytes').textContent = `${n}/${max} bytes`;
   $('bytes').className = over ? 'err' : '';
-  $('send').disabled = !ui.session || over || n === 0;
+  $('send').disabled = !ui.session || ui.busy || over || n === 0;
   if (over) {
     $('say-error').textContent = `Too long: ${n} bytes; the server takes at most ${max} bytes (UTF-8; letters such as é take two).`;
     $('say-error').hidden = false;
@@ -616,7 +628,7 @@ $('say').onsubmit = (e) => {
   e.preventDefault();
   const text = $('utterance').value.trim();
   updateBytes();
-  if (!text || !ui.session || utf8Bytes(text) > ui.utteranceBytes) return;  // the counter says why
+  if (!text || !ui.session || ui.busy || utf8Bytes(text) > ui.utteranceBytes) return;  // the counter says why
   say(text);
   focusBoard();
 };

@@ -56,6 +56,7 @@ void register_serve(CLI::App& app) {
     int port = 8080;
     std::vector<std::string> datasets;
     bool stdio = false;
+    bool lm_on_demand = false;
     int threads = 8;
     double read_timeout = 10;
     int max_connections = 128;
@@ -74,6 +75,9 @@ void register_serve(CLI::App& app) {
                   "requests name a dataset by its folder's base name and never give paths (default: "
                   "$CLIPS_DATASET/doors-keys-gems and /virtual-home, else ../shared/dataset/...)");
   cmd->add_flag("--stdio", o->stdio, "Read one JSON request per line on stdin, answer one per line on stdout");
+  cmd->add_flag("--lm-on-demand", o->lm_on_demand,
+                "Build each dataset's language model at its first instruction instead of before serving (start-up "
+                "is quicker, the first instruction on each domain slower: up to a minute for a new domain)");
   cmd->add_option("--threads", o->threads, "Session requests handled at once (default 8, at most 256)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--read-timeout", o->read_timeout,
@@ -174,6 +178,7 @@ void register_serve(CLI::App& app) {
       if (flags.kind != "embedded" || !ds.pack().spec().embedded_corpus.empty()) return lm;
       return language::make_dataset_language_model(flags.kind, lm_options(flags), ds);
     });
+    if (!o->lm_on_demand) service.prepare_language_models(std::cerr);
     if (o->stdio) {
       g_exit_code = serve::run_stdio(service, std::cin, std::cout);
       return;

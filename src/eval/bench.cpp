@@ -206,42 +206,6 @@ std::string multimodal_model(const ExperimentOptions& e) {
 
 }  // namespace
 
-// The embedded model trains (or loads from its cache) one model per prompt
-// block of few-shot examples, on first use: score one example under each
-// block the plans will use (the speaker model's, whose commands mark the
-// numbered places of each problem as the utterance model does; the literal
-// listener's; the empty prompt's) in one batch, so that they train side by
-// side before the plans start.
-void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds,
-                            const std::vector<const data::PlanRecord*>& plans) {
-  std::vector<lm::ScoreRequest> batch;
-  try {
-    auto add = [&](const std::vector<commands::FewShotExample>& examples) {
-      if (!examples.empty())
-        batch.push_back({commands::build_prompt(examples, examples.front().command),
-                         commands::utterance_continuation(examples.front().utterance)});
-    };
-    const std::vector<commands::FewShotExample> speaker = ds.pack().fewshot(/*literal=*/false);
-    std::set<std::string> problems;
-    std::set<std::vector<std::string>> numberings;
-    for (const data::PlanRecord* plan : plans) {
-      if (!problems.insert(plan->problem_id).second) continue;
-      const pddl::Problem problem = pddl::load_problem(*ds.domain(), ds.problem_path(plan->problem_id), false);
-      const auto numbered = language::numbered_place_names(*ds.domain(), problem, ds.pack().language());
-      if (!numberings.insert(numbered).second) continue;
-      std::vector<commands::FewShotExample> marked = speaker;
-      for (commands::FewShotExample& ex : marked) ex.command = util::mark_numbered(ex.command, numbered);
-      add(marked);
-    }
-    if (ds.pack().spec().literal.enabled) add(language::literal_listener_setup(ds.pack_ptr()).examples);
-    // The empty prompt (a joint plan with nothing to say) has a model of its own.
-    batch.push_back({std::string(commands::kEmptyCommandPrompt), commands::utterance_continuation("ok")});
-    lm.score(batch);
-  } catch (const std::exception&) {
-    // Only a warm-up: a pack without examples loads when it is first used.
-  }
-}
-
 BenchReport run_bench(const BenchOptions& opts) {
   auto t0 = std::chrono::steady_clock::now();
   if (opts.shard_count < 1 || opts.shard < 1 || opts.shard > opts.shard_count)
@@ -276,7 +240,11 @@ BenchReport run_bench(const BenchOptions& opts) {
   // that is model loading, not a step of the first plan to hear an
   // instruction, so it happens before the plans start (their step times are
   // reported). Other backends are not called for it.
-  if (rep.lm.find("embedded") != std::string::npos) warm_up_language_model(*lm, ds0, todo);
+  if (rep.lm.find("embedded") != std::string::npos) {
+    std::vector<std::string> problems;
+    for (const data::PlanRecord* p : todo) problems.push_back(p->problem_id);
+    language::warm_up_language_model(*lm, ds0, problems);
+  }
   rep.speaker_rule = inference::to_string(opts.experiment.speaker_rule);
   rep.utterance_timing = inference::to_string(opts.experiment.utterance_timing);
   rep.qa_floor = assist::to_string(opts.experiment.qa_floor);

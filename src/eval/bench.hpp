@@ -85,13 +85,6 @@ struct BenchReport {
 
 BenchReport run_bench(const BenchOptions& opts);
 
-// Scores one request under each prompt block `plans` use (the speaker
-// model's for each problem's numbered places, the literal listener's, the
-// empty prompt's), so the embedded model trains or loads them now, side by
-// side, rather than in a timed step. Errors are ignored: a warm-up only.
-void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds,
-                            const std::vector<const data::PlanRecord*>& plans);
-
 // Latency over a report's plans (issue 43), in seconds: n values, their
 // median, 95th percentile (the value at rank floor(0.95 (n - 1)) of the
 // sorted values, as the Google benchmarks read it) and maximum.

@@ -16,6 +16,7 @@
 #include "language/lm/cached_model.hpp"
 #include "language/lm/embedded_model.hpp"
 #include "language/lm/openai_model.hpp"
+#include "pddl/parser.hpp"
 #include "util/data_dir.hpp"
 #include "util/error.hpp"
 #include "util/numbered_names.hpp"
@@ -146,6 +147,41 @@ std::map<std::string, std::string> dataset_type_nouns(const data::Dataset& datas
       if (!out.count(type)) out[type] = lm::WordNetLexicon::instance().type_noun(type);
   }
   return out;
+}
+
+// The embedded model trains (or loads from its cache) one model per prompt
+// block of few-shot examples, on first use: score one example under each
+// block the problems will use (the speaker model's, whose commands mark the
+// numbered places of each problem as the utterance model does; the literal
+// listener's; the empty prompt's) in one batch, so that they train side by
+// side before the plans start.
+void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds, const std::vector<std::string>& problem_ids) {
+  std::vector<lm::ScoreRequest> batch;
+  try {
+    auto add = [&](const std::vector<commands::FewShotExample>& examples) {
+      if (!examples.empty())
+        batch.push_back({commands::build_prompt(examples, examples.front().command),
+                         commands::utterance_continuation(examples.front().utterance)});
+    };
+    const std::vector<commands::FewShotExample> speaker = ds.pack().fewshot(/*literal=*/false);
+    std::set<std::string> problems;
+    std::set<std::vector<std::string>> numberings;
+    for (const std::string& id : problem_ids) {
+      if (!problems.insert(id).second) continue;
+      const pddl::Problem problem = pddl::load_problem(*ds.domain(), ds.problem_path(id), false);
+      const auto numbered = numbered_place_names(*ds.domain(), problem, ds.pack().language());
+      if (!numberings.insert(numbered).second) continue;
+      std::vector<commands::FewShotExample> marked = speaker;
+      for (commands::FewShotExample& ex : marked) ex.command = util::mark_numbered(ex.command, numbered);
+      add(marked);
+    }
+    if (ds.pack().spec().literal.enabled) add(literal_listener_setup(ds.pack_ptr()).examples);
+    // The empty prompt (a joint plan with nothing to say) has a model of its own.
+    batch.push_back({std::string(commands::kEmptyCommandPrompt), commands::utterance_continuation("ok")});
+    lm.score(batch);
+  } catch (const std::exception&) {
+    // Only a warm-up: a pack without examples loads when it is first used.
+  }
 }
 
 std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string& kind,

@@ -103,6 +103,13 @@ std::shared_ptr<lm::LanguageModel> make_dataset_language_model(const std::string
                                                                const LanguageModelOptions& options,
                                                                const data::Dataset& dataset);
 
+// Scores one request under each prompt block the problems use (the speaker
+// model's for each problem's numbered places, the literal listener's, the
+// empty prompt's), so that the embedded model trains or loads them now, side
+// by side, rather than at the first instruction. Errors are ignored: a
+// warm-up only (the bench before its plans, `clips serve` before it listens).
+void warm_up_language_model(lm::LanguageModel& lm, const data::Dataset& ds, const std::vector<std::string>& problem_ids);
+
 // ---- listener setup ---------------------------------------------------------
 
 struct LiteralListenerSetup {

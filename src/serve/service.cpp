@@ -12,9 +12,12 @@
 #include <set>
 #include <system_error>
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
+#include <ostream>
 
 #include "engine/options.hpp"
+#include "language/listener.hpp"
 #include "util/error.hpp"
 #include "util/program_name.hpp"
 
@@ -329,6 +332,19 @@ std::shared_ptr<lm::LanguageModel> Service::dataset_lm(Served& served) {
   std::lock_guard lock(served.lm_mutex);
   if (!served.lm) served.lm = dataset_lm_(*served.dataset);
   return served.lm;
+}
+
+void Service::prepare_language_models(std::ostream& log) {
+  size_t k = 0;
+  for (auto& [name, served] : datasets_) {
+    ++k;
+    const auto t0 = Clock::now();
+    log << util::program_name() << " serve: preparing the language model of " << name << " (" << k << " of "
+        << datasets_.size() << ")..." << std::flush;
+    language::warm_up_language_model(*dataset_lm(served), *served.dataset, served.dataset->problem_ids());
+    log << " ready in " << fmt::format("{:.1f}", std::chrono::duration<double>(Clock::now() - t0).count()) << " s\n"
+        << std::flush;
+  }
 }
 
 std::shared_ptr<lm::LanguageModel> Service::text_lm(const PlaySetup& setup, const std::string& key) {

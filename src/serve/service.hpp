@@ -9,6 +9,7 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <iosfwd>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -84,6 +85,11 @@ class Service {
   // corpus). Models are built at a domain's first session and kept.
   void set_domain_language_model(DomainLanguageModel f) { domain_lm_ = std::move(f); }
   void set_dataset_language_model(DatasetLanguageModel f) { dataset_lm_ = std::move(f); }
+  // Builds each served dataset's model now and trains (or loads from the
+  // cache) every prompt block its problems use, one line per dataset on
+  // `log`, so that a session's first instruction does not wait for a
+  // training. Call after the setters, before serving.
+  void prepare_language_models(std::ostream& log);
   // Where session ids come from (16 bytes each, written as 32 hex digits):
   // os_random_bytes unless a test says otherwise. Ids must not be guessable:
   // whoever knows one may read and play that session.

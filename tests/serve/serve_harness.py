@@ -22,7 +22,9 @@ class Server:
                                      env=env or os.environ.copy())
         self.log = []
         self.port = None
-        deadline = time.time() + 60
+        # Before it listens the server trains (or loads from the cache) each
+        # dataset's language model: a cold cache takes up to a minute per domain.
+        deadline = time.time() + 300
         while time.time() < deadline:
             line = self.proc.stderr.readline()
             if not line:
