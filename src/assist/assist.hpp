@@ -67,7 +67,7 @@ AssistRule parse_assist_rule(const std::string& text);  // throws InputError
 // assistant procrastinates although its goal is reachable.
 //   DeadEnds: only -inf is replaced (the stated purpose; default).
 //   Horizon:  the formula as written (the reference code).
-// docs/decisions.md has the numbers.
+// docs/decisions.md has the reasons.
 enum class QaFloor { DeadEnds, Horizon };
 std::string to_string(QaFloor f);         // "dead-ends", "horizon"
 QaFloor parse_qa_floor(const std::string& text);  // throws InputError

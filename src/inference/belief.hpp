@@ -107,7 +107,7 @@ struct InferenceOptions {
   double p_speak = 0.05;
   // Which state explains an utterance annotated after k actions: After = s_k, the state the speaker was in when speaking,
   // with the policies refined at s_k (the paper's model; default); Before =
-  // s_{k-1}, the reference code's alignment. docs/decisions.md has the numbers.
+  // s_{k-1}, the reference code's alignment. docs/decisions.md has the reasons.
   UtteranceTiming utterance_timing = UtteranceTiming::After;
   // Refinement at the assistant's turns, where no action is scored (see AssistantTurns).
   AssistantTurns assistant_turns = AssistantTurns::Taken;
