@@ -60,6 +60,15 @@ function onProblem() {
   const p = ds && ds.problems.find((q) => q.id === $('problem').value);
   // A problem without a recorded plan plays too: its goals follow the pack's rule.
   fillSelect($('plan'), p && p.plans.length ? p.plans : [''], (v) => v || '(no recorded plan)');
+  onPlan();
+}
+// The player's goal, kept from the assistant: the plan's true goal, none, or
+// any candidate goal of the problem.
+function onPlan() {
+  const ds = currentDataset();
+  const p = ds && ds.problems.find((q) => q.id === $('problem').value);
+  const choices = ($('plan').value ? ['plan'] : []).concat(['none'], p && p.goals ? p.goals : []);
+  fillSelect($('goal'), choices, (v) => v === 'plan' ? "the plan's goal" : v === 'none' ? 'none (play freely)' : v);
 }
 
 async function loadCatalogue() {
@@ -111,7 +120,7 @@ function setEnabled(on) {
   clearTimeout(ui.thinkingTimer);
   if (on) $('thinking').hidden = true;
   else ui.thinkingTimer = setTimeout(() => { $('thinking').hidden = !ui.busy; }, 150);
-  for (const e of document.querySelectorAll('#start, #dataset, #problem, #plan, #method')) e.disabled = !on;
+  for (const e of document.querySelectorAll('#start, #dataset, #problem, #plan, #goal, #method')) e.disabled = !on;
   const done = !!(ui.state && ui.state.reached_goal);
   for (const b of document.querySelectorAll('#undo, #reset')) b.disabled = !on || !ui.session;
   for (const b of document.querySelectorAll('#controls button')) b.disabled = !on || !ui.session || done;
@@ -130,6 +139,8 @@ function start() {
     $('log').innerHTML = '';
     const body = { dataset: $('dataset').value, problem: $('problem').value, method: $('method').value };
     if ($('plan').value) body.plan = $('plan').value;
+    if ($('goal').value === 'none') body.goal = null;
+    else if ($('goal').value !== 'plan') body.goal = $('goal').value;
     const s = await api('POST', '/api/sessions', body);
     ui.session = s.id;
     log('started ' + s.dataset + ' problem ' + s.problem + (s.plan ? ' (' + s.plan + ')' : ' (no recorded plan)'));
@@ -240,8 +251,11 @@ function show(s) {
     ui.queue = ui.queue.filter((t) => t.kind !== 'move');
   }
   $('status').className = done ? 'done' : '';
+  const others = (s.goals_holding || []).filter((g) => g !== s.player_goal);
   $('status').textContent = done ? `Goal reached: ${done} (step ${s.t}). The board takes no more moves: Undo or Reset to play on.`
-    : `Step ${s.t}: ${s.turn === s.principal ? 'your move' : 'the assistant is thinking'}.`;
+    : `Step ${s.t}: ${s.turn === s.principal ? 'your move' : 'the assistant is thinking'}.` +
+      (s.player_goal ? ` Your goal: ${s.player_goal} (the assistant is not told).` : ' No goal of your own: play freely.') +
+      (others.length ? ` ${others.join(', ')} ${others.length > 1 ? 'hold' : 'holds'}, not yours: play on.` : '');
   const q = document.createElement('span'); q.id = 'queued'; $('status').appendChild(q);
   showQueue();
   $('board').classList.toggle('done', !!done);
@@ -607,7 +621,8 @@ function drawDecision(s) {
 
 $('dataset').onchange = () => { onDataset(); focusBoard(); };
 $('problem').onchange = () => { onProblem(); focusBoard(); };
-$('plan').onchange = focusBoard;
+$('plan').onchange = () => { onPlan(); focusBoard(); };
+$('goal').onchange = focusBoard;
 $('start').onclick = start;
 $('reset').onclick = () => enqueue('reset', async () => {
   $('log').innerHTML = '';

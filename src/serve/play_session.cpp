@@ -8,6 +8,7 @@
 
 #include "engine/json.hpp"
 #include "scenes/scenes.hpp"
+#include "serve/messages.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
 
@@ -173,6 +174,7 @@ PlaySession::PlaySession(PlaySetup setup, const std::string& method, std::shared
       problem_(setup.problem),
       plan_(setup.plan),
       true_goal_(setup.true_goal),
+      player_goal_(setup.true_goal),
       principal_(setup.pack->roles().principal),
       assistant_(setup.pack->roles().assistant),
       method_(method_name(checked_method(method))),
@@ -337,6 +339,21 @@ json PlaySession::reading() const {
   return j;
 }
 
+void PlaySession::set_player_goal(const std::optional<std::string>& label) {
+  if (!label) {
+    player_goal_ = -1;
+    return;
+  }
+  const auto& labels = engine_.goal_labels();
+  const auto it = std::find(labels.begin(), labels.end(), *label);
+  if (it == labels.end()) {
+    std::string known;
+    for (const auto& l : labels) known += (known.empty() ? "" : ", ") + l;
+    throw InputError("no candidate goal '" + echo(*label) + "' (goals: " + known + ")");
+  }
+  player_goal_ = static_cast<int>(it - labels.begin());
+}
+
 json PlaySession::state() const {
   const pddl::Task& task = engine_.task();
   const domains::Pack& pack = engine_.pack();
@@ -354,8 +371,14 @@ json PlaySession::state() const {
   // The principal's no-op ("(wait human)"), for a key that waits; null when the domain has none.
   const auto noop = task.find_action("(" + pack.roles().noop_action + " " + principal_ + ")");
   j["noop_action"] = noop ? json(task.action_name(*noop)) : json(nullptr);
-  const auto reached = engine_.reached_goal();
-  j["reached_goal"] = reached ? json(engine_.goal_labels().at(*reached)) : json(nullptr);
+  // The game ends at the player's goal only; other candidate goals may hold on the way.
+  json holding = json::array();
+  for (size_t g = 0; g < engine_.goal_labels().size(); ++g)
+    if (engine_.goal_holds(static_cast<int>(g))) holding.push_back(engine_.goal_labels()[g]);
+  const bool reached = player_goal_ >= 0 && engine_.goal_holds(player_goal_);
+  j["reached_goal"] = reached ? json(engine_.goal_labels().at(player_goal_)) : json(nullptr);
+  j["player_goal"] = player_goal_ >= 0 ? json(engine_.goal_labels().at(player_goal_)) : json(nullptr);
+  j["goals_holding"] = std::move(holding);
   j["true_goal"] = true_goal_ >= 0 ? json(engine_.goal_labels().at(true_goal_)) : json(nullptr);
   j["scene"] = scene();
   json acts = json::array();

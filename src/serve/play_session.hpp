@@ -108,6 +108,11 @@ class PlaySession {
   int steps() const { return engine_.t(); }
   // Whether the candidate goal with this label holds now (HTTP 400 for another label).
   bool goal_holds(const std::string& label) const { return engine_.goal_holds(label); }
+  // The player's own goal, which the assistant is not told: a candidate
+  // goal's label, or none (play freely). The game ends (reached_goal) when
+  // it holds, not when another candidate goal does. Default: the reference
+  // plan's true goal. InputError for a label that is not a candidate goal.
+  void set_player_goal(const std::optional<std::string>& label);
 
  private:
   nlohmann::json scene() const;
@@ -117,6 +122,7 @@ class PlaySession {
   std::string dataset_name_, problem_;
   const data::PlanRecord* plan_ = nullptr;  // null: no reference plan
   int true_goal_ = -1;
+  int player_goal_ = -1;  // -1: none
   std::string principal_, assistant_;
   std::string method_;
   PlayLimits limits_;

@@ -217,6 +217,31 @@ json parse_json_unique(const std::string& text) {
   return json::parse(text, check);
 }
 
+namespace {
+
+// Each problem's candidate goals: those of its first recorded plan, or the
+// pack's rule for the problem; none when they cannot be found (a session on
+// the problem then says why).
+std::map<std::string, std::vector<std::string>> goals_by_problem(const data::Dataset& ds) {
+  std::map<std::string, const data::PlanRecord*> first;
+  for (const auto& p : ds.plans()) first.emplace(p.problem_id, &p);
+  std::map<std::string, std::vector<std::string>> out;
+  for (const std::string& id : ds.problem_ids()) {
+    data::PlanRecord only;
+    only.id = only.problem_id = id;
+    const auto it = first.find(id);
+    auto& labels = out[id];
+    try {
+      for (const auto& g : ds.candidate_goals(it != first.end() ? *it->second : only)) labels.push_back(g.label);
+    } catch (const InputError&) {
+      labels.clear();
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits limits,
                  std::shared_ptr<lm::LanguageModel> lm, std::function<Clock::time_point()> now)
     : limits_(limits), lm_(std::move(lm)), now_(std::move(now)) {
@@ -225,7 +250,9 @@ Service::Service(const std::vector<std::string>& dataset_dirs, ServiceLimits lim
     if (name.empty()) name = std::filesystem::path(dir).lexically_normal().parent_path().filename().string();
     if (datasets_.count(name)) throw InputError("--dataset " + dir + ": a dataset named '" + name + "' is already served");
     // A domain folder with problems but no recorded plans is served too.
-    datasets_[name].dataset = std::make_shared<const data::Dataset>(data::Dataset::load(dir, false));
+    Served& served = datasets_[name];
+    served.dataset = std::make_shared<const data::Dataset>(data::Dataset::load(dir, false));
+    served.problem_goals = goals_by_problem(*served.dataset);
   }
 }
 
@@ -313,7 +340,12 @@ Reply Service::datasets() const {
     std::map<std::string, std::vector<std::string>> plans;
     for (const auto& p : ds.plans()) plans[p.problem_id].push_back(p.id);
     json problems = json::array();
-    for (const auto& pid : ds.problem_ids()) problems.push_back({{"id", pid}, {"plans", plans[pid]}});
+    for (const auto& pid : ds.problem_ids()) {
+      const auto goals = served.problem_goals.find(pid);
+      problems.push_back({{"id", pid},
+                          {"plans", plans[pid]},
+                          {"goals", goals != served.problem_goals.end() ? json(goals->second) : json::array()}});
+    }
     out.push_back({{"name", name},
                    {"domain", ds.pack().name()},
                    {"scene", domains::to_string(ds.pack().spec().scene)},
@@ -359,7 +391,14 @@ std::shared_ptr<lm::LanguageModel> Service::text_lm(const PlaySetup& setup, cons
 }
 
 Reply Service::create(const std::string& body, const std::string& client) {
-  const json j = parse_body(body, {"dataset", "domain", "inference", "method", "pack", "plan", "problem"});
+  const json j = parse_body(body, {"dataset", "domain", "goal", "inference", "method", "pack", "plan", "problem"});
+  // The player's goal: absent, the reference plan's true goal; null, none.
+  std::optional<std::optional<std::string>> player_goal;
+  if (j.contains("goal")) {
+    if (j["goal"].is_null()) player_goal.emplace(std::nullopt);
+    else if (j["goal"].is_string()) player_goal.emplace(j["goal"].get<std::string>());
+    else throw HttpError(400, "field 'goal': expected a candidate goal's label (a string) or null");
+  }
   const PlayLimits play = with_inference(limits_.play, j);
   const std::string method = string_field(j, "method", false, "clips");
   const auto& known = play_methods();
@@ -440,6 +479,11 @@ Reply Service::create(const std::string& body, const std::string& client) {
       auto lm = dataset_lm(*served);
       entry->session = std::make_unique<PlaySession>(std::move(setup), method, std::move(lm), play);
     }
+    if (player_goal) try {
+        entry->session->set_player_goal(*player_goal);
+      } catch (const InputError& e) {
+        throw HttpError(400, std::string("field 'goal': ") + e.what());
+      }
   } catch (...) {
     {
       std::lock_guard lock(mutex_);

@@ -126,6 +126,9 @@ class Service {
     std::shared_ptr<const data::Dataset> dataset;
     std::mutex lm_mutex;  // held while its model is built: other folders' sessions do not wait
     std::shared_ptr<lm::LanguageModel> lm;  // guarded by lm_mutex
+    // Each problem's candidate goals (labels), for the catalogue: the page
+    // offers them as the player's goal.
+    std::map<std::string, std::vector<std::string>> problem_goals;
   };
   Reply respond(const Request& request);
   std::shared_ptr<Entry> find(const std::string& id);

@@ -197,6 +197,14 @@ def play_quick_start(browser, source_dir, dkg, shot, check):
                  if l.strip().startswith("(")]
     state = start_session(browser, "doors-keys-gems", "2", "2.1.keys")
     true_goal = state["true_goal"]
+    # The player's goal: the plan's by default, offered among the problem's
+    # candidate goals, kept from the assistant and shown to the player only.
+    choices = browser.js("[...document.getElementById('goal').options].map(o => o.value)")
+    goals = [g["goal"] for g in state["posterior"]["goals"]]
+    check(choices == ["plan", "none"] + goals, "the goal menu offers %s, not the plan's, none and %s" % (choices, goals))
+    check(state["player_goal"] == true_goal, "the player's goal is %s, not the plan's %s" % (state["player_goal"], true_goal))
+    check(("Your goal: %s" % true_goal) in browser.js("document.getElementById('status').textContent"),
+          "the status does not show the player's goal")
 
     # Type the instruction and press Enter: the focus is back on the board.
     # While the assistant thinks the page plays no key and keeps none for

@@ -114,7 +114,8 @@ TEST(ServeLoopback, PlaysTextScenePacksAndProblemsWithoutPlans) {
   ASSERT_EQ(catalogue["datasets"].size(), 2u);
   EXPECT_EQ(catalogue["datasets"][1]["name"], "workshop");
   EXPECT_EQ(catalogue["datasets"][1]["scene"], "text");
-  EXPECT_EQ(catalogue["datasets"][0]["problems"][1], json({{"id", "2"}, {"plans", json::array()}}));
+  EXPECT_EQ(catalogue["datasets"][0]["problems"][1],
+            json({{"id", "2"}, {"plans", json::array()}, {"goals", {"cake", "cookies", "fudge", "pudding"}}}));
 
   auto [status, st] = post(cli, "/api/sessions", {{"dataset", "workshop"}, {"problem", "2"}});
   ASSERT_EQ(status, 201) << st.dump();

@@ -314,6 +314,64 @@ TEST_F(Fixture, GoalHoldsAnswersForACandidateGoalAsThePlanGoesOn) {
   EXPECT_EQ(s->handle("GET", url + "/goal_holds", "").status, 405);
 }
 
+// The player's goal is the player's: the game ends when it holds, not when
+// another candidate goal does; without one it never ends by itself. The
+// catalogue lists each problem's candidate goals to choose from.
+TEST_F(Fixture, TheGameEndsAtThePlayersGoalOnly) {
+  auto s = make();
+  const auto ds = clips::data::Dataset::load(kExamples);
+  const auto& plan = ds.plan("e1.1.keys");
+  const auto goals = ds.candidate_goals(plan);
+  const std::string truth = goals.at(static_cast<size_t>(ds.true_goal_index(plan))).label;
+  const std::string other = goals.front().label != truth ? goals.front().label : goals.back().label;
+  const json catalogue = body(s->handle("GET", "/api/datasets", ""));
+  std::vector<std::string> listed;
+  for (const auto& p : catalogue["datasets"][0]["problems"])
+    if (p["id"] == "e1") listed = p["goals"].get<std::vector<std::string>>();
+  std::vector<std::string> labels;
+  for (const auto& g : goals) labels.push_back(g.label);
+  EXPECT_EQ(listed, labels);
+
+  std::vector<clips::pddl::PlanLine> whole = plan.observed.actions;
+  whole.insert(whole.end(), plan.completed.actions.begin(), plan.completed.actions.end());
+  auto play = [&](const json& request) {
+    Reply r = s->handle("POST", "/api/sessions", request.dump());
+    EXPECT_EQ(r.status, 201) << r.body;
+    const std::string url = "/api/sessions/" + body(r).value("id", "");
+    json state = body(r);
+    EXPECT_TRUE(state["reached_goal"].is_null());
+    for (const auto& a : whole) {
+      r = s->handle("POST", url + "/act", json{{"action", a.text}}.dump());
+      EXPECT_EQ(r.status, 200) << a.text << ": " << r.body;
+      state = body(r);
+    }
+    EXPECT_EQ(state["goals_holding"], json::array({truth}));
+    return state;
+  };
+  const json base = {{"dataset", "doors-keys-gems"}, {"problem", "e1"}, {"plan", "e1.1.keys"}};
+  json by_default = play(base);  // the plan's true goal
+  EXPECT_EQ(by_default["player_goal"], truth);
+  EXPECT_EQ(by_default["reached_goal"], truth);
+  json request = base;
+  request["goal"] = other;
+  json theirs = play(request);
+  EXPECT_EQ(theirs["player_goal"], other);
+  EXPECT_TRUE(theirs["reached_goal"].is_null()) << "another goal ended the game";
+  request["goal"] = nullptr;
+  json free = play(request);
+  EXPECT_TRUE(free["player_goal"].is_null());
+  EXPECT_TRUE(free["reached_goal"].is_null());
+  // Not a candidate goal, not a label: 400s naming the field.
+  request["goal"] = "gem99";
+  Reply r = s->handle("POST", "/api/sessions", request.dump());
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(r.body.find("field 'goal': no candidate goal 'gem99'"), std::string::npos) << r.body;
+  request["goal"] = 7;
+  r = s->handle("POST", "/api/sessions", request.dump());
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(r.body.find("field 'goal'"), std::string::npos) << r.body;
+}
+
 TEST_F(Fixture, ParticleSessionsRefineOnlyWhatTheParticlesHold) {
   // The same moves and instruction with exact inference and with 2 particles
   // over the 8 hypotheses: the particle session reports a proper posterior,
