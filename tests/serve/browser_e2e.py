@@ -399,6 +399,12 @@ def main():
               "the kitchen's problems are not listed")
         play_text_scene(browser, "kitchen", "2", "", "(move cook counter pantry)", "Can you fetch the milk?",
                         "(take cook flour1 pantry)", shot[:-4] + "-kitchen.png", check)
+        # A phone's width: the page fits 390 px without scrolling sideways.
+        browser.call("Emulation.setDeviceMetricsOverride", width=390, height=844, deviceScaleFactor=1, mobile=True)
+        time.sleep(0.3)
+        wide = browser.js("document.documentElement.scrollWidth")
+        check(wide <= 390, "at 390 px wide the page is %s px wide" % wide)
+        browser.screenshot(shot[:-4] + "-390.png", {"x": 0, "y": 0, "width": 390, "height": 844, "scale": 1})
     finally:
         browser.close()
         shutil.rmtree(tmp, ignore_errors=True)
