@@ -456,10 +456,18 @@ function drawVerbs(s) {
     if (!groups.has(verb)) groups.set(verb, []);
     groups.get(verb).push(a);
   }
+  // Text scenes: the arguments but the human and the place it is at; a
+  // place it would go to reads "to PLACE".
+  const agent = s.scene.kind === 'text' ? (s.scene.agents || []).find((g) => g.name === s.principal) : null;
+  const here = agent ? agent.at : null;
+  const places = new Set(s.scene.kind === 'text' ? (s.scene.places || []).map((p) => p.name) : []);
   const label = (a) => {
     const words = a.slice(1, -1).split(/\s+/);
     if (grid || s.scene.kind === 'home') return words.join(' ').replace(/^pickup/, 'pick up').replace(/^handover/, 'hand over');
-    return words.slice(1).filter((w) => w !== s.principal).join(' ') || words[0];
+    const args = words.slice(1);
+    const leaving = here && args.includes(here);
+    return args.filter((w) => w !== s.principal && w !== here)
+      .map((w) => (leaving && places.has(w) ? 'to ' + w : w)).join(' ') || words[0];
   };
   for (const [verb, actions] of groups) {
     const row = grid || s.scene.kind === 'home' ? box : el('div', 'verb');
@@ -487,6 +495,7 @@ function drawBars(goals) {
     row.dataset.p = g.p.toFixed(6);
     row.innerHTML = '<span class="label"></span><span class="track"><span class="fill"></span></span><span class="value"></span>';
     row.querySelector('.label').textContent = g.goal;
+    row.querySelector('.label').title = g.goal + (ui.state && ui.state.player_goal === g.goal ? ' (your goal)' : '');
     const fill = row.querySelector('.fill');
     fill.style.display = 'block';
     fill.style.width = (100 * g.p).toFixed(1) + '%';
