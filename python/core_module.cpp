@@ -834,7 +834,8 @@ PYBIND11_MODULE(_core, m) {
           },
           py::kw_only(), py::arg("time_limit") = py::none(),
           "undo(*, time_limit=None) -> bool\n\n"
-          "Takes back the human's last action with everything after it (the assistant's actions, utterances); "
+          "Takes back the human's latest move or instruction with everything after it (the assistant's actions): "
+          "an instruction heard after the last move goes alone; "
           "False, and nothing changes, when there is none. The posterior is recomputed by replaying what is left: "
           "TimeLimitError past time_limit, CancelledError on cancel(), the session then unchanged.")
       .def(

@@ -79,8 +79,9 @@ class Session {
   const Step& observe(int action_id, const CallLimits& limits);
   const Step& hear(const std::string& utterance, const CallLimits& limits);
   AssistDecision assist(const CallLimits& limits);
-  // Takes back the last action of the human with everything after it (the
-  // assistant's actions, utterances); false when there is none.
+  // Takes back the human's latest move or instruction with everything after
+  // it (the assistant's actions): an instruction heard after the last move
+  // goes alone. False when there is none.
   bool undo(const CallLimits& limits = {});
   // Back to the initial state, with nothing observed.
   void reset();

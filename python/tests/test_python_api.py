@@ -286,7 +286,7 @@ def whole_plan(plan):
             if line.strip() and not line.strip().startswith(";")]
 
 
-def test_undo_takes_back_the_humans_last_action_with_what_followed():
+def test_undo_takes_back_the_humans_latest_move_or_instruction_with_what_followed():
     s = clips_assist.Session.open_dataset(EXAMPLES, "e1")
     start = (s.posterior(), without_seconds(s.trace()))
     assert s.undo() is False and s.t == 0  # nothing to take back
@@ -294,9 +294,14 @@ def test_undo_takes_back_the_humans_last_action_with_what_followed():
     s.observe("(wait robot)")
     after_two = (s.posterior(), without_seconds(s.trace()))
     s.observe("(left human)")
+    after_three = (s.posterior(), without_seconds(s.trace()))
     s.hear("Can you get me the yellow key?")
     s.observe("(wait robot)")
-    # The human's last action goes, with the utterance and the robot's wait after it.
+    # The instruction goes with the robot's wait after it; the move before it stays.
+    assert s.undo() is True
+    assert s.t == 3 and s.active_agent == "robot"
+    assert (s.posterior(), without_seconds(s.trace())) == after_three
+    # Then the human's last action.
     assert s.undo() is True
     assert s.t == 2 and s.active_agent == "human"
     assert (s.posterior(), without_seconds(s.trace())) == after_two

@@ -567,9 +567,14 @@ const Step& Engine::hear(const std::string& utterance, const CallLimits& limits)
 
 bool Engine::undo(const CallLimits& limits) {
   Impl& m = *impl_;
+  // The principal's latest move or instruction: an instruction heard after
+  // the last move goes alone, not with that move.
   int last = -1;
   for (int i = static_cast<int>(m.events.size()) - 1; i >= 0 && last < 0; --i) {
-    if (m.events[i].utterance) continue;
+    if (m.events[i].utterance) {
+      last = i;
+      continue;
+    }
     const auto a = m.problem.task->find_action(m.events[i].text);
     if (a && principal_action(*a)) last = i;
   }

@@ -119,8 +119,9 @@ class Engine {
   // An utterance heard in the current state. InputError for empty or
   // non-UTF-8 text; LanguageModelError when the model fails.
   const Step& hear(const std::string& utterance, const CallLimits& limits = {});
-  // Takes back the last action of the principal with everything after it;
-  // false (and nothing changes) when there is none.
+  // Takes back the principal's latest move or instruction with everything
+  // after it (the assistant's actions); false (and nothing changes) when
+  // there is none.
   bool undo(const CallLimits& limits = {});
   // Back to the start.
   void reset();

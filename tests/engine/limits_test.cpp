@@ -217,7 +217,7 @@ TEST(EngineMethods, OneNameTableReadsEverySpelling) {
   }
 }
 
-TEST(EngineUndo, UndoTakesBackTheLastHumanActionAndWhatFollowed) {
+TEST(EngineUndo, UndoTakesBackTheHumansLatestMoveOrInstructionAndWhatFollowed) {
   Engine e = opened();
   EXPECT_FALSE(e.undo());
   const auto at_start = snapshot(e);
@@ -225,8 +225,11 @@ TEST(EngineUndo, UndoTakesBackTheLastHumanActionAndWhatFollowed) {
   e.observe("(wait robot)");
   const auto after_two = snapshot(e);
   e.observe("(left human)");
+  const auto after_three = snapshot(e);
   e.hear("Can you get me the yellow key?");
-  // The last human action goes, with the utterance after it.
+  // The instruction goes alone; then the last human action.
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(snapshot(e), after_three);
   ASSERT_TRUE(e.undo());
   EXPECT_EQ(snapshot(e), after_two);
   // Then the first one, with the robot's wait after it.

@@ -267,8 +267,10 @@ TEST_F(Fixture, PlayHearAssistUndoResetAndSwitchMethod) {
   EXPECT_EQ(body(r)["t"], 4);  // the (wait human) is taken back, the instruction before it stays
   EXPECT_FALSE(body(r)["reading"].is_null());
   r = s->handle("POST", url + "/undo", "");
-  EXPECT_EQ(body(r)["t"], 2);  // back before the second (left human), its reply and the instruction
+  EXPECT_EQ(body(r)["t"], 4);  // the instruction goes alone: the move before it stays
   EXPECT_TRUE(body(r)["reading"].is_null());
+  r = s->handle("POST", url + "/undo", "");
+  EXPECT_EQ(body(r)["t"], 2);  // back before the second (left human) and its reply
   r = s->handle("POST", url + "/reset", "{}");
   ASSERT_EQ(r.status, 200);
   EXPECT_EQ(body(r)["t"], 0);
