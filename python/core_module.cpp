@@ -134,10 +134,15 @@ std::vector<std::string> list_option(const char* name, py::handle v) {
 }
 
 
-clips::Assistance parse_assistance(const std::string& a) {
-  if (a == "qmdp") return clips::Assistance::QMdp;
-  if (a == "pibar") return clips::Assistance::PiBar;
-  throw clips::InputError("unknown assistance '" + a + "' (expected qmdp or pibar)");
+
+// "qmdp (Q_MDP: ...) or pibar (...)": the names and help of the one table.
+std::string assistance_choices() {
+  std::string out;
+  const auto& names = clips::assistance_names();
+  for (size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i] + " (" +
+           clips::assistance_help(clips::parse_assistance(names[i])) + ")";
+  return out;
 }
 
 constexpr long long kMaxThreads = 1024;
@@ -194,9 +199,9 @@ const std::vector<SessionOption>& session_option_table() {
                  "uses and how the assistant decides",
        [](O& o, py::handle v) { o.method = clips::parse_method(text_option("method", v)); },
        [](const O&) { return quoted("clips"); }},
-      {"assistance", "qmdp or pibar",
-       [](O& o, py::handle v) { o.assistance = parse_assistance(text_option("assistance", v)); },
-       [](const O&) { return quoted("qmdp"); }},
+      {"assistance", assistance_choices(),
+       [](O& o, py::handle v) { o.assistance = clips::parse_assistance(text_option("assistance", v)); },
+       [](const O&) { return quoted(clips::assistance_name(clips::Assistance::QMdp)); }},
       {"lm", "language model: embedded (offline) or openai",
        [](O& o, py::handle v) { o.language_model.backend = text_option("lm", v); },
        [](const O& o) { return quoted(o.language_model.backend); }},

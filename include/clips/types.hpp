@@ -33,6 +33,14 @@ enum class Assistance {
   QMdp,   // Q_MDP: the action of highest posterior-weighted Q-value
   PiBar,  // pi-bar_MDP: the action the posterior mixture of policies takes most often
 };
+// One name table, as for methods: "qmdp", "pibar" (Python keywords, the
+// server's JSON fields).
+std::string assistance_name(Assistance a);
+// Throws InputError listing the names.
+Assistance parse_assistance(const std::string& text);
+const std::vector<std::string>& assistance_names();
+// One line saying what the rule does, for help texts and the API's docs.
+std::string assistance_help(Assistance a);
 
 struct LanguageModelOptions {
   std::string backend = "embedded";  // "embedded" (offline) or "openai" (OpenAI-compatible completions server)

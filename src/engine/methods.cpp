@@ -1,5 +1,6 @@
-// The one name table of clips::Method (include/clips/types.hpp): CLI flags,
-// Python keywords and JSON fields all read and write these names.
+// The name tables of clips::Method and clips::Assistance
+// (include/clips/types.hpp): CLI flags, Python keywords and JSON fields all
+// read and write these names.
 #include <array>
 
 #include "clips/types.hpp"
@@ -44,6 +45,51 @@ const std::vector<std::string>& method_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
     for (const auto& row : kTable) n.push_back(row.name);
+    return n;
+  }();
+  return names;
+}
+
+namespace {
+
+struct AssistanceNames {
+  Assistance assistance;
+  const char* name;
+  const char* help;
+};
+
+constexpr std::array<AssistanceNames, 2> kAssistanceTable = {{
+    {Assistance::QMdp, "qmdp", "Q_MDP: the action of highest posterior-weighted Q-value (the paper's)"},
+    {Assistance::PiBar, "pibar", "pi-bar_MDP: the action the posterior mixture of policies takes most often"},
+}};
+
+}  // namespace
+
+std::string assistance_name(Assistance a) {
+  for (const auto& row : kAssistanceTable)
+    if (row.assistance == a) return row.name;
+  throw InputError("unknown assistance");
+}
+
+std::string assistance_help(Assistance a) {
+  for (const auto& row : kAssistanceTable)
+    if (row.assistance == a) return row.help;
+  throw InputError("unknown assistance");
+}
+
+Assistance parse_assistance(const std::string& text) {
+  std::string known;
+  for (const auto& row : kAssistanceTable) {
+    if (text == row.name) return row.assistance;
+    known += (known.empty() ? "" : ", ") + std::string(row.name);
+  }
+  throw InputError("unknown assistance '" + text + "' (known: " + known + ")");
+}
+
+const std::vector<std::string>& assistance_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& row : kAssistanceTable) n.push_back(row.name);
     return n;
   }();
   return names;

@@ -363,6 +363,7 @@ json PlaySession::state() const {
   j["problem"] = problem_;
   j["plan"] = plan_ ? json(plan_->id) : json(nullptr);
   j["method"] = method_;
+  j["assistance"] = assistance_name(limits_.belief.assistance);
   j["t"] = engine_.t();
   const std::string turn = engine_.active_agent();
   j["turn"] = turn;

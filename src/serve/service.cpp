@@ -353,6 +353,7 @@ Reply Service::datasets() const {
   }
   return json_reply(200, json{{"datasets", std::move(out)},
                               {"methods", play_methods()},
+                              {"assistance", assistance_names()},
                               {"limits",
                                {{"utterance_bytes", limits_.play.max_utterance_bytes},
                                 {"pddl_bytes", limits_.max_pddl_bytes},
@@ -391,7 +392,8 @@ std::shared_ptr<lm::LanguageModel> Service::text_lm(const PlaySetup& setup, cons
 }
 
 Reply Service::create(const std::string& body, const std::string& client) {
-  const json j = parse_body(body, {"dataset", "domain", "goal", "inference", "method", "pack", "plan", "problem"});
+  const json j = parse_body(body, {"assistance", "dataset", "domain", "goal", "inference", "method", "pack", "plan",
+                                   "problem"});
   // The player's goal: absent, the reference plan's true goal; null, none.
   std::optional<std::optional<std::string>> player_goal;
   if (j.contains("goal")) {
@@ -399,7 +401,13 @@ Reply Service::create(const std::string& body, const std::string& client) {
     else if (j["goal"].is_string()) player_goal.emplace(j["goal"].get<std::string>());
     else throw HttpError(400, "field 'goal': expected a candidate goal's label (a string) or null");
   }
-  const PlayLimits play = with_inference(limits_.play, j);
+  PlayLimits play = with_inference(limits_.play, j);
+  // How the assistant decides (the engine's one name table).
+  if (j.contains("assistance")) try {
+      play.belief.assistance = parse_assistance(string_field(j, "assistance", true));
+    } catch (const InputError& e) {
+      throw HttpError(400, std::string("field 'assistance': ") + e.what());
+    }
   const std::string method = string_field(j, "method", false, "clips");
   const auto& known = play_methods();
   if (std::find(known.begin(), known.end(), method) == known.end())

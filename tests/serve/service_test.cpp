@@ -374,6 +374,33 @@ TEST_F(Fixture, TheGameEndsAtThePlayersGoalOnly) {
   EXPECT_NE(r.body.find("field 'goal'"), std::string::npos) << r.body;
 }
 
+// How the assistant decides is a session's choice, by the engine's names.
+TEST_F(Fixture, ASessionChoosesHowTheAssistantDecides) {
+  auto s = make();
+  const json catalogue = body(s->handle("GET", "/api/datasets", ""));
+  EXPECT_EQ(catalogue["assistance"], json(clips::assistance_names()));
+  json request = {{"dataset", "doors-keys-gems"}, {"problem", "e1"}, {"plan", "e1.1.keys"}};
+  Reply r = s->handle("POST", "/api/sessions", request.dump());
+  ASSERT_EQ(r.status, 201) << r.body;
+  EXPECT_EQ(body(r)["assistance"], "qmdp");
+  for (const std::string& name : clips::assistance_names()) {
+    request["assistance"] = name;
+    r = s->handle("POST", "/api/sessions", request.dump());
+    ASSERT_EQ(r.status, 201) << r.body;
+    EXPECT_EQ(body(r)["assistance"], name);
+    const std::string url = "/api/sessions/" + body(r).value("id", "");
+    ASSERT_EQ(s->handle("POST", url + "/act", R"j({"action":"(left human)"})j").status, 200);
+    r = s->handle("POST", url + "/assist", R"j({"apply":true})j");
+    ASSERT_EQ(r.status, 200) << name << ": " << r.body;
+    EXPECT_FALSE(body(r)["decision"]["action"].get<std::string>().empty());
+  }
+  request["assistance"] = "oracle";
+  r = s->handle("POST", "/api/sessions", request.dump());
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(r.body.find("field 'assistance': unknown assistance 'oracle' (known: qmdp, pibar)"), std::string::npos)
+      << r.body;
+}
+
 TEST_F(Fixture, ParticleSessionsRefineOnlyWhatTheParticlesHold) {
   // The same moves and instruction with exact inference and with 2 particles
   // over the 8 hypotheses: the particle session reports a proper posterior,
