@@ -22,19 +22,30 @@ const ui = { catalogue: null, session: null, state: null, busy: false, queue: []
              utteranceBytes: 500, ignoredKeys: 0, thinkingTimer: null };
 window.clips = ui;  // for tests and the curious
 
+// Errors in words: the server's own message, or what went wrong on the way.
 async function api(method, path, body) {
-  const res = await fetch(path, {
-    method, headers: body ? { 'Content-Type': 'application/json' } : {},
-    body: body ? JSON.stringify(body) : undefined,
-  });
-  const data = await res.json();
+  let res;
+  try {
+    res = await fetch(path, {
+      method, headers: body ? { 'Content-Type': 'application/json' } : {},
+      body: body ? JSON.stringify(body) : undefined,
+    });
+  } catch (e) {
+    throw new Error('cannot reach the server (is clips serve still running?)');
+  }
+  let data;
+  try { data = await res.json(); } catch (e) {
+    throw new Error(`the server answered HTTP ${res.status} without a JSON reply`);
+  }
   if (!res.ok) throw new Error(data.error || ('HTTP ' + res.status));
   return data;
 }
 
-function log(text, cls) {
+// A line of the log, numbered by the step it led to (`step`; none for notes).
+function log(text, cls, step) {
   const li = document.createElement('li');
   li.textContent = text;
+  if (step !== undefined) li.dataset.step = String(step);
   if (cls) li.className = cls;
   $('log').appendChild(li);
   $('log').scrollTop = $('log').scrollHeight;
@@ -153,7 +164,7 @@ function start() {
 async function maybeAssist(s) {
   while (s.turn === s.assistant && !s.reached_goal) {
     const r = await api('POST', `/api/sessions/${ui.session}/assist`, { apply: true });
-    log(r.decision.action, 'robot');
+    log(r.decision.action, 'robot', r.state.t);
     s = r.state;
     show(s);
   }
@@ -162,7 +173,7 @@ async function maybeAssist(s) {
 
 async function doAct(action) {
   const s = await api('POST', `/api/sessions/${ui.session}/act`, { action });
-  log(action);
+  log(action, '', s.t);
   show(s);
   await maybeAssist(s);
 }
@@ -205,7 +216,7 @@ function say(text) {
     $('say-error').hidden = true;
     try {
       const s = await api('POST', `/api/sessions/${ui.session}/hear`, { utterance: text });
-      log('"' + text + '"', 'say');
+      log('"' + text + '"', 'say', s.t);
       // Only now is it heard: the box is cleared unless it holds something new.
       if ($('utterance').value.trim() === text) $('utterance').value = '';
       updateBytes();
