@@ -494,6 +494,42 @@ function drawVerbs(s) {
   }
 }
 
+// A goal in words, from its PDDL condition and what the scene says of the
+// objects: each atom as "subject predicate object", names without their
+// numbers and with their qualities ("human has the yellow gem", "stool
+// made"); connectives and variables are left out. The label stays in the
+// tooltip, the condition one hover away.
+function objectWords(s, name) {
+  if (name === s.principal || name === s.assistant) return name;
+  const quals = [];
+  const sc = s.scene;
+  if (sc.kind === 'grid') {
+    const o = (sc.objects || []).find((x) => x.name === name);
+    if (o && o.colour) quals.push(o.colour);
+  } else if (sc.kind === 'text') {
+    for (const p of sc.places || [])
+      for (const o of p.objects || []) if (o.name === name) quals.push(...(o.qualities || []));
+    for (const a of sc.agents || [])
+      for (const o of a.holds || []) if (o.name === name) quals.push(...(o.qualities || []));
+  }
+  const noun = name.replace(/[-_]+/g, ' ').replace(/\s*\d+$/, '');
+  return 'the ' + quals.concat([noun]).join(' ');
+}
+
+function goalWords(s, label) {
+  const cond = s.goal_conditions && s.goal_conditions[label];
+  if (!cond) return label;
+  const atoms = [...cond.matchAll(/\(([^()]+)\)/g)].map((m) => m[1].trim().split(/\s+/))
+    .filter((w) => w.length && !['and', 'or', 'not', 'exists', 'forall', '='].includes(w[0]) && !w.some((x) => x.startsWith('?')));
+  if (!atoms.length) return label;
+  return atoms.map(([pred, ...args]) => {
+    const verb = pred.replace(/[-_]+/g, ' ');
+    const words = args.map((a) => objectWords(s, a));
+    return words.length === 1 ? `${words[0].replace(/^the /, '')} ${verb}`
+      : [words[0], verb, ...words.slice(1)].join(' ');
+  }).join(', and ');
+}
+
 function goalColour(g, i) { return COLOURS[g.colour] && g.colour ? COLOURS[g.colour] : SERIES[i % SERIES.length]; }
 
 function drawBars(goals) {
@@ -505,8 +541,10 @@ function drawBars(goals) {
     row.dataset.goal = g.goal;
     row.dataset.p = g.p.toFixed(6);
     row.innerHTML = '<span class="label"></span><span class="track"><span class="fill"></span></span><span class="value"></span>';
-    row.querySelector('.label').textContent = g.goal;
-    row.querySelector('.label').title = g.goal + (ui.state && ui.state.player_goal === g.goal ? ' (your goal)' : '');
+    const s = ui.state;
+    row.querySelector('.label').textContent = s ? goalWords(s, g.goal) : g.goal;
+    row.querySelector('.label').title = g.goal + (s && s.goal_conditions ? ': ' + (s.goal_conditions[g.goal] || '') : '') +
+      (s && s.player_goal === g.goal ? ' (your goal)' : '');
     const fill = row.querySelector('.fill');
     fill.style.display = 'block';
     fill.style.width = (100 * g.p).toFixed(1) + '%';

@@ -175,6 +175,11 @@ PlaySession::PlaySession(PlaySetup setup, const std::string& method, std::shared
       plan_(setup.plan),
       true_goal_(setup.true_goal),
       player_goal_(setup.true_goal),
+      goal_conditions_([&setup] {
+        std::vector<std::string> c;
+        for (const auto& g : setup.goals) c.push_back(g.condition);
+        return c;
+      }()),
       principal_(setup.pack->roles().principal),
       assistant_(setup.pack->roles().assistant),
       method_(method_name(checked_method(method))),
@@ -380,6 +385,11 @@ json PlaySession::state() const {
   j["reached_goal"] = reached ? json(engine_.goal_labels().at(player_goal_)) : json(nullptr);
   j["player_goal"] = player_goal_ >= 0 ? json(engine_.goal_labels().at(player_goal_)) : json(nullptr);
   j["goals_holding"] = std::move(holding);
+  // Each candidate goal's condition, for the page to say the goal in words.
+  json conditions = json::object();
+  for (size_t g = 0; g < goal_conditions_.size() && g < engine_.goal_labels().size(); ++g)
+    conditions[engine_.goal_labels()[g]] = goal_conditions_[g];
+  j["goal_conditions"] = std::move(conditions);
   j["true_goal"] = true_goal_ >= 0 ? json(engine_.goal_labels().at(true_goal_)) : json(nullptr);
   j["scene"] = scene();
   json acts = json::array();

@@ -123,6 +123,7 @@ class PlaySession {
   const data::PlanRecord* plan_ = nullptr;  // null: no reference plan
   int true_goal_ = -1;
   int player_goal_ = -1;  // -1: none
+  std::vector<std::string> goal_conditions_;  // each candidate goal's PDDL condition, in goal order
   std::string principal_, assistant_;
   std::string method_;
   PlayLimits limits_;

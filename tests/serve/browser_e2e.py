@@ -205,6 +205,12 @@ def play_quick_start(browser, source_dir, dkg, shot, check):
     check(state["player_goal"] == true_goal, "the player's goal is %s, not the plan's %s" % (state["player_goal"], true_goal))
     check(("Your goal: %s" % true_goal) in browser.js("document.getElementById('status').textContent"),
           "the status does not show the player's goal")
+    # Goals in words, from their conditions and the scene; the label is the tooltip.
+    words = browser.js("[...document.querySelectorAll('#bars .bar')].map(b => [b.dataset.goal, "
+                       "b.querySelector('.label').textContent, b.querySelector('.label').title])")
+    for goal, text, title in words:
+        check(text.startswith("human has the ") and text.endswith(" gem") and title.startswith(goal),
+              "goal %s reads '%s' (tooltip '%s'), not in words" % (goal, text, title))
 
     # Type the instruction and press Enter: the focus is back on the board.
     # While the assistant thinks the page plays no key and keeps none for
