@@ -202,6 +202,9 @@ struct Commitment {
 };
 constexpr double kCommitShare = 0.5;
 constexpr double kAskingShare = 0.5;
+// How much dearer the principal's own actions are when the request rule asks
+// whether a request makes a likely goal costlier (committed_request).
+constexpr double kSparingFactor = 10;
 
 std::optional<Commitment> committed_request(const AssistSetup& setup, const std::vector<const Hypothesis*>& live,
                                             const State& s) {
@@ -262,19 +265,48 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   ff.prepare(*spec, start);
   search::SearchOptions o = setup.refine_options;
   o.max_nodes = std::min<size_t>(o.max_nodes, size_t{1} << 16);
-  const search::SearchResult r = search::astar(*spec, ff, start, o);
+  search::SearchResult r = search::astar(*spec, ff, start, o);
+  State end = start;
+  if (r.status == search::SearchStatus::Success) {
+    // Where the request leaves the world, the principal free again.
+    for (ActionId a : r.plan) end = task.apply(end, a);
+    if (can_freeze) end = model::unfreeze(task, end, setup.principal);
+  } else if (can_freeze) {
+    // What was asked may need the principal's part first ("carry it up,
+    // I'll unlock the door"): the joint plan in which the principal does
+    // only what the assistant cannot, its own actions kSparingFactor times
+    // dearer.
+    auto joint = std::make_shared<model::Specification>(
+        setup.task, "(and" + goal + ")",
+        model::scaled_assistant(heaviest->policy->spec().profile(), heaviest->policy->spec().profile().name + "-sparing",
+                                setup.principal, setup.noop_action, kSparingFactor));
+    heuristics::FFHeuristic joint_ff;
+    joint_ff.prepare(*joint, s);
+    r = search::astar(*joint, joint_ff, s, o);
+    if (r.status == search::SearchStatus::Success) {
+      end = s;
+      for (ActionId a : r.plan) end = task.apply(end, a);
+    }
+  }
   if (r.status != search::SearchStatus::Success || r.plan.empty() || !task.applicable(r.plan.front(), s.data()))
     return std::nullopt;
-  // Where the request leaves the world, the principal free again.
-  State end = start;
-  for (ActionId a : r.plan) end = task.apply(end, a);
-  if (can_freeze) end = model::unfreeze(task, end, setup.principal);
   double cheapest = kInf;
   for (ActionId a : task.applicable_actions(s)) cheapest = std::min(cheapest, heaviest->policy->spec().cost(a));
   const double tolerance = std::isfinite(cheapest) ? std::max(cheapest, 1.0) : 1.0;
+  // Costlier is judged by the principal's effort: the principal who asked
+  // has handed that part of the joint plan over, so a fetch the principal
+  // could have made more cheaply is still theirs to ask for. Each likely
+  // goal is valued with the principal's own actions kSparingFactor times
+  // dearer (the sparing plans of the speaker model); a request that moves
+  // the world away from the goal still costs the assistant the way back.
   double costlier = 0;
   for (const Hypothesis* h : live) {
-    heuristics::Heuristic& est = h->policy->heuristic();
+    const model::Specification& base = h->policy->spec();
+    model::Specification sparing(setup.task, base.goal_text(),
+                                 model::scaled_assistant(base.profile(), base.profile().name + "-sparing",
+                                                         setup.principal, setup.noop_action, kSparingFactor));
+    heuristics::FFHeuristic est;
+    est.prepare(sparing, s);
     const double before = est.estimate(s.data()), after = est.estimate(end.data());
     if (!(after <= before + tolerance)) costlier += h->weight;
   }
@@ -638,6 +670,17 @@ struct Episode {
   // log P_coop(a|s) - log P_rand(a|s): Boltzmann (T = 1) under the true
   // policy versus uniform over the assistant's available actions.
   double coop_increment(const search::Policy& truth, const State& s, ActionId a) const {
+    if (setup.trusts_own_plan && recorded(s, a)) return std::max(0.0, boltzmann_increment(truth, s, a));
+    return boltzmann_increment(truth, s, a);
+  }
+  // Whether the completed plan takes `a` in `s` (AssistSetup::trusts_own_plan).
+  bool recorded(const State& s, ActionId a) const {
+    if (const std::vector<int>* js = trajectory.find(s.data()))
+      for (int j : *js)
+        if (setup.completed[static_cast<size_t>(j)] == a) return true;
+    return false;
+  }
+  double boltzmann_increment(const search::Policy& truth, const State& s, ActionId a) const {
     auto qs = truth.q_values(s);
     double mx = -kInf;
     for (auto& q : qs) mx = std::max(mx, q.q);

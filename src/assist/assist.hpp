@@ -109,6 +109,13 @@ struct AssistSetup : model::TurnTaking {
   // a principal who waits on the assistant and an assistant that waits on the
   // principal never move again. Set with the request rule.
   bool restless_assistant = true;
+  // The simulated principal's trust: an assistant action that its own
+  // recorded continuation takes in that state (the completed plan's next
+  // step, where the state is on its trajectory) never counts against the
+  // assistant. The recording is the principal's own plan with what it asked
+  // the assistant to do, which need not be the cheapest joint plan (a fetch
+  // the principal could have made itself). Set with the request rule.
+  bool trusts_own_plan = true;
   // Actions whose expected value is within this share of the cheapest
   // candidate action's cost of the best are tied. Exact ties are common
   // wherever two plans cost the same; the tolerance also lets the assistant

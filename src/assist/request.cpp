@@ -49,6 +49,7 @@ void set_request_rule(AssistSetup& setup, AssistRule rule, const commands::Langu
   setup.rule = rule;
   setup.impatient_principal = rule == AssistRule::Request;
   setup.restless_assistant = rule == AssistRule::Request;
+  setup.trusts_own_plan = rule == AssistRule::Request;
   setup.salient_args = salient_argument_table(*setup.task, language);
 }
 

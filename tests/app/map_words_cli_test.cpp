@@ -4,6 +4,7 @@
 // sentences are this test's own, not the dataset's instructions.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -17,6 +18,7 @@ namespace {
 using testing::clips_binary;
 using testing::contains;
 using testing::run;
+using testing::TempDir;
 
 std::string warehouse() { return std::string(CLIPS_SOURCE_DIR) + "/data/datasets/warehouse"; }
 std::string sq(const std::string& s) { return "'" + s + "'"; }
@@ -107,6 +109,40 @@ TEST(MapWords, AskedForTheRedCanTheRobotSetsOff) {
                         " --problem 1 --actions '(up human c4-4 c4-3)' --utterance-step 1 --utterance " +
                         sq("Could you bring me the red can?"));
   EXPECT_TRUE(contains(text.out, "why: doing what was asked")) << text.out;
+}
+
+// The human stands beside the blue can (c3-1) and the robot is six steps
+// away; the cheapest joint plan has the human pick it up. Asked for it, the
+// robot still sets off: whether a request makes a likely goal costlier is
+// judged by the principal's effort, which the fetch spares.
+TEST(MapWords, AFetchTheHumanCouldMakeIsStillDoneWhenAsked) {
+  const std::string cmd = clips_binary() + " assist --json --explain --dataset " + warehouse() +
+                          " --problem 1 --actions '(up human c4-4 c4-3) (wait robot) (up human c4-3 c4-2) (wait robot) "
+                          "(up human c4-2 c4-1)' --utterance-step 5 --utterance " +
+                          sq("Could you get me the blue can?");
+  const auto r = run(cmd);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("action").get<std::string>(), "(up robot c4-6 c4-5)") << r.out;
+  EXPECT_TRUE(j.at("decision").at("followed_request").get<bool>()) << r.out;
+}
+
+// In the assistance episode the simulated human follows its recorded plan,
+// in which the robot fetches what was asked although the human could have
+// (the bench's "requested" column names it). The robot doing its recorded
+// part does not cost it the human's trust, so the request gets done.
+TEST(MapWords, WhatWasAskedIsDoneInTheBenchsEpisode) {
+  TempDir out("map-words-bench");
+  const std::string cmd = clips_binary() + " bench --no-progress --methods clips --dataset " + warehouse() +
+                          " --plans 7.2.green-crate-small-bag-shelf2 --out " + out.str();
+  const auto r = run(cmd);
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(out.path / "results.csv");
+  std::string header, row;
+  ASSERT_TRUE(std::getline(in, header) && std::getline(in, row)) << r.out;
+  // request_done is the last column; precision: the robot's option was bag2.
+  EXPECT_EQ(row.substr(row.rfind(',') + 1), "1") << row;
+  EXPECT_TRUE(contains(row, ",\"bag2=1\",")) << row;
 }
 
 }  // namespace
