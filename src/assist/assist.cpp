@@ -213,6 +213,7 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
     std::vector<std::pair<int, bool>> effect;
     double weight = 0;
     std::map<std::string, double> texts;
+    std::map<std::string, std::vector<ActionId>> parts;  // each text's assistant part, in its order
   };
   std::vector<Asked> asked;
   double total = 0, asking = 0;
@@ -225,11 +226,12 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
       if (effect.empty()) continue;
       auto it = std::find_if(asked.begin(), asked.end(), [&](const Asked& a) { return a.effect == effect; });
       if (it == asked.end()) {
-        asked.push_back({std::move(effect), 0, {}});
+        asked.push_back({std::move(effect), 0, {}, {}});
         it = asked.end() - 1;
       }
       it->weight += h->weight * c.probability;
       it->texts[c.text] += h->weight * c.probability;
+      it->parts.emplace(c.text, c.assistant_part);
       asking += h->weight * c.probability;
     }
   }
@@ -243,13 +245,44 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   bool done = true;
   for (const auto& [bit, v] : top.effect) done = done && pddl::get_bit(s.data(), bit) == v;
   if (done) return std::nullopt;
+  // Asked for several things ("open the cupboard, then fetch the flour"),
+  // the assistant does them in the order asked: the next goal is the effect
+  // of the shortest part of the heaviest reading that is not yet so (after
+  // the longest one that is).
+  std::string top_text;
+  double top_text_weight = -1;
+  for (const auto& [text, w] : top.texts)
+    if (w > top_text_weight) {
+      top_text_weight = w;
+      top_text = text;
+    }
+  std::vector<std::pair<int, bool>> next = top.effect;
+  if (auto it = top.parts.find(top_text); it != top.parts.end() && it->second.size() > 1) {
+    const std::vector<ActionId>& part = it->second;
+    auto holds = [&](const std::vector<std::pair<int, bool>>& e) {
+      return std::all_of(e.begin(), e.end(), [&](const auto& bv) { return pddl::get_bit(s.data(), bv.first) == bv.second; });
+    };
+    size_t from = 0;  // the first prefix to aim for
+    for (size_t k = part.size(); k-- > 1;)
+      if (holds(net_effect(setup, {part.begin(), part.begin() + static_cast<std::ptrdiff_t>(k)}))) {
+        from = k;
+        break;
+      }
+    for (size_t k = from + 1; k <= part.size(); ++k) {
+      auto e = net_effect(setup, {part.begin(), part.begin() + static_cast<std::ptrdiff_t>(k)});
+      if (!e.empty() && !holds(e)) {
+        next = std::move(e);
+        break;
+      }
+    }
+  }
   // The goal: what the request makes true (what it deletes, for a request
   // that only deletes, as an unlock does).
   std::string goal;
-  for (const auto& [bit, v] : top.effect)
+  for (const auto& [bit, v] : next)
     if (v) goal += " " + task.atom_str(bit);
   if (goal.empty())
-    for (const auto& [bit, v] : top.effect) goal += " (not " + task.atom_str(bit) + ")";
+    for (const auto& [bit, v] : next) goal += " (not " + task.atom_str(bit) + ")";
   const Hypothesis* heaviest = *std::max_element(live.begin(), live.end(),
                                                  [](const Hypothesis* a, const Hypothesis* b) { return a->weight < b->weight; });
   std::shared_ptr<model::Specification> spec;

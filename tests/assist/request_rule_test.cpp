@@ -193,3 +193,14 @@ TEST(RequestRule, ValuesThatOnlyAverageOutAreNotATie) {
   EXPECT_EQ(g.task->action_name(f.action), "(move bot bed barn)");
   EXPECT_NE(f.reason.find("doing what was asked"), std::string::npos) << f.reason;
 }
+
+// Asked for two things, the assistant does them in the order asked: the
+// shed and the barn are the same walk away, so only the order tells them
+// apart.
+TEST(RequestRule, TwoThingsAskedAreDoneInTheOrderAsked) {
+  Garden g;
+  EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot basil1 barn)", "(take bot tomato1 shed)"}, {}),
+            "(move bot bed barn)");
+  EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot tomato1 shed)", "(take bot basil1 barn)"}, {}),
+            "(move bot bed shed)");
+}
