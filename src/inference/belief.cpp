@@ -167,14 +167,41 @@ void Belief::note_deixis(pddl::ActionId action) {
   if (!rule || rule->focal_is_place || rule->focal_arg < 1 || rule->focal_arg > static_cast<int>(ga.args.size())) return;
   const pddl::ObjectId focal = ga.args[static_cast<size_t>(rule->focal_arg - 1)];
   deictic_type_ = task_->domain().types[static_cast<size_t>(task_->problem().objects[static_cast<size_t>(focal)].type)].name;
+  deictic_object_ = focal;
 }
 
-std::vector<std::string> Belief::resolved(const std::vector<std::string>& utterances) const {
+std::vector<std::string> Belief::resolved(const std::vector<std::string>& utterances, const pddl::State& s) const {
   if (deictic_type_.empty()) return utterances;
   const language::KindNoun kind = language::kind_noun(deictic_type_);
+  // "One more of these" is another one than the speaker's: a quality value
+  // of that object which no other object of its kind has in s.
+  std::string except;
+  if (deictic_object_ >= 0) {
+    const commands::LanguageConfig& config = utterance_model_->config();
+    const int type = task_->problem().objects[static_cast<size_t>(deictic_object_)].type;
+    const int value_arg = config.qualifier_object_arg == 1 ? 1 : 0;
+    auto values_of = [&](int o) {
+      std::vector<std::string> v;
+      for (const commands::Term& t : utterance_model_->qualifiers(task_->object_name(o), s))
+        if (config.is_qualifier(t.name) && t.args.size() == 2) v.push_back(t.name + " " + t.args[value_arg]);
+      return v;
+    };
+    for (const std::string& pv : values_of(deictic_object_)) {
+      bool unique = true;
+      for (int o = 0; o < task_->num_objects() && unique; ++o)
+        if (o != deictic_object_ && task_->problem().objects[static_cast<size_t>(o)].type == type) {
+          const auto others = values_of(o);
+          unique = std::find(others.begin(), others.end(), pv) == others.end();
+        }
+      if (unique) {
+        except = pv.substr(pv.find(' ') + 1);
+        break;
+      }
+    }
+  }
   std::vector<std::string> out;
   out.reserve(utterances.size());
-  for (const std::string& u : utterances) out.push_back(language::resolve_deixis(u, kind));
+  for (const std::string& u : utterances) out.push_back(language::resolve_deixis(u, kind, except));
   return out;
 }
 
@@ -340,7 +367,7 @@ std::vector<UtteranceRecord> Belief::score_utterances(const pddl::State& s, cons
   if (!lm) throw InputError("an utterance was observed but no language model was given");
   std::vector<int> all(policies_.size());
   for (size_t h = 0; h < all.size(); ++h) all[h] = static_cast<int>(h);
-  const std::vector<std::string> texts = resolved(utterances);
+  const std::vector<std::string> texts = resolved(utterances, s);
   auto scores = utterance_model_->score(speaker_plans(s, all), goal_statements(s, all), s, texts, *lm);
   if (request_share_ > 0) read_requests(s, texts, scores, *lm);
   if (std::getenv("CLIPS_DEBUG_UTTERANCE")) {

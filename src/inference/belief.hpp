@@ -420,10 +420,11 @@ class Belief {
   // The kind of the object the speaker last acted on (a salient action's
   // focal object): what "one more of these" names (language/deixis.hpp).
   std::string deictic_type_;
+  pddl::ObjectId deictic_object_ = -1;  // that object itself: "one more" means another one
   // Notes the speaker's action for deictic_type_.
   void note_deixis(pddl::ActionId action);
-  // The utterances as the language model reads them (deixis resolved).
-  std::vector<std::string> resolved(const std::vector<std::string>& utterances) const;
+  // The utterances as the language model reads them in s (deixis resolved).
+  std::vector<std::string> resolved(const std::vector<std::string>& utterances, const pddl::State& s) const;
   std::shared_ptr<util::WorkerPool> pool_;  // null when refining sequentially
   // Scheduling only: per acting agent (the first argument of the state's
   // first applicable action, -1 if none), each hypothesis' last refinement time.

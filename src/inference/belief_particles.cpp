@@ -18,7 +18,7 @@ Belief::Event Belief::speak_event(const pddl::State& s, const std::vector<std::s
   Event e;
   e.kind = Event::Kind::Speak;
   e.state = s;
-  e.texts = resolved(texts);
+  e.texts = resolved(texts, s);
   e.said = texts;
   if (options_.speak_factors) {
     // The same goal-independent factors, in the same order, as the exact

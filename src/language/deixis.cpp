@@ -51,4 +51,14 @@ std::string resolve_deixis(const std::string& text, const KindNoun& kind) {
   return out;
 }
 
+std::string resolve_deixis(const std::string& text, const KindNoun& kind, const std::string& except) {
+  std::string out = resolve_deixis(text, kind);
+  if (except.empty() || out == text) return out;
+  size_t end = out.size();
+  while (end > 0 && std::isspace(static_cast<unsigned char>(out[end - 1]))) --end;
+  size_t cut = end;
+  while (cut > 0 && (out[cut - 1] == '.' || out[cut - 1] == '?' || out[cut - 1] == '!')) --cut;
+  return out.substr(0, cut) + ", not the " + except + " one" + out.substr(cut, end - cut);
+}
+
 }  // namespace clips::language

@@ -20,5 +20,10 @@ KindNoun kind_noun(const std::string& type);
 // or `kind` is empty. "this"/"that" alone are left as they are: they may
 // point at anything.
 std::string resolve_deixis(const std::string& text, const KindNoun& kind);
+// The same, and where it resolved a reference, "not the EXCEPT one" added
+// before the final punctuation: "another one of these" is not the one the
+// speaker just had (`except`: a quality value only that one has; empty:
+// nothing added).
+std::string resolve_deixis(const std::string& text, const KindNoun& kind, const std::string& except);
 
 }  // namespace clips::language

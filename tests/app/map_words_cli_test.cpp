@@ -75,14 +75,15 @@ TEST(MapWords, ANegatedColourIsNotAskedFor) {
   EXPECT_LT(green(refused), green(asked) - 0.35);
 }
 
-// Right after the human picked up a can, "another one of these" is read as
-// "another can": the two sentences give the same posterior.
+// Right after the human picked up a can (can2, the only blue one), "another
+// one of these" is read as "another can, not the blue one": the two
+// sentences give the same posterior.
 TEST(MapWords, TheseAfterAPickupNamesThePickedUpKind) {
   const std::string acts =
       "(up human c4-4 c4-3) (wait robot) (up human c4-3 c4-2) (wait robot) (up human c4-2 c4-1) (wait robot) "
       "(left human c4-1 c3-1) (wait robot) (pickup human can2 c3-1)";
   const auto these = posterior("Could you fetch me another one of these?", acts, 9);
-  const auto can = posterior("Could you fetch me another can?", acts, 9);
+  const auto can = posterior("Could you fetch me another can, not the blue one?", acts, 9);
   ASSERT_FALSE(these.empty());
   ASSERT_EQ(these.size(), can.size());
   for (const auto& [goal, q] : can) EXPECT_NEAR(these.at(goal), q, 1e-6) << goal;

@@ -28,6 +28,18 @@ TEST(Deixis, OtherWordsAreLeftAsTheyAre) {
   EXPECT_EQ(resolve_deixis("", kCan), "");
 }
 
+TEST(Deixis, AnotherOneIsNotTheOneTheSpeakerHad) {
+  // Given a quality only the speaker's own object has, the resolved words
+  // say it is not that one; nothing resolved, nothing added.
+  EXPECT_EQ(resolve_deixis("Could you fetch me another one of these?", kCan, "blue"),
+            "Could you fetch me another can, not the blue one?");
+  EXPECT_EQ(resolve_deixis("One more of those for bed two, please.  ", kCan, "orange"),
+            "One more can for bed two, please, not the orange one.");
+  EXPECT_EQ(resolve_deixis("Bring me one more", kCan, "red"), "Bring me one more can, not the red one");
+  EXPECT_EQ(resolve_deixis("Could you fetch another bottle?", kCan, "blue"), "Could you fetch another bottle?");
+  EXPECT_EQ(resolve_deixis("Grab one more of those, please.", kCan, ""), "Grab one more can, please.");
+}
+
 TEST(Deixis, ATypeNameIsSaidAsWords) {
   // A type's name is read as the noun people say, with its plural.
   const KindNoun box = kind_noun("box");
