@@ -179,7 +179,7 @@ async function doAct(action) {
 }
 
 function goalNote() {
-  return `the goal is reached (${ui.state.reached_goal}): no more moves; Undo or Reset to play on`;
+  return `the goal is reached (${goalWords(ui.state, ui.state.reached_goal)}): no more moves; Undo or Reset to play on`;
 }
 
 function act(action) {
@@ -262,11 +262,14 @@ function show(s) {
     ui.queue = ui.queue.filter((t) => t.kind !== 'move');
   }
   $('status').className = done ? 'done' : '';
+  // Goals in words, as on the bars; their labels in the tooltip.
   const others = (s.goals_holding || []).filter((g) => g !== s.player_goal);
-  $('status').textContent = done ? `Goal reached: ${done} (step ${s.t}). The board takes no more moves: Undo or Reset to play on.`
+  const said = (g) => goalWords(s, g);
+  $('status').textContent = done ? `Goal reached: ${said(done)} (step ${s.t}). The board takes no more moves: Undo or Reset to play on.`
     : `Step ${s.t}: ${s.turn === s.principal ? 'your move' : 'the assistant is thinking'}.` +
-      (s.player_goal ? ` Your goal: ${s.player_goal} (the assistant is not told).` : ' No goal of your own: play freely.') +
-      (others.length ? ` ${others.join(', ')} ${others.length > 1 ? 'hold' : 'holds'}, not yours: play on.` : '');
+      (s.player_goal ? ` Your goal: ${said(s.player_goal)} (the assistant is not told).` : ' No goal of your own: play freely.') +
+      (others.length ? ` ${others.map(said).join('; ')}: ${others.length > 1 ? 'these hold' : 'this holds'}, not yours: play on.` : '');
+  $('status').title = [done || s.player_goal, ...others].filter(Boolean).join(', ');
   const q = document.createElement('span'); q.id = 'queued'; $('status').appendChild(q);
   showQueue();
   $('board').classList.toggle('done', !!done);
@@ -391,10 +394,44 @@ function el(tag, cls, text) {
   return e;
 }
 
-function named(o) { return o.name + (o.qualities.length ? ' (' + o.qualities.join(', ') + ')' : ''); }
+function named(o) {
+  const words = (o.qualities || []).concat(o.states || []);
+  return o.name + (words.length ? ' (' + words.join(', ') + ')' : '');
+}
+
+// Every thing a text scene shows (at places, held, in other things, on its
+// own), each once, for looking names up.
+function sceneThings(sc) {
+  const out = [];
+  const walk = (o) => { out.push(o); for (const x of o.contents || []) walk(x); };
+  for (const p of sc.places || []) for (const o of p.objects || []) walk(o);
+  for (const a of sc.agents || []) for (const o of a.holds || []) walk(o);
+  for (const o of sc.others || []) walk(o);
+  return out;
+}
+
+// A thing and, indented below it, what is in or on it ("in: key1 (red)").
+function thingBox(o, touched, cls) {
+  const d = el('div', cls || 'item', named(o));
+  d.dataset.object = o.name;
+  if (touched.has(o.name)) d.classList.add('changed');
+  if (!(o.contents && o.contents.length)) return d;
+  const box = el('div', 'thing');
+  box.appendChild(d);
+  const inner = el('div', 'contents');
+  for (const x of o.contents) {
+    const row = thingBox(x, touched);
+    const first = row.classList.contains('thing') ? row.firstChild : row;
+    first.textContent = x.relation + ': ' + first.textContent;
+    inner.appendChild(row);
+  }
+  box.appendChild(inner);
+  return box;
+}
 
 // A pack without pictures: its places as cards, what each agent holds, the
-// other facts, and what the last step changed.
+// other facts, and what the last step changed. A thing in or on another is
+// drawn inside it, and a carried one with its carrier.
 function drawText(sc) {
   showOnly('textscene');
   const box = $('textscene');
@@ -405,10 +442,15 @@ function drawText(sc) {
   const agentLine = (a) => {
     const d = el('div', 'agent ' + (a.name === ui.state.principal ? 'human' : 'robot'));
     d.dataset.agent = a.name;
-    d.textContent = a.name + (a.holds.length ? ' holding ' + a.holds.map(named).join(', ') : '') +
-                    (sc.active === a.name ? ' (to move)' : '');
-    if (touched.has(a.name) || a.holds.some((o) => touched.has(o.name))) d.classList.add('changed');
-    return d;
+    d.textContent = a.name + (sc.active === a.name ? ' (to move)' : '') + (a.holds.length ? ', holding:' : '');
+    if (touched.has(a.name)) d.classList.add('changed');
+    if (!a.holds.length) return d;
+    const wrap = el('div', 'carrier');
+    wrap.appendChild(d);
+    const held = el('div', 'contents');
+    for (const o of a.holds) held.appendChild(thingBox(o, touched));
+    wrap.appendChild(held);
+    return wrap;
   };
   const cards = el('div', 'cards');
   for (const p of sc.places) {
@@ -416,12 +458,7 @@ function drawText(sc) {
     card.dataset.place = p.name;
     card.appendChild(el('h3', '', named(p)));
     for (const a of sc.agents.filter((a) => a.at === p.name)) card.appendChild(agentLine(a));
-    for (const o of p.objects) {
-      const d = el('div', 'item', named(o));
-      d.dataset.object = o.name;
-      if (touched.has(o.name)) d.classList.add('changed');
-      card.appendChild(d);
-    }
+    for (const o of p.objects) card.appendChild(thingBox(o, touched));
     if (!p.objects.length) card.appendChild(el('div', 'pile', '(nothing here)'));
     cards.appendChild(card);
   }
@@ -430,6 +467,13 @@ function drawText(sc) {
     const card = el('div', 'card');
     card.appendChild(el('h3', '', 'agents'));
     for (const a of nowhere) card.appendChild(agentLine(a));
+    cards.appendChild(card);
+  }
+  // Things that hold something and stand nowhere the scene says.
+  for (const o of sc.others || []) {
+    const card = el('div', 'card');
+    card.dataset.thing = o.name;
+    card.appendChild(thingBox(o, touched, 'item holder'));
     cards.appendChild(card);
   }
   box.appendChild(cards);
@@ -507,12 +551,13 @@ function objectWords(s, name) {
     const o = (sc.objects || []).find((x) => x.name === name);
     if (o && o.colour) quals.push(o.colour);
   } else if (sc.kind === 'text') {
-    for (const p of sc.places || [])
-      for (const o of p.objects || []) if (o.name === name) quals.push(...(o.qualities || []));
-    for (const a of sc.agents || [])
-      for (const o of a.holds || []) if (o.name === name) quals.push(...(o.qualities || []));
+    const o = sceneThings(sc).find((x) => x.name === name) || (sc.places || []).find((x) => x.name === name);
+    if (o) quals.push(...(o.qualities || []));
   }
-  const noun = name.replace(/[-_]+/g, ' ').replace(/\s*\d+$/, '');
+  // A number tells places apart ("shelf 3"); of other things the kind is said ("the red key").
+  const place = sc.kind === 'text' && (sc.places || []).some((p) => p.name === name);
+  const noun = place ? name.replace(/[-_]+/g, ' ').replace(/([^\d\s])(\d+)$/, '$1 $2')
+                     : name.replace(/[-_]+/g, ' ').replace(/\s*\d+$/, '');
   return 'the ' + quals.concat([noun]).join(' ');
 }
 
@@ -622,7 +667,9 @@ function drawLegend() {
     g.setLineDash([]);
     drawMarker(g, st.marker, 17, 6, 3);
     item.appendChild(c);
-    item.appendChild(el('span', '', st.goal));
+    // In words, as on the bars; the label as the tooltip.
+    item.appendChild(el('span', '', ui.state ? goalWords(ui.state, st.goal) : st.goal));
+    item.title = st.goal;
     box.appendChild(item);
   }
 }
@@ -638,6 +685,52 @@ function table(rows, chosen) {
   return t;
 }
 
+// A reading in words, from its steps as the server parts them (agent,
+// verb, objects), said with the scene's names and qualities as the goals
+// are: "robot: pick up the red key, hand it over to human". A goal
+// statement says the goal as the bars do ("goal: human has the red gem"). Text that is no command of the
+// domain ("(no command: ...)") reads as it is.
+function commandWords(s, c) {
+  const parts = [];
+  if (c.goal) parts.push(`goal: ${goalWords(s, c.goal)}`);
+  const seen = new Set();  // a variable said once is "it" after
+  let agent, phrases = [];
+  const flush = () => { if (phrases.length) parts.push(`${agent}: ${phrases.join(', ')}`); phrases = []; };
+  for (const st of c.steps || []) {
+    if (st.agent !== agent) { flush(); agent = st.agent; }
+    phrases.push(stepWords(s, st, seen));
+  }
+  flush();
+  return parts.length ? parts.join('; ') : c.command.replace(/^\(|\)$/g, '');
+}
+
+function stepWords(s, st, seen) {
+  const things = [], recipients = [];
+  for (const o of st.objects) {
+    if (o.name === s.principal || o.name === s.assistant) { recipients.push(o.name); continue; }
+    if (!o.name.startsWith('?')) {
+      things.push(o.qualities.length && s.scene.kind !== 'text' && s.scene.kind !== 'grid'
+        ? 'the ' + o.qualities.concat([o.noun.replace(/\s*\d+$/, '')]).join(' ') : objectWords(s, o.name));
+    } else if (seen.has(o.name)) {
+      things.push('it');
+    } else {
+      seen.add(o.name);
+      let w = 'the ' + o.qualities.filter((q) => q !== o.noun).concat([o.noun]).join(' ');
+      if (o.from) w += ' from ' + objectWords(s, o.from);
+      if (o.to) w += ' to ' + objectWords(s, o.to);
+      things.push(w);
+    }
+  }
+  const verb = st.verb.split(' ');
+  // A phrasal verb takes "it" between its words: "hand it over", "pick it up".
+  const head = verb.length === 2 && things[0] === 'it'
+    ? [verb[0], 'it', verb[1], ...things.slice(1)].join(' ')
+    : [st.verb, ...things].join(' ');
+  return head + (recipients.length ? ' to ' + recipients.join(' and ') : '');
+}
+
+// Each reading in words with its probability; the command's PDDL form one
+// click away (the words open it).
 function drawReading(r) {
   const box = $('reading');
   box.innerHTML = '';
@@ -645,7 +738,19 @@ function drawReading(r) {
   const p = document.createElement('div');
   p.textContent = `"${r.utterance}" (${r.source}):`;
   box.appendChild(p);
-  box.appendChild(table(r.commands.map((c) => [c.command, c.p.toFixed(3)])));
+  const t = document.createElement('table');
+  t.className = 'readings';
+  for (const c of r.commands) {
+    const tr = t.insertRow();
+    const cell = tr.insertCell();
+    const d = el('details', 'pddl');
+    const words = el('summary', 'words', commandWords(ui.state, c));
+    d.appendChild(words);
+    d.appendChild(el('code', '', c.command));
+    cell.appendChild(d);
+    const num = tr.insertCell(); num.className = 'num'; num.textContent = c.p.toFixed(3);
+  }
+  box.appendChild(t);
 }
 
 // The assistant's latest decision still in the history (the server keeps it

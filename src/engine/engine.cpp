@@ -788,7 +788,7 @@ std::optional<Reading> Engine::reading(size_t top) const {
     r.source = "literal listener (uniform prior over commands)";
     const auto& ranked = m.literal_reading();
     for (size_t i = 0; i < ranked.commands.size() && i < top; ++i)
-      r.commands.push_back({ranked.commands[i].command.display_form(), ranked.commands[i].prob});
+      r.commands.push_back({ranked.commands[i].command.display_form(), ranked.commands[i].prob, {}});
   } else if (rec) {
     // P(command | u) = sum_h P(h | data) P(command | u, h): the commands each
     // goal would have the assistant do, weighted by the current posterior as
@@ -799,16 +799,32 @@ std::optional<Reading> Engine::reading(size_t top) const {
         m.belief->posterior(m.options.method == Method::ActionOnly ? Modality::Both : modality_of(m.options.method));
     const std::vector<double> w = assistant_weights(*m.belief, post);
     std::map<std::string, double> mass;
+    // A goal statement is its hypothesis' goal said in words: which goal, by
+    // the mass each goal gave it (the page says the goal as the bars do).
+    const std::string statement = "(make " + m.problem.pack->spec().language.speaker_pronoun + " ?goal1)";
+    std::map<std::string, std::map<int, double>> stated;
     double empty = 0;
+    const auto& hyps = m.belief->hypotheses();
     for (size_t h = 0; h < rec->hypotheses.size() && h < w.size(); ++h) {
       const auto& hu = rec->hypotheses[h];
       if (hu.commands.empty()) empty += w[h];
-      for (const auto& c : hu.commands) mass[c.command] += w[h] * c.posterior;
+      for (const auto& c : hu.commands) {
+        mass[c.command] += w[h] * c.posterior;
+        if (h < hyps.size() && c.command.rfind(statement, 0) == 0) stated[c.command][hyps[h].goal] += w[h] * c.posterior;
+      }
     }
     std::vector<std::pair<std::string, double>> ranked(mass.begin(), mass.end());
     if (empty > 0) ranked.emplace_back("(no command: the human needs no help)", empty);
     std::stable_sort(ranked.begin(), ranked.end(), [](auto& a, auto& b) { return a.second > b.second; });
-    for (size_t i = 0; i < ranked.size() && i < top; ++i) r.commands.push_back(ranked[i]);
+    for (size_t i = 0; i < ranked.size() && i < top; ++i) {
+      std::string goal;
+      if (const auto it = stated.find(ranked[i].first); it != stated.end()) {
+        const auto best = std::max_element(it->second.begin(), it->second.end(),
+                                           [](auto& a, auto& b) { return a.second < b.second; });
+        if (best->first >= 0 && best->first < static_cast<int>(m.goal_labels.size())) goal = m.goal_labels[best->first];
+      }
+      r.commands.push_back({ranked[i].first, ranked[i].second, std::move(goal)});
+    }
   }
   return r;
 }

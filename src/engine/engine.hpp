@@ -87,7 +87,16 @@ struct Reading {
   bool scored = false;  // the belief scored it (evidence_weight and warning are set)
   double evidence_weight = 1;
   std::string warning;
-  std::vector<std::pair<std::string, double>> commands;  // most probable first
+  // One reading: a command's display form and its probability; `goal`, for
+  // a goal statement ("(make me ?goal1) where (named ?goal1 ...)", alone or
+  // joined to a command), the label of the candidate goal it states (the most
+  // probable one, should two goals' statements read alike), else empty.
+  struct Command {
+    std::string command;
+    double p = 0;
+    std::string goal;
+  };
+  std::vector<Command> commands;  // most probable first
 };
 
 // One point per belief update (start, each action, each utterance).

@@ -184,7 +184,8 @@ PlaySession::PlaySession(PlaySetup setup, const std::string& method, std::shared
       assistant_(setup.pack->roles().assistant),
       method_(method_name(checked_method(method))),
       limits_(limits),
-      engine_(play_engine(std::move(setup), checked_method(method), std::move(lm), limits)) {
+      engine_(play_engine(std::move(setup), checked_method(method), std::move(lm), limits)),
+      words_(engine_.task_ptr(), engine_.pack()) {
   switch (engine_.pack().spec().scene) {
     case domains::SceneKind::Grid: dkg_.emplace(engine_.task()); break;
     case domains::SceneKind::Cards: vh_.emplace(engine_.task()); break;
@@ -339,7 +340,13 @@ json PlaySession::reading() const {
   }
   if (!r->source.empty()) j["source"] = r->source;
   json cmds = json::array();
-  for (const auto& [c, p] : r->commands) cmds.push_back({{"command", c}, {"p", p}});
+  // Each reading in parts (who does what to which objects), for the page to
+  // say in words; a goal statement names its goal by label.
+  for (const auto& c : r->commands) {
+    json cj = {{"command", c.command}, {"p", c.p}, {"steps", words_.steps(c.command, !c.goal.empty())}};
+    if (!c.goal.empty()) cj["goal"] = c.goal;
+    cmds.push_back(std::move(cj));
+  }
   j["commands"] = std::move(cmds);
   return j;
 }

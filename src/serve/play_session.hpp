@@ -20,6 +20,7 @@
 #include "domains/vh_world.hpp"
 #include "engine/engine.hpp"
 #include "language/lm/language_model.hpp"
+#include "serve/command_words.hpp"
 #include "serve/text_scene.hpp"
 
 namespace clips::serve {
@@ -131,6 +132,7 @@ class PlaySession {
   std::optional<domains::VhWorld> vh_;
   std::optional<TextScene> text_;
   engine::Engine engine_;
+  CommandWords words_;  // readings in parts, for the page to say in words
   // The assist results still in the history, oldest first, each with the
   // number of events the history had after it (an applied decision's action
   // is the last of them). The state shows the latest applied one whose

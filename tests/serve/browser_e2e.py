@@ -203,14 +203,17 @@ def play_quick_start(browser, source_dir, dkg, shot, check):
     goals = [g["goal"] for g in state["posterior"]["goals"]]
     check(choices == ["plan", "none"] + goals, "the goal menu offers %s, not the plan's, none and %s" % (choices, goals))
     check(state["player_goal"] == true_goal, "the player's goal is %s, not the plan's %s" % (state["player_goal"], true_goal))
-    check(("Your goal: %s" % true_goal) in browser.js("document.getElementById('status').textContent"),
-          "the status does not show the player's goal")
     # Goals in words, from their conditions and the scene; the label is the tooltip.
     words = browser.js("[...document.querySelectorAll('#bars .bar')].map(b => [b.dataset.goal, "
                        "b.querySelector('.label').textContent, b.querySelector('.label').title])")
     for goal, text, title in words:
         check(text.startswith("human has the ") and text.endswith(" gem") and title.startswith(goal),
               "goal %s reads '%s' (tooltip '%s'), not in words" % (goal, text, title))
+    # The status names the player's goal in the same words, not by its label.
+    said = dict((g, t) for g, t, _ in words).get(true_goal, "?")
+    status = browser.js("document.getElementById('status').textContent")
+    check(("Your goal: %s " % said) in status and true_goal not in status,
+          "the status does not say the player's goal in words: " + status)
 
     # Type the instruction and press Enter: the focus is back on the board.
     # While the assistant thinks the page plays no key and keeps none for
@@ -315,7 +318,16 @@ def play_quick_start(browser, source_dir, dkg, shot, check):
     check(max(bars, key=lambda b: b[1])[0] == true_goal, "the bars do not put the true goal %s ahead" % true_goal)
 
     # After the goal the board takes no more moves, and says so.
-    check("Goal reached" in browser.js("document.getElementById('status').textContent"), "the status does not say the goal is reached")
+    status = browser.js("document.getElementById('status').textContent")
+    check(status.startswith("Goal reached: %s " % said), "the status does not say the goal reached in words: " + status)
+    # Each reading of the instruction in words, the PDDL form one click away.
+    rows = browser.js("[...document.querySelectorAll('#reading details.pddl')].map(d => "
+                      "[d.querySelector('summary').textContent, d.querySelector('code').textContent])")
+    print("readings: " + " | ".join(w for w, _ in rows))
+    check(rows and all(not w.startswith("(") and "?" not in w and p.startswith("(") for w, p in rows),
+          "the readings are not in words: %s" % rows)
+    check(any(w.startswith("robot: ") and "red key" in w for w, _ in rows),
+          "no reading says the robot should fetch the red key: %s" % rows)
     check(browser.js("[...document.querySelectorAll('#controls button')].every(b => b.disabled)"),
           "buttons stay live after the goal")
     browser.key("up")

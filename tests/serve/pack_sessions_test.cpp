@@ -276,6 +276,139 @@ TEST_F(PackSessions, TheDecisionShownIsTheLatestStillInTheHistory) {
   EXPECT_TRUE(st["decision"].is_null());
 }
 
+// A study whose chest stands in a room by a fact no action changes, with
+// books inside it, and a basket the human carries with a lamp in it (issue
+// 62): the text scene draws the chest at its room with its contents, and the
+// basket with its carrier, not as places of their own nor as loose facts.
+const char* kStudyDomain = R"pddl(
+(define (domain study)
+  (:requirements :typing :negative-preconditions :equality)
+  (:types agent item room chest colour - object  book lamp basket - item)
+  (:predicates (at ?a - agent ?r - room) (in ?i - item ?r - room) (inside ?i - item ?c - object)
+               (stands ?c - chest ?r - room) (holding ?a - agent ?i - item) (open ?c - chest)
+               (iscolour ?i - item ?c - colour))
+  (:action move :parameters (?a - agent ?from - room ?to - room)
+   :precondition (and (at ?a ?from) (not (= ?from ?to))) :effect (and (not (at ?a ?from)) (at ?a ?to)))
+  (:action open :parameters (?a - agent ?c - chest ?r - room)
+   :precondition (and (at ?a ?r) (stands ?c ?r) (not (open ?c))) :effect (open ?c))
+  (:action takeout :parameters (?a - agent ?i - item ?c - chest ?r - room)
+   :precondition (and (at ?a ?r) (stands ?c ?r) (open ?c) (inside ?i ?c))
+   :effect (and (not (inside ?i ?c)) (holding ?a ?i)))
+  (:action handover :parameters (?a - agent ?b - agent ?i - item ?r - room)
+   :precondition (and (not (= ?a ?b)) (at ?a ?r) (at ?b ?r) (holding ?a ?i))
+   :effect (and (not (holding ?a ?i)) (holding ?b ?i))))
+)pddl";
+const char* kStudyProblem = R"pddl(
+(define (problem study-1) (:domain study)
+  (:objects human robot - agent hall study - room chest1 - chest book1 book2 - book lamp1 - lamp
+            basket1 - basket red blue - colour)
+  (:init (at human hall) (at robot study) (stands chest1 study)
+         (inside book1 chest1) (inside book2 chest1) (iscolour book1 red) (iscolour book2 blue)
+         (holding human basket1) (inside lamp1 basket1)))
+)pddl";
+const char* kStudyPack = R"json({"domain": "study",
+  "goals": {"source": "objects", "object_type": "book", "condition": "(holding human {})"},
+  "language": {"salient_actions": [{"action": "takeout", "agent_arg": 1, "focal_arg": 2},
+                                   {"action": "handover", "agent_arg": 1, "focal_arg": 3}],
+               "qualifier": {"predicate": "iscolour"},
+               "goal_atoms": {"takeout": ["(holding $1 $2)"], "handover": ["(holding $2 $3)"]}}})json";
+
+TEST_F(PackSessions, TextSceneDrawsThingsInTheirHoldersAndCarriers) {
+  auto s = make();
+  json st = created(*s, {{"domain", kStudyDomain}, {"problem", kStudyProblem}, {"pack", kStudyPack}});
+  ASSERT_TRUE(st.contains("id"));
+  const json& sc = st["scene"];
+  ASSERT_EQ(sc["kind"], "text");
+  // Places are where agents stand: the rooms, not the chest nor the basket.
+  std::vector<std::string> places;
+  for (const auto& p : sc["places"]) places.push_back(p["name"]);
+  EXPECT_EQ(places, (std::vector<std::string>{"hall", "study"})) << sc.dump();
+  // The chest stands in the study, the books inside it.
+  const json* study = find_named(sc["places"], "study");
+  ASSERT_NE(study, nullptr);
+  const json* chest = find_named((*study)["objects"], "chest1");
+  ASSERT_NE(chest, nullptr) << sc.dump();
+  ASSERT_TRUE(chest->contains("contents")) << chest->dump();
+  const json* book1 = find_named((*chest)["contents"], "book1");
+  ASSERT_NE(book1, nullptr) << chest->dump();
+  EXPECT_EQ((*book1)["relation"], "inside");
+  EXPECT_EQ((*book1)["qualities"], json({"red"}));
+  EXPECT_NE(find_named((*chest)["contents"], "book2"), nullptr);
+  EXPECT_FALSE(chest->contains("states"));  // closed: (open chest1) is false
+  // The basket is carried by the human, with the lamp in it.
+  const json& human = *find_named(sc["agents"], "human");
+  ASSERT_EQ(human["holds"].size(), 1u) << human.dump();
+  EXPECT_EQ(human["holds"][0]["name"], "basket1");
+  ASSERT_EQ(human["holds"][0]["contents"].size(), 1u);
+  EXPECT_EQ(human["holds"][0]["contents"][0]["name"], "lamp1");
+  // Nothing of it is left to the facts, nor drawn on its own.
+  EXPECT_TRUE(sc["facts"].empty()) << sc["facts"].dump();
+  EXPECT_TRUE(sc["others"].empty());
+  EXPECT_NE(sc["text"].get<std::string>().find("chest1 [inside: book1 (red), book2 (blue)]"), std::string::npos)
+      << sc["text"];
+  // Opened, the chest says so beside it, not among the facts.
+  const std::string url = "/api/sessions/" + st["id"].get<std::string>();
+  st = post(*s, url + "/act", {{"action", "(move human hall study)"}});
+  st = post(*s, url + "/act", {{"action", "(open robot chest1 study)"}});
+  chest = find_named((*find_named(st["scene"]["places"], "study"))["objects"], "chest1");
+  ASSERT_NE(chest, nullptr);
+  EXPECT_EQ((*chest)["states"], json({"open"})) << chest->dump();
+  EXPECT_TRUE(st["scene"]["facts"].empty()) << st["scene"]["facts"].dump();
+  // Taken out, the book is with its carrier.
+  st = post(*s, url + "/act", {{"action", "(takeout human book1 chest1 study)"}});
+  const json& holds = (*find_named(st["scene"]["agents"], "human"))["holds"];
+  EXPECT_NE(find_named(holds, "book1"), nullptr) << holds.dump();
+  chest = find_named((*find_named(st["scene"]["places"], "study"))["objects"], "chest1");
+  EXPECT_EQ(find_named((*chest)["contents"], "book1"), nullptr);
+}
+
+// Each reading comes in parts a front end says in words: the acting agent
+// (pronouns become the pack's agents), the action's name as words and its
+// objects with their nouns and qualities; the PDDL form stays beside them.
+TEST_F(PackSessions, ReadingsComeInPartsForWords) {
+  auto s = make();
+  json st = created(*s, {{"domain", kStudyDomain}, {"problem", kStudyProblem}, {"pack", kStudyPack}});
+  const std::string url = "/api/sessions/" + st["id"].get<std::string>();
+  st = post(*s, url + "/act", {{"action", "(move human hall study)"}});
+  st = post(*s, url + "/assist", {{"apply", true}})["state"];
+  st = post(*s, url + "/hear", {{"utterance", "Could you hand me the red book?"}});
+  ASSERT_FALSE(st["reading"].is_null());
+  const json& cmds = st["reading"]["commands"];
+  ASSERT_FALSE(cmds.empty());
+  bool handover_seen = false;
+  for (const auto& c : cmds) {
+    const std::string pddl = c["command"];
+    ASSERT_TRUE(c.contains("steps")) << c.dump();
+    if (pddl.rfind("(no command", 0) == 0) {
+      EXPECT_TRUE(c["steps"].empty());
+      continue;
+    }
+    // A goal statement names its goal by label; its (make ...) is no step.
+    if (c.contains("goal")) {
+      EXPECT_TRUE(c["goal"] == "book1" || c["goal"] == "book2") << c.dump();
+      for (const auto& step : c["steps"]) EXPECT_NE(step["action"], "make");
+    }
+    for (const auto& step : c["steps"]) {
+      EXPECT_TRUE(step["agent"] == "robot" || step["agent"] == "human") << step.dump();
+      EXPECT_NE(pddl.find("(" + step["action"].get<std::string>() + " "), std::string::npos) << pddl;
+      if (step["action"] != "handover") continue;
+      handover_seen = true;
+      EXPECT_EQ(step["verb"], "hand over");  // the run-together name split into words
+      // (handover you me ?book1) where (iscolour ?book1 red): to the human, the red book.
+      ASSERT_EQ(step["objects"].size(), 2u) << step.dump();
+      EXPECT_EQ(step["objects"][0]["name"], "human");
+      const json& book = step["objects"][1];
+      if (book["name"].get<std::string>().front() == '?') {
+        EXPECT_EQ(book["noun"], "book");
+        if (pddl.find("iscolour " + book["name"].get<std::string>() + " red") != std::string::npos) {
+          EXPECT_EQ(book["qualities"], json({"red"})) << pddl;
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(handover_seen) << cmds.dump();
+}
+
 // A pack whose no-op is `idle` and whose turn predicate is `turn` (neither
 // in its domain: clips compiles them) plays over the JSON API: the bot
 // answers the gardener's moves with the pack's actions.
