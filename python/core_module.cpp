@@ -32,6 +32,9 @@
 #include "scenes/scenes.hpp"
 #include "render/render.hpp"
 #include "engine/json.hpp"
+#include "engine/methods.hpp"
+#include "eval/choices.hpp"
+#include "inference/belief.hpp"
 #include "engine/options.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
@@ -135,20 +138,28 @@ std::vector<std::string> list_option(const char* name, py::handle v) {
 
 
 
-// "qmdp (Q_MDP: ...) or pibar (...)": the names and help of the one table.
-std::string assistance_choices() {
-  std::string out;
-  const auto& names = clips::assistance_names();
-  for (size_t i = 0; i < names.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i] + " (" +
-           clips::assistance_help(clips::parse_assistance(names[i])) + ")";
+// Every named choice (eval/choices.hpp) as {id: [{'name', 'help', 'aliases'}]}:
+// the same tables the CLI's flags and the server's fields read.
+py::dict choices() {
+  py::dict out;
+  for (const auto& [id, kind] : clips::eval::choice_catalogue()) {
+    py::list l;
+    for (const auto& c : kind.choices) {
+      py::dict d;
+      d["name"] = c.name;
+      d["help"] = c.help;
+      d["aliases"] = c.aliases;
+      l.append(d);
+    }
+    out[py::str(id)] = l;
+  }
   return out;
 }
 
 constexpr long long kMaxThreads = 1024;
 
 struct SessionOption {
-  const char* name;
+  std::string name;  // owned: the particle rows' names come from a table built per call
   std::string help;
   std::function<void(clips::SessionOptions&, py::handle)> set;
   std::function<std::string(const clips::SessionOptions&)> show;  // the default, as Python would write it
@@ -195,14 +206,15 @@ const std::vector<SessionOption>& session_option_table() {
   using O = clips::SessionOptions;
   static const std::vector<SessionOption> table = [] {
     std::vector<SessionOption> t = {
-      {"method", "clips, lang_only, action_only or literal (also read: language, action): the evidence the posterior "
-                 "uses and how the assistant decides",
+      // The names and their help from the engine's tables (engine/methods.hpp).
+      {"method", "the evidence the posterior uses and how the assistant decides: " +
+                     clips::engine::method_choices().help_text(),
        [](O& o, py::handle v) { o.method = clips::parse_method(text_option("method", v)); },
-       [](const O&) { return quoted("clips"); }},
-      {"assistance", assistance_choices(),
+       [](const O& o) { return quoted(clips::method_name(o.method)); }},
+      {"assistance", "how the assistant decides: " + clips::engine::assistance_choices().help_text(),
        [](O& o, py::handle v) { o.assistance = clips::parse_assistance(text_option("assistance", v)); },
-       [](const O&) { return quoted(clips::assistance_name(clips::Assistance::QMdp)); }},
-      {"lm", "language model: embedded (offline) or openai",
+       [](const O& o) { return quoted(clips::assistance_name(o.assistance)); }},
+      {"lm", "language model: " + clips::util::or_list(clips::language::language_model_kinds()),
        [](O& o, py::handle v) { o.language_model.backend = text_option("lm", v); },
        [](const O& o) { return quoted(o.language_model.backend); }},
       {"lm_base_url", "openai: completions API base URL ('': $CLIPS_LM_BASE_URL, else OpenAI's)",
@@ -229,8 +241,13 @@ const std::vector<SessionOption>& session_option_table() {
       {"threads", "threads refining the hypotheses, 0 to 1024 (0: all cores)",
        [](O& o, py::handle v) { o.threads = static_cast<int>(int_option("threads", v, 0, kMaxThreads)); },
        [](const O& o) { return std::to_string(o.threads); }},
-      {"assistant_turns", "refinement at the assistant's turns: taken or all (as --assistant-turns)",
-       [](O& o, py::handle v) { o.assistant_turns = text_option("assistant_turns", v); },
+      {"assistant_turns", "refinement at the assistant's turns (as --assistant-turns): " +
+                              clips::inference::assistant_turns_choices().help_text(),
+       [](O& o, py::handle v) {
+         const std::string t = text_option("assistant_turns", v);
+         clips::inference::parse_assistant_turns(t);  // a bad name lists the valid ones now, not at open
+         o.assistant_turns = t;
+       },
        [](const O& o) { return quoted(o.assistant_turns); }},
     };
     // The particle options, from the engine's one table, before assistant_turns.
@@ -995,6 +1012,10 @@ PYBIND11_MODULE(_core, m) {
         "run_bench(dataset, *, methods=[], plans=[], jobs=0, seed=1, lm='embedded') -> dict\n\n"
         "Every plan x method of a dataset, as `clips bench`: {'domain', 'lm', 'rows': [one dict per plan and "
         "method], 'summary': {method: {metric: {'mean', 'se', 'n'}}}, 'wall_seconds', 'failed_plans'}.");
+  m.def("choices", &choices,
+        "choices() -> dict\n\nEvery named choice of the options and methods (the keyword 'method', "
+        "'assistance', 'rejuvenate', ...; run_bench's methods), by kind: {kind: [{'name', 'help', 'aliases'}]}. "
+        "The same name tables the CLI's flags and the server's fields read (docs/cli.md, \"Named choices\").");
   m.def("data_directory", &clips::data_directory,
         "data_directory() -> str\n\nWhere the library reads its data: $CLIPS_DATA_DIR, else the data installed "
         "with the package (or under the prefix), else the source tree it was built from.");

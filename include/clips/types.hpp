@@ -11,9 +11,10 @@
 namespace clips {
 
 // Which evidence the posterior uses, and how the assistant decides. One
-// name table (method_name / parse_method) serves CLI flags, Python keywords
-// and JSON fields: "clips", "lang_only", "action_only", "literal"; the old
-// spellings ("both", "utterance", "language", "action", ...) are read too.
+// name table (src/engine/methods.cpp; docs/cli.md, "Named choices") serves
+// CLI flags, Python keywords and JSON fields: "clips", "lang_only",
+// "action_only", "literal"; the old spellings ("both", "utterance",
+// "language", "action", ...) are read too.
 enum class Method {
   Clips,         // actions and utterances
   LanguageOnly,  // utterances only (the actions still move the state)
@@ -26,8 +27,8 @@ enum class Method {
 std::string method_name(Method m);
 // Any known spelling; throws InputError listing the names.
 Method parse_method(const std::string& text);
-// The canonical names, in enum order.
-const std::vector<std::string>& method_names();
+// The canonical names, in the table's order.
+std::vector<std::string> method_names();
 
 enum class Assistance {
   QMdp,   // Q_MDP: the action of highest posterior-weighted Q-value
@@ -38,7 +39,7 @@ enum class Assistance {
 std::string assistance_name(Assistance a);
 // Throws InputError listing the names.
 Assistance parse_assistance(const std::string& text);
-const std::vector<std::string>& assistance_names();
+std::vector<std::string> assistance_names();
 // One line saying what the rule does, for help texts and the API's docs.
 std::string assistance_help(Assistance a);
 

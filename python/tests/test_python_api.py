@@ -376,3 +376,23 @@ def test_cancel_from_another_thread_stops_a_long_call_and_leaves_the_session_as_
     for a in ("(pickup human key1 patio)", "(wait robot)"):
         fresh.observe(a)
     assert step["posterior"] == fresh.observe("(unlock human key1 shed patio)")["posterior"]
+
+
+def test_choices_are_the_name_tables_the_docs_list():
+    """issue 63: choices() is the one catalogue; docs/cli.md's table (checked
+    against the C++ tables by test_eval) and the keywords' help agree with it."""
+    catalogue = clips_assist.choices()
+    rows = []
+    page = (ROOT / "docs" / "cli.md").read_text(encoding="utf-8")
+    table = page.split("<!-- choices: begin (generated) -->\n", 1)[1].split("<!-- choices: end -->", 1)[0]
+    for line in table.splitlines()[2:]:
+        kind, name = (cell.strip() for cell in line.split("|")[1:3])
+        rows.append((kind.strip("`"), name.split("`")[1]))
+    assert rows == [(k, c["name"]) for k, cs in catalogue.items() for c in cs]
+    doc = clips_assist.Session.open_dataset.__doc__
+    for kind in ("method", "assistance", "assistant_turns", "rejuvenate", "particle_filters", "particle_estimate"):
+        for c in catalogue[kind]:
+            assert c["name"] in doc, (kind, c["name"])
+    assert {c["name"] for c in catalogue["assistance"]} == {"qmdp", "pibar"}
+    with pytest.raises(clips_assist.InputError, match=r"known: qmdp, pibar"):
+        clips_assist.Session.open_dataset(EXAMPLES, "e1", assistance="oracle")

@@ -7,10 +7,13 @@
 #include <nlohmann/json.hpp>
 
 #include "pddl/sexpr.hpp"
+#include "app/choice_option.hpp"
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "app/observations.hpp"
 #include "engine/json.hpp"
+#include "engine/methods.hpp"
+#include "eval/methods.hpp"
 #include "eval/experiment.hpp"
 #include "language/listener.hpp"
 
@@ -20,7 +23,7 @@ void register_assist(CLI::App& app) {
   auto* cmd = app.add_subcommand("assist", "Infer the goal from a plan's prefix and utterance, then assist; print metrics. With --problem: the assistant's "
       "next action after the given actions and utterance");
   struct Opts {
-    std::string dataset, method = "clips", assist = "qmdp_offline";
+    std::string dataset, method = "clips", assist = eval::assist_policy_choices().entries().front().name;
     ObservationFlags obs;
     LmFlags lm;
     bool json = false;
@@ -31,17 +34,21 @@ void register_assist(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   add_dataset_option(cmd, o->dataset, "Dataset directory");
   add_observation_options(cmd, o->obs);
+  // The bench's methods without a policy suffix (that is --assist), from the name tables.
+  std::vector<std::string> methods = engine::posterior_method_names();
+  for (const auto& n : domains::literal_method_choices().names()) methods.push_back(n);
+  for (const auto& n : eval::baseline_choices().names()) methods.push_back(n);
   cmd->add_option("--method", o->method,
-                  "clips, lang_only, action_only, literal_naive, literal_efficient (VH: literal), multimodal")
-      ->check(CLI::IsMember({"clips", "lang_only", "action_only", "literal_naive", "literal_efficient", "literal",
-                             "multimodal"}));
+                  util::or_list(methods) + " (which apply depends on the domain: doors-keys-gems has literal_naive and "
+                  "literal_efficient, VirtualHome literal)")
+      ->check(CLI::IsMember(methods));
   auto mm = std::make_shared<eval::MultimodalOptions>();
   cmd->add_option("--chat-base-url", mm->base_url,
                   "multimodal: OpenAI-compatible chat endpoint (or $CLIPS_CHAT_BASE_URL, else the OpenAI API)")
       ->check(HttpUrl);
   cmd->add_option("--chat-model", mm->model, "multimodal: chat model (or $CLIPS_CHAT_MODEL)");
-  cmd->add_option("--assist", o->assist, "qmdp_offline (default), qmdp_online or pibar (inference methods)")
-      ->check(CLI::IsMember({"qmdp_offline", "qmdp_online", "pibar"}));
+  add_choice_option(cmd, "--assist", o->assist, eval::assist_policy_choices(),
+                    "Assistance policy of the inference methods (default " + o->assist + ")");
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
   add_assistance_options(cmd, o->lm);
@@ -55,9 +62,12 @@ void register_assist(CLI::App& app) {
   cmd->callback([o, mm] {
     check_observation_flags(o->obs);  // before loading anything
     const bool adhoc = !o->obs.problem.empty();
-    if (adhoc && o->method != "clips" && o->method != "lang_only" && o->method != "action_only")
-      throw UsageError("with --problem, --method is clips, lang_only or action_only (the others need a dataset plan)");
-    if (adhoc && o->assist != "qmdp_offline")
+    const auto inference_methods = engine::posterior_method_names();
+    const bool ip = std::find(inference_methods.begin(), inference_methods.end(), o->method) != inference_methods.end();
+    if (adhoc && !ip)
+      throw UsageError("with --problem, --method is " + util::or_list(inference_methods) +
+                       " (the others need a dataset plan)");
+    if (adhoc && eval::assist_policy_choices().parse(o->assist) != eval::AssistPolicy::QmdpOffline)
       throw UsageError("with --problem, the assistant's next action is the Q_MDP choice (--assist qmdp_offline)");
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
     bound_grounding(ds, "assist", o->time_limit);
@@ -112,9 +122,8 @@ void register_assist(CLI::App& app) {
     if (o->time_limit)
       eo.deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                   std::chrono::duration<double>(*o->time_limit));
-    bool ip = o->method == "clips" || o->method == "lang_only" || o->method == "action_only";
-    std::string name = o->method;
-    if (ip && o->assist != "qmdp_offline") name += "/" + o->assist;
+    const std::string name =
+        ip ? eval::composite_method_name(o->method, eval::assist_policy_choices().parse(o->assist)) : o->method;
     // Relative metrics need the CLIPS reference run on the same plan.
     eo.methods = {"clips"};
     if (name != "clips") eo.methods.push_back(name);

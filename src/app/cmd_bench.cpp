@@ -17,6 +17,7 @@
 #include "app/scaling_cli.hpp"
 #include "app/particle_flags.hpp"
 #include "eval/bench.hpp"
+#include "eval/methods.hpp"
 #include "studies/particle_eval.hpp"
 #include "eval/bench_shards.hpp"
 #include "report/report.hpp"
@@ -313,7 +314,7 @@ void register_bench(CLI::App& app) {
       o->shard = s.k;
       o->shard_count = s.n;
     }
-    bool wants_mm = std::find(methods->begin(), methods->end(), "multimodal") != methods->end();
+    bool wants_mm = std::find(methods->begin(), methods->end(), eval::baseline_choices().name(eval::Baseline::Multimodal)) != methods->end();
     if (wants_mm && !o->experiment.multimodal.configured())
       throw InputError("--methods multimodal needs a chat endpoint: --chat-base-url URL or $CLIPS_CHAT_BASE_URL");
     prepare_output_dirs({{"--out", out.get()}, {"--report", report.get()}});

@@ -12,6 +12,7 @@
 #include "data/dataset.hpp"
 #include "app/particle_flags.hpp"
 #include "engine/json.hpp"
+#include "engine/methods.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
@@ -129,9 +130,17 @@ void register_infer(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (with domain.pddl)");
   add_observation_options(cmd, o->obs);
+  // The methods with a posterior of their own, with their older spellings (the one method table).
+  std::vector<std::string> with_aliases;
+  for (const auto& c : engine::method_choices().entries()) {
+    if (c.value == Method::Literal) continue;
+    std::string also;
+    for (const auto& a : c.aliases) also += (also.empty() ? "" : ", ") + a;
+    with_aliases.push_back(c.name + (also.empty() ? "" : " (also " + also + ")"));
+  }
   cmd->add_option("--modalities", o->modalities,
-                  "Which evidence the reported posterior uses, by method name: clips (default; also both), lang_only "
-                  "(also utterance, language) or action_only (also action)")
+                  "Which evidence the reported posterior uses, by method name (default clips): " +
+                      util::or_list(with_aliases))
       ->check(CLI::Validator(
           [](std::string& v) {
             try {

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/choice_option.hpp"
 #include "app/cli.hpp"
+#include "assist/assist.hpp"
+#include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 #include "util/program_name.hpp"
@@ -42,21 +45,13 @@ void add_lm_options(CLI::App* cmd, LmFlags& f) {
 }
 
 void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
-  cmd->add_option("--utterance-timing", f.utterance_timing,
-                  "State that explains an utterance given after k actions: after (default; s_k, where it was "
-                  "said, as in the paper) or before (s_{k-1}, the reference code's alignment)")
-      ->check(CLI::IsMember({"before", "after"}));
-  cmd->add_option("--speaker-rule", f.speaker_rule,
-                  "Which of the human's own actions the CLIPS speaker model's commands keep: paper (default; joint "
-                  "commands keep them) or code (the reference code drops them all)")
-      ->check(CLI::IsMember({"paper", "code"}));
-  cmd->add_option("--assistant-turns", f.assistant_turns,
-                  "Refinement at the assistant's turns, where no action is scored: taken (default; one lookahead, "
-                  "from the state its action led to; with an utterance there or after the last action, hypotheses "
-                  "whose plan from the state is stored are not searched further, since that plan explains it) or "
-                  "all (the paper's REFINE, from every successor). The same posteriors unless a search hits its "
-                  "node budget; taken searches less")
-      ->check(CLI::IsMember({"taken", "all"}));
+  add_choice_option(cmd, "--utterance-timing", f.utterance_timing, inference::utterance_timing_choices(),
+                    "State that explains an utterance given after k actions (default after)");
+  add_choice_option(cmd, "--speaker-rule", f.speaker_rule, inference::speaker_rule_choices(),
+                    "Which of the human's own actions the CLIPS speaker model's commands keep (default paper)");
+  add_choice_option(cmd, "--assistant-turns", f.assistant_turns, inference::assistant_turns_choices(),
+                    "Refinement at the assistant's turns, where no action is scored (default taken; the same "
+                    "posteriors unless a search hits its node budget; taken searches less)");
   cmd->add_option("--speaker-plans", f.speaker_plans,
                   "Which joint plans the speaker model may have in mind: tied (every plan the policy values as "
                   "well as its greedy one, ties broken every way) or single (the one greedy rollout, the paper's "
@@ -75,15 +70,10 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
 }
 
 void add_assistance_options(CLI::App* cmd, LmFlags& f) {
-  cmd->add_option("--qa-floor", f.qa_floor,
-                  "Which Q-values Q_MDP floors at the cost of waiting to the horizon: dead-ends (default; only "
-                  "unreachable goals, the floor's stated purpose) or horizon (every value, the reference formula)")
-      ->check(CLI::IsMember({"dead-ends", "horizon"}));
-  cmd->add_option("--assist-rule", f.assist_rule,
-                  "How Q_MDP picks among actions of equal expected value: request (the one that carries out what "
-                  "the instruction most probably asked for) or paper (the paper's rule, for the paper's tables); "
-                  "default: the pack's assistance_rule")
-      ->check(CLI::IsMember({"paper", "request"}));
+  add_choice_option(cmd, "--qa-floor", f.qa_floor, assist::qa_floor_choices(),
+                    "Which Q-values Q_MDP floors at the cost of waiting to the horizon (default dead-ends)");
+  add_choice_option(cmd, "--assist-rule", f.assist_rule, assist::assist_rule_choices(),
+                    "How Q_MDP picks among actions of equal expected value (default: the pack's assistance_rule)");
 }
 
 namespace {

@@ -19,15 +19,24 @@ namespace clips::assist {
 using model::kInf;
 using pddl::ActionId;
 
-std::string to_string(QaFloor f) { return f == QaFloor::Horizon ? "horizon" : "dead-ends"; }
-
-std::string to_string(AssistRule r) { return r == AssistRule::Paper ? "paper" : "request"; }
-
-AssistRule parse_assist_rule(const std::string& text) {
-  if (text == "paper") return AssistRule::Paper;
-  if (text == "request") return AssistRule::Request;
-  throw InputError("unknown assistance rule '" + text + "' (expected paper or request)");
+util::Choices<QaFloor>& qa_floor_choices() {
+  static util::Choices<QaFloor> table(
+      "Q_MDP floor", {{QaFloor::DeadEnds, "dead-ends", "only unreachable goals, the floor's stated purpose", {}},
+                      {QaFloor::Horizon, "horizon", "every value, the reference formula", {}}});
+  return table;
 }
+std::string to_string(QaFloor f) { return qa_floor_choices().name(f); }
+QaFloor parse_qa_floor(const std::string& text) { return qa_floor_choices().parse(text); }
+
+util::Choices<AssistRule>& assist_rule_choices() {
+  static util::Choices<AssistRule> table(
+      "assistance rule",
+      {{AssistRule::Paper, "paper", "the paper's rule, for the paper's tables", {}},
+       {AssistRule::Request, "request", "the one that carries out what the instruction most probably asked for", {}}});
+  return table;
+}
+std::string to_string(AssistRule r) { return assist_rule_choices().name(r); }
+AssistRule parse_assist_rule(const std::string& text) { return assist_rule_choices().parse(text); }
 
 std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config) {
   const auto& actions = task.domain().actions;
@@ -41,11 +50,6 @@ std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, 
   return out;
 }
 
-QaFloor parse_qa_floor(const std::string& text) {
-  if (text == "dead-ends") return QaFloor::DeadEnds;
-  if (text == "horizon") return QaFloor::Horizon;
-  throw InputError("unknown Q_MDP floor '" + text + "' (expected dead-ends or horizon)");
-}
 using pddl::State;
 
 namespace {

@@ -22,6 +22,7 @@
 #include "language/commands/language_config.hpp"
 #include "model/turns.hpp"
 #include "search/rtaa.hpp"
+#include "util/choices.hpp"
 
 namespace clips::assist {
 
@@ -56,6 +57,7 @@ struct Hypothesis {
 //            they would do themselves; the paper's choice when that is equal.
 // docs/decisions.md ("Following the request") has the numbers.
 enum class AssistRule { Paper, Request };
+util::Choices<AssistRule>& assist_rule_choices();
 std::string to_string(AssistRule r);              // "paper", "request"
 AssistRule parse_assist_rule(const std::string& text);  // throws InputError
 
@@ -69,6 +71,7 @@ AssistRule parse_assist_rule(const std::string& text);  // throws InputError
 //   Horizon:  the formula as written (the reference code).
 // docs/decisions.md has the reasons.
 enum class QaFloor { DeadEnds, Horizon };
+util::Choices<QaFloor>& qa_floor_choices();
 std::string to_string(QaFloor f);         // "dead-ends", "horizon"
 QaFloor parse_qa_floor(const std::string& text);  // throws InputError
 

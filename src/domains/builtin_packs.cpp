@@ -73,14 +73,18 @@ class DkgPack : public Pack {
     throw InputError("--costs must be 1..4 (C1..C4), 'unit' or 'task' for doors-keys-gems, got '" + which + "'");
   }
 
-  std::vector<std::string> heuristic_names() const override { return {"dkg-dist", "dkg-mst", "dkg-mst-reference", "hmax", "blind", "hff", "hff-noneg", "hff-plain", "lmcut", "lmcut-noneg"}; }
-  std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task) const override {
-    if (name == "dkg-mst") return std::make_unique<DkgMstHeuristic>();
-    if (name == "dkg-mst-reference")
-      return std::make_unique<DkgMstHeuristic>(nullptr, 5, ItemPruning::Reference);
-    if (name == "dkg-dist") return std::make_unique<DkgDistanceHeuristic>();
-    return Pack::make_heuristic(name, task);
+  const util::Choices<heuristics::HeuristicMaker>* own_heuristics() const override {
+    static util::Choices<heuristics::HeuristicMaker> table(
+        "heuristic",
+        {{[](const pddl::Task&) { return std::make_unique<DkgDistanceHeuristic>(); }, "dkg-dist",
+          "a simple admissible and consistent bound for (has agent item) goals", {}},
+         {[](const pddl::Task&) { return std::make_unique<DkgMstHeuristic>(); }, "dkg-mst",
+          "the reference's DoorsKeysMSTHeuristic with its action pruning (inference's)", {}},
+         {[](const pddl::Task&) { return std::make_unique<DkgMstHeuristic>(nullptr, 5, ItemPruning::Reference); },
+          "dkg-mst-reference", "dkg-mst with the reference code's item pruning", {}}});
+    return &table;
   }
+  std::string default_admissible_heuristic() const override { return "dkg-dist"; }
 
   // Keys to pick up or hand over (unless the robot is forbidden to hold
   // them), and doors to unlock with a key of their colour. Held or used keys
@@ -183,12 +187,16 @@ class VhPack : public Pack {
  public:
   using Pack::Pack;
 
-  std::vector<std::string> heuristic_names() const override { return {"hmax", "blind", "vh", "vh-planning", "hff", "hff-noneg", "hff-plain", "lmcut", "lmcut-noneg"}; }
-  std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task) const override {
-    if (name == "vh") return std::make_unique<VhValueHeuristic>(task);
-    if (name == "vh-planning") return std::make_unique<VhPlanningHeuristic>(task);
-    return Pack::make_heuristic(name, task);
+  const util::Choices<heuristics::HeuristicMaker>* own_heuristics() const override {
+    static util::Choices<heuristics::HeuristicMaker> table(
+        "heuristic",
+        {{[](const pddl::Task& task) { return std::make_unique<VhValueHeuristic>(task); }, "vh",
+          "a lower bound counting goal items still to move and fixtures still to visit", {}},
+         {[](const pddl::Task& task) { return std::make_unique<VhPlanningHeuristic>(task); }, "vh-planning",
+          "vh with the literal listener's action filter", {}}});
+    return &table;
   }
+  std::string default_admissible_heuristic() const override { return "hmax"; }
 
   // Items the helper could grab where they lie now, fixtures and items by name.
   std::vector<commands::Term> literal_candidates(const pddl::Task& task, const pddl::State& s) const override {

@@ -7,8 +7,6 @@
 #include <set>
 #include <stdexcept>
 
-#include "heuristics/basic.hpp"
-#include "heuristics/lmcut.hpp"
 #include "domains/strips.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
@@ -205,20 +203,20 @@ model::CostProfile Pack::cost_profile(const std::string& which) const {
 // ---- heuristics ------------------------------------------------------------------
 
 std::vector<std::string> Pack::heuristic_names() const {
-  return {"lmcut", "hmax", "blind", "hff", "hff-noneg", "hff-plain", "lmcut-noneg"};
+  std::vector<std::string> names = {default_admissible_heuristic()};
+  std::vector<std::string> rest = own_heuristics() ? own_heuristics()->names() : std::vector<std::string>{};
+  for (const auto& n : heuristics::generic_heuristic_choices().names()) rest.push_back(n);
+  for (const auto& n : rest)
+    if (n != names.front()) names.push_back(n);
+  return names;
 }
 
-std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& name, const pddl::Task&) const {
-  if (name == "blind") return std::make_unique<heuristics::BlindHeuristic>();
-  if (name == "hmax") return std::make_unique<heuristics::HMaxHeuristic>();
-  if (name == "lmcut") return std::make_unique<heuristics::LmCutHeuristic>();
-  if (name == "hff") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/true);
-  if (name == "hff-plain") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/false);
-  if (name == "hff-noneg") return std::make_unique<heuristics::FFHeuristic>(/*turns=*/true, /*negations=*/false);
-  if (name == "lmcut-noneg") return std::make_unique<heuristics::LmCutHeuristic>(/*turns=*/true, /*negations=*/false);
-  std::string known;
-  for (auto& n : heuristic_names()) known += (known.empty() ? "" : ", ") + n;
-  throw InputError("unknown heuristic '" + name + "' for " + spec_.name + " (known: " + known + ")");
+std::unique_ptr<heuristics::Heuristic> Pack::make_heuristic(const std::string& name, const pddl::Task& task) const {
+  if (const auto* own = own_heuristics(); own && own->contains(name)) return own->parse(name)(task);
+  const auto& generic = heuristics::generic_heuristic_choices();
+  if (generic.contains(name)) return generic.parse(name)(task);
+  throw InputError("unknown heuristic '" + name + "' for " + spec_.name + " (known: " +
+                   util::or_list(heuristic_names()) + ")");
 }
 
 // ---- language -------------------------------------------------------------------

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "heuristics/heuristic.hpp"
+#include "heuristics/registry.hpp"
 #include "language/commands/command.hpp"
 #include "language/commands/fewshot.hpp"
 #include "language/commands/language_config.hpp"
@@ -28,6 +29,7 @@
 #include "model/turns.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
+#include "util/choices.hpp"
 #include "util/rng.hpp"
 
 namespace clips::domains {
@@ -198,6 +200,13 @@ struct InferenceSettings {
   double sparing_plans = 0.05;
 };
 
+// The literal listener's variants, by the method names a bench runs them
+// under: planning for a command as a lifted goal (efficient) or for its
+// groundings one by one (naive). "literal" is the efficient one under the
+// name VirtualHome's results use.
+enum class LiteralPlanning { Efficient, Naive };
+util::Choices<LiteralPlanning>& literal_method_choices();
+
 struct LiteralSettings {
   bool enabled = true;
   double temperature = 1.0;
@@ -343,11 +352,15 @@ class Pack {
   virtual model::CostProfile cost_profile(const std::string& which) const;
 
   // ---- heuristics ----
+  // The pack's own heuristics (one name table, util/choices.hpp), offered
+  // before the generic ones (heuristics/registry.hpp); none by default.
+  virtual const util::Choices<heuristics::HeuristicMaker>* own_heuristics() const { return nullptr; }
+  // The admissible heuristic `clips plan` and the generator search with by default.
+  virtual std::string default_admissible_heuristic() const { return "lmcut"; }
   // Names make_heuristic accepts, the default admissible one first.
-  virtual std::vector<std::string> heuristic_names() const;
-  std::string default_admissible_heuristic() const { return heuristic_names().front(); }
-  virtual std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name,
-                                                                const pddl::Task& task) const;
+  std::vector<std::string> heuristic_names() const;
+  // InputError listing heuristic_names for an unknown name.
+  std::unique_ptr<heuristics::Heuristic> make_heuristic(const std::string& name, const pddl::Task& task) const;
 
   // ---- language ----
   // Few-shot examples in prompt order: the speaker model's (pragmatic) or the

@@ -134,6 +134,17 @@ model::CostProfile read_profile(const Fields& f, const json& v, const std::strin
 
 }  // namespace
 
+util::Choices<LiteralPlanning>& literal_method_choices() {
+  static util::Choices<LiteralPlanning> table(
+      "literal listener method",
+      {{LiteralPlanning::Efficient, "literal_efficient", "the literal listener, planning for a command as a lifted goal",
+        {}},
+       {LiteralPlanning::Naive, "literal_naive", "the literal listener, planning for a command's groundings one by one",
+        {}},
+       {LiteralPlanning::Efficient, "literal", "literal_efficient, under the name VirtualHome's results use", {}}});
+  return table;
+}
+
 PackSpec parse_pack_spec(const std::string& json_text, const std::string& source) {
   json doc;
   try {
@@ -376,9 +387,9 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
       s.literal.methods = f.strings(l["methods"], "literal_listener.methods");
       for (size_t i = 0; i < s.literal.methods.size(); ++i) {
         const auto& m = s.literal.methods[i];
-        if (m != "literal" && m != "literal_efficient" && m != "literal_naive")
+        if (!literal_method_choices().contains(m))
           f.fail("literal_listener.methods[" + std::to_string(i) + "]",
-                 "expected literal, literal_efficient or literal_naive, got \"" + m + "\"");
+                 "expected " + literal_method_choices().name_list() + ", got \"" + m + "\"");
       }
     }
   }

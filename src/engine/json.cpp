@@ -2,19 +2,15 @@
 
 #include <cmath>
 
+#include "engine/runs.hpp"
+#include "inference/belief.hpp"
+
 namespace clips::engine {
 
 using nlohmann::json;
 
-std::string evidence_name(Method m) {
-  switch (m) {
-    case Method::LanguageOnly: return "utterance";
-    case Method::ActionOnly: return "action";
-    case Method::Clips:
-    case Method::Literal: break;
-  }
-  return "both";
-}
+// The modality's name in the one table (inference/belief.hpp): "both", "utterance", "action".
+std::string evidence_name(Method m) { return inference::to_string(modality_of(m)); }
 
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 

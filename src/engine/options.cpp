@@ -49,11 +49,6 @@ double parse_real(const ParticleOption& o, const std::string& text, double lo, d
   return v;
 }
 
-std::string parse_choice(const ParticleOption& o, const std::string& text) {
-  if (std::find(o.choices.begin(), o.choices.end(), text) == o.choices.end()) refuse(o, "'" + text + "'");
-  return text;
-}
-
 std::string one_of(const std::vector<std::string>& choices) {
   std::string s = "one of ";
   for (size_t i = 0; i < choices.size(); ++i) s += (i ? ", " : "") + choices[i];
@@ -71,16 +66,29 @@ Row integer_row(std::string name, long long lo, long long hi, std::string brief,
           [field](const ParticleOptions& p) { return std::to_string(p.*field); }};
 }
 
-Row choice_row(std::string name, std::vector<std::string> choices, std::string brief, std::string help,
+// The values, their help and the error's list come from the kind's one name
+// table (util/choices.hpp), read when the table of options is built.
+template <typename E>
+Row choice_row(std::string name, const util::Choices<E>& table, std::string brief, const std::string& lead,
                std::string ParticleOptions::*field) {
-  ParticleOption o{std::move(name), ParticleOption::Kind::Choice, one_of(choices), std::move(brief), std::move(help),
-                   choices};
-  return {o, [o, field](ParticleOptions& p, const std::string& t) { p.*field = parse_choice(o, t); },
+  const ParticleOptions defaults;
+  ParticleOption o{std::move(name),
+                   ParticleOption::Kind::Choice,
+                   one_of(table.names()),
+                   std::move(brief),
+                   lead + ": " + table.help_text() + " (default " + defaults.*field + ")",
+                   table.names()};
+  return {o,
+          [o, &table, field](ParticleOptions& p, const std::string& t) {
+            if (!table.contains(t)) refuse(o, "'" + t + "'");
+            p.*field = table.name(table.parse(t));
+          },
           [field](const ParticleOptions& p) { return p.*field; }};
 }
 
-const std::vector<Row>& rows() {
-  static const std::vector<Row> table = [] {
+// Built at each use, so a choice registered at run time is listed (eight rows: cheap).
+std::vector<Row> rows() {
+  return [] {
     std::vector<Row> t;
     t.push_back(integer_row("particles", 0, kMaxParticles, "particles per filter (0: exact enumeration)",
                             "Particle inference with N particles per modality (sequential Monte Carlo over goal x "
@@ -109,34 +117,25 @@ const std::vector<Row>& rows() {
     t.push_back(integer_row("rejuvenation_moves", 0, 100, "Metropolis-Hastings sweeps after each resampling",
                             "Metropolis-Hastings sweeps over goals after each resampling (default 2; 0: none)",
                             &ParticleOptions::rejuvenation_moves));
-    t.push_back(choice_row("rejuvenate", {"evidence", "utterances", "resampling"}, "when else the sweeps run",
-                           "When the sweeps run besides after resampling: evidence (after every human action or "
-                           "utterance; default), utterances (after steps with an utterance: cheaper, and enough for "
-                           "instructions that point away from the goals the actions favoured) or resampling (never "
-                           "else: cheapest, but the particles can stay on goals that new evidence turns against)",
-                           &ParticleOptions::rejuvenate));
+    t.push_back(choice_row("rejuvenate", inference::rejuvenation_choices(), "when else the sweeps run",
+                           "When the sweeps run besides after resampling", &ParticleOptions::rejuvenate));
     t.push_back(integer_row("proposal_groups", 1, 64, "exploring proposals per sweep",
                             "Independent exploring proposals per sweep: each sweep may bring in this many new "
                             "hypotheses per hypothesis held (default 8; fewer: cheaper, slower to find goals no "
                             "particle holds)",
                             &ParticleOptions::proposal_groups));
-    t.push_back(choice_row("particle_filters", {"all", "clips"}, "one filter per method, or the CLIPS one only",
-                           "Which posteriors get particles of their own: all (one filter per modality, default) or "
-                           "clips (only the CLIPS posterior; the action-only and language-only ones are reweighted "
-                           "from its particles: much cheaper, but rough where they disagree with CLIPS)",
-                           &ParticleOptions::particle_filters));
-    t.push_back(choice_row("particle_estimate", {"support", "weights"},
+    t.push_back(choice_row("particle_filters", inference::particle_filters_choices(),
+                           "one filter per method, or the CLIPS one only",
+                           "Which posteriors get particles of their own", &ParticleOptions::particle_filters));
+    t.push_back(choice_row("particle_estimate", inference::particle_estimate_choices(),
                            "exact weights on the held hypotheses, or weighted counts",
-                           "How particles give the posterior: support (the exact posterior over the hypotheses the "
-                           "particles hold, default: no counting noise) or weights (the weighted particle counts)",
-                           &ParticleOptions::particle_estimate));
+                           "How particles give the posterior", &ParticleOptions::particle_estimate));
     return t;
   }();
-  return table;
 }
 
-const Row& row(const std::string& name) {
-  for (const auto& r : rows())
+Row row(const std::string& name) {
+  for (auto& r : rows())
     if (r.option.name == name) return r;
   std::string known;
   for (const auto& r : rows()) known += (known.empty() ? "" : ", ") + r.option.name;
@@ -145,13 +144,10 @@ const Row& row(const std::string& name) {
 
 }  // namespace
 
-const std::vector<ParticleOption>& particle_option_table() {
-  static const std::vector<ParticleOption> table = [] {
-    std::vector<ParticleOption> t;
-    for (const auto& r : rows()) t.push_back(r.option);
-    return t;
-  }();
-  return table;
+std::vector<ParticleOption> particle_option_table() {
+  std::vector<ParticleOption> t;
+  for (const auto& r : rows()) t.push_back(r.option);
+  return t;
 }
 
 std::string cli_flag(const ParticleOption& option) {

@@ -28,7 +28,8 @@ struct ParticleOption {
   std::vector<std::string> choices;  // Kind::Choice
 };
 
-const std::vector<ParticleOption>& particle_option_table();
+// The options, as they stand (a choice registered at run time is listed).
+std::vector<ParticleOption> particle_option_table();
 // "--ess-threshold".
 std::string cli_flag(const ParticleOption& option);
 // The option's value in `o`, as text ("0.5", "evidence").

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "eval/methods.hpp"
 #include "language/commands/fewshot.hpp"
 #include "language/listener.hpp"
 #include "language/lm_domain.hpp"
@@ -197,7 +198,7 @@ Selection shard_part(const Selection& all, const ShardSet& shards) {
 
 // The chat model behind the multimodal baseline when it will run, else "".
 std::string multimodal_model(const ExperimentOptions& e) {
-  const bool requested = std::find(e.methods.begin(), e.methods.end(), "multimodal") != e.methods.end();
+  const bool requested = std::find(e.methods.begin(), e.methods.end(), baseline_choices().name(Baseline::Multimodal)) != e.methods.end();
   if (!(requested || (e.methods.empty() && e.multimodal.configured()))) return "";
   if (!e.multimodal.model.empty()) return e.multimodal.model;
   const char* env = std::getenv("CLIPS_CHAT_MODEL");
@@ -579,7 +580,7 @@ std::string results_table(const BenchReport& r, const std::string& paper_json_pa
   // Where the paper reports a multimodal row for this domain, say why ours has none.
   if (paper_has_method(paper, r.domain, "multimodal") && !r.summary.empty()) {
     bool ran = false;
-    for (auto& s : r.summary) ran |= s.method == "multimodal";
+    for (auto& s : r.summary) ran |= s.method == baseline_choices().name(Baseline::Multimodal);
     if (!ran) out += "multimodal (GPT-4V-style)  | skipped: no chat endpoint configured (see --help)\n";
   }
   if (no_reference)

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <set>
 
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
 #include "assist/setup.hpp"
 #include "data/validate.hpp"
+#include "engine/methods.hpp"
 #include "engine/options.hpp"
 #include "engine/runs.hpp"
 #include "domains/pack.hpp"
@@ -28,30 +28,27 @@ const MethodResult* PlanOutcome::find(const std::string& m) const {
 }
 
 std::vector<std::string> default_methods(const domains::Pack& pack, bool all_assistance) {
-  std::vector<std::string> m = {"clips", "lang_only", "action_only"};
+  std::vector<std::string> m = engine::posterior_method_names();
   if (pack.spec().literal.enabled && !pack.language().salient_actions.empty())
     m.insert(m.end(), pack.spec().literal.methods.begin(), pack.spec().literal.methods.end());
-  if (all_assistance)
-    for (const char* base : {"clips", "lang_only", "action_only"})
-      for (const char* a : {"qmdp_online", "pibar"}) m.push_back(std::string(base) + "/" + a);
+  if (all_assistance) {
+    // Each inference method with every policy but the default (already there, bare).
+    const auto& policies = assist_policy_choices().entries();
+    for (const std::string& base : engine::posterior_method_names())
+      for (size_t k = 1; k < policies.size(); ++k) m.push_back(composite_method_name(base, policies[k].value));
+  }
   return m;
 }
 
 std::vector<std::string> known_methods(const domains::Pack& pack) {
   std::vector<std::string> m = default_methods(pack, true);
-  m.push_back("multimodal");
+  for (const std::string& b : baseline_choices().names()) m.push_back(b);
   return m;
 }
 
 bool is_method_name(const std::string& name) {
-  static const std::set<std::string> names = [] {
-    std::set<std::string> n = {"clips", "lang_only", "action_only", "literal", "literal_efficient", "literal_naive",
-                               "multimodal"};
-    for (const char* base : {"clips", "lang_only", "action_only"})
-      for (const char* a : {"qmdp_online", "pibar"}) n.insert(std::string(base) + "/" + a);
-    return n;
-  }();
-  return names.count(name) > 0;
+  const auto all = all_method_names();
+  return std::find(all.begin(), all.end(), name) != all.end();
 }
 
 namespace {
@@ -115,7 +112,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     const domains::Pack& pack = ds.pack();
     out.true_options = data::true_options(ds, p);
     auto methods = opts.methods.empty() ? default_methods(pack, opts.all_assistance) : opts.methods;
-    if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back("multimodal");  // issue 8
+    if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back(baseline_choices().name(Baseline::Multimodal));  // issue 8
 
     const inference::InferenceOptions io = inference_options(opts);
     inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);

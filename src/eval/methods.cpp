@@ -1,10 +1,13 @@
 #include "eval/methods.hpp"
 
+#include <algorithm>
 #include <functional>
 
 #include "assist/literal.hpp"
 #include "assist/request.hpp"
 #include "engine/hypotheses.hpp"
+#include "engine/methods.hpp"
+#include "engine/runs.hpp"
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
 #include "eval/requested.hpp"
@@ -68,8 +71,6 @@ class OnlineAdapter : public assist::OnlineBelief {
   std::vector<std::shared_ptr<const assist::Request>> requests_;
   std::vector<assist::Hypothesis> hyps_;
 };
-
-enum class AssistPolicy { QmdpOffline, QmdpOnline, PiBar };
 
 // Goal inference in one modality, then one assistance policy.
 class InferenceMethod : public Method {
@@ -189,7 +190,7 @@ class LiteralMethod : public Method {
 // failures (endpoint, answer) stay with this method.
 class MultimodalMethod : public Method {
  public:
-  MultimodalMethod() : Method("multimodal") {}
+  MultimodalMethod() : Method(baseline_choices().name(Baseline::Multimodal)) {}
   void run(const PlanContext& ctx, MethodResult& r) const override {
     try {
       const inference::Belief& belief = *ctx.inference.belief;
@@ -208,25 +209,56 @@ class MultimodalMethod : public Method {
 
 }  // namespace
 
+util::Choices<AssistPolicy>& assist_policy_choices() {
+  static util::Choices<AssistPolicy> table(
+      "assistance method",
+      {{AssistPolicy::QmdpOffline, "qmdp_offline",
+        "Q_MDP on the posterior after the observations, kept through the episode, as in the paper", {}},
+       {AssistPolicy::QmdpOnline, "qmdp_online", "Q_MDP, the posterior updated by each action of the episode", {}},
+       {AssistPolicy::PiBar, "pibar", "pi-bar_MDP: the action the posterior mixture of policies takes most often", {}}});
+  return table;
+}
+
+util::Choices<Baseline>& baseline_choices() {
+  static util::Choices<Baseline> table(
+      "baseline", {{Baseline::Multimodal, "multimodal",
+                    "a multimodal chat model reads a picture of the state and the instruction", {}}});
+  return table;
+}
+
+std::string composite_method_name(const std::string& base, AssistPolicy policy) {
+  const auto& policies = assist_policy_choices();
+  return policy == policies.entries().front().value ? base : base + "/" + policies.name(policy);
+}
+
+std::vector<std::string> all_method_names() {
+  std::vector<std::string> out;
+  for (const std::string& base : engine::posterior_method_names())
+    for (const auto& p : assist_policy_choices().entries()) out.push_back(composite_method_name(base, p.value));
+  for (const std::string& n : domains::literal_method_choices().names()) out.push_back(n);
+  for (const std::string& n : baseline_choices().names()) out.push_back(n);
+  return out;
+}
+
 std::unique_ptr<Method> make_method(const std::string& name) {
   const auto slash = name.find('/');
   const std::string base = name.substr(0, slash);
-  const std::string how = slash == std::string::npos ? "qmdp_offline" : name.substr(slash + 1);
-  if (base == "clips" || base == "lang_only" || base == "action_only") {
-    const Modality m = base == "clips" ? Modality::Both : base == "lang_only" ? Modality::UtteranceOnly : Modality::ActionOnly;
-    AssistPolicy p;
-    if (how == "qmdp_offline") p = AssistPolicy::QmdpOffline;
-    else if (how == "qmdp_online") p = AssistPolicy::QmdpOnline;
-    else if (how == "pibar") p = AssistPolicy::PiBar;
-    else throw InputError("unknown assistance method '" + how + "' (known: qmdp_offline, qmdp_online, pibar)");
+  const auto& bases = engine::posterior_method_names();
+  if (std::find(bases.begin(), bases.end(), base) != bases.end()) {
+    const Modality m = engine::modality_of(clips::parse_method(base));
+    const AssistPolicy p = slash == std::string::npos ? assist_policy_choices().entries().front().value
+                                                      : assist_policy_choices().parse(name.substr(slash + 1));
     return std::make_unique<InferenceMethod>(name, m, p);
   }
   if (slash == std::string::npos) {
-    if (base == "literal" || base == "literal_efficient") return std::make_unique<LiteralMethod>(name, false);
-    if (base == "literal_naive") return std::make_unique<LiteralMethod>(name, true);
-    if (base == "multimodal") return std::make_unique<MultimodalMethod>();
+    if (domains::literal_method_choices().contains(base))
+      return std::make_unique<LiteralMethod>(
+          name, domains::literal_method_choices().parse(base) == domains::LiteralPlanning::Naive);
+    if (baseline_choices().contains(base)) switch (baseline_choices().parse(base)) {
+        case Baseline::Multimodal: return std::make_unique<MultimodalMethod>();
+      }
   }
-  throw InputError("unknown method '" + name + "'");
+  throw InputError("unknown method '" + name + "' (known: " + util::or_list(all_method_names()) + ")");
 }
 
 }  // namespace clips::eval

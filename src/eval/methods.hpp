@@ -2,11 +2,17 @@
 // The methods `clips bench` compares, as objects behind one interface: each
 // takes the plan's shared work (one inference run in three modalities, the
 // assistance set-up, the true specification) and fills in its result row.
+// Their names come from the name tables (util/choices.hpp):
 //
-//   clips | lang_only | action_only          inference in one modality, then
-//     [/qmdp_offline | /qmdp_online | /pibar]  an assistance policy (default offline Q_MDP)
+//   clips | lang_only | action_only          inference in one modality
+//     (engine::posterior_method_names), then
+//     [/qmdp_online | /pibar]                an assistance policy
+//     (assist_policy_choices; the first, qmdp_offline, is the default and
+//     leaves the name bare)
 //   literal_efficient | literal_naive | literal   the literal listener
+//     (domains::literal_method_choices)
 //   multimodal                                    a multimodal chat model (issue 8)
+//     (baseline_choices)
 //
 // Method names are an interface (results.csv, summary.json): keep them stable.
 #include <memory>
@@ -18,6 +24,7 @@
 #include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "language/lm/language_model.hpp"
+#include "util/choices.hpp"
 
 namespace clips::eval {
 
@@ -51,6 +58,18 @@ class Method {
  private:
   std::string name_;
 };
+
+// How an inference method's assistant acts over the episode: the part after
+// the slash of "clips/pibar". The first entry is the default.
+enum class AssistPolicy { QmdpOffline, QmdpOnline, PiBar };
+util::Choices<AssistPolicy>& assist_policy_choices();
+// Methods that are neither inference nor the literal listener.
+enum class Baseline { Multimodal };
+util::Choices<Baseline>& baseline_choices();
+// "clips/pibar"; the bare base for the default policy.
+std::string composite_method_name(const std::string& base, AssistPolicy policy);
+// Every method name make_method accepts, inference methods with each policy.
+std::vector<std::string> all_method_names();
 
 // The method of a name (see above); InputError for an unknown one.
 std::unique_ptr<Method> make_method(const std::string& name);

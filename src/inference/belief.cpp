@@ -29,29 +29,26 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-std::string to_string(Modality m) {
-  switch (m) {
-    case Modality::Both: return "both";
-    case Modality::UtteranceOnly: return "utterance";
-    case Modality::ActionOnly: return "action";
-  }
-  return "?";
+util::Choices<Modality>& modality_choices() {
+  static util::Choices<Modality> table(
+      "modality", {{Modality::Both, "both", "actions and utterances", {}},
+                   {Modality::UtteranceOnly, "utterance", "utterances only", {"language"}},
+                   {Modality::ActionOnly, "action", "actions only", {}}});
+  return table;
 }
+std::string to_string(Modality m) { return modality_choices().name(m); }
+Modality parse_modality(const std::string& text) { return modality_choices().parse(text); }
 
-Modality parse_modality(const std::string& text) {
-  if (text == "both") return Modality::Both;
-  if (text == "utterance" || text == "language") return Modality::UtteranceOnly;
-  if (text == "action") return Modality::ActionOnly;
-  throw InputError("unknown modality '" + text + "' (expected both, utterance or action)");
+util::Choices<AssistantTurns>& assistant_turns_choices() {
+  static util::Choices<AssistantTurns> table(
+      "assistant-turn refinement",
+      {{AssistantTurns::Taken, "taken", "one lookahead, from the state its action led to; with an utterance there or after the last action, "
+        "hypotheses whose plan from the state is stored are not searched further, since that plan explains it", {}},
+       {AssistantTurns::All, "all", "the paper's REFINE, from every successor", {}}});
+  return table;
 }
-
-std::string to_string(AssistantTurns a) { return a == AssistantTurns::Taken ? "taken" : "all"; }
-
-AssistantTurns parse_assistant_turns(const std::string& text) {
-  if (text == "taken") return AssistantTurns::Taken;
-  if (text == "all") return AssistantTurns::All;
-  throw InputError("unknown assistant-turn refinement '" + text + "' (expected taken or all)");
-}
+std::string to_string(AssistantTurns a) { return assistant_turns_choices().name(a); }
+AssistantTurns parse_assistant_turns(const std::string& text) { return assistant_turns_choices().parse(text); }
 
 ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord& plan) {
   pack.check_plan_tag(plan.tag, plan.id);

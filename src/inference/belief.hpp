@@ -65,6 +65,7 @@ namespace clips::inference {
 
 enum class Modality { Both = 0, UtteranceOnly = 1, ActionOnly = 2 };
 inline constexpr std::array<Modality, 3> kModalities = {Modality::Both, Modality::UtteranceOnly, Modality::ActionOnly};
+util::Choices<Modality>& modality_choices();
 std::string to_string(Modality m);  // "both", "utterance", "action"
 Modality parse_modality(const std::string& text);  // throws InputError
 
@@ -86,6 +87,7 @@ ProfileSet plan_cost_profiles(const domains::Pack& pack, const data::PlanRecord&
 // same optimal costs either way (docs/decisions.md, "Refining the
 // assistant's turns").
 enum class AssistantTurns { Taken, All };
+util::Choices<AssistantTurns>& assistant_turns_choices();
 std::string to_string(AssistantTurns a);               // "taken", "all"
 AssistantTurns parse_assistant_turns(const std::string& text);  // throws InputError
 

@@ -30,37 +30,44 @@ std::vector<int> sorted_unique(std::vector<int> v) {
 
 }  // namespace
 
-std::string to_string(ParticleFilters f) { return f == ParticleFilters::All ? "all" : "clips"; }
-
-ParticleFilters parse_particle_filters(const std::string& text) {
-  if (text == "all") return ParticleFilters::All;
-  if (text == "clips") return ParticleFilters::Clips;
-  throw InputError("unknown particle filters '" + text + "' (expected all or clips)");
+util::Choices<ParticleFilters>& particle_filters_choices() {
+  static util::Choices<ParticleFilters> table(
+      "particle filters",
+      {{ParticleFilters::All, "all", "one filter per modality", {}},
+       {ParticleFilters::Clips, "clips",
+        "only the CLIPS posterior's; the action-only and language-only ones are reweighted from its particles: much "
+        "cheaper, but rough where they disagree with CLIPS",
+        {}}});
+  return table;
 }
+std::string to_string(ParticleFilters f) { return particle_filters_choices().name(f); }
+ParticleFilters parse_particle_filters(const std::string& text) { return particle_filters_choices().parse(text); }
 
-std::string to_string(ParticleEstimate e) { return e == ParticleEstimate::Support ? "support" : "weights"; }
-
-ParticleEstimate parse_particle_estimate(const std::string& text) {
-  if (text == "support") return ParticleEstimate::Support;
-  if (text == "weights") return ParticleEstimate::Weights;
-  throw InputError("unknown particle estimate '" + text + "' (expected support or weights)");
+util::Choices<ParticleEstimate>& particle_estimate_choices() {
+  static util::Choices<ParticleEstimate> table(
+      "particle estimate",
+      {{ParticleEstimate::Support, "support", "the exact posterior over the hypotheses the particles hold: no counting noise",
+        {}},
+       {ParticleEstimate::Weights, "weights", "the weighted particle counts", {}}});
+  return table;
 }
+std::string to_string(ParticleEstimate e) { return particle_estimate_choices().name(e); }
+ParticleEstimate parse_particle_estimate(const std::string& text) { return particle_estimate_choices().parse(text); }
 
-std::string to_string(Rejuvenation r) {
-  switch (r) {
-    case Rejuvenation::Evidence: return "evidence";
-    case Rejuvenation::Utterances: return "utterances";
-    case Rejuvenation::Resampling: return "resampling";
-  }
-  return "?";
+util::Choices<Rejuvenation>& rejuvenation_choices() {
+  static util::Choices<Rejuvenation> table(
+      "rejuvenation schedule",
+      {{Rejuvenation::Evidence, "evidence", "after every human action or utterance", {}},
+       {Rejuvenation::Utterances, "utterances",
+        "after steps with an utterance: cheaper, and enough for instructions that point away from the goals the "
+        "actions favoured",
+        {}},
+       {Rejuvenation::Resampling, "resampling",
+        "never else: cheapest, but the particles can stay on goals that new evidence turns against", {}}});
+  return table;
 }
-
-Rejuvenation parse_rejuvenation(const std::string& text) {
-  if (text == "evidence") return Rejuvenation::Evidence;
-  if (text == "utterances") return Rejuvenation::Utterances;
-  if (text == "resampling") return Rejuvenation::Resampling;
-  throw InputError("unknown rejuvenation schedule '" + text + "' (expected evidence, utterances or resampling)");
-}
+std::string to_string(Rejuvenation r) { return rejuvenation_choices().name(r); }
+Rejuvenation parse_rejuvenation(const std::string& text) { return rejuvenation_choices().parse(text); }
 
 ParticleFilter::ParticleFilter(int goals, int profiles, const ParticleOptions& options)
     : goals_(goals), profiles_(profiles), options_(options), rng_(options.seed) {

@@ -85,6 +85,7 @@
 #include <string>
 #include <vector>
 
+#include "util/choices.hpp"
 #include "util/rng.hpp"
 
 namespace clips::inference {
@@ -92,6 +93,7 @@ namespace clips::inference {
 // Which of Belief's three modalities keep a filter of their own
 // (InferenceOptions::particle_filters).
 enum class ParticleFilters { All, Clips };
+util::Choices<ParticleFilters>& particle_filters_choices();
 std::string to_string(ParticleFilters f);                         // "all", "clips"
 ParticleFilters parse_particle_filters(const std::string& text);  // throws InputError
 
@@ -101,11 +103,13 @@ ParticleFilters parse_particle_filters(const std::string& text);  // throws Inpu
 // can point away from every goal the actions favoured, without lowering the
 // ESS), or never.
 enum class Rejuvenation { Evidence, Utterances, Resampling };
+util::Choices<Rejuvenation>& rejuvenation_choices();
 std::string to_string(Rejuvenation r);                    // "evidence", "utterances", "resampling"
 Rejuvenation parse_rejuvenation(const std::string& text);  // throws InputError
 
 // How the filter turns its particles into a posterior (see above).
 enum class ParticleEstimate { Support, Weights };
+util::Choices<ParticleEstimate>& particle_estimate_choices();
 std::string to_string(ParticleEstimate e);                         // "support", "weights"
 ParticleEstimate parse_particle_estimate(const std::string& text);  // throws InputError
 

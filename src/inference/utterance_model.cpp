@@ -71,21 +71,25 @@ std::vector<CommandScore> merge_requests(const HypothesisUtterance& own, const H
   return out;
 }
 
-SpeakerRule parse_speaker_rule(const std::string& text) {
-  if (text == "paper") return SpeakerRule::Paper;
-  if (text == "code") return SpeakerRule::Code;
-  throw InputError("unknown speaker rule '" + text + "' (expected paper or code)");
+util::Choices<SpeakerRule>& speaker_rule_choices() {
+  static util::Choices<SpeakerRule> table(
+      "speaker rule",
+      {{SpeakerRule::Paper, "paper", "joint commands keep the speaker's own actions (the paper's)", {}},
+       {SpeakerRule::Code, "code", "the reference code drops them all", {}}});
+  return table;
 }
+SpeakerRule parse_speaker_rule(const std::string& text) { return speaker_rule_choices().parse(text); }
+std::string to_string(SpeakerRule r) { return speaker_rule_choices().name(r); }
 
-std::string to_string(SpeakerRule r) { return r == SpeakerRule::Paper ? "paper" : "code"; }
-
-UtteranceTiming parse_utterance_timing(const std::string& text) {
-  if (text == "before") return UtteranceTiming::Before;
-  if (text == "after") return UtteranceTiming::After;
-  throw InputError("unknown utterance timing '" + text + "' (expected before or after)");
+util::Choices<UtteranceTiming>& utterance_timing_choices() {
+  static util::Choices<UtteranceTiming> table(
+      "utterance timing",
+      {{UtteranceTiming::Before, "before", "s_{k-1}, the reference code's alignment", {}},
+       {UtteranceTiming::After, "after", "s_k, where it was said, as in the paper", {}}});
+  return table;
 }
-
-std::string to_string(UtteranceTiming t) { return t == UtteranceTiming::Before ? "before" : "after"; }
+UtteranceTiming parse_utterance_timing(const std::string& text) { return utterance_timing_choices().parse(text); }
+std::string to_string(UtteranceTiming t) { return utterance_timing_choices().name(t); }
 
 UtteranceModel::UtteranceModel(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack,
                                const UtteranceModelOptions& options)

@@ -40,6 +40,7 @@
 #include "language/lm/language_model.hpp"
 #include "search/rtaa.hpp"
 #include "search/tied_rollouts.hpp"
+#include "util/choices.hpp"
 
 namespace clips::inference {
 
@@ -57,12 +58,14 @@ using RolloutKind = domains::RolloutSettings::Kind;
 // paper: with the embedded model it matches the paper's CLIPS row more closely
 // (docs/decisions.md); the literal listener is unaffected.
 enum class SpeakerRule { Paper, Code };
+util::Choices<SpeakerRule>& speaker_rule_choices();
 SpeakerRule parse_speaker_rule(const std::string& text);  // "paper" or "code"; throws InputError
 std::string to_string(SpeakerRule r);
 
 // Which state explains an utterance annotated after k actions: s_{k-1}
 // (Before, the reference code) or s_k (After). See InferenceOptions.
 enum class UtteranceTiming { Before, After };
+util::Choices<UtteranceTiming>& utterance_timing_choices();
 UtteranceTiming parse_utterance_timing(const std::string& text);  // "before" or "after"; throws InputError
 std::string to_string(UtteranceTiming t);
 

@@ -17,7 +17,7 @@ namespace clips::serve {
 using engine::number_or_null;
 using nlohmann::json;
 
-const std::vector<std::string>& play_methods() { return method_names(); }
+std::vector<std::string> play_methods() { return method_names(); }
 
 namespace {
 

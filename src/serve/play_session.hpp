@@ -59,7 +59,7 @@ struct PlayLimits {
 };
 
 // The methods a player may switch between (names as in `clips assist`).
-const std::vector<std::string>& play_methods();
+std::vector<std::string> play_methods();
 
 // What a session plays (the engine's problem).
 using PlaySetup = engine::Problem;

@@ -409,9 +409,12 @@ Reply Service::create(const std::string& body, const std::string& client) {
       throw HttpError(400, std::string("field 'assistance': ") + e.what());
     }
   const std::string method = string_field(j, "method", false, "clips");
-  const auto& known = play_methods();
-  if (std::find(known.begin(), known.end(), method) == known.end())
-    throw HttpError(400, "field 'method': unknown method '" + echo(method) + "' (known: clips, lang_only, action_only, literal)");
+  const auto known = play_methods();
+  if (std::find(known.begin(), known.end(), method) == known.end()) {
+    std::string names;
+    for (const auto& n : known) names += (names.empty() ? "" : ", ") + n;
+    throw HttpError(400, "field 'method': unknown method '" + echo(method) + "' (known: " + names + ")");
+  }
   const bool from_text = j.contains("domain");
   t_text_problem = from_text;
   std::string dataset, problem, plan, domain_text, pack_text;

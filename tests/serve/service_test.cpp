@@ -2,14 +2,20 @@
 // documented error, the limits, and a short game.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "data/dataset.hpp"
 #include "language/listener.hpp"
+#include "app/choice_option.hpp"
+#include "engine/methods.hpp"
+#include "serve/api_schema.hpp"
 #include "serve/frontends.hpp"
 #include "serve/service.hpp"
 
@@ -372,6 +378,74 @@ TEST_F(Fixture, TheGameEndsAtThePlayersGoalOnly) {
   r = s->handle("POST", "/api/sessions", request.dump());
   EXPECT_EQ(r.status, 400);
   EXPECT_NE(r.body.find("field 'goal'"), std::string::npos) << r.body;
+}
+
+nlohmann::ordered_json read_api_schema() {
+  std::ifstream in(std::string(CLIPS_SOURCE_DIR) + "/data/schema/serve-api.openapi.json");
+  return nlohmann::ordered_json::parse(in);
+}
+
+bool lists(const nlohmann::ordered_json& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// issue 63: the OpenAPI document's enums are the name tables'. A table
+// changed: CLIPS_UPDATE_SCHEMA=1 writes the filled document back.
+TEST(ApiSchema, ItsChoiceEnumsAreTheNameTables) {
+  const nlohmann::ordered_json file = read_api_schema();
+  nlohmann::ordered_json filled = file;
+  EXPECT_EQ(fill_choice_enums(filled), 14u);  // method, assistance, modality and the inference choices
+  if (std::getenv("CLIPS_UPDATE_SCHEMA") && filled != file) {
+    std::ofstream(std::string(CLIPS_SOURCE_DIR) + "/data/schema/serve-api.openapi.json") << filled.dump(1) << "\n";
+    return;
+  }
+  EXPECT_EQ(filled, file) << "data/schema/serve-api.openapi.json is behind the name tables: rerun this test with "
+                             "CLIPS_UPDATE_SCHEMA=1";
+  nlohmann::ordered_json bad = {{"enum", {"x"}}, {"x-clips-choices", "no_such_kind"}};
+  EXPECT_THROW(fill_choice_enums(bad), std::invalid_argument);
+}
+
+// issue 63's test of "one registration": an assistance rule added to the
+// engine's table at run time is a value of a CLI flag built as the
+// subcommands build theirs (with its help in --help), in the server's
+// catalogue and session requests, and in the OpenAPI enums. (Python's
+// keyword help is made from the same table: python/tests, test_choices.)
+TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueAndTheSchema) {
+  auto& table = engine::assistance_choices();
+  const auto rule = static_cast<Assistance>(99);
+  table.add({rule, "test_rule", "a rule only this test knows", {}});
+  struct Unregister {
+    ~Unregister() { engine::assistance_choices().remove("test_rule"); }
+  } unregister;
+  EXPECT_THROW(table.add({rule, "test_rule", "twice", {}}), std::logic_error);
+
+  CLI::App app("test");
+  std::string value;
+  app::add_choice_option(&app, "--assistance", value, table, "How the assistant decides");
+  EXPECT_NE(app.help().find("test_rule (a rule only this test knows)"), std::string::npos) << app.help();
+  app.parse("--assistance test_rule", false);
+  EXPECT_EQ(value, "test_rule");
+  EXPECT_THROW(app.parse("--assistance oracle", false), CLI::ValidationError);
+
+  EXPECT_EQ(parse_assistance("test_rule"), rule);
+  EXPECT_EQ(assistance_name(rule), "test_rule");
+  // The shipped document does not know test_rule: keep this server's
+  // exchanges out of serve_api_schema's log (read when a service is made).
+  const char* log = std::getenv("CLIPS_SERVE_EXCHANGE_LOG");
+  const std::string saved = log ? log : "";
+  unsetenv("CLIPS_SERVE_EXCHANGE_LOG");
+  auto s = make();
+  if (log) setenv("CLIPS_SERVE_EXCHANGE_LOG", saved.c_str(), 1);
+  const json catalogue = body(s->handle("GET", "/api/datasets", ""));
+  EXPECT_TRUE(lists(catalogue["assistance"], "test_rule")) << catalogue["assistance"];
+
+  nlohmann::ordered_json doc = read_api_schema();
+  fill_choice_enums(doc);
+  const auto& schemas = doc["components"]["schemas"];
+  EXPECT_TRUE(lists(schemas["SessionState"]["properties"]["assistance"]["enum"], "test_rule"));
+  EXPECT_TRUE(lists(schemas["CreateSessionRequest"]["oneOf"][0]["properties"]["assistance"]["enum"], "test_rule"));
+  EXPECT_FALSE(lists(read_api_schema()["components"]["schemas"]["SessionState"]["properties"]["assistance"]["enum"],
+                     "test_rule"));
 }
 
 // How the assistant decides is a session's choice, by the engine's names.
