@@ -361,9 +361,9 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
 }
 
 std::string with_value(const char* what, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%s %.3f", what, v);
-  return buf;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " %.3f", v);
+  return what + std::string(buf);
 }
 
 // The rule that decided a Q_MDP choice, with its numbers. `best`: the
