@@ -1,71 +1,6 @@
-// The public session API (include/clips/session.hpp): same posteriors as
-// `clips infer`, errors that leave a session unchanged, assistance, threads.
-#include <gtest/gtest.h>
+#include "api/session_test.hpp"
 
-#include <array>
-#include <atomic>
-#include <cmath>
-#include <cstdio>
-#include <thread>
-
-#include <nlohmann/json.hpp>
-
-#include "clips/clips.hpp"
-#include "data/dataset.hpp"
-#include "run_command.hpp"
-#include "test_paths.hpp"
-
-namespace {
-
-std::string examples_dkg() { return clips::paths::examples_dir() + "/doors-keys-gems"; }
-
-using clips::tests::stdout_of;
-
-void expect_near_all(const std::vector<double>& a, const std::vector<double>& b, const std::string& where) {
-  ASSERT_EQ(a.size(), b.size()) << where;
-  for (size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-9) << where << " goal " << i;
-}
-
-// Replays a dataset plan through a Session, an action and an utterance at a
-// time, and compares every step with `clips infer --json` (utterances are
-// heard in the state they were said in, the CLI's default timing).
-void check_replay_matches_cli(const std::string& dataset, const std::string& plan_id) {
-  const auto j = nlohmann::json::parse(stdout_of(std::string(CLIPS_BINARY_DIR) + "/clips infer --json --dataset " +
-                                                 dataset + " --plan " + plan_id));
-  const auto ds = clips::data::Dataset::load(dataset);
-  const auto& plan = ds.plan(plan_id);
-  const int T = static_cast<int>(plan.observed.actions.size());
-  ASSERT_EQ(static_cast<int>(j["steps"].size()), T + 1);
-  auto session = clips::Session::open_dataset(dataset, plan_id);
-  EXPECT_EQ(session.posterior().goals, j["goals"].get<std::vector<std::string>>());
-  for (int t = 0; t <= T; ++t) {
-    if (t > 0) session.observe(plan.observed.actions[t - 1].text);
-    auto hear_all = [&] {
-      for (const auto& u : plan.observed.utterances)
-        if (u.index == t) session.hear(u.text);
-    };
-    // The CLI's step t holds the utterances said after t actions only at the
-    // start and the end; in between they are scored in step t + 1.
-    if (t == 0 || t == T) hear_all();
-    std::vector<double> expected;  // the engine's posterior JSON: goals [{goal, p}]
-    for (const auto& g : j["steps"][t]["posterior"]["goals"]) expected.push_back(g["p"].get<double>());
-    expect_near_all(session.posterior().goal_probabilities, expected, plan_id + " t=" + std::to_string(t));
-    expect_near_all(session.trace().at(t).posterior.goal_probabilities, expected, plan_id + " trace t=" + std::to_string(t));
-    if (t != 0 && t != T) hear_all();
-  }
-  EXPECT_EQ(session.t(), T);
-}
-
-TEST(Session, ReplayMatchesClipsInferOnTheRepoExamples) {
-  check_replay_matches_cli(examples_dkg(), "e1.1.keys");
-  check_replay_matches_cli(examples_dkg(), "e2.2.keys");
-}
-
-TEST(Session, ReplayMatchesClipsInferOnThePapersDataset) {
-  if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset at " << clips::paths::dkg_dataset();
-  check_replay_matches_cli(clips::paths::dkg_dataset(), "2.1.keys");
-}
-
+namespace session_test {
 TEST(Session, InapplicableActionLeavesTheSessionUnchanged) {
   auto s = clips::Session::open_dataset(examples_dkg(), "e1.1.keys");
   s.observe("(left human)");
@@ -224,51 +159,6 @@ TEST(Session, MethodsReadTheirOwnEvidence) {
   EXPECT_NE(s.posterior(clips::Method::ActionOnly).goal_probabilities, s.posterior().goal_probabilities);
 }
 
-// Distinct sessions on distinct threads (run under TSan by the sanitizer job).
-TEST(Session, TwoSessionsOnTwoThreadsAgreeWithOneThread) {
-  auto replay = [](const std::string& plan, const std::vector<std::string>& actions, const std::string& said) {
-    auto s = clips::Session::open_dataset(examples_dkg(), plan);
-    for (const auto& a : actions) s.observe(a);
-    s.hear(said);
-    return s.posterior().goal_probabilities;
-  };
-  const std::vector<std::string> a1 = {"(left human)", "(wait robot)"}, a2 = {"(up human)", "(wait robot)"};
-  std::vector<double> r1, r2;
-  std::thread t1([&] { r1 = replay("e1.1.keys", a1, "Can you get me the yellow key?"); });
-  std::thread t2([&] { r2 = replay("e2.1.doors", a2, "Can you unlock the yellow door for me?"); });
-  t1.join();
-  t2.join();
-  EXPECT_EQ(r1, replay("e1.1.keys", a1, "Can you get me the yellow key?"));
-  EXPECT_EQ(r2, replay("e2.1.doors", a2, "Can you unlock the yellow door for me?"));
-}
-
-// tests/fixtures/garden: a pack whose no-op is `idle` and whose turn
-// predicate is `turn`, on a domain that writes neither (clips compiles the
-// turns in, the gardener first). The session keeps the turns and assists.
-TEST(Session, AssistsWithThePacksNoOpAndTurnPredicate) {
-  const std::string garden = clips::paths::source_dir() + "/tests/fixtures/garden";
-  auto s = clips::Session::open_domain(garden, garden + "/problems/1.pddl");
-  EXPECT_EQ(s.posterior().goals, (std::vector<std::string>{"tomato1", "basil1"}));
-  EXPECT_EQ(s.active_agent(), "gardener");
-  EXPECT_FALSE(s.assist().assistant_turn);
-  EXPECT_THROW(s.observe("(take bot basil1 shed)"), clips::InapplicableActionError);  // not the bot's turn
-  s.observe("(idle gardener)");
-  EXPECT_EQ(s.active_agent(), "bot");
-  s.hear("Could you bring me the green seeds?");
-  const auto post = s.posterior();
-  EXPECT_GT(post.goal_probabilities[1], post.goal_probabilities[0]);
-  const auto d = s.assist();
-  ASSERT_TRUE(d.assistant_turn);
-  EXPECT_EQ(d.action, "(take bot basil1 shed)");
-  for (const auto& c : d.candidates) EXPECT_NE(c.action.find(" bot"), std::string::npos) << c.action;
-  s.observe(d.action);
-  EXPECT_EQ(s.active_agent(), "gardener");
-  // The same folder as a dataset plan.
-  auto ds = clips::Session::open_dataset(garden, "1.1.basil");
-  ds.observe("(idle gardener)");
-  EXPECT_TRUE(ds.assist().assistant_turn);
-}
-
 TEST(Session, OpensADomainFolderAndProblemFile) {
   auto s = clips::Session::open_domain(examples_dkg(), examples_dkg() + "/problems/e1.pddl");
   EXPECT_EQ(s.domain(), "doors-keys-gems");
@@ -279,4 +169,4 @@ TEST(Session, OpensADomainFolderAndProblemFile) {
   EXPECT_EQ(clips::library_version(), std::string(clips::kVersion));
 }
 
-}  // namespace
+}  // namespace session_test

@@ -1,26 +1,7 @@
-// Few-shot examples, prompt orders and prompt strings (spec 7.7-7.9, VH spec 10).
-#include <gtest/gtest.h>
-
-#include <filesystem>
-
-#include "paper_languages.hpp"
-#include "commands/fixtures.hpp"
-#include "language/commands/enumerate.hpp"
-#include "language/commands/fewshot.hpp"
-#include "util/error.hpp"
+#include "commands/fewshot_test.hpp"
 
 namespace clips::commands {
-namespace {
-
-const std::string kTsv = CLIPS_SOURCE_DIR "/data/language/fewshot-examples.tsv";
-const std::string kOrders = CLIPS_SOURCE_DIR "/data/language/prompt-orders.json";
-
-std::vector<int> indices(const std::vector<FewShotExample>& examples) {
-  std::vector<int> out;
-  for (const auto& ex : examples) out.push_back(ex.index);
-  return out;
-}
-
+namespace fewshot_test {
 TEST(FewShotFile, ShippedExamplesMatchTheReferenceLists) {
   const auto examples = load_fewshot_examples(kTsv);
   ASSERT_EQ(examples.size(), 30u);
@@ -32,18 +13,6 @@ TEST(FewShotFile, ShippedExamplesMatchTheReferenceLists) {
   EXPECT_FALSE(examples[12].in_literal_prompt);
   EXPECT_EQ(examples[18].domain, "virtual-home");
   EXPECT_EQ(examples[18].command, "(grab you plate1)");
-}
-
-TEST(FewShotFile, SharedReferenceFileLoadsAndAgrees) {
-  const std::string shared = CLIPS_SOURCE_DIR "/../shared/reference/fewshot-examples.tsv";
-  if (!std::filesystem::exists(shared)) GTEST_SKIP() << "shared reference not present";
-  const auto theirs = load_fewshot_examples(shared);
-  const auto ours = load_fewshot_examples(kTsv);
-  ASSERT_EQ(theirs.size(), ours.size());
-  for (size_t i = 0; i < ours.size(); ++i) {
-    EXPECT_EQ(theirs[i].command, ours[i].command);
-    EXPECT_EQ(theirs[i].utterance, ours[i].utterance);
-  }
 }
 
 TEST(FewShotFile, ShippedPromptOrders) {
@@ -128,15 +97,6 @@ TEST(Prompt, ContinuationHasOneLeadingSpaceAndTheStopNewline) {
   EXPECT_EQ(utterance_continuation(" Can you pass me the red key?"), " Can you pass me the red key?\n");
 }
 
-std::string tsv_error(const std::string& body) {
-  try {
-    parse_fewshot_examples("domain\tindex\tcommand\tutterance\tin_literal_prompt\n" + body, "ex.tsv");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(FewShotFile, BadRowsNameFileAndLine) {
   EXPECT_EQ(tsv_error("d\t1\t(a)\tA.\tyes\nd\t2\t(b)\tB.\n"), "ex.tsv:3: expected 5 tab-separated fields, found 4");
   EXPECT_EQ(tsv_error("d\tone\t(a)\tA.\tyes\n"), "ex.tsv:2: index 'one' is not a positive integer");
@@ -162,5 +122,6 @@ TEST(FewShotFile, BadPromptOrders) {
   EXPECT_THROW(parse_prompt_orders(R"([1, 2])", "o.json"), InputError);
 }
 
-}  // namespace
+}  // namespace fewshot_test
+
 }  // namespace clips::commands

@@ -1,114 +1,7 @@
-// Bad inputs the dataset loader must reject with an error naming the file
-// (and line, entry or object), instead of loading them and giving a wrong
-// answer later. Each test corrupts a copy of the repo's example
-// Doors-Keys-Gems dataset, or of a slice of the shared VirtualHome dataset
-// (skipped when ../shared/dataset is absent).
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <string>
-#include <vector>
-
-#include "data/dataset.hpp"
-#include "data/validate.hpp"
-#include "test_paths.hpp"
+#include "data/dataset_input_test.hpp"
 
 namespace clips::data {
-namespace {
-
-namespace fs = std::filesystem;
-using ::testing::HasSubstr;
-using ::testing::Not;
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
-
-// Replaces the one occurrence of `from` in file `p`.
-void replace(const fs::path& p, const std::string& from, const std::string& to) {
-  std::string s = read(p);
-  size_t at = s.find(from);
-  ASSERT_NE(at, std::string::npos) << from << " not in " << p;
-  ASSERT_EQ(s.find(from, at + 1), std::string::npos) << from << " twice in " << p;
-  write(p, s.replace(at, from.size(), to));
-}
-
-// A fresh directory per test, removed after it.
-fs::path scratch_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return fs::temp_directory_path() /
-         ("clips-data-test-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
-}
-
-fs::path scratch() {
-  fs::path dir = scratch_dir();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-class DatasetInput : public ::testing::Test {
- protected:
-  void TearDown() override { fs::remove_all(scratch_dir()); }
-};
-
-// The example mDKG dataset: problems e1, e2; plans e1.1.keys, e1.2.keys,
-// e2.1.doors, e2.2.keys, each with one utterance and utterance files.
-fs::path dkg_copy() {
-  fs::path dir = scratch() / "dkg";
-  fs::copy(paths::examples_dir() + "/doors-keys-gems", dir, fs::copy_options::recursive);
-  return dir;
-}
-
-// Problem 1 of the shared VirtualHome dataset with two of its plans
-// (1.2.salad_veggie has two utterances).
-fs::path vh_slice() {
-  fs::path src = paths::vh_dataset(), dir = scratch() / "vh";
-  fs::create_directories(dir / "problems");
-  fs::copy(src / "domain.pddl", dir / "domain.pddl");
-  fs::copy(src / "goals", dir / "goals", fs::copy_options::recursive);
-  fs::copy(src / "problems" / "1.pddl", dir / "problems" / "1.pddl");
-  for (const char* kind : {"observed", "completed"}) {
-    fs::create_directories(dir / "plans" / kind);
-    for (const char* id : {"1.1.stew_chicken", "1.2.salad_veggie"})
-      fs::copy(src / "plans" / kind / (std::string(id) + ".pddl"), dir / "plans" / kind / (std::string(id) + ".pddl"));
-  }
-  return dir;
-}
-
-// The error of loading `dir`: the load's own, else those kept for the plans
-// that failed to load and for stimuli.json (they are raised only on use).
-std::string load_error(const fs::path& dir) {
-  try {
-    auto ds = Dataset::load(dir.string());
-    std::string kept;
-    for (const auto& b : ds.broken_plans()) kept += b.error + "\n";
-    kept += ds.stimuli_error();
-    if (!kept.empty()) return kept;
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<loaded without error>";
-}
-
-std::string task_error(const fs::path& dir, const std::string& problem) {
-  try {
-    Dataset::load(dir.string()).task(problem);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<grounded without error>";
-}
-
+namespace dataset_input_test {
 TEST_F(DatasetInput, ExampleDatasetLoadsAndValidates) {
   auto ds = Dataset::load(dkg_copy().string());
   ASSERT_EQ(ds.plans().size(), 4u);
@@ -116,8 +9,6 @@ TEST_F(DatasetInput, ExampleDatasetLoadsAndValidates) {
   for (auto& r : rep.results) EXPECT_TRUE(r.ok) << r.plan_id << ": " << r.error;
   EXPECT_EQ(ds.plans()[0].literal_utterance, "Can you get me the yellow key?");
 }
-
-// ---- 1: objects must start on the grid (or, for items, in an agent's hands)
 
 TEST_F(DatasetInput, GemWithoutPositionIsRejectedNamingTheProblemFile) {
   fs::path dir = dkg_copy();
@@ -163,51 +54,6 @@ TEST_F(DatasetInput, HeldItemNeedsNoPosition) {
   EXPECT_EQ(task_error(dir, "e2"), "<grounded without error>");
 }
 
-// ---- 2: a VirtualHome goal set lists each goal once
-
-TEST_F(DatasetInput, DuplicateGoalInVhGoalSetIsRejectedWithFileAndLine) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  fs::path dir = vh_slice();
-  auto ds = Dataset::load(dir.string());
-  ASSERT_EQ(ds.plans().size(), 2u);
-  EXPECT_EQ(ds.plans()[1].observed.utterances.size(), 2u);  // VH plans may have several
-  auto set = read(dir / "goals/sets/1.txt");
-  write(dir / "goals/sets/1.txt", "\n" + set + "\nstew_chicken\n");
-  // The blank first line counts: stew_chicken is at line 5, its copy at line 8.
-  EXPECT_THAT(load_error(dir), HasSubstr("goals/sets/1.txt:8:1: goal 'stew_chicken' is listed twice (also at line 5)"));
-}
-
-TEST_F(DatasetInput, UnknownVhGoalReportsItsRealLine) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  fs::path dir = vh_slice();
-  write(dir / "goals/sets/1.txt", "salad_veggie\n\nno_such_goal\n");
-  EXPECT_THAT(load_error(dir), HasSubstr("goals/sets/1.txt:3:1: goal 'no_such_goal' has no file"));
-}
-
-TEST_F(DatasetInput, VhGoalDefinitionErrorsNameTheirFile) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  fs::path dir = vh_slice();
-  replace(dir / "goals/definitions/stew_chicken.pddl", "(placed onion1 table1)", "(placed onion9 table1)");
-  auto ds = Dataset::load(dir.string());
-  bool named = false;
-  for (auto& p : ds.plans()) {
-    const PlanCheck c = validate_plan(ds, p);
-    named = named || c.error.find("goals/definitions/stew_chicken.pddl:2:11: unknown object 'onion9'") !=
-                         std::string::npos;
-  }
-  EXPECT_TRUE(named);
-}
-
-// Goal labels are file names written into every JSON output (issue 46): a
-// label that is not UTF-8 made `infer --json` fail with an internal error
-// (nlohmann type_error 316, exit 8); one with a path walked out of
-// goals/definitions/. Both are refused at load, naming the set's file and line.
-fs::path kitchen_copy() {
-  fs::path dir = scratch() / "kitchen";
-  fs::copy(paths::source_dir() + "/data/datasets/kitchen", dir, fs::copy_options::recursive);
-  return dir;
-}
-
 TEST_F(DatasetInput, GoalLabelThatIsNotUtf8IsRefusedWithFileAndLine) {
   fs::path dir = kitchen_copy();
   const std::string label = "kuchen\xfc";
@@ -242,8 +88,6 @@ TEST_F(DatasetInput, GoalLabelWithAPathIsRefused) {
   EXPECT_EQ(folder_goal_set(dir.string(), "1").size(), 2u);
 }
 
-// ---- 3: an utterance file holds exactly one utterance
-
 TEST_F(DatasetInput, MultiLineUtteranceFileIsRejected) {
   fs::path dir = dkg_copy();
   write(dir / "utterances/literal/e1.1.keys.txt", "Can you get me\nthe yellow key?\n");
@@ -262,8 +106,6 @@ TEST_F(DatasetInput, EmptyUtteranceFileIsRejectedButBlankLinesAroundOneAreFine) 
   auto ds = Dataset::load(dir.string());
   EXPECT_EQ(ds.plan("e1.1.keys").literal_utterance, "Can you get me the key?");
 }
-
-// ---- 4: observed plans: one utterance in mDKG, no empty utterances, no empty plans
 
 TEST_F(DatasetInput, SecondCommentInDkgObservedPlanIsRejectedAtItsLine) {
   fs::path dir = dkg_copy();
@@ -303,31 +145,6 @@ TEST_F(DatasetInput, EmptyUtteranceIsRejectedWithFileAndLine) {
   fs::path dir = dkg_copy();
   replace(dir / "plans/observed/e1.1.keys.pddl", "; Can you get me the yellow key?", ";  ");
   EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/e1.1.keys.pddl:5:1: empty utterance"));
-}
-
-TEST_F(DatasetInput, EmptyVhUtteranceIsRejectedWithFileAndLine) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  fs::path dir = vh_slice();
-  replace(dir / "plans/observed/1.1.stew_chicken.pddl", "; Can you get the wine?", ";");
-  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/1.1.stew_chicken.pddl:8:1: empty utterance"));
-}
-
-TEST_F(DatasetInput, EmptyVhObservedPlanIsRejected) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  fs::path dir = vh_slice();
-  write(dir / "plans/observed/1.1.stew_chicken.pddl", "");
-  EXPECT_THAT(load_error(dir), HasSubstr("plans/observed/1.1.stew_chicken.pddl: observed plan is empty"));
-}
-
-// ---- 5: stimuli.json
-
-std::string stimulus(const std::string& goal = "[1]", const std::string& timesteps = "4",
-                     const std::string& utterance = "\"Can you get me the yellow key?\"",
-                     const std::string& best = "[[3]]", const std::string& name = "\"e1.1.keys\"",
-                     const std::string& type = "\"keys\"") {
-  return "{\"name\": " + name + ", \"type\": " + type + ", \"utterance\": " + utterance +
-         ", \"timesteps\": " + timesteps + ", \"option_count\": 3, \"goal\": " + goal +
-         ", \"best_option\": " + best + "}";
 }
 
 TEST_F(DatasetInput, WellFormedStimuliLoad) {
@@ -396,8 +213,6 @@ TEST_F(DatasetInput, BadStimuliFieldsAreRejectedNamingEntryPlanAndField) {
   EXPECT_THAT(load_error(dir), HasSubstr("stimuli.json: expected a JSON array of stimuli, got an object"));
 }
 
-// ---- 6: utterances must be UTF-8, checked when loading
-
 TEST_F(DatasetInput, NonUtf8UtteranceIsRejectedWithFileAndLine) {
   fs::path dir = dkg_copy();
   replace(dir / "plans/observed/e1.1.keys.pddl", "yellow", "yell\xff\x64w");
@@ -421,24 +236,6 @@ TEST_F(DatasetInput, Utf8UtterancesLoad) {
   auto ds = Dataset::load(dir.string());
   EXPECT_EQ(ds.plan("e1.1.keys").observed.utterances.at(0).text, u);
 }
-
-// ---- the paper's datasets keep loading and validating
-
-TEST_F(DatasetInput, SharedDatasetsStillValidate) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  for (auto [dir, n] : {std::pair{paths::dkg_dataset(), 27u}, std::pair{paths::vh_dataset(), 20u}}) {
-    auto ds = Dataset::load(dir);
-    auto rep = validate_dataset(ds);
-    EXPECT_EQ(rep.results.size(), n) << dir;
-    for (auto& r : rep.results) EXPECT_TRUE(r.ok) << r.plan_id << ": " << r.error;
-  }
-  auto ds = Dataset::load(paths::dkg_dataset());
-  EXPECT_TRUE(ds.stimulus("2.1.keys"));
-  EXPECT_FALSE(ds.stimulus("demo0.1.keys"));
-}
-
-
-// ---- one bad plan file does not block the others
 
 TEST_F(DatasetInput, OneBadPlanFileLeavesTheOtherPlansUsable) {
   fs::path dir = dkg_copy();
@@ -517,5 +314,6 @@ TEST_F(DatasetInput, ProblemsLoadWithoutReadingThePlans) {
   EXPECT_THAT(load_error(dir), HasSubstr("has no plans/observed/"));
 }
 
-}  // namespace
+}  // namespace dataset_input_test
+
 }  // namespace clips::data

@@ -1,123 +1,7 @@
-// `clips generate` as a library (generate/generate.hpp): a small generated set
-// loads, every plan checks and reaches its recorded goal, the seed alone
-// decides the bytes, and impossible parameters are clear errors.
-#include "generate/generate.hpp"
-
-#include <gtest/gtest.h>
-
-#include <algorithm>
-
-#include "data/dataset.hpp"
-#include "data/validate.hpp"
-#include "inference/belief.hpp"
-#include "inference/utterance_model.hpp"
-#include "eval/support.hpp"
-#include "pddl/parser.hpp"
-#include "util/error.hpp"
+#include "generate/generate_test.hpp"
 
 namespace clips::eval {
-namespace {
-
-using testing::TempDir;
-
-GenerateOptions small(uint64_t seed) {
-  GenerateOptions o;
-  o.domain_file = paths::source_dir() + "/data/domains/doors-keys-gems/domain.pddl";
-  o.map.width = 7;
-  o.map.height = 7;
-  o.map.counts = {{"gem", 2}, {"key", 1}, {"door", 1}};
-  o.problems = 1;
-  o.plans_per_problem = 3;
-  o.seed = seed;
-  return o;
-}
-
-// One embedded model for every test, trained (or loaded from the cache) once.
-lm::LanguageModel& shared_lm() {
-  static const std::shared_ptr<lm::LanguageModel> lm = [] {
-    const auto domain = pddl::load_domain(small(0).domain_file);
-    return language::make_domain_language_model("embedded", {}, *domains::find_pack(domain), domain, {});
-  }();
-  return *lm;
-}
-
-// For runs that fail before any utterance is scored.
-class NoLanguageModel : public lm::LanguageModel {
- public:
-  std::string name() const override { return "none"; }
-  std::vector<double> score(const std::vector<lm::ScoreRequest>& batch) override {
-    return std::vector<double>(batch.size(), 0.0);
-  }
-};
-
-std::string error_of(const GenerateOptions& o) {
-  try {
-    NoLanguageModel lm;
-    generate_dataset(o, &lm);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-// What the CLIPS speaker model lists for the true hypothesis after inference
-// on `prefix` (the state and the policy the observer holds then).
-std::vector<commands::Command> true_speaker_commands(const data::Dataset& ds, const data::PlanRecord& prefix,
-                                                     const inference::InferenceOptions& io = {}) {
-  const auto run = inference::run_inference(ds, prefix, shared_lm(), io);
-  const auto& b = *run.belief;
-  for (size_t h = 0; h < b.hypotheses().size(); ++h)
-    if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile) {
-      const inference::UtteranceModel speaker(ds.task(prefix.problem_id), ds.pack_ptr());
-      return speaker.commands_at(b.policies()[h], b.state());
-    }
-  ADD_FAILURE() << prefix.id << ": no hypothesis is the true one";
-  return {};
-}
-
-TEST(GenerateDataset, SmallSetLoadsAndEveryPlanChecks) {
-  const GeneratedDataset gen = generate_dataset(small(1), &shared_lm());
-  ASSERT_EQ(gen.plans.size(), 3u);
-  TempDir dir("generate");
-  write_dataset(gen, dir.str(), false);
-  const auto ds = data::Dataset::load(dir.str());
-  EXPECT_TRUE(ds.broken_plans().empty());
-  ASSERT_EQ(ds.plans().size(), 3u);
-  const auto report = data::validate_dataset(ds);
-  EXPECT_EQ(report.failed, 0);
-  for (const auto& r : report.results) EXPECT_TRUE(r.ok) << r.plan_id << ": " << r.error;
-
-  for (const GeneratedPlan& g : gen.plans) {
-    SCOPED_TRACE(g.id);
-    const data::PlanRecord& p = ds.plan(g.id);
-    EXPECT_TRUE(g.tag == "keys" || g.tag == "doors");
-    EXPECT_EQ(p.tag, g.tag);
-    // The loader's true goal is the goal the plan was sampled for, and the
-    // completion reaches it and no other gem (validate_dataset above).
-    const auto goals = ds.candidate_goals(p);
-    EXPECT_EQ(goals.at(static_cast<size_t>(ds.true_goal_index(p))).label, g.goal);
-    ASSERT_FALSE(p.completed.actions.empty());
-    EXPECT_EQ(p.completed.actions.back().text, "(pickup human " + g.goal + ")");
-    EXPECT_EQ(static_cast<int>(p.observed.actions.size()), g.observed_steps);
-    EXPECT_EQ(static_cast<int>(p.completed.actions.size()), g.completed_steps);
-    // The robot waits until the instruction, as in the paper's observed plans.
-    for (const auto& a : p.observed.actions)
-      if (a.text.find("robot") != std::string::npos) {
-        EXPECT_EQ(a.text, "(wait robot)");
-      }
-    ASSERT_EQ(p.observed.utterances.size(), 1u);
-    EXPECT_EQ(p.observed.utterances[0].text, g.utterance);
-    EXPECT_EQ(p.observed.utterances[0].index, g.utterance_step);
-    EXPECT_LE(g.utterance_step, g.observed_steps);
-    EXPECT_EQ(p.pragmatic_utterance, g.utterance);
-    EXPECT_EQ(p.literal_utterance, g.literal_utterance);
-    EXPECT_EQ(data::true_options(ds, p), g.options);
-    EXPECT_FALSE(g.command.empty()) << "every gem needs help here, so the speaker has something to ask";
-  }
-  EXPECT_TRUE(gen.files.count("problems/1.txt"));
-  EXPECT_TRUE(gen.files.count("generation.json"));
-}
-
+namespace generate_test {
 TEST(GenerateDataset, TheSpeakerPlansAsInferenceDoes) {
   // The instruction's command is drawn from the commands the CLIPS speaker
   // model lists for the true hypothesis with the policy inference holds when
@@ -194,17 +78,6 @@ TEST(GenerateDataset, TheInstructionComesWhereTheSpeakerHasSomethingToAsk) {
   EXPECT_GT(with_command, 0);
 }
 
-TEST(GenerateDataset, TheSeedDecidesEveryByte) {
-  GenerateOptions o = small(5);
-  o.plans_per_problem = 1;
-  const auto a = generate_dataset(o, &shared_lm());
-  const auto b = generate_dataset(o, &shared_lm());
-  EXPECT_EQ(a.files, b.files);
-  o.seed = 6;
-  const auto c = generate_dataset(o, &shared_lm());
-  EXPECT_NE(a.files.at("problems/1.pddl"), c.files.at("problems/1.pddl"));
-}
-
 TEST(GenerateDataset, ImpossibleParametersAreClearErrors) {
   GenerateOptions crowded = small(1);
   crowded.map.width = crowded.map.height = 3;
@@ -243,5 +116,6 @@ TEST(GenerateDataset, RefusesToWriteOverAnotherFolderWithoutForce) {
   EXPECT_EQ(testing::read_text(dir.path / "domain.pddl"), "(define (domain x))\n");
 }
 
-}  // namespace
+}  // namespace generate_test
+
 }  // namespace clips::eval

@@ -1,62 +1,7 @@
-// Score tests for behaviours of the alignment model (alignment_model.hpp) that
-// the other embedded-model tests leave unpinned, and a golden-score regression
-// test that holds the model's numbers fixed across refactorings.
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
-#include <vector>
-
-#include "language/lm/embedded_model.hpp"
-#include "lm/embedded_prompts.hpp"
+#include "lm/alignment_behaviour_test.hpp"
 
 namespace clips::lm {
-namespace {
-
-using testing::literal_prompt;
-using testing::pragmatic_prompt;
-using testing::vh_prompt;
-
-// The default model, from the on-disk cache when this executable has trained
-// it before (CTest points the cache into the build folder). A stale entry
-// cannot hide a change: entries are keyed by the executable's file, the
-// training pairs (corpus and few-shot examples), the EM iterations and the
-// WordNet files, so changed code or data trains afresh.
-EmbeddedLanguageModel& model() {
-  static EmbeddedLanguageModel m;
-  return m;
-}
-
-double score(const std::string& prompt, const std::string& continuation) {
-  return model().score({{prompt, continuation}}).at(0);
-}
-
-// How many nats the command of prompt `a` explains an utterance better than
-// that of prompt `b`.
-double lead(const std::string& a, const std::string& b, const std::string& utterance) {
-  return score(a, utterance) - score(b, utterance);
-}
-
-// Item 4, C: the copy probability alpha is one parameter shared by all
-// colours, so a colour the corpus has rarely ("orange": 21 times, against 292
-// for "blue") is copied from the command as readily as a frequent one. Without the
-// copy only the contradiction of item 7 tells the keys apart (3.2 and 3.4
-// nats when the copy was disabled to check this test; 5.2 and 8.8 with it).
-TEST(AlignmentBehaviour, RareColoursAreCopiedAsReadilyAsFrequentOnes) {
-  const std::string orange = literal_prompt("(pickup you key1) where (iscolor key1 orange)");
-  const std::string blue = literal_prompt("(pickup you key1) where (iscolor key1 blue)");
-  const double gap_orange = lead(orange, blue, " Pick up the orange key.\n");
-  const double gap_blue = lead(blue, orange, " Pick up the blue key.\n");
-  std::printf("[shared copy] orange %.2f, blue %.2f nats\n", gap_orange, gap_blue);
-  EXPECT_GT(gap_orange, 4.5);
-  EXPECT_GT(gap_blue, 4.5);
-  // Rare or frequent, the copied colour tells the keys apart (the rare one
-  // even more: the shared residual table already expects "blue" anywhere).
-  EXPECT_GT(gap_orange, gap_blue - 1.0);
-}
-
+namespace alignment_behaviour_test {
 // Item 4, P: a hand-over's recipient unit emits "here", "my way", ... when
 // mentioned. Appending such a word to a request helps a hand-over to the
 // speaker and not a pickup of the same key (the verb and noun are the same
@@ -128,65 +73,6 @@ TEST(AlignmentBehaviour, AnAnnouncedStepIsTheSpeakersOwn) {
   EXPECT_GT(need, get + 1.0);
 }
 
-struct Golden {
-  const char* kind;  // "L" literal, "P" pragmatic, "V" virtual-home, "E" empty prompt
-  const char* command;
-  const char* continuation;
-  double log_prob;
-};
+}  // namespace alignment_behaviour_test
 
-std::string prompt_of(const Golden& g) {
-  switch (g.kind[0]) {
-    case 'L': return literal_prompt(g.command);
-    case 'P': return pragmatic_prompt(g.command);
-    case 'V': return vh_prompt(g.command);
-    default: return "\n";
-  }
-}
-
-// The log-scores below were recorded by running this test against the
-// unsplit alignment_model.cpp (commit a126c13) with CLIPS_GOLDEN_PRINT=1, and
-// re-recorded when what a later request's "it" points back to became the
-// listener's (EncodedUtterance::about_request; EM moves every score) and when
-// "the red one" became contradicted like "the red key", and when a clause
-// addressed to the listener ("could you ...") became a request with 0.99, and
-// when one announcing the speaker's own step ("I'll grab ...", "while I
-// get ...") became theirs,
-// with the listener's anchors scaled down there (EM moves every score a
-// little), and when the numbers in names got a mention rate of their own and
-// negated values stopped being copied (issue 60; a few hundredths of a nat); they
-// are not derived by hand. They cover every step of the model: length, mention
-// sums, anchors, clause types, modifiers, colour binding and contradiction,
-// number binding, pronoun antecedents, misspellings, unknown words, prefixes
-// and the empty-command prompt. Re-record them only for an intended change of
-// the model, and say so in the commit.
-const std::vector<Golden> kGolden = {
-    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.185507092441732},
-    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.72004908855655},
-    {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
-     " Bring me both red", -13.811103028182551},
-    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -55.990430253726728},
-    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.933144228273903},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
-     " This red door has me stuck; could you open it?\n", -70.692992052953187},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -30.711838777505399},
-    {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
-     " Pass me the red key pls, would it be possible?\n", -76.507492634964223},
-    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.68078607310833},
-    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -24.967599677277363},
-    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685214290517948},
-    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.807170168908222},
-    {"E", "", " Hello there.\n", -28.156360275835297},
-};
-
-TEST(AlignmentGolden, ScoresMatchTheRecordedOnes) {
-  const bool print = std::getenv("CLIPS_GOLDEN_PRINT") != nullptr;
-  for (const Golden& g : kGolden) {
-    const double s = score(prompt_of(g), g.continuation);
-    if (print) std::printf("GOLDEN %.17g  %s | %s\n", s, g.command, g.continuation);
-    EXPECT_NEAR(s, g.log_prob, 1e-9) << g.kind << " " << g.command << " /" << g.continuation;
-  }
-}
-
-}  // namespace
 }  // namespace clips::lm

@@ -1,74 +1,7 @@
-// OpenAiCompletionsModel against the loopback fake server: exact slicing,
-// batching, the max_tokens fallback, retries, timeouts and malformed replies.
-#include <arpa/inet.h>
-#include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
-#include <chrono>
-#include <cstdlib>
-#include <thread>
-#include <nlohmann/json.hpp>
-
-#include "language/lm/openai_model.hpp"
-#include "lm/fake_openai_server.hpp"
+#include "lm/openai_completions_test.hpp"
 
 namespace clips::lm {
-namespace {
-
-using fake::FakeFaults;
-using fake::FakeOpenAiServer;
-using fake::FakeReply;
-using nlohmann::json;
-using namespace std::chrono_literals;
-
-const std::string kPrompt =
-    "Input: (pickup you key1)\nOutput: Get the key over there.\nInput: (handover you me key1)\nOutput:";
-const std::string kUtterance = " Can you pass me the red key?\n";
-
-// What the fake server's default model gives the continuation tokens.
-double expected_sum(const std::string& prompt, const std::string& continuation) {
-  const auto tokens = FakeOpenAiServer::tokenize(prompt + continuation);
-  double sum = 0;
-  for (const auto& t : tokens) {
-    if (t.offset >= prompt.size()) sum += FakeOpenAiServer::unigram_logprob(t.text);
-  }
-  return sum;
-}
-
-class OpenAiCompletionsTest : public ::testing::Test {
- protected:
-  void SetUp() override { server.start(); }
-  void TearDown() override { server.stop(); }
-
-  OpenAiCompletionsOptions options() const {
-    OpenAiCompletionsOptions o;
-    o.base_url = server.base_url();
-    o.model = "fake-model";
-    o.api_key = "";
-    o.http.connect_timeout = 200ms;
-    o.http.total_timeout = 500ms;
-    o.http.max_retries = 2;
-    o.http.backoff_initial = 5ms;
-    o.http.backoff_max = 20ms;
-    return o;
-  }
-  std::string url() const { return server.base_url() + "/completions"; }
-
-  // Runs a one-pair score and returns the LmError message ("" if none).
-  std::string error_of(OpenAiCompletionsModel& m, std::vector<ScoreRequest> batch) {
-    try {
-      m.score(batch);
-    } catch (const LmError& e) {
-      return e.what();
-    }
-    return "";
-  }
-
-  FakeOpenAiServer server;
-};
-
+namespace openai_completions_test {
 TEST_F(OpenAiCompletionsTest, SumsExactlyTheContinuationTokensIncludingNewline) {
   OpenAiCompletionsModel m(options());
   auto scores = m.score({{kPrompt, kUtterance}});
@@ -271,12 +204,6 @@ TEST_F(OpenAiCompletionsTest, AHungServerIsTriedTwiceNotFiveTimes) {
   EXPECT_EQ(server.completion_requests(), 2);
 }
 
-struct MalformedCase {
-  FakeReply reply;
-  std::size_t damaged;
-  std::string expected;
-};
-
 TEST_F(OpenAiCompletionsTest, EveryMalformedReplyNamesTheField) {
   const std::vector<MalformedCase> cases = {
       {FakeReply::MalformedJson, 0, "body is not valid JSON"},
@@ -354,32 +281,6 @@ TEST_F(OpenAiCompletionsTest, AuthorizationHeaderIffKeySet) {
   EXPECT_FALSE(headers[1].has_value());
 }
 
-// Sets environment variables for one test and restores them afterwards.
-class EnvGuard {
- public:
-  void set(const char* name, const char* value) {
-    const char* old = std::getenv(name);
-    saved_.push_back({name, old ? std::optional<std::string>(old) : std::nullopt});
-    if (value) {
-      ::setenv(name, value, 1);
-    } else {
-      ::unsetenv(name);
-    }
-  }
-  ~EnvGuard() {
-    for (auto it = saved_.rbegin(); it != saved_.rend(); ++it) {
-      if (it->second) {
-        ::setenv(it->first.c_str(), it->second->c_str(), 1);
-      } else {
-        ::unsetenv(it->first.c_str());
-      }
-    }
-  }
-
- private:
-  std::vector<std::pair<std::string, std::optional<std::string>>> saved_;
-};
-
 TEST_F(OpenAiCompletionsTest, ReadsUrlModelAndKeyFromEnvironment) {
   EnvGuard env;
   env.set("CLIPS_LM_BASE_URL", (server.base_url() + "/").c_str());
@@ -399,21 +300,6 @@ TEST_F(OpenAiCompletionsTest, ReadsUrlModelAndKeyFromEnvironment) {
   OpenAiCompletionsModel defaults{OpenAiCompletionsOptions{}};
   EXPECT_EQ(defaults.endpoint(), "https://api.openai.com/v1/completions");
   EXPECT_EQ(defaults.name(), "openai:davinci-002");
-}
-
-// --- the slicing rule on hand-written replies --------------------------------
-
-double slice(const json& lp, const std::string& prompt, const std::string& cont) {
-  return detail::sum_continuation_logprobs(lp, prompt, cont, "choices[0].logprobs");
-}
-
-std::string slice_error(const json& lp, const std::string& prompt, const std::string& cont) {
-  try {
-    slice(lp, prompt, cont);
-  } catch (const LmError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(OpenAiSliceTest, CountsTokensFromThePromptLengthOn) {
@@ -481,21 +367,6 @@ TEST(OpenAiSliceTest, RejectsPositiveLogProbabilitiesAndEchoesCutShort) {
             std::string::npos);
 }
 
+}  // namespace openai_completions_test
 
-// The 774 MB case of issue hardening: an endless stream ends at the default
-// 16 MiB cap with an error naming the URL, not with memory filling up.
-TEST_F(OpenAiCompletionsTest, EndlessReplyStopsAtTheDefaultCap) {
-  FakeFaults f;
-  f.reply = FakeReply::Endless;
-  server.set_faults(f);
-  auto o = options();
-  o.http.total_timeout = 20000ms;
-  OpenAiCompletionsModel m(o);
-  const std::string err = error_of(m, {{kPrompt, kUtterance}});
-  EXPECT_NE(err.find(url()), std::string::npos) << err;
-  EXPECT_NE(err.find(std::to_string(std::size_t{16} << 20) + " bytes"), std::string::npos) << err;
-  EXPECT_EQ(server.completion_requests(), 1);
-}
-
-}  // namespace
 }  // namespace clips::lm

@@ -1,28 +1,4 @@
-// Parser: the two dataset domains and our own, and every error class with
-// its message and location.
-#include <gtest/gtest.h>
-
-#include "pddl/parser.hpp"
-#include "pddl/support.hpp"
-#include "test_paths.hpp"
-
-using namespace clips;
-using namespace clips::pddl;
-
-namespace {
-
-using clips::pddl::testing::error_of;
-
-const char* kMiniDomain = R"(
-(define (domain mini)
-  (:requirements :typing :adl)
-  (:types box - thing thing place)
-  (:predicates (at ?b - box ?p - place) (open ?p - place))
-  (:action go :parameters (?b - box ?p - place)
-     :precondition (open ?p) :effect (at ?b ?p)))
-)";
-
-}  // namespace
+#include "pddl/parser_test.hpp"
 
 TEST(Parser, ReadsTheProjectsDoorsKeysGemsDomain) {
   Domain d = load_domain(paths::examples_dir() + "/doors-keys-gems/domain.pddl");
@@ -36,15 +12,6 @@ TEST(Parser, ReadsTheProjectsDoorsKeysGemsDomain) {
   auto walls = d.find_function("walls");
   ASSERT_TRUE(walls);
   EXPECT_EQ(d.functions[*walls].type, ValueType::Matrix);
-}
-
-TEST(Parser, ReadsBothSharedDatasetDomains) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "shared dataset not present";
-  Domain dkg = load_domain(paths::dkg_dataset() + "/domain.pddl");
-  EXPECT_EQ(dkg.actions.size(), 8u);
-  Domain vh = load_domain(paths::vh_dataset() + "/domain.pddl");
-  EXPECT_EQ(vh.name, "virtual-home");
-  EXPECT_GE(vh.find_action("grab"), 0);
 }
 
 TEST(Parser, IsCaseInsensitiveAndSkipsComments) {

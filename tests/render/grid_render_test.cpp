@@ -1,35 +1,7 @@
-#include <gtest/gtest.h>
-
-#include <cmath>
-
-#include "render/render.hpp"
-#include "render/theme.hpp"
-#include "support.hpp"
+#include "render/grid_render_test.hpp"
 
 namespace clips::render {
-namespace {
-
-using namespace testing;
-
-// A 6x4 room: wall column at x=3 except a locked red door at (3,2).
-GridScene small_scene() {
-  GridScene s(6, 4);
-  for (int y = 1; y <= 4; ++y) s.set_wall(3, y);
-  s.set_wall(3, 2, false);
-  s.objects = {
-      {"key1", ObjectKind::Key, "red", 1, 1},
-      {"door1", ObjectKind::Door, "red", 3, 2, "", true},
-      {"gem1", ObjectKind::Gem, "blue", 6, 4},
-      {"human", ObjectKind::Human, "", 1, 4},
-      {"robot", ObjectKind::Robot, "", 5, 1},
-  };
-  s.active_agent = "human";
-  s.caption = "Can you pass me the red key?";
-  return s;
-}
-
-Rect inner(const Rect& r, int by) { return {r.x + by, r.y + by, r.w - 2 * by, r.h - 2 * by}; }
-
+namespace grid_render_test {
 TEST(GridRender, ImageSizeFollowsLayout) {
   for (int cell : {16, 32, 64}) {
     RenderOptions o;
@@ -216,55 +188,6 @@ TEST(GridRender, TracesAreDrawn) {
             count_colour(render_png(small_scene(), o), L.cell_rect(2, 3), theme::floor));
 }
 
-// Renders every dataset map at 64 and 16 px per cell, for checks and for eyes.
-TEST(GridRender, DatasetMaps) {
-  const auto dir = dataset_dir() / "doors-keys-gems" / "problems";
-  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "dataset not found at " << dir;
-  int maps = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".txt") continue;
-    GridScene s = parse_ascii_map(read_text(entry.path()));
-    ASSERT_GT(s.width, 0);
-    s.title = "Problem " + entry.path().stem().string();
-    s.caption = "Can you pass me the red key?";
-    s.bars = {{"gem1", "red", 0.55}, {"gem2", "yellow", 0.25}, {"gem3", "blue", 0.15}, {"gem4", "green", 0.05}};
-    // Show a held key and an open door so every element appears.
-    for (auto& o : s.objects)
-      if (o.kind == ObjectKind::Key) {
-        o.held_by = "robot", o.x = o.y = -1;
-        break;
-      }
-    for (auto& o : s.objects)
-      if (o.kind == ObjectKind::Door) {
-        o.locked = false;
-        break;
-      }
-    if (const GridObject* h = s.find("human"))
-      for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-        if (s.in_grid(h->x + dx, h->y + dy) && !s.wall(h->x + dx, h->y + dy)) {
-          s.traces = {{"human", {{h->x + dx, h->y + dy}, {h->x, h->y}}}};
-          break;
-        }
-    for (int cell : {64, 16}) {
-      RenderOptions o;
-      o.cell_px = cell;
-      const auto path = out_dir() / ("dkg-" + entry.path().stem().string() + "-" + std::to_string(cell) + ".png");
-      write_png(s, path, o);
-      const Image back = read_png(path);
-      const GridLayout L = layout(s, o);
-      EXPECT_EQ(back.width, L.width);
-      EXPECT_EQ(back.height, L.height);
-      for (int y = 1; y <= s.height; ++y)
-        for (int x = 1; x <= s.width; ++x)
-          if (s.wall(x, y)) {
-            const Rect r = L.cell_rect(x, y);
-            ASSERT_EQ(back.at(r.x + r.w / 2, r.y + r.h / 2), theme::wall) << path << " " << x << "," << y;
-          }
-    }
-    ++maps;
-  }
-  EXPECT_GE(maps, 10);
-}
+}  // namespace grid_render_test
 
-}  // namespace
 }  // namespace clips::render

@@ -1,89 +1,7 @@
-// `clips bench --report` on the repo's small example dataset: summary.json,
-// results.csv, the HTML report and its pictures, and the page rendered in
-// headless Chromium (skipped when /usr/bin/chromium is absent).
-#include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-#include <set>
-
-#include "eval/bench.hpp"
-#include "report/report.hpp"
-#include "eval/support.hpp"
-#include "render/image.hpp"
+#include "report/report_test.hpp"
 
 namespace clips::eval {
-namespace {
-
-namespace fs = std::filesystem;
-using testing::clips_binary;
-using testing::examples_dkg;
-
-const std::vector<std::string> kPlans = {"e1.1.keys", "e1.2.keys", "e2.1.doors", "e2.2.keys"};
-
-class BenchReportTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    tmp_ = new testing::TempDir("bench-report");
-    std::string plans;
-    for (auto& p : kPlans) plans += " " + p;
-    result_ = new testing::RunResult(testing::run(
-        "env -u CLIPS_CHAT_BASE_URL " + clips_binary() + " bench --dataset " + examples_dkg() + " --plans" + plans +
-        " --no-progress --jobs 2 --out " + tmp_->str() + " --report " + tmp_->str() + "/report"));
-  }
-  static void TearDownTestSuite() {
-    delete result_;
-    delete tmp_;
-  }
-  static inline testing::TempDir* tmp_ = nullptr;
-  static inline testing::RunResult* result_ = nullptr;
-};
-
-TEST_F(BenchReportTest, SummaryJson) {
-  ASSERT_EQ(result_->status, 0) << result_->out;
-  auto j = nlohmann::json::parse(testing::read_text(tmp_->path / "summary.json"));
-  for (const char* k : {"domain", "dataset", "plans", "failed_plans", "lm", "wall_seconds", "max_rss_mb", "methods"})
-    EXPECT_TRUE(j.contains(k)) << k;
-  EXPECT_EQ(j["domain"], "doors-keys-gems");
-  // The speaker-model choices that produced the numbers (defaults: the paper's).
-  EXPECT_EQ(j.value("speaker_rule", ""), "paper");
-  EXPECT_EQ(j.value("utterance_timing", ""), "after");
-  EXPECT_EQ(j["plans"], kPlans.size());
-  EXPECT_EQ(j["failed_plans"], 0);
-  EXPECT_GT(j["wall_seconds"].get<double>(), 0);
-  ASSERT_TRUE(j["methods"].contains("clips"));
-  const auto& clips = j["methods"]["clips"];
-  double p = clips["p_true_goal"]["mean"].get<double>();
-  EXPECT_GE(p, 0);
-  EXPECT_LE(p, 1);
-  EXPECT_GE(clips["p_true_goal"]["se"].get<double>(), 0);
-  for (const char* m : {"assist_precision", "assist_recall", "goal_success"}) {
-    double v = clips[m]["mean"].get<double>();
-    EXPECT_GE(v, 0) << m;
-    EXPECT_LE(v, 1) << m;
-  }
-  EXPECT_NEAR(clips["rel_plan_length"]["mean"].get<double>(), 1.0, 1e-9);
-  EXPECT_FALSE(j["methods"].contains("multimodal"));  // no endpoint configured
-  // The table says the multimodal baseline was skipped.
-  EXPECT_NE(result_->out.find("skipped: no chat endpoint"), std::string::npos) << result_->out;
-  // Per-step latency (issue 43): every observed step of the four plans, their
-  // first steps, the CLIPS decisions; in the table too.
-  ASSERT_TRUE(j.contains("latency"));
-  const auto& lat = j["latency"];
-  EXPECT_GE(lat["inference_threads"].get<int>(), 1);
-  EXPECT_GT(lat["belief_step"]["steps"].get<int>(), 0);
-  EXPECT_EQ(lat["belief_step"]["steps"], lat["belief_step_one_thread"]["steps"]);
-  EXPECT_EQ(lat["belief_start"]["plans"], kPlans.size());
-  EXPECT_EQ(lat["decision_method"], "clips");
-  EXPECT_GT(lat["assistance_decision"]["decisions"].get<int>(), 0);
-  for (const char* k : {"belief_step", "belief_step_one_thread", "belief_start", "assistance_decision"}) {
-    const auto& l = lat[k];
-    EXPECT_LE(l["median_ms"].get<double>(), l["p95_ms"].get<double>()) << k;
-    EXPECT_LE(l["p95_ms"].get<double>(), l["max_ms"].get<double>()) << k;
-  }
-  EXPECT_NE(result_->out.find("latency: belief step median"), std::string::npos) << result_->out;
-  EXPECT_NE(result_->out.find("latency: assistance decision (clips)"), std::string::npos) << result_->out;
-}
-
+namespace report_test {
 // The latency figures' quantiles: the value at rank floor(q (n - 1)).
 TEST(BenchLatency, QuantilesAreTheBenchmarksRanks) {
   const LatencyStats l = LatencyStats::of({5, 1, 4, 2, 3, 10, 6, 7, 8, 9, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21});
@@ -92,94 +10,6 @@ TEST(BenchLatency, QuantilesAreTheBenchmarksRanks) {
   EXPECT_EQ(l.p95, 20);
   EXPECT_EQ(l.max, 21);
   EXPECT_EQ(LatencyStats::of({}).n, 0u);
-}
-
-TEST_F(BenchReportTest, ResultsCsvHasOneRowPerPlanAndMethod) {
-  ASSERT_EQ(result_->status, 0) << result_->out;
-  std::istringstream in(testing::read_text(tmp_->path / "results.csv"));
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line.rfind("plan,method,", 0), 0u);
-  std::set<std::pair<std::string, std::string>> rows;
-  int n = 0;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    auto c1 = line.find(',');
-    auto c2 = line.find(',', c1 + 1);
-    rows.insert({line.substr(0, c1), line.substr(c1 + 1, c2 - c1 - 1)});
-    ++n;
-  }
-  const std::vector<std::string> methods = {"clips", "lang_only", "action_only", "literal_efficient", "literal_naive"};
-  EXPECT_EQ(n, static_cast<int>(kPlans.size() * methods.size()));
-  for (auto& p : kPlans)
-    for (auto& m : methods) EXPECT_TRUE(rows.count({p, m})) << p << " " << m;
-}
-
-TEST_F(BenchReportTest, ReportFilesAndHtml) {
-  ASSERT_EQ(result_->status, 0) << result_->out;
-  fs::path dir = tmp_->path / "report";
-  std::string html = testing::read_text(dir / "report.html");
-  ASSERT_FALSE(html.empty());
-  EXPECT_NE(html.find("<table class=\"results\">"), std::string::npos);
-  // The repo's examples are not the paper's dataset: no "paper" column beside them.
-  EXPECT_EQ(html.find("<th>paper</th>"), std::string::npos);
-  EXPECT_NE(html.find("skipped: no chat endpoint"), std::string::npos);
-  // Offline: no remote resources or scripts.
-  for (const char* remote : {"src=\"http", "href=\"http", "url(http", "@import", "src=\"//", "href=\"//"})
-    EXPECT_EQ(html.find(remote), std::string::npos) << remote;
-  EXPECT_EQ(html.find("<script"), std::string::npos);
-  EXPECT_EQ(html.find("<link"), std::string::npos);
-  for (auto& p : kPlans) {
-    EXPECT_TRUE(fs::exists(dir / "plans" / (p + ".gif"))) << p;
-    EXPECT_GT(fs::file_size(dir / "plans" / (p + ".gif")), 1000u) << p;
-    EXPECT_TRUE(fs::exists(dir / "plans" / (p + "_posterior.svg"))) << p;
-    EXPECT_NE(html.find("href=\"plans/" + p + ".gif\""), std::string::npos) << p;
-    EXPECT_NE(html.find("plans/" + p + "_posterior.svg"), std::string::npos) << p;
-  }
-  // Inline SVG charts: five metric charts, one posterior plot per plan, and a
-  // reliability diagram per method with a goal posterior (the examples have no
-  // dev/test split, so one each: clips, lang_only, action_only).
-  size_t svgs = 0;
-  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  EXPECT_EQ(svgs, 5 + kPlans.size() + 3);
-  EXPECT_NE(html.find("Calibration of the goal posterior"), std::string::npos);
-}
-
-TEST_F(BenchReportTest, RendersInHeadlessChromium) {
-  ASSERT_EQ(result_->status, 0) << result_->out;
-  const std::string chromium = "/usr/bin/chromium";
-  if (!fs::exists(chromium)) GTEST_SKIP() << chromium << " not installed (Debian package chromium)";
-  fs::path page = fs::absolute(tmp_->path / "report" / "report.html");
-  testing::TempDir profile("chromium-profile");
-  fs::path shot = tmp_->path / "screenshot.png";
-  auto r = testing::run("timeout 60 " + chromium +
-                        " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
-                        " --disable-background-networking --disable-component-update --disable-sync"
-                        " --enable-logging=stderr --v=0 --user-data-dir=" + profile.str() +
-                        " --screenshot=" + shot.string() + " --window-size=1280,2000 file://" + page.string());
-  ASSERT_EQ(r.status, 0) << r.out;
-  // No console messages from the page (it has no scripts, so any is an error).
-  std::istringstream lines(r.out);
-  for (std::string line; std::getline(lines, line);) {
-    bool console = line.find(":CONSOLE") != std::string::npos;
-    bool mentions_page = line.find("report.html") != std::string::npos || line.find("file://") != std::string::npos;
-    EXPECT_FALSE(console || (mentions_page && line.find("ERROR") != std::string::npos)) << line;
-  }
-  ASSERT_TRUE(fs::exists(shot)) << r.out;
-  auto img = render::read_png(shot);
-  EXPECT_EQ(img.width, 1280);
-  EXPECT_EQ(img.height, 2000);
-  std::set<uint32_t> colours;
-  size_t non_background = 0;
-  const render::Rgb bg = img.at(2, 2);
-  for (int y = 0; y < img.height; y += 2)
-    for (int x = 0; x < img.width; x += 2) {
-      auto c = img.at(x, y);
-      colours.insert((uint32_t{c.r} << 16) | (uint32_t{c.g} << 8) | c.b);
-      if (!(c == bg)) ++non_background;
-    }
-  EXPECT_GT(colours.size(), 200u);  // text, charts, gem colours, GIF thumbnails
-  EXPECT_GT(non_background, static_cast<size_t>(img.width * img.height / 4 / 20));  // > 5% of sampled pixels drawn
 }
 
 TEST(ReportHtml, EscapesAndPosteriorSvg) {
@@ -191,5 +21,6 @@ TEST(ReportHtml, EscapesAndPosteriorSvg) {
   EXPECT_NE(svg.find("utterance"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace report_test
+
 }  // namespace clips::eval

@@ -1,26 +1,7 @@
-// State -> scene conversion and `clips render` output.
-#include <gif_lib.h>
-#include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
-#include "scenes/scenes.hpp"
-#include "eval/support.hpp"
-#include "render/image.hpp"
+#include "scenes/scenes_test.hpp"
 
 namespace clips::eval {
-namespace {
-
-using testing::clips_binary;
-using testing::examples_dkg;
-
-const render::GridObject& object(const render::GridScene& s, const std::string& name) {
-  const render::GridObject* o = s.find(name);
-  EXPECT_NE(o, nullptr) << name;
-  static render::GridObject none;
-  return o ? *o : none;
-}
-
+namespace scenes_test {
 TEST(Scenes, DkgInitialState) {
   auto ds = data::Dataset::load(examples_dkg());
   auto task = ds.task("e1");
@@ -110,68 +91,6 @@ TEST(Scenes, PlanFramesObservedThenAssisted) {
   EXPECT_THROW(plan_frames(ds, p, run), InputError);
 }
 
-TEST(Scenes, VirtualHomeSceneIfDatasetPresent) {
-  if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
-  auto ds = data::Dataset::load(clips::paths::vh_dataset());
-  const auto& p = ds.plans().front();
-  auto task = ds.task(p.problem_id);
-  domains::VhWorld w(*task);
-  auto s = task->initial_state();
-  auto scene = vh_scene(ds.pack(), w, s);
-  EXPECT_EQ(scene.fixtures.size(), w.fixtures().size());
-  // The pack's colours, read from its "#rrggbb" strings.
-  ASSERT_TRUE(scene.type_colours.count("plate"));
-  EXPECT_EQ(scene.type_colours.at("plate"), (render::Rgb{168, 200, 245}));
-  EXPECT_EQ(scene.type_colours.size(), ds.pack().spec().scene_colours.size());
-  size_t items = 0;
-  for (auto& f : scene.fixtures)
-    for (auto& pile : f.piles) items += pile.size();
-  size_t held = 0;
-  for (auto& a : scene.agents) held += a.held.size();
-  EXPECT_EQ(items + held, w.items().size());
-  ASSERT_EQ(scene.agents.size(), 2u);
-  EXPECT_FALSE(scene.active_agent.empty());
-}
+}  // namespace scenes_test
 
-TEST(RenderCli, PngAndBadArguments) {
-  testing::TempDir tmp("render");
-  auto out = tmp.path / "f.png";
-  auto r = testing::run(clips_binary() + " render --dataset " + examples_dkg() + " --plan e1.1.keys --out " + out.string());
-  ASSERT_EQ(r.status, 0) << r.out;
-  auto img = render::read_png(out);
-  EXPECT_GT(img.width, 200);
-  EXPECT_GT(img.height, 100);
-  r = testing::run(clips_binary() + " render --dataset " + examples_dkg() + " --plan e1.1.keys --step 999 --force --out " +
-                   out.string());
-  EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("out of range"), std::string::npos) << r.out;
-  r = testing::run(clips_binary() + " render --dataset " + examples_dkg() +
-                   " --plan e1.1.keys --out /nonexistent-dir-xyz/f.png");
-  EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("cannot write"), std::string::npos) << r.out;
-  r = testing::run(clips_binary() + " render --dataset " + examples_dkg() + " --plan e1.1.keys");
-  EXPECT_NE(r.status, 0);
-}
-
-TEST(RenderCli, GifHasObservedAndAssistedFrames) {
-  testing::TempDir tmp("render-gif");
-  auto gif = tmp.path / "run.gif";
-  auto r = testing::run(clips_binary() + " render --dataset " + examples_dkg() + " --plan e2.1.doors --gif " + gif.string());
-  ASSERT_EQ(r.status, 0) << r.out;
-  auto a = testing::run(clips_binary() + " assist --dataset " + examples_dkg() + " --plan e2.1.doors --json");
-  ASSERT_EQ(a.status, 0) << a.out;
-  auto j = nlohmann::json::parse(a.out.substr(a.out.find('{')));
-  const int assisted = static_cast<int>(j["plan"].size());
-  auto ds = data::Dataset::load(examples_dkg());
-  const int observed = static_cast<int>(ds.plan("e2.1.doors").observed.actions.size());
-  int err = 0;
-  GifFileType* g = DGifOpenFileName(gif.c_str(), &err);
-  ASSERT_NE(g, nullptr) << GifErrorString(err);
-  ASSERT_EQ(DGifSlurp(g), GIF_OK);
-  EXPECT_EQ(g->ImageCount, observed + 1 + assisted);
-  EXPECT_GT(g->SWidth, 200);
-  DGifCloseFile(g, &err);
-}
-
-}  // namespace
 }  // namespace clips::eval

@@ -1,67 +1,7 @@
-// Sessions on every pack, in process (no socket): the workshop (a text-scene
-// pack with recorded plans), the kitchen of docs/domains.md served from a
-// folder without any plan, sessions from PDDL text, the errors of text
-// input, and the decision shown after undo and a method switch.
-#include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
-#include "language/listener.hpp"
-#include "serve/kitchen_folder.hpp"
-#include "serve/service.hpp"
+#include "serve/pack_sessions_test.hpp"
 
 namespace clips::serve {
-namespace {
-
-using nlohmann::json;
-
-const std::string kExamples = std::string(CLIPS_SOURCE_DIR) + "/data/examples/doors-keys-gems";
-const std::string kWorkshop = std::string(CLIPS_SOURCE_DIR) + "/data/datasets/workshop";
-
-std::shared_ptr<lm::LanguageModel> shared_lm() {
-  static auto lm = language::make_language_model("embedded");
-  return lm;
-}
-
-json body(const Reply& r) { return json::parse(r.body); }
-
-std::string error_of(const Reply& r) { return body(r).value("error", ""); }
-
-bool contains(const json& list, const std::string& s) {
-  for (const auto& x : list)
-    if (x == s) return true;
-  return false;
-}
-
-const json* find_named(const json& list, const std::string& name) {
-  for (const auto& x : list)
-    if (x["name"] == name) return &x;
-  return nullptr;
-}
-
-struct PackSessions : ::testing::Test {
-  testing::KitchenFolder kitchen;
-  std::unique_ptr<Service> make(ServiceLimits limits = {}) {
-    return std::make_unique<Service>(std::vector<std::string>{kExamples, kWorkshop, kitchen.dir}, limits, shared_lm());
-  }
-  static json created(Service& s, const json& request) {
-    Reply r = s.handle("POST", "/api/sessions", request.dump());
-    EXPECT_EQ(r.status, 201) << r.body;
-    return r.status == 201 ? body(r) : json::object();
-  }
-  static json post(Service& s, const std::string& url, const json& request, int status = 200) {
-    Reply r = s.handle("POST", url, request.dump());
-    EXPECT_EQ(r.status, status) << url << " " << request.dump() << ": " << r.body;
-    return body(r);
-  }
-  // The kitchen's pack as a JSON object, without the file it names.
-  json kitchen_pack() const {
-    json pack = json::parse(testing::docs_example_files().at("kitchen/pack.json"));
-    pack.erase("fewshot");
-    return pack;
-  }
-};
-
+namespace pack_sessions_test {
 TEST_F(PackSessions, ListsEveryProblemWithItsPlansAndTheScene) {
   auto s = make();
   json j = body(s->handle("GET", "/api/datasets", ""));
@@ -276,43 +216,6 @@ TEST_F(PackSessions, TheDecisionShownIsTheLatestStillInTheHistory) {
   EXPECT_TRUE(st["decision"].is_null());
 }
 
-// A study whose chest stands in a room by a fact no action changes, with
-// books inside it, and a basket the human carries with a lamp in it (issue
-// 62): the text scene draws the chest at its room with its contents, and the
-// basket with its carrier, not as places of their own nor as loose facts.
-const char* kStudyDomain = R"pddl(
-(define (domain study)
-  (:requirements :typing :negative-preconditions :equality)
-  (:types agent item room chest colour - object  book lamp basket - item)
-  (:predicates (at ?a - agent ?r - room) (in ?i - item ?r - room) (inside ?i - item ?c - object)
-               (stands ?c - chest ?r - room) (holding ?a - agent ?i - item) (open ?c - chest)
-               (iscolour ?i - item ?c - colour))
-  (:action move :parameters (?a - agent ?from - room ?to - room)
-   :precondition (and (at ?a ?from) (not (= ?from ?to))) :effect (and (not (at ?a ?from)) (at ?a ?to)))
-  (:action open :parameters (?a - agent ?c - chest ?r - room)
-   :precondition (and (at ?a ?r) (stands ?c ?r) (not (open ?c))) :effect (open ?c))
-  (:action takeout :parameters (?a - agent ?i - item ?c - chest ?r - room)
-   :precondition (and (at ?a ?r) (stands ?c ?r) (open ?c) (inside ?i ?c))
-   :effect (and (not (inside ?i ?c)) (holding ?a ?i)))
-  (:action handover :parameters (?a - agent ?b - agent ?i - item ?r - room)
-   :precondition (and (not (= ?a ?b)) (at ?a ?r) (at ?b ?r) (holding ?a ?i))
-   :effect (and (not (holding ?a ?i)) (holding ?b ?i))))
-)pddl";
-const char* kStudyProblem = R"pddl(
-(define (problem study-1) (:domain study)
-  (:objects human robot - agent hall study - room chest1 - chest book1 book2 - book lamp1 - lamp
-            basket1 - basket red blue - colour)
-  (:init (at human hall) (at robot study) (stands chest1 study)
-         (inside book1 chest1) (inside book2 chest1) (iscolour book1 red) (iscolour book2 blue)
-         (holding human basket1) (inside lamp1 basket1)))
-)pddl";
-const char* kStudyPack = R"json({"domain": "study",
-  "goals": {"source": "objects", "object_type": "book", "condition": "(holding human {})"},
-  "language": {"salient_actions": [{"action": "takeout", "agent_arg": 1, "focal_arg": 2},
-                                   {"action": "handover", "agent_arg": 1, "focal_arg": 3}],
-               "qualifier": {"predicate": "iscolour"},
-               "goal_atoms": {"takeout": ["(holding $1 $2)"], "handover": ["(holding $2 $3)"]}}})json";
-
 TEST_F(PackSessions, TextSceneDrawsThingsInTheirHoldersAndCarriers) {
   auto s = make();
   json st = created(*s, {{"domain", kStudyDomain}, {"problem", kStudyProblem}, {"pack", kStudyPack}});
@@ -409,29 +312,6 @@ TEST_F(PackSessions, ReadingsComeInPartsForWords) {
   EXPECT_TRUE(handover_seen) << cmds.dump();
 }
 
-// A pack whose no-op is `idle` and whose turn predicate is `turn` (neither
-// in its domain: clips compiles them) plays over the JSON API: the bot
-// answers the gardener's moves with the pack's actions.
-TEST(PackSessionsIdle, AnIdleAndTurnPackPlays) {
-  Service s({std::string(CLIPS_SOURCE_DIR) + "/tests/fixtures/garden"}, {}, shared_lm());
-  Reply r = s.handle("POST", "/api/sessions", R"j({"dataset":"garden","problem":"1"})j");
-  ASSERT_EQ(r.status, 201) << r.body;
-  json st = body(r);
-  EXPECT_EQ(st["turn"], "gardener");
-  const std::string url = "/api/sessions/" + st["id"].get<std::string>();
-  r = s.handle("POST", url + "/act", R"j({"action":"(idle gardener)"})j");
-  ASSERT_EQ(r.status, 200) << r.body;
-  EXPECT_EQ(body(r)["turn"], "bot");
-  r = s.handle("POST", url + "/hear", R"j({"utterance":"Could you get the green seeds?"})j");
-  ASSERT_EQ(r.status, 200) << r.body;
-  r = s.handle("POST", url + "/assist", R"j({"apply":true})j");
-  ASSERT_EQ(r.status, 200) << r.body;
-  const json reply = body(r);
-  EXPECT_EQ(reply["state"]["turn"], "gardener") << r.body;
-  const std::string action = reply["decision"]["action"];
-  EXPECT_EQ(action.rfind("(", 0), 0u) << r.body;
-  EXPECT_NE(action.find(" bot"), std::string::npos) << r.body;  // the bot's own action: (idle bot), (move bot ...), ...
-}
+}  // namespace pack_sessions_test
 
-}  // namespace
 }  // namespace clips::serve

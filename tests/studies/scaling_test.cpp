@@ -1,41 +1,7 @@
-// `clips bench --scaling` (studies/scaling.hpp): the points of each axis, the
-// CSV line round trip, the SVG chart, and one tiny point run end to end.
-#include "studies/scaling.hpp"
-
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <regex>
-
-#include "language/listener.hpp"
-#include "test_paths.hpp"
-#include "util/error.hpp"
+#include "studies/scaling_test.hpp"
 
 namespace clips::eval {
-namespace {
-
-int count(const std::string& s, const std::string& what) {
-  int n = 0;
-  for (size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
-  return n;
-}
-
-ScalingRow sample_row(const std::string& axis, int value, double ms) {
-  ScalingRow r;
-  r.point.axis = axis;
-  r.point.value = value;
-  r.plans = 3;
-  r.belief_steps = 40;
-  r.decisions = 20;
-  r.belief_median_ms = ms;
-  r.belief_p95_ms = 4 * ms;
-  r.decision_median_ms = ms / 10;
-  r.decision_p95_ms = ms / 2;
-  r.max_rss_mb = 123.4;
-  r.p_true_mean = 0.625;
-  return r;
-}
-
+namespace scaling_test {
 TEST(Scaling, AxesVaryOneQuantityEach) {
   const auto full = scaling_points(false);
   ASSERT_EQ(full.size(), 15u);
@@ -130,40 +96,6 @@ TEST(Scaling, SvgLeavesOutTimesThatWereNotMeasured) {
   EXPECT_EQ(svg.find("decision, median 0 ms"), std::string::npos);
 }
 
-TEST(ScalingRun, TinyPointRunsEndToEnd) {
-  ScalingPoint p;
-  p.axis = "side";
-  p.value = p.side = 7;
-  p.gems = 2;
-  p.keys = 1;
-  p.doors = 1;
-  ScalingSettings s;
-  s.plans = 1;
-  s.domain_file = paths::source_dir() + "/data/domains/doors-keys-gems/domain.pddl";
-  auto lm = language::make_language_model("embedded", {});
-  const ScalingRow r = run_scaling_point(p, s, *lm);
-  ASSERT_EQ(r.error, "");
-  EXPECT_EQ(r.plans, 1);
-  EXPECT_GT(r.belief_steps, 0);
-  EXPECT_EQ(r.belief_steps, static_cast<int>(r.observed_steps_mean));
-  EXPECT_GT(r.belief_median_ms, 0);
-  EXPECT_GE(r.belief_p95_ms, r.belief_median_ms);
-  EXPECT_GT(r.max_rss_mb, 1);
-  EXPECT_GT(r.p_true_mean, 0);
-  EXPECT_LE(r.p_true_mean, 1);
-  const ScalingRow back = parse_scaling_csv_line(scaling_csv_line(r));
-  EXPECT_EQ(back.plans, 1);
-  const std::string svg = scaling_svg({r});
-  EXPECT_EQ(count(svg, "<circle"), 4);
+}  // namespace scaling_test
 
-  // The steps axis moves actions of the completion into the observed prefix.
-  ScalingPoint longer = p;
-  longer.axis = "steps";
-  longer.steps = longer.value = 6;
-  const ScalingRow l = run_scaling_point(longer, s, *lm);
-  ASSERT_EQ(l.error, "");
-  EXPECT_GE(l.observed_steps_mean, std::min(6.0, r.observed_steps_mean));
-}
-
-}  // namespace
 }  // namespace clips::eval

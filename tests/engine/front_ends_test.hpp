@@ -1,3 +1,7 @@
+#pragma once
+// The includes, helpers and fixtures of the engine tests in front_ends_test.cpp, shared by
+// the files of that name in tests/engine/ and its label folders
+// (docs/testing.md, "Labels").
 // One plan through every front end of the session engine: the CLI (`clips
 // infer --json`, `clips assist --json`), the C++ session API, Python and the
 // server's request handlers (as `clips serve --stdio` answers them) give the
@@ -18,7 +22,7 @@
 #include "run_command.hpp"
 #include "test_paths.hpp"
 
-namespace {
+namespace front_ends_test {
 
 using nlohmann::json;
 
@@ -178,19 +182,6 @@ void expect_same(const FrontEndRun& a, const FrontEndRun& b, const std::string& 
   }
 }
 
-TEST(FrontEnds, CliSessionPythonAndServerAgreeStepByStep) {
-  const FrontEndRun session = session_run();
-  ASSERT_EQ(session.steps.size(), kActions.size() + 1);
-  ASSERT_FALSE(session.action.empty());
-  // The utterance moved the posterior (the runs compare something).
-  EXPECT_GT(std::abs(session.steps.back()[0] - session.steps[kActions.size() - 1][0]) +
-                std::abs(session.steps.back()[1] - session.steps[kActions.size() - 1][1]),
-            1e-3);
-  expect_same(session, cli_run(), "cli");
-  expect_same(session, server_run(), "server");
-  expect_same(session, python_run(), "python");
-}
-
 // ---- every repo dataset: the model trained on the domain's own corpus -------
 
 // The goal posterior at each checkpoint t = 0..T of a plan: after t observed
@@ -293,23 +284,5 @@ Checkpoints python_checkpoints(const std::string& dir, const clips::data::PlanRe
   return j["session"].get<Checkpoints>();
 }
 
-TEST(FrontEnds, EveryRepoDatasetIsHeardAlikeByEveryFrontEnd) {
-  // One plan with an instruction per dataset: posteriors equal, not close.
-  for (const std::string name : {"garden", "hospital", "kitchen", "lab", "warehouse", "workshop"}) {
-    const std::string dir = clips::paths::source_dir() + "/data/datasets/" + name;
-    const auto ds = clips::data::Dataset::load(dir);
-    const clips::data::PlanRecord* plan = nullptr;
-    for (const auto& p : ds.plans())
-      if (!plan && !p.observed.utterances.empty()) plan = &p;
-    ASSERT_NE(plan, nullptr) << name;
-    const Checkpoints cli = cli_checkpoints(dir, plan->id);
-    ASSERT_EQ(cli.size(), plan->observed.actions.size() + 1) << name;
-    EXPECT_EQ(session_checkpoints(dir, *plan), cli) << name << " " << plan->id << ": C++ session";
-    EXPECT_EQ(server_checkpoints(dir, *plan), cli) << name << " " << plan->id << ": server";
-    Checkpoints run_plan;
-    EXPECT_EQ(python_checkpoints(dir, *plan, &run_plan), cli) << name << " " << plan->id << ": Python session";
-    EXPECT_EQ(run_plan, cli) << name << " " << plan->id << ": Python run_plan";
-  }
-}
-
-}  // namespace
+}  // namespace front_ends_test
+using namespace front_ends_test;
