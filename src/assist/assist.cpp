@@ -327,6 +327,9 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   }
   if (r.status != search::SearchStatus::Success || r.plan.empty() || !task.applicable(r.plan.front(), s.data()))
     return std::nullopt;
+  // A plan that starts by waiting for the principal is no step towards it
+  // (what was asked waits on the principal, or was handed back).
+  if (setup.find_noop(task, setup.assistant) == r.plan.front()) return std::nullopt;
   double cheapest = kInf;
   for (ActionId a : task.applicable_actions(s)) cheapest = std::min(cheapest, heaviest->policy->spec().cost(a));
   const double tolerance = std::isfinite(cheapest) ? std::max(cheapest, 1.0) : 1.0;

@@ -2,9 +2,11 @@
 // writers stay well-formed for failed plans and method subsets.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -169,6 +171,27 @@ TEST(BenchCli, OutputAndDatasetMustBeDirectories) {
   EXPECT_NE(r.status, 0) << r.out;
   EXPECT_TRUE(contains(r.out, "is not a directory")) << r.out;
   EXPECT_FALSE(contains(r.out, "does not exist")) << r.out;
+}
+
+// The garden's plan 7.6 asks the robot to get the fern out of the locked
+// greenhouse. Having fetched the key and the fern, the robot hands the key
+// over; what was asked then needs the key back from the human, and a plan
+// that starts by waiting for that is no step towards it: the robot does not
+// wait for it while both wait out the horizon, and the fern gets planted.
+TEST(BenchCli, ARequestHandedBackIsNotWaitedForUntilTheHorizon) {
+  testing::TempDir out("bench-handed-back");
+  const auto r = run(clips_binary() + " bench --no-progress --methods clips --dataset " + std::string(CLIPS_SOURCE_DIR) +
+                     "/data/datasets/garden --plans 7.6.repot-fern --out " + out.str());
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(out.path / "results.csv");
+  std::stringstream text;
+  text << in.rdbuf();
+  const auto rows = parse_csv(text.str());
+  ASSERT_EQ(rows.size(), 2u) << text.str();
+  const auto& header = rows[0];
+  const auto col = std::find(header.begin(), header.end(), "goal_success") - header.begin();
+  ASSERT_LT(static_cast<size_t>(col), header.size());
+  EXPECT_EQ(rows[1][static_cast<size_t>(col)], "1") << text.str();
 }
 
 }  // namespace
