@@ -253,8 +253,21 @@ function updateBytes() {
 
 // ---- drawing --------------------------------------------------------------
 
+// The goal menu says the candidate goals in words once a session of its
+// dataset and problem has shown its scene (the label stays the value and the
+// tooltip); before that it can only list labels.
+function goalMenuInWords(s) {
+  if (s.dataset !== $('dataset').value || String(s.problem) !== $('problem').value) return;
+  for (const o of $('goal').options) {
+    if (o.value === 'plan' || o.value === 'none') continue;
+    o.textContent = goalWords(s, o.value);
+    o.title = o.value;
+  }
+}
+
 function show(s) {
   ui.state = s;
+  goalMenuInWords(s);
   const done = s.reached_goal;
   if (done) {
     const dropped = ui.queue.filter((t) => t.kind === 'move').length;

@@ -211,7 +211,7 @@ constexpr double kAskingShare = 0.5;
 constexpr double kSparingFactor = 10;
 
 std::optional<Commitment> committed_request(const AssistSetup& setup, const std::vector<const Hypothesis*>& live,
-                                            const State& s) {
+                                            const State& s, const std::vector<State>* since_instruction) {
   const pddl::Task& task = *setup.task;
   struct Asked {
     std::vector<std::pair<int, bool>> effect;
@@ -246,9 +246,15 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   const Asked& top = *std::max_element(asked.begin(), asked.end(),
                                        [](const Asked& a, const Asked& b) { return a.weight < b.weight; });
   if (top.weight < kCommitShare * asking) return std::nullopt;
-  bool done = true;
-  for (const auto& [bit, v] : top.effect) done = done && pddl::get_bit(s.data(), bit) == v;
-  if (done) return std::nullopt;
+  auto holds_in = [&](const State& x) {
+    return std::all_of(top.effect.begin(), top.effect.end(),
+                       [&](const auto& bv) { return pddl::get_bit(x.data(), bv.first) == bv.second; });
+  };
+  if (holds_in(s)) return std::nullopt;
+  // Done once since it was asked (a key fetched, then used or handed over):
+  // help given is not taken back to be given again.
+  if (since_instruction && std::any_of(since_instruction->begin(), since_instruction->end(), holds_in))
+    return std::nullopt;
   // Asked for several things ("open the cupboard, then fetch the flour"),
   // the assistant does them in the order asked: the next goal is the effect
   // of the shortest part of the heaviest reading that is not yet so (after
@@ -327,6 +333,9 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   }
   if (r.status != search::SearchStatus::Success || r.plan.empty() || !task.applicable(r.plan.front(), s.data()))
     return std::nullopt;
+  // A plan that starts by waiting for the principal is no step towards it
+  // (what was asked waits on the principal, or was handed back).
+  if (setup.find_noop(task, setup.assistant) == r.plan.front()) return std::nullopt;
   double cheapest = kInf;
   for (ActionId a : task.applicable_actions(s)) cheapest = std::min(cheapest, heaviest->policy->spec().cost(a));
   const double tolerance = std::isfinite(cheapest) ? std::max(cheapest, 1.0) : 1.0;
@@ -401,7 +410,8 @@ std::string qmdp_reason(const Decision& d, const std::vector<ActionId>& acts, si
 // computed for a unanimous choice too only when `values_always` (the
 // simulated episodes do not read them).
 Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const std::vector<Hypothesis>& belief,
-                     const State& s, int t, bool values_always, bool stalled) {
+                     const State& s, int t, bool values_always, bool stalled,
+                     const std::vector<State>* since_instruction = nullptr) {
   const pddl::Task& task = *setup.task;
   std::vector<const Hypothesis*> live;
   const double cut = live_threshold(belief, setup.weight_threshold);
@@ -456,7 +466,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
     if (!excluded(i) && qa[i] > qa[best]) best = i;
   d.action = d.unanimous ? *common : acts[best];
   if (request_rule) {
-    if (auto c = committed_request(setup, live, s)) {
+    if (auto c = committed_request(setup, live, s, since_instruction)) {
       d.action = c->action;
       d.followed_request = true;
       d.request_command = c->command;
@@ -693,8 +703,11 @@ struct Episode {
     return a ? *a : wait_of_active(s_h);
   }
 
+  // The episode's states before the current one (the instruction was heard
+  // in the observed prefix, so all of them follow it).
+  mutable std::vector<State> visited;
   ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t, bool stalled) const {
-    const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false, stalled);
+    const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false, stalled, &visited);
     if (d.followed_request)
       tie_notes.push_back("step " + std::to_string(t) + ": " + d.reason + "; took " + task.action_name(d.action));
     else if (!d.request_scores.empty())
@@ -780,6 +793,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
       ep.collect_option(a, r.options);
     }
     r.plan.push_back(a);
+    if (setup.rule == AssistRule::Request) ep.visited.push_back(s);
     s = task.apply(s, a);
     if (tspec.is_goal(s)) {
       r.goal_reached = true;
@@ -826,6 +840,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
       ep.collect_option(a, r.options);
     }
     r.plan.push_back(a);
+    if (setup.rule == AssistRule::Request) ep.visited.push_back(s);
     State pre = s;
     s = task.apply(s, a);
     if (true_spec->is_goal(s)) {
@@ -916,8 +931,9 @@ bool round_of_waits(const AssistSetup& setup, const std::vector<ActionId>& actio
 }
 
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,
-                       bool stalled) {
-  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, /*values_always=*/true, stalled);
+                       bool stalled, const std::vector<pddl::State>* since_instruction) {
+  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, /*values_always=*/true, stalled,
+                     since_instruction);
 }
 
 Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s) {

@@ -217,9 +217,11 @@ void refine_live(AssistSetup& setup, const std::vector<Hypothesis>& belief, cons
 // assistant's no-op, then the principal's (AssistSetup::restless_assistant).
 // The simulated episodes and the session engine both ask this.
 bool round_of_waits(const AssistSetup& setup, const std::vector<pddl::ActionId>& actions);
-// `stalled`: round_of_waits before this decision.
+// `stalled`: round_of_waits before this decision. `since_instruction`: the
+// states since the last instruction was heard, before s (null: none kept); a
+// request that held in one of them was done, and is not done again.
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,
-                       bool stalled = false);
+                       bool stalled = false, const std::vector<pddl::State>* since_instruction = nullptr);
 // The salient-argument table of AssistSetup::salient_args for a command language.
 std::vector<std::pair<int, int>> salient_argument_table(const pddl::Task& task, const commands::LanguageConfig& config);
 // pi-bar_MDP's action: the mode of the mixture of the hypotheses' greedy

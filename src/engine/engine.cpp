@@ -688,8 +688,23 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
   for (size_t i = 1; i < m.records.size(); ++i)
     if (const auto id = task.find_action(m.records[i].action)) done.push_back(*id);
   const bool stalled = assist::round_of_waits(setup, done);
-  const assist::Decision dec = m.options.assistance == Assistance::QMdp ? assist::qmdp_decision(setup, hyps, s, t, stalled)
-                                                                        : assist::pibar_decision(setup, hyps, s);
+  // The states since the last instruction, before s: what was asked and done
+  // since is not asked again.
+  std::vector<pddl::State> since;
+  size_t heard = m.records.size();
+  for (size_t i = 0; i < m.records.size(); ++i)
+    if (!m.records[i].utterances.empty()) heard = i;
+  if (heard < m.records.size()) {
+    pddl::State x = task.initial_state();
+    for (size_t i = 0; i < done.size() && i + 1 < m.records.size(); ++i) {
+      if (i >= heard) since.push_back(x);
+      if (!task.applicable(done[i], x.data())) break;
+      x = task.apply(x, done[i]);
+    }
+  }
+  const assist::Decision dec = m.options.assistance == Assistance::QMdp
+                                   ? assist::qmdp_decision(setup, hyps, s, t, stalled, &since)
+                                   : assist::pibar_decision(setup, hyps, s);
   b.check();
   d.id = dec.action;
   d.action = task.action_name(dec.action);

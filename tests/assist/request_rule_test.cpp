@@ -204,3 +204,39 @@ TEST(RequestRule, TwoThingsAskedAreDoneInTheOrderAsked) {
   EXPECT_EQ(g.decide(assist::AssistRule::Request, {"(take bot tomato1 shed)", "(take bot basil1 barn)"}, {}),
             "(move bot bed shed)");
 }
+
+// What was asked and done since the instruction is not asked again: asked
+// to go to the shed, the bot went and came back to the bed; the reading still
+// says "go to the shed", but that was done, so the bot does not go again.
+TEST(RequestRule, WhatWasDoneSinceTheInstructionIsNotDoneAgain) {
+  Garden g;
+  auto spec = std::make_shared<model::Specification>(g.task, "(planted tomato1)", model::unit_profile());
+  auto policy = std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
+  auto request = std::make_shared<assist::Request>();
+  assist::RequestedCommand c;
+  c.probability = 1;
+  c.text = "go to the shed";
+  c.assistant_part.push_back(g.act("(move bot bed shed)"));
+  request->push_back(c);
+  std::vector<assist::Hypothesis> belief = {{1.0, policy, request}};
+  std::vector<pddl::State> since;
+  pddl::State s = g.task->apply(g.task->initial_state(), g.act("(idle gardener)"));
+  for (const char* a : {"(move bot bed shed)", "(idle gardener)", "(move bot shed bed)", "(idle gardener)"}) {
+    since.push_back(s);
+    s = g.task->apply(s, g.act(a));
+  }
+  policy->refine(s, search::SearchOptions{});
+  assist::AssistSetup setup;
+  setup.task = g.task;
+  setup.set_turns(g.dp.pack->roles());
+  setup.start = s;
+  setup.observed_steps = 5;
+  setup.horizon = 30;
+  assist::set_request_rule(setup, assist::AssistRule::Request, g.dp.pack->language());
+  EXPECT_FALSE(assist::qmdp_decision(setup, belief, s, 5, false, &since).followed_request);
+  // Without the history the same words send the bot to the shed again.
+  const std::vector<pddl::State> none;
+  const assist::Decision again = assist::qmdp_decision(setup, belief, s, 5, false, &none);
+  EXPECT_TRUE(again.followed_request);
+  EXPECT_EQ(g.task->action_name(again.action), "(move bot bed shed)");
+}

@@ -204,6 +204,11 @@ def main():
         for goal, text, title in bars:
             check(text == "human holding the %s book" % colours[goal] and title.startswith(goal),
                   "goal %s reads '%s' (tooltip '%s')" % (goal, text, title))
+        menu = browser.js("[...document.getElementById('goal').options].map(o => [o.value, o.textContent])")
+        for value, text in menu:
+            if value in colours:
+                check(text == "human holding the %s book" % colours[value],
+                      "the goal menu reads %s as '%s'" % (value, text))
         status = browser.js("document.getElementById('status').textContent")
         check("Your goal: human holding the red book" in status and "book1" not in status,
               "the status does not say the goal in words: " + status)
@@ -267,6 +272,11 @@ def main():
         check(browser.js("window.clips.maxQueued") == 0, "keys were queued while the assistant thought")
         check(final["t"] == 2 * len(humans) or final["t"] == 2 * len(humans) - 1,
               "%d steps for %d human moves: a key pressed while thinking was played" % (final["t"], len(humans)))
+        menu = browser.js("[...document.getElementById('goal').options].map(o => [o.value, o.textContent])")
+        for value, text in menu:
+            if value in colours:
+                check(text == "human holding the %s book" % colours[value],
+                      "the goal menu reads %s as '%s'" % (value, text))
         status = browser.js("document.getElementById('status').textContent")
         check(status.startswith("Goal reached: human holding the red book"), "the status says: " + status)
         # The screenshot shows the top reading's PDDL form opened.

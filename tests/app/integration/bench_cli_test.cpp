@@ -73,6 +73,21 @@ TEST(BenchCli, OutputAndDatasetMustBeDirectories) {
   EXPECT_FALSE(contains(r.out, "does not exist")) << r.out;
 }
 
+// The garden's plan 7.6 asks the robot to get the fern out of the locked
+// greenhouse. Having fetched the key and the fern, the robot hands the key
+// over; what was asked then needs the key back from the human, and a plan
+// that starts by waiting for that is no step towards it: the robot does not
+// wait for it while both wait out the horizon, and the fern gets planted.
+TEST(BenchCli, ARequestHandedBackIsNotWaitedForUntilTheHorizon) {
+  testing::TempDir out("bench-handed-back");
+  const auto r = run(clips_binary() + " bench --no-progress --methods clips --dataset " + std::string(CLIPS_SOURCE_DIR) +
+                     "/data/datasets/garden --plans 7.6.repot-fern --out " + out.str());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto rows = parse_csv(testing::read_text(out.path / "results.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1][column(rows[0], "goal_success")], "1");
+}
+
 }  // namespace bench_cli_test
 
 }  // namespace clips::eval
