@@ -39,8 +39,8 @@ void register_assist(CLI::App& app) {
   for (const auto& n : domains::literal_method_choices().names()) methods.push_back(n);
   for (const auto& n : eval::baseline_choices().names()) methods.push_back(n);
   cmd->add_option("--method", o->method,
-                  util::or_list(methods) + " (which apply depends on the domain: doors-keys-gems has literal_naive and "
-                  "literal_efficient, VirtualHome literal)")
+                  util::or_list(methods) + " (which literal methods apply is the domain pack's choice: "
+                  "literal_listener.methods)")
       ->check(CLI::IsMember(methods));
   auto mm = std::make_shared<eval::MultimodalOptions>();
   cmd->add_option("--chat-base-url", mm->base_url,

@@ -215,7 +215,9 @@ util::Choices<AssistPolicy>& assist_policy_choices() {
       {{AssistPolicy::QmdpOffline, "qmdp_offline",
         "Q_MDP on the posterior after the observations, kept through the episode, as in the paper", {}},
        {AssistPolicy::QmdpOnline, "qmdp_online", "Q_MDP, the posterior updated by each action of the episode", {}},
-       {AssistPolicy::PiBar, "pibar", "pi-bar_MDP: the action the posterior mixture of policies takes most often", {}}});
+       // pi-bar is the session engine's rule too: its name and help are that table's.
+       {AssistPolicy::PiBar, engine::assistance_choices().name(Assistance::PiBar),
+        engine::assistance_choices().help(Assistance::PiBar), {}}});
   return table;
 }
 
