@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "assist/assist.hpp"
+#include "engine/runs.hpp"
 #include "eval/experiment.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
@@ -38,7 +39,7 @@ static void BM_BeliefUpdateStep(benchmark::State& st) {
   // that is model loading, not a belief update, so it happens before timing.
   for (auto& p : ds.plans())
     if (p.evaluated && !p.observed.utterances.empty()) {
-      inference::run_inference(ds, p, *lm);
+      engine::run_inference(ds, p, *lm);
       break;
     }
   for (auto _ : st) {
@@ -49,7 +50,7 @@ static void BM_BeliefUpdateStep(benchmark::State& st) {
       if (!p.evaluated) continue;
       inference::InferenceOptions io;
       io.threads = static_cast<int>(st.range(0));
-      auto run = inference::run_inference(ds, p, *lm, io);
+      auto run = engine::run_inference(ds, p, *lm, io);
       for (size_t t = 1; t < run.steps.size(); ++t) {
         steps.push_back(run.steps[t].seconds);
         (run.steps[t].evidence ? human : robot).push_back(run.steps[t].seconds);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <string>
 
+#include "engine/runs.hpp"
 #include "eval/bench.hpp"
 #include "eval/experiment.hpp"
 #include "heuristics/heuristic.hpp"
@@ -42,7 +43,7 @@ static void BM_GenericBeliefUpdateStep(benchmark::State& st, const std::string& 
       if (!p.evaluated) continue;
       inference::InferenceOptions io;
       io.threads = 1;
-      auto run = inference::run_inference(ds, p, *lm, io);
+      auto run = engine::run_inference(ds, p, *lm, io);
       if (!run.steps.empty()) starts.push_back(run.steps[0].seconds);
       for (size_t t = 1; t < run.steps.size(); ++t) steps.push_back(run.steps[t].seconds);
     }

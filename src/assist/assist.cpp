@@ -757,14 +757,24 @@ void finish(const AssistSetup& setup, const model::Specification& truth, AssistR
   r.success = r.goal_reached ? 1.0 : 0.0;
 }
 
-}  // namespace
+// What the simulated principal does once it stops trusting the assistant
+// (log P_coop - log P_rand of the assistant's actions below log 0.1): the
+// three evaluations of the spec differ only there.
+enum class Distrust {
+  TakeOver,      // offline Q_MDP: plans as if the assistant were frozen and acts on every turn
+  PlanAlone,     // online Q_MDP: plans as if the assistant were frozen, on its own turns only
+  FreezeWorld,   // pi-bar per hypothesis: the assistant is frozen in the world; the principal acts on every turn
+};
 
-AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
-  Episode ep(setup);
+// The one episode loop of the simulated assistance: from setup.start to the
+// horizon or the true goal, the principal simulated by `truth` (refined as
+// it goes), the assistant's turns decided by `decide(s, t, plan so far)`,
+// and `seen(s, a)` told of every action but the one that reaches the goal.
+template <typename Decide, typename Seen>
+AssistResult run_episode(Episode& ep, search::Policy& truth, const model::Specification& tspec, Distrust distrust,
+                         Decide&& decide, Seen&& seen) {
+  const AssistSetup& setup = ep.setup;
   const pddl::Task& task = ep.task;
-  search::Policy truth = *belief.at(true_hypothesis).policy;  // a copy: the principal's own planner
-  const model::Specification& tspec = truth.spec();
-  for (auto& h : belief) h.policy = std::make_shared<search::Policy>(*h.policy);  // never touch the caller's
   AssistResult r;
   double coop = 0;
   bool solo = false;
@@ -772,36 +782,77 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   std::vector<bool> taken = ep.fresh_steps();
   Episode::Patience patience;
   for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
-    State s_h = s;
-    const bool stuck = setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
-    if (coop < -kLog10) {
-      solo = true;
-      s_h = model::freeze(task, s, setup.assistant);
-    } else if (stuck) {
-      s_h = model::freeze(task, s, setup.assistant);
-    }
-    if (setup.refine) truth.refine(s_h, setup.refine_options);
+    const int k = t - setup.observed_steps;
     ActionId a;
-    if (ep.principal_turn(s) || solo) {
-      if (ep.principal_turn(s)) patience.last = s;
-      a = ep.principal_action(truth, s_h, !solo && !stuck, taken, t - setup.observed_steps);
+    if (distrust == Distrust::PlanAlone) {
+      if (setup.refine) truth.refine(s, setup.refine_options);
+      if (ep.principal_turn(s)) {
+        const bool stuck = setup.impatient_principal && patience.stuck(s);
+        patience.last = s;
+        if (coop < -kLog10 || stuck) {
+          const State s_h = model::freeze(task, s, setup.assistant);
+          if (setup.refine) truth.refine(s_h, setup.refine_options);
+          a = ep.principal_action(truth, s_h, false, taken);
+        } else {
+          a = ep.principal_action(truth, s, true, taken, k);
+        }
+      } else {
+        a = decide(s, t, r);
+        coop += ep.coop_increment(truth, s, a);
+        ep.collect_option(a, r.options);
+      }
     } else {
-      auto d0 = std::chrono::steady_clock::now();
-      a = ep.qmdp_decide(belief, s, t, round_of_waits(setup, r.plan));
-      r.decision_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
-      coop += ep.coop_increment(truth, s, a);
-      ep.collect_option(a, r.options);
+      // Trust lost is for good: the assistant, not acting any more, cannot win it back.
+      if (!solo && coop < -kLog10) {
+        solo = true;
+        if (distrust == Distrust::FreezeWorld) s = model::freeze(task, s, setup.assistant);
+      }
+      const bool stuck = !solo && setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
+      const bool frozen_view = stuck || (solo && distrust == Distrust::TakeOver);
+      const State s_h = frozen_view ? model::freeze(task, s, setup.assistant) : s;
+      if (setup.refine) truth.refine(s_h, setup.refine_options);
+      if (ep.principal_turn(s) || solo) {
+        if (ep.principal_turn(s)) patience.last = s;
+        a = ep.principal_action(truth, s_h, !solo && !stuck, taken, k);
+      } else {
+        a = decide(s, t, r);
+        coop += ep.coop_increment(truth, s, a);
+        ep.collect_option(a, r.options);
+      }
     }
     r.plan.push_back(a);
     if (setup.rule == AssistRule::Request) ep.visited.push_back(s);
+    const State pre = s;
     s = task.apply(s, a);
     if (tspec.is_goal(s)) {
       r.goal_reached = true;
       break;
     }
+    seen(pre, a);
   }
   finish(setup, tspec, r);
   r.ties = std::move(ep.tie_notes);
+  ep.tie_notes.clear();
+  return r;
+}
+
+}  // namespace
+
+AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
+  Episode ep(setup);
+  search::Policy truth = *belief.at(true_hypothesis).policy;  // a copy: the principal's own planner
+  for (auto& h : belief) h.policy = std::make_shared<search::Policy>(*h.policy);  // never touch the caller's
+  std::vector<double> seconds;
+  AssistResult r = run_episode(
+      ep, truth, truth.spec(), Distrust::TakeOver,
+      [&](const State& s, int t, const AssistResult& so_far) {
+        const auto d0 = std::chrono::steady_clock::now();
+        const ActionId a = ep.qmdp_decide(belief, s, t, round_of_waits(setup, so_far.plan));
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
+        return a;
+      },
+      [](const State&, ActionId) {});
+  r.decision_seconds = std::move(seconds);
   return r;
 }
 
@@ -813,50 +864,17 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<const model::Specification> true_spec,
                          std::shared_ptr<heuristics::Heuristic> true_heuristic) {
   Episode ep(setup);
-  const pddl::Task& task = ep.task;
   search::Policy truth(true_spec, std::move(true_heuristic));  // fresh, refined as it goes
-  AssistResult r;
-  double coop = 0;
-  State s = setup.start;
-  std::vector<bool> taken = ep.fresh_steps();
-  Episode::Patience patience;
-  for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
-    if (setup.refine) truth.refine(s, setup.refine_options);
-    ActionId a;
-    if (ep.principal_turn(s)) {
-      const bool stuck = setup.impatient_principal && patience.stuck(s);
-      patience.last = s;
-      if (coop < -kLog10 || stuck) {
-        // Lost trust: plan as if the assistant were frozen, keep acting on own turns only.
-        State s_h = model::freeze(task, s, setup.assistant);
-        if (setup.refine) truth.refine(s_h, setup.refine_options);
-        a = ep.principal_action(truth, s_h, false, taken);
-      } else {
-        a = ep.principal_action(truth, s, true, taken, t - setup.observed_steps);
-      }
-    } else {
-      a = ep.qmdp_decide(belief.hypotheses(), s, t, round_of_waits(setup, r.plan));
-      coop += ep.coop_increment(truth, s, a);
-      ep.collect_option(a, r.options);
-    }
-    r.plan.push_back(a);
-    if (setup.rule == AssistRule::Request) ep.visited.push_back(s);
-    State pre = s;
-    s = task.apply(s, a);
-    if (true_spec->is_goal(s)) {
-      r.goal_reached = true;
-      break;
-    }
-    belief.observe(pre, a);
-  }
-  finish(setup, *true_spec, r);
-  r.ties = std::move(ep.tie_notes);
-  return r;
+  return run_episode(
+      ep, truth, *true_spec, Distrust::PlanAlone,
+      [&](const State& s, int t, const AssistResult& so_far) {
+        return ep.qmdp_decide(belief.hypotheses(), s, t, round_of_waits(setup, so_far.plan));
+      },
+      [&](const State& pre, ActionId a) { belief.observe(pre, a); });
 }
 
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
   Episode ep(setup);
-  const pddl::Task& task = ep.task;
   const model::Specification& tspec = belief.at(true_hypothesis).policy->spec();
   AssistResult mean;
   int remaining = setup.horizon - setup.observed_steps;
@@ -876,39 +894,18 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
       run.noops = remaining;  // the reference's no-op plan for ignored hypotheses
       finish(setup, tspec, run);
     } else {
+      // The episode had this hypothesis been the assistant's only one.
       search::Policy truth = *belief[true_hypothesis].policy;
       search::Policy mine = *h.policy;
-      double coop = 0;
-      bool solo = false;
-      State s = setup.start;
-      std::vector<bool> taken = ep.fresh_steps();
-      Episode::Patience patience;
-      for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
-        if (!solo && coop < -kLog10) {
-          s = model::freeze(task, s, setup.assistant);
-          solo = true;
-        }
-        const bool stuck = !solo && setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
-        const State s_h = stuck ? model::freeze(task, s, setup.assistant) : s;
-        if (setup.refine) truth.refine(s_h, setup.refine_options);
-        ActionId a;
-        if (ep.principal_turn(s) || solo) {
-          if (ep.principal_turn(s)) patience.last = s;
-          a = ep.principal_action(truth, s_h, !solo && !stuck, taken, t - setup.observed_steps);
-        } else {
-          if (setup.refine) mine.refine(s, setup.refine_options);
-          auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;
-          a = b ? *b : ep.assistant_wait;
-          if (!solo) coop += ep.coop_increment(truth, s, a);
-        }
-        run.plan.push_back(a);
-        s = task.apply(s, a);
-        if (tspec.is_goal(s)) {
-          run.goal_reached = true;
-          break;
-        }
-      }
-      finish(setup, tspec, run);
+      ep.visited.clear();
+      run = run_episode(
+          ep, truth, tspec, Distrust::FreezeWorld,
+          [&](const State& s, int, const AssistResult&) {
+            if (setup.refine) mine.refine(s, setup.refine_options);
+            auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;
+            return b ? *b : ep.assistant_wait;
+          },
+          [](const State&, ActionId) {});
     }
     mean.plan_length += h.weight * run.plan_length;
     mean.plan_cost += h.weight * run.plan_cost;

@@ -45,26 +45,18 @@ TwoPhase two_phase_uncached(const LiteralSetup& ls, const std::string& command_g
   TwoPhase out;
   search::SearchOptions so;
   so.max_nodes = ls.max_nodes;
-  auto cmd_spec = std::make_shared<model::Specification>(w.task, command_goal, ls.truth->profile());
   State end = w.start;
   bool found = false;
-  bool hopeless = ls.goal_unsatisfiable && ls.goal_unsatisfiable(command_goal);
-  for (bool freeze_human : {false, true}) {
-    if (hopeless) break;
-    State from = freeze_human ? model::freeze(task, w.start, w.principal) : w.start;
-    auto h = ls.make_heuristic();
-    auto r = search::plan(*cmd_spec, *h, from, so);
-    if (std::getenv("CLIPS_DEBUG_LITERAL"))
-      std::fprintf(stderr, "phase1 %s frozen=%d %s exp=%zu %.3fs\n", command_goal.c_str(), freeze_human,
-                   search::to_string(r.status).c_str(), r.expanded, r.seconds);
+  const bool hopeless = ls.goal_unsatisfiable && ls.goal_unsatisfiable(command_goal);
+  if (!hopeless) {
+    CommandPlan r = command_plan(w.task, command_goal, ls.truth->profile(), w.start, w.principal, ls.make_heuristic, so);
     if (r.status == search::SearchStatus::Success) {
-      out.plan = r.plan;
+      out.plan = std::move(r.plan);
       // Phase 2 continues from the plan carried out in s_T itself, as the
       // reference does: the human was frozen only to find the plan, and is
       // free to finish (a frozen human could never reach the goal).
-      end = pddl::simulate(task, w.start, r.plan).states.back();
+      end = pddl::simulate(task, w.start, out.plan).states.back();
       found = true;
-      break;
     }
   }
   out.command_ok = found && static_cast<int>(out.plan.size()) <= remaining;
@@ -134,6 +126,28 @@ Scored score_run(const LiteralSetup& ls, const TwoPhase& tp) {
 }
 
 }  // namespace
+
+CommandPlan command_plan(const std::shared_ptr<const pddl::Task>& task, const std::string& command_goal,
+                         const model::CostProfile& profile, const pddl::State& from, const std::string& principal,
+                         const std::function<std::shared_ptr<heuristics::Heuristic>()>& make_heuristic,
+                         const search::SearchOptions& options) {
+  const model::Specification spec(task, command_goal, profile);
+  CommandPlan out;
+  for (bool freeze_principal : {false, true}) {
+    const State start = freeze_principal ? model::freeze(*task, from, principal) : from;
+    auto h = make_heuristic();
+    auto r = search::plan(spec, *h, start, options);
+    if (std::getenv("CLIPS_DEBUG_LITERAL"))
+      std::fprintf(stderr, "phase1 %s frozen=%d %s exp=%zu %.3fs\n", command_goal.c_str(), freeze_principal,
+                   search::to_string(r.status).c_str(), r.expanded, r.seconds);
+    out.status = r.status;
+    if (r.status == search::SearchStatus::Success) {
+      out.plan = std::move(r.plan);
+      break;
+    }
+  }
+  return out;
+}
 
 LiteralRun literal_assist(const LiteralSetup& ls, const language::ListenerResult& ranked, bool naive, uint64_t seed) {
   std::mt19937_64 rng(seed);

@@ -43,6 +43,19 @@ struct LiteralRun {
   double command_success = 0;
 };
 
+// The literal listener's plan for a command's goal formula from `from`: a
+// joint plan, else one found with the principal frozen (the assistant's part
+// alone), as phase 1 plans it. The bench carries it out whole; the live
+// engine takes its first step. Not Success: no plan within `options`.
+struct CommandPlan {
+  search::SearchStatus status = search::SearchStatus::Failure;
+  std::vector<pddl::ActionId> plan;  // empty with Success: the command already holds
+};
+CommandPlan command_plan(const std::shared_ptr<const pddl::Task>& task, const std::string& command_goal,
+                         const model::CostProfile& profile, const pddl::State& from, const std::string& principal,
+                         const std::function<std::shared_ptr<heuristics::Heuristic>()>& make_heuristic,
+                         const search::SearchOptions& options);
+
 // Runs one listener variant; `naive` selects the naive listener. `seed`
 // makes the systematic draw and the naive subsampling reproducible.
 LiteralRun literal_assist(const LiteralSetup& setup, const language::ListenerResult& ranked, bool naive,

@@ -15,6 +15,7 @@
 #include <fmt/core.h>
 
 #include "assist/assist.hpp"
+#include "assist/literal.hpp"
 #include "assist/request.hpp"
 #include "assist/setup.hpp"
 #include "inference/belief.hpp"
@@ -329,11 +330,15 @@ struct Engine::Impl {
   std::optional<pddl::State> utterance_state;
   std::vector<Step> steps;  // records in the engine's method
   mutable std::optional<language::ListenerResult> literal;  // the literal listener's reading, on demand
+  // A replay of recorded observations updates the belief in place: the run
+  // fails as a whole, so a copy per step would only cost time.
+  bool in_place = false;
 
-  Impl(Problem p, SessionOptions o, std::shared_ptr<lm::LanguageModel> model)
+  Impl(Problem p, SessionOptions o, std::shared_ptr<lm::LanguageModel> model,
+       const inference::InferenceOptions* inference = nullptr)
       : problem(std::move(p)), options(std::move(o)), lm(std::move(model)) {
     check_backend(options.language_model.backend);
-    io = inference_options(options);
+    io = inference ? *inference : inference_options(options);
     if (!options.assist_rule.empty()) assist::parse_assist_rule(options.assist_rule);  // InputError names a bad value
     assist::parse_qa_floor(options.qa_floor);
     if (!options.goals.empty()) {
@@ -366,7 +371,8 @@ struct Engine::Impl {
   template <typename F>
   std::shared_ptr<inference::Belief> bounded(const Bounds& b, const inference::Belief* from, F&& work) const {
     b.check();
-    auto copy = from ? std::make_shared<inference::Belief>(*from) : fresh_belief();
+    auto copy = !from ? fresh_belief() : in_place && from == belief.get() ? belief
+                                                                          : std::make_shared<inference::Belief>(*from);
     copy->set_call_bounds(b.deadline(), b.stop_test());
     try {
       work(*copy);
@@ -416,17 +422,25 @@ struct Engine::Impl {
   }
 
   // The start at s_0 (a search: bounded like any call).
-  void start(const Bounds& b) {
+  // The start at s_0 with what was heard there, scored in its step (a
+  // search: bounded like any call).
+  void start(const Bounds& b, const std::vector<std::string>& heard = {}) {
     inference::StepRecord first;
-    auto fresh = bounded(b, nullptr, [&](inference::Belief& x) { first = x.start(problem.task->initial_state()); });
+    lm::LanguageModel* model = heard.empty() ? nullptr : &language_model();
+    auto fresh = bounded(b, nullptr, [&](inference::Belief& x) { first = x.start(problem.task->initial_state(), heard, model); });
     belief = std::move(fresh);
     records = {std::move(first)};
     events.clear();
+    for (const auto& u : heard) events.push_back({true, u, Event::Scored::AtStart});
     history = {point("start", *belief)};
     previous.reset();
     utterance.reset();
     utterance_state.reset();
     literal.reset();
+    if (!heard.empty()) {
+      utterance = heard.back();
+      utterance_state = belief->state();
+    }
     restep();
   }
 
@@ -438,29 +452,40 @@ struct Engine::Impl {
     return *lm;
   }
 
-  const Step& do_observe(pddl::ActionId a, const Bounds& b) {
+  const Step& do_observe(pddl::ActionId a, const Bounds& b, const std::vector<std::string>& heard_before = {}) {
     inference::StepRecord r;
     const pddl::State before = belief->state();
-    auto next = bounded(b, belief.get(), [&](inference::Belief& x) { r = x.observe(a, x.state(), {}, nullptr); });
+    lm::LanguageModel* model = heard_before.empty() ? nullptr : &language_model();
+    auto next = bounded(b, belief.get(), [&](inference::Belief& x) { r = x.observe(a, x.state(), heard_before, model); });
     belief = std::move(next);
     previous = before;
     const std::string name = problem.task->action_name(a);
     records.push_back(std::move(r));
+    for (const auto& u : heard_before) events.push_back({true, u, Event::Scored::WithNextAction});
+    if (!heard_before.empty()) {
+      utterance = heard_before.back();
+      utterance_state = before;
+      literal.reset();
+    }
     events.push_back({false, name});
     history.push_back(point(name, *belief));
     steps.push_back(to_step(records.back()));
     return steps.back();
   }
 
-  const Step& do_hear(const std::string& text, const Bounds& b) {
+  const Step& do_hear(const std::vector<std::string>& texts, const Bounds& b) {
     lm::LanguageModel& model = language_model();
     inference::StepRecord r = records.back();
-    auto next = bounded(b, belief.get(), [&](inference::Belief& x) { r = x.hear({text}, model, std::move(r)); });
+    auto next = bounded(b, belief.get(), [&](inference::Belief& x) { r = x.hear(texts, model, std::move(r)); });
     belief = std::move(next);
     records.back() = std::move(r);
-    events.push_back({true, text});
-    history.push_back(point("\"" + text + "\"", *belief));
-    utterance = text;
+    std::string label;
+    for (const auto& text : texts) {
+      events.push_back({true, text});
+      label += (label.empty() ? "\"" : " \"") + text + "\"";
+    }
+    history.push_back(point(label, *belief));
+    utterance = texts.back();
     utterance_state = belief->state();
     literal.reset();
     steps.back() = to_step(records.back());
@@ -496,30 +521,36 @@ Engine::Engine(Problem problem, SessionOptions options, std::shared_ptr<lm::Lang
   impl_->start(Bounds(CallLimits{}));
 }
 
-Engine Engine::adopt(Problem problem, SessionOptions options, inference::InferenceRun run,
-                     std::shared_ptr<lm::LanguageModel> lm) {
-  problem.goals = run.belief->goals();
-  problem.profiles = run.belief->profiles();
-  options.goals.clear();
-  options.cost_profiles.clear();
-  auto impl = std::make_unique<Impl>(std::move(problem), std::move(options), std::move(lm));
-  Impl& m = *impl;
-  m.belief = run.belief;
-  m.records = std::move(run.steps);
-  // The replay log and the history, one point per step.
-  for (const auto& r : m.records) {
-    if (!r.action.empty()) m.events.push_back({false, r.action});
-    for (const auto& u : r.utterances) {
-      m.events.push_back({true, u.text});
-      m.utterance = u.text;
-    }
-    Impl::Point p{r.t == 0 ? "start" : r.action, {}};
-    for (Modality mod : inference::kModalities) p.goals[static_cast<int>(mod)] = r[mod].goals;
-    m.history.push_back(std::move(p));
+Engine::Engine(Problem problem, SessionOptions options, const inference::InferenceOptions& inference,
+               std::shared_ptr<lm::LanguageModel> lm, const std::vector<std::string>& heard_at_start,
+               const CallLimits& limits)
+    : impl_(std::make_unique<Impl>(std::move(problem), std::move(options), std::move(lm), &inference)) {
+  impl_->start(Bounds(limits), heard_at_start);
+}
+
+Engine Engine::replay(Problem problem, SessionOptions options, const inference::InferenceOptions& inference,
+                      std::shared_ptr<lm::LanguageModel> lm, const pddl::PlanFile& observed) {
+  const pddl::State s0 = problem.task->initial_state();
+  const pddl::Simulation sim = pddl::simulate(*problem.task, s0, observed);  // InputError at the first bad step
+  const int T = static_cast<int>(sim.actions.size());
+  // heard[k]: the utterances annotated after k actions; one beyond T is never observed.
+  std::vector<std::vector<std::string>> heard(T + 1);
+  for (const auto& u : observed.utterances)
+    if (u.index >= 0 && u.index <= T) heard[u.index].push_back(u.text);
+  const bool before = inference.utterance_timing == inference::UtteranceTiming::Before;
+  Engine e(std::move(problem), std::move(options), inference, std::move(lm), heard[0]);
+  e.impl_->in_place = true;
+  // "before": index k >= 1 is heard before a_k, in s_{k-1}. "after": index k
+  // is heard in s_k, so 0 < k < T before a_{k+1} and k = T once the actions end.
+  for (int t = 1; t <= T; ++t) {
+    static const std::vector<std::string> none;
+    const auto& with = before ? heard[t] : t >= 2 ? heard[t - 1] : none;
+    e.impl_->do_observe(sim.actions[t - 1], Bounds(CallLimits{}), with);
   }
-  if (m.utterance) m.utterance_state = m.belief->state();
-  m.restep();
-  return Engine(std::move(impl));
+  if (!before && T >= 1 && !heard[T].empty()) e.impl_->do_hear(heard[T], Bounds(CallLimits{}));
+  e.impl_->in_place = false;
+  e.impl_->io.refine.deadline = Clock::time_point::max();  // a batch run's deadline is not the session's
+  return e;
 }
 
 const Step& Engine::observe(const std::string& action, const CallLimits& limits) {
@@ -546,24 +577,45 @@ const Step& Engine::observe(const std::string& action, const CallLimits& limits)
   return impl_->do_observe(*id, Bounds(limits));
 }
 
-const Step& Engine::observe(pddl::ActionId a, const CallLimits& limits) {
-  const pddl::Task& task = *impl_->problem.task;
+namespace {
+
+// InputError for an id out of range, InapplicableActionError when its precondition is false in `s`.
+void check_applicable(const pddl::Task& task, pddl::ActionId a, const pddl::State& s) {
   if (a < 0 || a >= task.num_actions())
     throw InputError("action id " + std::to_string(a) + " is out of range (0.." + std::to_string(task.num_actions() - 1) +
                      ")");
-  const pddl::State& s = impl_->belief->state();
   if (!task.applicable(a, s.data())) {
     const auto& ga = task.action(a);
     throw InapplicableActionError(task.action_name(a), "action " + task.action_name(a) + " is not applicable: " +
                                                            task.explain_inapplicable(ga.schema, ga.args, s));
   }
+}
+
+}  // namespace
+
+const Step& Engine::observe(pddl::ActionId a, const CallLimits& limits) {
+  check_applicable(*impl_->problem.task, a, impl_->belief->state());
   return impl_->do_observe(a, Bounds(limits));
 }
 
-const Step& Engine::hear(const std::string& utterance, const CallLimits& limits) {
-  data::check_utterance(utterance, SourceLoc{"utterance \"" + utterance + "\"", 0, 0});
-  return impl_->do_hear(utterance, Bounds(limits));
+const Step& Engine::observe(pddl::ActionId a, const std::vector<std::string>& heard_before, const CallLimits& limits) {
+  for (const auto& u : heard_before) data::check_utterance(u, SourceLoc{"utterance \"" + u + "\"", 0, 0});
+  check_applicable(*impl_->problem.task, a, impl_->belief->state());
+  return impl_->do_observe(a, Bounds(limits), heard_before);
 }
+
+const Step& Engine::hear(const std::string& utterance, const CallLimits& limits) {
+  return hear(std::vector<std::string>{utterance}, limits);
+}
+
+const Step& Engine::hear(const std::vector<std::string>& utterances, const CallLimits& limits) {
+  if (utterances.empty()) throw InputError("hear: no utterance given");
+  for (const auto& u : utterances) data::check_utterance(u, SourceLoc{"utterance \"" + u + "\"", 0, 0});
+  return impl_->do_hear(utterances, Bounds(limits));
+}
+
+const std::vector<inference::StepRecord>& Engine::records() const { return impl_->records; }
+std::shared_ptr<const inference::Belief> Engine::belief() const { return impl_->belief; }
 
 bool Engine::undo(const CallLimits& limits) {
   Impl& m = *impl_;
@@ -581,15 +633,24 @@ bool Engine::undo(const CallLimits& limits) {
   if (last < 0) return false;
   const std::vector<Event> keep(m.events.begin(), m.events.begin() + last);
   // Replayed on a new engine state, committed only when the whole replay is done.
-  Impl replay(m.problem, m.options, m.lm);
+  Impl replay(m.problem, m.options, m.lm, &m.io);
   const Bounds b(limits);
-  replay.start(b);
+  std::vector<std::string> at_start, pending;
+  for (const auto& e : keep)
+    if (e.utterance && e.scored == Event::Scored::AtStart) at_start.push_back(e.text);
+  replay.start(b, at_start);
   for (const auto& e : keep) {
-    if (e.utterance)
-      replay.do_hear(e.text, b);
-    else
-      replay.do_observe(*m.problem.task->find_action(e.text), b);
+    if (!e.utterance) {
+      replay.do_observe(*m.problem.task->find_action(e.text), b, pending);
+      pending.clear();
+    } else if (e.scored == Event::Scored::WithNextAction) {
+      pending.push_back(e.text);
+    } else if (e.scored == Event::Scored::Heard) {
+      replay.do_hear({e.text}, b);
+    }
   }
+  // Heard before the move taken back: heard in the state it was said in.
+  if (!pending.empty()) replay.do_hear(pending, b);
   m.lm = replay.lm;
   m.belief = std::move(replay.belief);
   m.records = std::move(replay.records);
@@ -642,15 +703,16 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
       if (!ranked.commands.empty()) {
         const auto& config = m.problem.pack->language();
         const auto& top = ranked.commands.front();
-        auto spec = std::make_shared<model::Specification>(m.problem.task, top.command.to_goal_formula(config),
-                                                           m.problem.profiles[0]);
-        std::unique_ptr<heuristics::Heuristic> h =
-            m.problem.pack->make_heuristic(m.problem.pack->spec().literal.planning_heuristic, task);
         search::SearchOptions so;
         so.max_nodes = nodes;
         so.max_seconds = m.options.search_seconds;
         so.deadline = b.deadline();
-        auto r = search::plan(*spec, *h, s, so);
+        const auto r = assist::command_plan(
+            m.problem.task, top.command.to_goal_formula(config), m.problem.profiles[0], s, m.roles.principal,
+            [&]() -> std::shared_ptr<heuristics::Heuristic> {
+              return m.problem.pack->make_heuristic(m.problem.pack->spec().literal.planning_heuristic, task);
+            },
+            so);
         b.check();
         d.command = top.command.display_form();
         d.command_probability = top.prob;

@@ -27,7 +27,9 @@
 #include "pddl/task.hpp"
 
 namespace clips::inference {
-struct InferenceRun;
+class Belief;
+struct InferenceOptions;
+struct StepRecord;
 }
 
 namespace clips::engine {
@@ -111,11 +113,19 @@ class Engine {
   // first utterance from options.language_model (shared by engines on the
   // same domain and problem).
   Engine(Problem problem, SessionOptions options, std::shared_ptr<lm::LanguageModel> lm = nullptr);
-  // An engine over a belief already run over observations
-  // (inference::run_inference / run_inference_on_observations): its steps
-  // become the trace. `lm` is the model the run scored with.
-  static Engine adopt(Problem problem, SessionOptions options, inference::InferenceRun run,
-                      std::shared_ptr<lm::LanguageModel> lm);
+  // The batch form: the belief with `inference` as given (the bench's and
+  // `clips infer`'s settings), started with `heard_at_start` scored in the
+  // start's step.
+  Engine(Problem problem, SessionOptions options, const inference::InferenceOptions& inference,
+         std::shared_ptr<lm::LanguageModel> lm, const std::vector<std::string>& heard_at_start = {},
+         const CallLimits& limits = {});
+  // Recorded observations (a plan file's actions and its annotated
+  // utterances) replayed through observe and hear, under the utterance
+  // timing of `inference`: the one loop behind `clips infer`, the bench and
+  // Python's run_plan. InputError at the first action that is not the
+  // problem's or not applicable.
+  static Engine replay(Problem problem, SessionOptions options, const inference::InferenceOptions& inference,
+                       std::shared_ptr<lm::LanguageModel> lm, const pddl::PlanFile& observed);
   Engine(Engine&&) noexcept;
   Engine& operator=(Engine&&) noexcept;
   ~Engine();
@@ -125,9 +135,15 @@ class Engine {
   // InapplicableActionError: its precondition is false now.
   const Step& observe(const std::string& action, const CallLimits& limits = {});
   const Step& observe(pddl::ActionId action, const CallLimits& limits = {});
+  // An action with the utterances heard just before it, in the state it is
+  // taken in: they are scored in the action's step (the datasets' timing).
+  const Step& observe(pddl::ActionId action, const std::vector<std::string>& heard_before,
+                      const CallLimits& limits = {});
   // An utterance heard in the current state. InputError for empty or
   // non-UTF-8 text; LanguageModelError when the model fails.
   const Step& hear(const std::string& utterance, const CallLimits& limits = {});
+  // Several utterances heard together, in one update.
+  const Step& hear(const std::vector<std::string>& utterances, const CallLimits& limits = {});
   // Takes back the principal's latest move or instruction with everything
   // after it (the assistant's actions); false (and nothing changes) when
   // there is none.
@@ -161,6 +177,9 @@ class Engine {
   struct Event {
     bool utterance = false;
     std::string text;  // the action's name or the utterance
+    // Where an utterance was scored: heard on its own (hear), in the start's
+    // step, or in the step of the action after it.
+    enum class Scored { Heard, AtStart, WithNextAction } scored = Scored::Heard;
   };
   const std::vector<Event>& events() const;
   std::string active_agent() const;                 // the pack's principal or assistant
@@ -175,6 +194,10 @@ class Engine {
   const std::vector<std::string>& goal_labels() const;
   const std::vector<std::string>& profile_names() const;
   std::optional<Reading> reading(size_t top = 5) const;  // null before any instruction
+  // The belief's own records (records()[t]: after t actions, every modality)
+  // and the belief: what a batch run reports (engine/runs.hpp).
+  const std::vector<inference::StepRecord>& records() const;
+  std::shared_ptr<const inference::Belief> belief() const;
   // Inference statistics.
   size_t searches_stopped_by_budget() const;
   size_t refinements() const;

@@ -115,7 +115,7 @@ PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& p, lm
     if (opts.methods.empty() && opts.multimodal.configured()) methods.push_back(baseline_choices().name(Baseline::Multimodal));  // issue 8
 
     const inference::InferenceOptions io = inference_options(opts);
-    inference::InferenceRun inf = inference::run_inference(ds, p, lm, io);
+    inference::InferenceRun inf = engine::run_inference(ds, p, lm, io);
     if (opts.on_inference) opts.on_inference(inf);
     out.goals = inf.goals;
     out.utterance_warnings = inf.utterance_warnings;
@@ -201,7 +201,7 @@ BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& p,
     task = ds.task(p.problem_id);
     true_options = data::true_options(ds, p);
     for (const std::string& m : methods) make_method(m);  // an unknown name, before any work
-    inf = inference::run_inference(ds, p, lm, inference_options(opts));
+    inf = engine::run_inference(ds, p, lm, inference_options(opts));
     true_h = true_hypothesis(inf, p);
     for (Modality m : inference::kModalities) inf.belief->sync_policies(m);
     inf.belief->sync_policies({true_h});

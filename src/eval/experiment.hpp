@@ -13,6 +13,7 @@
 #include "data/dataset.hpp"
 #include "assist/assist.hpp"
 #include "clips/types.hpp"
+#include "engine/runs.hpp"
 #include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
@@ -123,7 +124,7 @@ std::vector<std::string> known_methods(const domains::Pack& pack);
 bool is_method_name(const std::string& name);
 
 // Assisting a live human: inference over observations that are not a dataset
-// plan (built by the caller; see inference::run_inference_on_observations),
+// plan (built by the caller; see engine::run_inference_on_observations),
 // then one Q_MDP decision of the assistant in the state they lead to, with the
 // posterior of `method` (clips, lang_only or action_only).
 // Driven by the session engine (src/engine), as clips::Session and the

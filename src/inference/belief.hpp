@@ -448,8 +448,9 @@ class Belief {
   lm::LanguageModel* lm_ = nullptr;
 };
 
-// Inference over one dataset plan: INIT at s_0, then one step per observed
-// action; utterances with index k are scored at s_k (default) or s_{k-1}
+// Inference over one dataset plan (engine::run_inference drives the engine
+// over it): INIT at s_0, then one step per observed action; utterances with
+// index k are scored at s_k (default) or s_{k-1}
 // (InferenceOptions::utterance_timing); index 0 at s_0.
 struct InferenceRun {
   std::string plan_id;
@@ -468,16 +469,5 @@ struct InferenceRun {
   const Posterior& final_posterior(Modality m) const { return steps.back()[m]; }
   double p_true_goal(Modality m) const { return final_posterior(m).goals.at(true_goal); }
 };
-
-InferenceRun run_inference(const data::Dataset& dataset, const data::PlanRecord& plan, lm::LanguageModel& lm,
-                           const InferenceOptions& options = {});
-
-// The same over observations that are not a dataset plan (actions and
-// utterances given on the command line): `observed` on the dataset's problem
-// `plan.problem_id`, with the candidate goals of that problem and the cost
-// profiles of `plan.tag` (mDKG: keys or doors). `plan.completed` is not read
-// and no true goal is known (true_goal = -1).
-InferenceRun run_inference_on_observations(const data::Dataset& dataset, const data::PlanRecord& plan,
-                                           lm::LanguageModel& lm, const InferenceOptions& options = {});
 
 }  // namespace clips::inference

@@ -1,3 +1,4 @@
+#include "engine/runs.hpp"
 #include "studies/particle_eval.hpp"
 
 #include <fmt/core.h>
@@ -93,7 +94,7 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
     ++done;
     try {
       cold();
-      const inference::InferenceRun exact = inference::run_inference(ds, *p, *o.language_model, base);
+      const inference::InferenceRun exact = engine::run_inference(ds, *p, *o.language_model, base);
       ++rep.plans;
       for (int n : o.particles)
         for (int s = 1; s <= o.seeds; ++s) {
@@ -101,7 +102,7 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
           io.particles = n;
           io.particle_seed = static_cast<uint64_t>(s);
           cold();
-          const inference::InferenceRun run = inference::run_inference(ds, *p, *o.language_model, io);
+          const inference::InferenceRun run = engine::run_inference(ds, *p, *o.language_model, io);
           ParticleEvalRow r;
           r.plan = p->id;
           r.goals = static_cast<int>(exact.goals.size());

@@ -5,6 +5,7 @@
 // `clips generate` as a library (generate/generate.hpp): a small generated set
 // loads, every plan checks and reaches its recorded goal, the seed alone
 // decides the bytes, and impossible parameters are clear errors.
+#include "engine/runs.hpp"
 #include "generate/generate.hpp"
 
 #include <gtest/gtest.h>
@@ -68,7 +69,7 @@ std::string error_of(const GenerateOptions& o) {
 // on `prefix` (the state and the policy the observer holds then).
 std::vector<commands::Command> true_speaker_commands(const data::Dataset& ds, const data::PlanRecord& prefix,
                                                      const inference::InferenceOptions& io = {}) {
-  const auto run = inference::run_inference(ds, prefix, shared_lm(), io);
+  const auto run = engine::run_inference(ds, prefix, shared_lm(), io);
   const auto& b = *run.belief;
   for (size_t h = 0; h < b.hypotheses().size(); ++h)
     if (b.hypotheses()[h].goal == run.true_goal && b.hypotheses()[h].profile == run.true_profile) {

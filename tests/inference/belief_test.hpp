@@ -4,6 +4,7 @@
 // (docs/testing.md, "Labels").
 // Belief updates on a hand-made corridor where every number can be worked out
 // on paper, plus the do-operator and the three modalities.
+#include "engine/runs.hpp"
 #include "inference/belief.hpp"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,8 @@
 #include "dkg_profiles.hpp"
 
 namespace clips::inference {
+// Whole plans are replayed through the engine (engine/runs.hpp).
+using engine::run_inference;
 namespace belief_test {
 
 // One row of five cells: gem1 (red) at x = 1, gem2 (yellow) at x = 5, the

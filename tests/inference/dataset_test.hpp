@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "engine/runs.hpp"
 #include "inference/belief.hpp"
 #include "pddl/plan.hpp"
 #include "domains/vh_value.hpp"
@@ -19,6 +20,8 @@
 #include "test_paths.hpp"
 
 namespace clips::inference {
+// Whole plans are replayed through the engine (engine/runs.hpp).
+using engine::run_inference;
 namespace dataset_test {
 
 std::shared_ptr<lm::LanguageModel> embedded_lm() {

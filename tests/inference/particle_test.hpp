@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 
+#include "engine/runs.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "pddl/parser.hpp"
@@ -23,6 +24,8 @@
 #include "dkg_profiles.hpp"
 
 namespace clips::inference {
+// Whole plans are replayed through the engine (engine/runs.hpp).
+using engine::run_inference;
 namespace particle_test {
 
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();

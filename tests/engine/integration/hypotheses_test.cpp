@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "data/dataset.hpp"
+#include "engine/runs.hpp"
 #include "language/listener.hpp"
 #include "test_paths.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 TEST(AssistantWeights, ATwinsWeightMovesToItsBase) {
   auto lm = language::make_language_model("embedded");
   const auto ds = data::Dataset::load(paths::source_dir() + "/data/datasets/lab");
-  const inference::InferenceRun run = inference::run_inference(ds, ds.plan("5.2.digestion"), *lm);
+  const inference::InferenceRun run = engine::run_inference(ds, ds.plan("5.2.digestion"), *lm);
   const inference::Belief& belief = *run.belief;
   ASSERT_EQ(belief.profiles().size(), 2u);
   ASSERT_EQ(belief.profiles()[1].twin_of, 0);

@@ -11,11 +11,14 @@
 #include <thread>
 #include <vector>
 
+#include "engine/runs.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "test_paths.hpp"
 
 namespace clips::inference {
+// Whole plans are replayed through the engine (engine/runs.hpp).
+using engine::run_inference;
 namespace {
 
 std::shared_ptr<lm::LanguageModel> fresh_embedded_lm() {
