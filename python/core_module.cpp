@@ -214,7 +214,7 @@ const std::vector<SessionOption>& session_option_table() {
       {"assistance", "how the assistant decides: " + clips::engine::assistance_choices().help_text(),
        [](O& o, py::handle v) { o.assistance = clips::parse_assistance(text_option("assistance", v)); },
        [](const O& o) { return quoted(clips::assistance_name(o.assistance)); }},
-      {"lm", "language model: " + clips::util::or_list(clips::language::language_model_kinds()),
+      {"lm", "language model: " + clips::language::language_model_choices().help_text(),
        [](O& o, py::handle v) { o.language_model.backend = text_option("lm", v); },
        [](const O& o) { return quoted(o.language_model.backend); }},
       {"lm_base_url", "openai: completions API base URL ('': $CLIPS_LM_BASE_URL, else OpenAI's)",

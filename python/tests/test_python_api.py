@@ -396,3 +396,41 @@ def test_choices_are_the_name_tables_the_docs_list():
     assert {c["name"] for c in catalogue["assistance"]} == {"qmdp", "pibar"}
     with pytest.raises(clips_assist.InputError, match=r"known: qmdp, pibar"):
         clips_assist.Session.open_dataset(EXAMPLES, "e1", assistance="oracle")
+
+
+# The catalogue's kinds by the front end that takes them: a keyword of
+# Session.open_dataset/open_domain, a part of run_bench's method names, or a
+# flag of the CLI alone (docs/cli.md). A new kind must be placed here.
+KEYWORD_KINDS = {"method", "assistance", "assistant_turns", "rejuvenate", "particle_filters", "particle_estimate", "lm"}
+BENCH_KINDS = {"assist", "literal_method", "baseline"}
+CLI_ONLY_KINDS = {"modality", "speaker_rule", "speaker_plans", "utterance_timing", "qa_floor", "assist_rule",
+                  "heuristic", "bench_assist", "planner"}
+
+
+def test_every_catalogue_kind_is_reachable_from_python_or_said_to_be_cli_only():
+    """issue 63: each kind of choices() is reachable by its keyword (each name and
+    alias is taken; a bad one is refused with the names), or by run_bench's
+    method names, or is one of the CLI's own flags."""
+    catalogue = clips_assist.choices()
+    assert set(catalogue) == KEYWORD_KINDS | BENCH_KINDS | CLI_ONLY_KINDS
+    doc = clips_assist.Session.open_dataset.__doc__
+    for kind in sorted(KEYWORD_KINDS):
+        assert kind + "=" in doc, kind
+        for c in catalogue[kind]:
+            for spelling in [c["name"]] + c["aliases"]:
+                # Taken: the session fails on the missing folder, not on the name.
+                with pytest.raises(clips_assist.InputError, match="dataset directory"):
+                    clips_assist.Session.open_dataset("/nonexistent-clips-dataset", "1", **{kind: spelling})
+        with pytest.raises(clips_assist.InputError) as bad:
+            clips_assist.Session.open_dataset(EXAMPLES, "e1", **{kind: "oracle"})
+        assert "oracle" in str(bad.value), kind
+        for c in catalogue[kind]:
+            assert c["name"] in str(bad.value), (kind, c["name"], str(bad.value))
+    with pytest.raises(clips_assist.InputError) as bad:
+        clips_assist.run_bench(str(EXAMPLES), methods=["oracle"])
+    valid = str(bad.value).split("valid methods: ", 1)[1].split(", ")
+    default, *others = [c["name"] for c in catalogue["assist"]]
+    assert "clips" in valid and "clips/" + default not in valid  # the default policy leaves the name bare
+    assert all("clips/" + p in valid for p in others)
+    assert all(c["name"] in valid for c in catalogue["baseline"])
+    assert any(c["name"] in valid for c in catalogue["literal_method"])  # the pack says which it runs

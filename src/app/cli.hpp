@@ -79,7 +79,7 @@ struct LmFlags {
   std::string utterance_timing = "after";  // state explaining an utterance: after (s_k) or before (s_{k-1})
   std::string assistant_turns = "taken";  // refinement at the assistant's turns (inference::AssistantTurns)
   std::string qa_floor = "dead-ends";      // Q_MDP floor: dead-ends or horizon (assist::QaFloor)
-  std::string speaker_plans;  // "" (the pack's), single or tied (domains::RolloutSettings::Plans)
+  std::string speaker_plans;  // "" (the pack's) or a name of domains::speaker_plans_choices()
   std::string assist_rule;    // "" (the pack's), paper or request (assist::AssistRule)
   double utterance_noise = -1;     // < 0: the pack's inference.utterance_noise
   double utterance_exponent = -1;  // <= 0: the pack's inference.utterance_exponent

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "app/choice_option.hpp"
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "app/scaling_cli.hpp"
@@ -225,7 +226,7 @@ void register_bench(CLI::App& app) {
                                  "with the paper's numbers beside ours");
   auto o = std::make_shared<eval::BenchOptions>();
   auto out = std::make_shared<std::string>();
-  auto assist = std::make_shared<std::string>("default");
+  auto assist = std::make_shared<std::string>(eval::assistance_set_choices().name(eval::AssistanceSet::Default));
   auto methods = std::make_shared<std::vector<std::string>>();
   auto shard = std::make_shared<std::string>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
@@ -242,8 +243,7 @@ void register_bench(CLI::App& app) {
   add_lm_options(cmd, *lm);
   add_speaker_model_options(cmd, *lm);
   add_assistance_options(cmd, *lm);
-  cmd->add_option("--assist", *assist, "default (offline Q_MDP) or all (adds online Q_MDP and pi-bar_MDP)")
-      ->check(CLI::IsMember({"default", "all"}));
+  add_choice_option(cmd, "--assist", *assist, eval::assistance_set_choices(), "Which assistance policies run (default: default)");
   cmd->add_option("--methods", *methods, "Subset of methods, e.g. clips lang_only literal_naive (or clips,lang_only)")
       ->delimiter(',');
   cmd->add_option("--plans", o->plans, "Only these plan ids (space- or comma-separated)")->delimiter(',');
@@ -306,7 +306,7 @@ void register_bench(CLI::App& app) {
     apply_model_flags(*lm, o->experiment);
     o->experiment.multimodal.http.total_timeout = lm_timeout_ms(*lm);
     o->experiment.particles = *particles;  // checked by the flags' table
-    o->experiment.all_assistance = *assist == "all";
+    o->experiment.all_assistance = eval::assistance_set_choices().parse(*assist) == eval::AssistanceSet::All;
     o->experiment.methods = *methods;
     if (!shard->empty()) {
       std::string why;

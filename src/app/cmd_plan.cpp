@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "app/choice_option.hpp"
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
@@ -15,6 +16,7 @@
 #include "domains/task_transform.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
+#include "search/planners.hpp"
 #include "search/rtaa.hpp"
 #include "util/memory.hpp"
 
@@ -39,7 +41,8 @@ constexpr double kRtaaTimeLimit = 60;  // default --time-limit for rtaa runs
 void register_plan(CLI::App& app) {
   auto* cmd = app.add_subcommand("plan", "Plan for a goal with A* (optimal with an admissible heuristic) or RTAA*");
   struct Opts {
-    std::string dataset, problem, domain_file, problem_file, goal, costs, planner = "astar", heuristic, from_plan;
+    std::string dataset, problem, domain_file, problem_file, goal, costs, heuristic, from_plan;
+    std::string planner = search::planner_choices().name(search::Planner::AStar);
     bool json = false;
     bool ground_only = false;
     size_t max_nodes = size_t{1} << 24;
@@ -59,7 +62,7 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--costs", o->costs,
                   "Cost profile: 1..4 for doors-keys-gems (C1..C4, default 1), 'unit', or 'task' (the domain's "
                   "action costs; default for other domains when they declare total-cost)");
-  cmd->add_option("--planner", o->planner, "astar (default) or rtaa")->check(CLI::IsMember({"astar", "rtaa"}));
+  add_choice_option(cmd, "--planner", o->planner, search::planner_choices(), "Planner (default astar)");
   cmd->add_option("--heuristic", o->heuristic, "Heuristic name (default: the domain's admissible one)");
   cmd->add_option("--from-plan", o->from_plan, "Start from the end of this observed plan (dataset plan id)");
   cmd->add_option("--max-nodes", o->max_nodes,
@@ -94,10 +97,11 @@ void register_plan(CLI::App& app) {
                 "Parse and ground the task, print its size (atoms, fluents, actions, axioms) and stop: no search");
   cmd->callback([o, goal_opt] {
     using clock = std::chrono::steady_clock;
+    const bool astar = search::planner_choices().parse(o->planner) == search::Planner::AStar;
     const auto t_run = clock::now();
     const double time_limit = o->time_limit ? *o->time_limit
-                              : o->planner == "rtaa" ? kRtaaTimeLimit
-                                                     : std::numeric_limits<double>::infinity();
+                              : astar       ? std::numeric_limits<double>::infinity()
+                                            : kRtaaTimeLimit;
     // The run's deadline, set before anything is read, so grounding counts
     // too: --time-limit, and for A* (one search) also --max-seconds.
     auto after = [&](double secs) {
@@ -107,7 +111,7 @@ void register_plan(CLI::App& app) {
     data::GroundingLimits limits(o->max_ground_actions);
     limits.deadline = after(time_limit);
     limits.deadline_label = fmt::format("time limit of {:g} s", time_limit);
-    if (o->planner == "astar" && o->max_seconds < time_limit) {
+    if (astar && o->max_seconds < time_limit) {
       limits.deadline = after(o->max_seconds);
       limits.deadline_label = fmt::format("--max-seconds limit of {:g} s", o->max_seconds);
     }
@@ -195,7 +199,7 @@ void register_plan(CLI::App& app) {
     so.deadline = after(time_limit);
     so.max_memory_bytes = max_memory;
     so.h_weight = o->weight;
-    if (o->planner == "astar") so.deadline = std::min(so.deadline, after(o->max_seconds));
+    if (astar) so.deadline = std::min(so.deadline, after(o->max_seconds));
     auto out_of_time = [&] { return clock::now() >= after(time_limit); };
     // What finds a plan for a hard goal (e.g. every gem of mDKG problem 2: 0.1 s
     // against 16.7 million expansions for optimal A*), at the price of optimality.
@@ -205,7 +209,7 @@ void register_plan(CLI::App& app) {
     double cost = 0, seconds = 0;
     size_t expanded = 0;
     std::string status;
-    if (o->planner == "astar") {
+    if (astar) {
       auto r = search::plan(*spec, *h, start, so);
       plan = r.plan;
       cost = r.status == search::SearchStatus::Success ? r.cost : 0;

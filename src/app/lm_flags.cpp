@@ -6,6 +6,7 @@
 #include "app/choice_option.hpp"
 #include "app/cli.hpp"
 #include "assist/assist.hpp"
+#include "domains/pack.hpp"
 #include "inference/belief.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
@@ -14,8 +15,7 @@
 namespace clips::app {
 
 void add_lm_options(CLI::App* cmd, LmFlags& f) {
-  cmd->add_option("--lm", f.kind, "Language model: embedded (offline, default) or openai")
-      ->check(CLI::IsMember(language::language_model_kinds()));
+  add_choice_option(cmd, "--lm", f.kind, language::language_model_choices(), "Language model (default embedded)");
   cmd->add_option("--lm-base-url", f.base_url,
                   "openai: completions API base URL, http:// or https:// (default $CLIPS_LM_BASE_URL, else "
                   "$OPENAI_BASE_URL, else https://api.openai.com/v1; the key is read from $OPENAI_API_KEY). At "
@@ -52,11 +52,9 @@ void add_speaker_model_options(CLI::App* cmd, LmFlags& f) {
   add_choice_option(cmd, "--assistant-turns", f.assistant_turns, inference::assistant_turns_choices(),
                     "Refinement at the assistant's turns, where no action is scored (default taken; the same "
                     "posteriors unless a search hits its node budget; taken searches less)");
-  cmd->add_option("--speaker-plans", f.speaker_plans,
-                  "Which joint plans the speaker model may have in mind: tied (every plan the policy values as "
-                  "well as its greedy one, ties broken every way) or single (the one greedy rollout, the paper's "
-                  "tables); default: the pack's inference.rollout.plans")
-      ->check(CLI::IsMember({"single", "tied"}));
+  add_choice_option(cmd, "--speaker-plans", f.speaker_plans, domains::speaker_plans_choices(),
+                    "Which joint plans the speaker model may have in mind (default: the pack's "
+                    "inference.rollout.plans)");
   cmd->add_option("--utterance-noise", f.utterance_noise,
                   "Weight in [0, 1) of the utterance model's noise: each goal's utterance likelihood is mixed with "
                   "the mean over the goals, so one misread word cannot rule a goal out (0: the bare model); "
@@ -79,7 +77,7 @@ void add_assistance_options(CLI::App* cmd, LmFlags& f) {
 namespace {
 std::optional<domains::RolloutSettings::Plans> parse_plans(const std::string& text) {
   if (text.empty()) return std::nullopt;
-  return text == "single" ? domains::RolloutSettings::Plans::Single : domains::RolloutSettings::Plans::Tied;
+  return domains::speaker_plans_choices().parse(text);
 }
 }  // namespace
 

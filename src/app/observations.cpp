@@ -41,6 +41,25 @@ pddl::PlanFile actions_file(const std::string& path) {
   return pddl::load_plan(path);  // reports a directory or an unreadable file
 }
 
+// The plan tag of --condition: one of the pack's plan_tags (its first when
+// none is given); a pack without tags takes none.
+std::string condition_tag(const domains::Pack& pack, const std::string& condition) {
+  const auto& tags = pack.spec().plan_tags;
+  if (tags.empty()) {
+    if (condition.empty()) return "";
+    throw UsageError("--condition " + condition + ": the " + pack.name() +
+                     " pack declares no plan tags (pack.json plan_tags), so there is no condition to choose");
+  }
+  if (condition.empty()) return tags.front();
+  if (std::find(tags.begin(), tags.end(), condition) == tags.end()) {
+    std::string known;
+    for (const auto& t : tags) known += (known.empty() ? "" : ", ") + t;
+    throw UsageError("--condition: unknown plan tag '" + condition + "' of the " + pack.name() + " pack (known: " +
+                     known + ")");
+  }
+  return condition;
+}
+
 }  // namespace
 
 void add_observation_options(CLI::App* cmd, ObservationFlags& f) {
@@ -56,10 +75,11 @@ void add_observation_options(CLI::App* cmd, ObservationFlags& f) {
   cmd->add_option("--utterance-step", f.utterance_step,
                   "With --utterance: the number of actions done before it was said (default 0: before the first)")
       ->check(NonNegativeInteger);
+  // The names are the pack's (pack.json plan_tags), known once the dataset is read.
   cmd->add_option("--condition", f.condition,
-                  "With --problem on doors-keys-gems: the cost profiles the human may have, keys (C3, C4; default) "
-                  "or doors (C1, C2), as in the paper's two conditions; ignored for other domains")
-      ->check(CLI::IsMember({"keys", "doors"}));
+                  "With --problem, for a pack that declares plan tags: the tag the observations are read under, "
+                  "which picks the cost profiles the human may have (doors-keys-gems: the paper's two conditions; an "
+                  "unknown tag's error lists the pack's); default: the pack's first");
 }
 
 void check_observation_flags(const ObservationFlags& f) {
@@ -73,6 +93,8 @@ void check_observation_flags(const ObservationFlags& f) {
   if (f.plan.empty() && f.actions.empty() && !f.utterance)
     throw UsageError("--problem " + f.problem + " needs observations: --actions and/or --utterance");
   if (f.utterance_step && !f.utterance) throw UsageError("--utterance-step needs --utterance");
+  if (!f.plan.empty() && !f.condition.empty())
+    throw UsageError("--condition goes with --problem; --plan " + f.plan + " brings its own");
   if (f.utterance) {
     if (blank(*f.utterance)) throw UsageError("--utterance is empty");
     if (auto bad = util::utf8_problem(*f.utterance); !bad.empty()) throw InputError("--utterance is " + bad);
@@ -94,8 +116,7 @@ data::PlanRecord observations_record(const data::Dataset& ds, const ObservationF
   data::PlanRecord rec;
   rec.id = "problem " + f.problem + " (observations given on the command line)";
   rec.problem_id = f.problem;
-  // The plan's condition where the pack gives tags a meaning (mDKG keys/doors).
-  rec.tag = ds.pack().spec().plan_tags.empty() ? "" : f.condition;
+  rec.tag = condition_tag(ds.pack(), f.condition);
   if (!f.actions.empty()) rec.observed = is_inline(f.actions) ? inline_actions(f.actions) : actions_file(f.actions);
   rec.observed.path = f.actions.empty() ? "--utterance" : rec.observed.path;
 

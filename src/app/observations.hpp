@@ -17,7 +17,7 @@ struct ObservationFlags {
   std::string actions;                // --actions FILE or "(a ...) (b ...)"
   std::optional<std::string> utterance;
   std::optional<int> utterance_step;  // actions before the utterance (default 0)
-  std::string condition = "keys";     // mDKG cost profiles: keys (C3, C4) or doors (C1, C2)
+  std::string condition;              // a pack's plan tag ("": its first); picks the cost profiles
 };
 
 void add_observation_options(CLI::App* cmd, ObservationFlags& f);

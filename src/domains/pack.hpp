@@ -142,6 +142,8 @@ struct RolloutSettings {
   enum class Plans { Single, Tied };
   Plans plans = Plans::Tied;
 };
+// inference.rollout.plans and --speaker-plans: "single" or "tied".
+util::Choices<RolloutSettings::Plans>& speaker_plans_choices();
 
 struct InferenceSettings {
   // Of the human model's policies. h_FF: informative, not admissible (h_max

@@ -97,6 +97,14 @@ class Fields {
     for (const auto& [name, e] : options) allowed += (allowed.empty() ? "" : ", ") + std::string(name);
     fail(field, "expected one of: " + allowed);
   }
+  // A name of a name table (util/choices.hpp), its older spellings too.
+  template <typename E>
+  E choice(const json& v, const std::string& field, const util::Choices<E>& table) const {
+    if (v.is_string() && table.contains(v.get<std::string>())) return table.parse(v.get<std::string>());
+    std::string allowed;
+    for (const std::string& name : table.names()) allowed += (allowed.empty() ? "" : ", ") + name;
+    fail(field, "expected one of: " + allowed);
+  }
   const std::string& source() const { return source_; }
 
  private:
@@ -142,6 +150,15 @@ util::Choices<LiteralPlanning>& literal_method_choices() {
        {LiteralPlanning::Naive, "literal_naive", "the literal listener, planning for a command's groundings one by one",
         {}},
        {LiteralPlanning::Efficient, "literal", "literal_efficient, under the name VirtualHome's results use", {}}});
+  return table;
+}
+
+util::Choices<RolloutSettings::Plans>& speaker_plans_choices() {
+  static util::Choices<RolloutSettings::Plans> table(
+      "speaker plans",
+      {{RolloutSettings::Plans::Tied, "tied",
+        "every joint plan the policy values as well as its greedy one, ties broken every way", {}},
+       {RolloutSettings::Plans::Single, "single", "the one greedy rollout, as in the paper's tables", {}}});
   return table;
 }
 
@@ -328,9 +345,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
       if (r.contains("speaker_flag"))
         s.inference.rollout.speaker_flag = f.text(r["speaker_flag"], "inference.rollout.speaker_flag");
       if (r.contains("plans"))
-        s.inference.rollout.plans = f.choice<RolloutSettings::Plans>(
-            r["plans"], "inference.rollout.plans",
-            {{"single", RolloutSettings::Plans::Single}, {"tied", RolloutSettings::Plans::Tied}});
+        s.inference.rollout.plans = f.choice(r["plans"], "inference.rollout.plans", speaker_plans_choices());
     }
   }
 

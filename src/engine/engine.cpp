@@ -163,13 +163,7 @@ std::shared_ptr<lm::LanguageModel> engine_language_model(const LanguageModelOpti
   return m;
 }
 
-void check_backend(const std::string& backend) {
-  for (const auto& k : language::language_model_kinds())
-    if (k == backend) return;
-  std::string known;
-  for (const auto& k : language::language_model_kinds()) known += (known.empty() ? "" : ", ") + k;
-  throw InputError("unknown language model backend '" + backend + "' (expected " + known + ")");
-}
+void check_backend(const std::string& backend) { language::language_model_choices().parse(backend); }
 
 inference::InferenceOptions inference_options(const SessionOptions& o) {
   inference::InferenceOptions io;

@@ -223,7 +223,8 @@ BenchReport run_bench(const BenchOptions& opts) {
   rep.fingerprint = dataset_fingerprint(opts.dataset);
   rep.started_utc = utc_now_iso8601();
   rep.seed = opts.experiment.seed;
-  rep.assistance = opts.experiment.all_assistance ? "all" : "default";
+  rep.assistance = assistance_set_choices().name(opts.experiment.all_assistance ? AssistanceSet::All
+                                                                                   : AssistanceSet::Default);
   rep.methods_requested = opts.experiment.methods;
   rep.chat_model = multimodal_model(opts.experiment);
   const Selection all = select_plans(ds0, opts);

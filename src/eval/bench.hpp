@@ -56,7 +56,7 @@ struct BenchReport {
   std::string fingerprint;       // dataset_fingerprint(dataset): tells the paper's datasets from others
   std::string started_utc;       // ISO 8601, e.g. 2026-12-02T05:01:02Z
   uint64_t seed = 1;
-  std::string assistance;        // "default" (offline Q_MDP) or "all"
+  std::string assistance;        // a name of assistance_set_choices (eval/methods.hpp)
   std::vector<std::string> methods_requested;  // --methods; empty: the domain's defaults
   std::string speaker_rule;      // the CLIPS speaker model's command rule
   std::string utterance_timing;  // before or after the action at the utterance's index

@@ -3,14 +3,17 @@
 #include "domains/pack.hpp"
 #include "engine/choices.hpp"
 #include "eval/methods.hpp"
+#include "search/planners.hpp"
 
 namespace clips::eval {
 
 util::ChoiceCatalogue choice_catalogue() {
   util::ChoiceCatalogue c = engine::choice_catalogue();
   c.push_back({"assist", assist_policy_choices().info()});
+  c.push_back({"bench_assist", assistance_set_choices().info()});
   c.push_back({"literal_method", domains::literal_method_choices().info()});
   c.push_back({"baseline", baseline_choices().info()});
+  c.push_back({"planner", search::planner_choices().info()});
   return c;
 }
 

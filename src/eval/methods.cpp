@@ -221,6 +221,17 @@ util::Choices<AssistPolicy>& assist_policy_choices() {
   return table;
 }
 
+util::Choices<AssistanceSet>& assistance_set_choices() {
+  // The help names no policy: the policy table takes entries at run time.
+  static util::Choices<AssistanceSet> table(
+      "assistance set",
+      {{AssistanceSet::Default, "default",
+        "each inference method with the first assist policy, under the method's bare name", {}},
+       {AssistanceSet::All, "all", "also each inference method with every other assist policy, as METHOD/POLICY",
+        {}}});
+  return table;
+}
+
 util::Choices<Baseline>& baseline_choices() {
   static util::Choices<Baseline> table(
       "baseline", {{Baseline::Multimodal, "multimodal",

@@ -63,6 +63,10 @@ class Method {
 // the slash of "clips/pibar". The first entry is the default.
 enum class AssistPolicy { QmdpOffline, QmdpOnline, PiBar };
 util::Choices<AssistPolicy>& assist_policy_choices();
+// Which policies `clips bench --assist` runs: the default one alone (each
+// inference method's bare name) or every one (adds "clips/pibar", ...).
+enum class AssistanceSet { Default, All };
+util::Choices<AssistanceSet>& assistance_set_choices();
 // Methods that are neither inference nor the literal listener.
 enum class Baseline { Multimodal };
 util::Choices<Baseline>& baseline_choices();

@@ -49,7 +49,14 @@ commands::TypeLookup type_lookup(const pddl::Task& task, const domains::Pack& pa
 
 // ---- language-model backends ----------------------------------------------
 
-std::vector<std::string> language_model_kinds() { return {"embedded", "openai"}; }
+util::Choices<LanguageModelKind>& language_model_choices() {
+  static util::Choices<LanguageModelKind> table(
+      "language model",
+      {{LanguageModelKind::Embedded, "embedded", "offline: an alignment model trained at load time on the shipped corpus and the prompt's examples", {}},
+       {LanguageModelKind::OpenAi, "openai", "an OpenAI-compatible completions server that scores the text, at --lm-base-url", {}}});
+  return table;
+}
+std::vector<std::string> language_model_kinds() { return language_model_choices().names(); }
 
 namespace {
 
@@ -86,14 +93,14 @@ ServerCheck check_language_model_server(const LanguageModelOptions& options) {
 
 std::shared_ptr<lm::LanguageModel> make_language_model(const std::string& kind, const LanguageModelOptions& options) {
   std::shared_ptr<lm::LanguageModel> inner;
-  if (kind.empty() || kind == "embedded") {
-    lm::EmbeddedModelOptions o;
-    o.data_dir = options.data_dir;
-    inner = std::make_shared<lm::EmbeddedLanguageModel>(o);
-  } else if (kind == "openai") {
-    inner = std::make_shared<lm::OpenAiCompletionsModel>(openai_options(options));
-  } else {
-    throw InputError("unknown language model '" + kind + "' (known: embedded, openai)");
+  switch (kind.empty() ? LanguageModelKind::Embedded : language_model_choices().parse(kind)) {
+    case LanguageModelKind::Embedded: {
+      lm::EmbeddedModelOptions o;
+      o.data_dir = options.data_dir;
+      inner = std::make_shared<lm::EmbeddedLanguageModel>(o);
+      break;
+    }
+    case LanguageModelKind::OpenAi: inner = std::make_shared<lm::OpenAiCompletionsModel>(openai_options(options)); break;
   }
   return std::make_shared<lm::CachedLanguageModel>(inner);
 }

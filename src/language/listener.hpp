@@ -25,6 +25,7 @@
 #include "language/lm/wordnet_lexicon.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
+#include "util/choices.hpp"
 
 namespace clips::language {
 
@@ -52,6 +53,10 @@ struct LanguageModelOptions {
   std::string data_dir;
 };
 
+// The backends make_language_model builds, as a name table (util/choices.hpp;
+// the first is the default).
+enum class LanguageModelKind { Embedded, OpenAi };
+util::Choices<LanguageModelKind>& language_model_choices();
 // Names accepted by make_language_model, default first.
 std::vector<std::string> language_model_kinds();
 

@@ -17,7 +17,9 @@ size_t fill(nlohmann::ordered_json& node, const util::ChoiceCatalogue& catalogue
       for (const auto& [name, k] : catalogue)
         if (name == id) kind = &k;
       if (!kind) throw std::invalid_argument("x-clips-choices: no name table '" + id + "'");
-      node["enum"] = kind->names();
+      // A request field that reads the older spellings too says so.
+      const bool aliases = node.value("x-clips-aliases", false);
+      node["enum"] = aliases ? kind->spellings() : kind->names();
       ++n;
     }
     for (auto& [key, value] : node.items()) n += fill(value, catalogue);

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "engine/methods.hpp"
 #include "engine/options.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
@@ -408,12 +409,12 @@ Reply Service::create(const std::string& body, const std::string& client) {
     } catch (const InputError& e) {
       throw HttpError(400, std::string("field 'assistance': ") + e.what());
     }
-  const std::string method = string_field(j, "method", false, "clips");
-  const auto known = play_methods();
-  if (std::find(known.begin(), known.end(), method) == known.end()) {
-    std::string names;
-    for (const auto& n : known) names += (names.empty() ? "" : ", ") + n;
-    throw HttpError(400, "field 'method': unknown method '" + echo(method) + "' (known: " + names + ")");
+  // The engine's method table, its older spellings too (as POST .../method reads them).
+  std::string method = string_field(j, "method", false, method_name(Method::Clips));
+  try {
+    method = method_name(parse_method(method));
+  } catch (const InputError&) {
+    throw HttpError(400, "field 'method': " + engine::method_choices().unknown(echo(method)));
   }
   const bool from_text = j.contains("domain");
   t_text_problem = from_text;

@@ -44,6 +44,15 @@ struct ChoiceKind {
     for (const auto& c : choices) out.push_back(c.name);
     return out;
   }
+  // Names and aliases: what a field that reads older spellings takes.
+  std::vector<std::string> spellings() const {
+    std::vector<std::string> out;
+    for (const auto& c : choices) {
+      out.push_back(c.name);
+      out.insert(out.end(), c.aliases.begin(), c.aliases.end());
+    }
+    return out;
+  }
 };
 // Every kind a front end offers, by the field, keyword or flag name it goes
 // by ("assistance", "rejuvenate"): the catalogue Python, the docs and the

@@ -3,7 +3,11 @@
 // naming the same field.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -60,6 +64,34 @@ TEST(PackSchema, EveryShippedPackConforms) {
     EXPECT_EQ(pack_schema_errors(text, name, kSchema), std::vector<std::string>{}) << name;
     EXPECT_NO_THROW(parse_pack_spec(text, name)) << name;
   }
+}
+
+// The schema's enums of named choices hold the names of the C++ tables
+// (util/choices.hpp) the reader parses them with, in any order.
+std::vector<std::string> sorted(std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+TEST(PackSchema, ItsChoiceEnumsAreTheNameTables) {
+  const auto schema = nlohmann::json::parse(read(kSchema));
+  const nlohmann::json* plans = nullptr;
+  const nlohmann::json* literal = nullptr;
+  // Found by walking: the property names are the pack fields' names.
+  std::function<void(const nlohmann::json&)> walk = [&](const nlohmann::json& n) {
+    if (n.is_object()) {
+      if (n.contains("properties") && n["properties"].contains("plans") && n["properties"].contains("speaker_flag"))
+        plans = &n["properties"]["plans"];
+      if (n.contains("properties") && n["properties"].contains("methods") && n["properties"].contains("temperature"))
+        literal = &n["properties"]["methods"]["items"];
+      for (const auto& [k, v] : n.items()) walk(v);
+    } else if (n.is_array()) {
+      for (const auto& v : n) walk(v);
+    }
+  };
+  walk(schema);
+  ASSERT_TRUE(plans && literal);
+  EXPECT_EQ(sorted((*plans)["enum"].get<std::vector<std::string>>()), sorted(speaker_plans_choices().names()));
+  EXPECT_EQ(sorted((*literal)["enum"].get<std::vector<std::string>>()), sorted(literal_method_choices().names()));
 }
 
 TEST(PackSchema, TheDefaultPathIsTheSourceTreesSchema) {

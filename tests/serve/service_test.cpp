@@ -284,7 +284,8 @@ TEST_F(Fixture, TheGameEndsAtThePlayersGoalOnly) {
 TEST(ApiSchema, ItsChoiceEnumsAreTheNameTables) {
   const nlohmann::ordered_json file = read_api_schema();
   nlohmann::ordered_json filled = file;
-  EXPECT_EQ(fill_choice_enums(filled), 14u);  // method, assistance, modality and the inference choices
+  // method (also in the two session requests and the switch), assistance, modality and the inference choices
+  EXPECT_EQ(fill_choice_enums(filled), 17u);
   if (std::getenv("CLIPS_UPDATE_SCHEMA") && filled != file) {
     std::ofstream(std::string(CLIPS_SOURCE_DIR) + "/data/schema/serve-api.openapi.json") << filled.dump(1) << "\n";
     return;
@@ -336,6 +337,36 @@ TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueAndTheSchema) {
   EXPECT_TRUE(lists(schemas["CreateSessionRequest"]["oneOf"][0]["properties"]["assistance"]["enum"], "test_rule"));
   EXPECT_FALSE(lists(read_api_schema()["components"]["schemas"]["SessionState"]["properties"]["assistance"]["enum"],
                      "test_rule"));
+}
+
+// A session's method is a name of the engine's method table, as the
+// document's enum says: an older spelling is read (as the switch reads it) and
+// named canonically; an unknown one is a 400 that lists the table's names.
+TEST_F(Fixture, ASessionsMethodIsANameOfTheMethodTable) {
+  const nlohmann::ordered_json doc = read_api_schema();
+  const auto& schemas = doc["components"]["schemas"];
+  for (const auto& variant : schemas["CreateSessionRequest"]["oneOf"])
+    EXPECT_EQ(variant["properties"]["method"]["enum"], json(engine::method_choices().info().spellings()));
+  EXPECT_EQ(schemas["MethodRequest"]["properties"]["method"]["enum"],
+            json(engine::method_choices().info().spellings()));
+
+  auto s = make();
+  json request = {{"dataset", "doors-keys-gems"}, {"problem", "e1"}};
+  for (const auto& c : engine::method_choices().entries())
+    for (const std::string& spelling : c.aliases.empty() ? std::vector<std::string>{c.name} : c.aliases) {
+      request["method"] = spelling;
+      const Reply r = s->handle("POST", "/api/sessions", request.dump());
+      ASSERT_EQ(r.status, 201) << spelling << ": " << r.body;
+      EXPECT_EQ(body(r)["method"], c.name) << spelling;
+    }
+  request["method"] = "psychic";
+  const Reply r = s->handle("POST", "/api/sessions", request.dump());
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(body(r)["error"].get<std::string>().find("field 'method': unknown method 'psychic' (known: "),
+            std::string::npos)
+      << r.body;
+  for (const std::string& name : method_names())
+    EXPECT_NE(body(r)["error"].get<std::string>().find(name), std::string::npos) << name << ": " << r.body;
 }
 
 // How the assistant decides is a session's choice, by the engine's names.
