@@ -15,7 +15,7 @@
 #include "domains/pack.hpp"
 #include "fuzz/fetch_domain.hpp"
 #include "fuzz/fuzz_target.hpp"
-#include "language/commands/command.hpp"
+#include "commands/command.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/task.hpp"
 

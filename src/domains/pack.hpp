@@ -21,10 +21,10 @@
 
 #include "heuristics/heuristic.hpp"
 #include "heuristics/registry.hpp"
-#include "language/commands/command.hpp"
-#include "language/commands/fewshot.hpp"
-#include "language/commands/language_config.hpp"
-#include "language/commands/salient.hpp"
+#include "commands/command.hpp"
+#include "commands/fewshot.hpp"
+#include "commands/language_config.hpp"
+#include "commands/salient.hpp"
 #include "model/spec.hpp"
 #include "model/turns.hpp"
 #include "pddl/plan.hpp"
@@ -238,7 +238,7 @@ struct PackSpec {
   std::string name;         // the PDDL domain name the pack is for
   // Hand-written corpora (files in data/language/) the embedded language
   // model trains on; empty: a corpus generated from the domain's PDDL names
-  // and command language (language/lm/domain_corpus.hpp).
+  // and command language (lm/domain_corpus.hpp).
   std::vector<std::string> embedded_corpus;
   std::string code;         // built-in code behind the pack ("" none)
   std::string source;       // the file it was read from ("" built in)

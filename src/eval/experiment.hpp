@@ -16,7 +16,7 @@
 #include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
 namespace clips::eval {
 

@@ -11,7 +11,7 @@
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
 #include "eval/requested.hpp"
-#include "language/commands/utterance_merge.hpp"
+#include "commands/utterance_merge.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 

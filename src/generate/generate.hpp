@@ -41,7 +41,7 @@
 
 #include "domains/pack.hpp"
 #include "language/listener.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
 namespace clips::eval {
 

@@ -17,12 +17,12 @@
 
 #include "data/dataset.hpp"
 #include "domains/pack.hpp"
-#include "language/commands/command.hpp"
-#include "language/commands/fewshot.hpp"
-#include "language/commands/language_config.hpp"
-#include "language/commands/term.hpp"
-#include "language/lm/language_model.hpp"
-#include "language/lm/wordnet_lexicon.hpp"
+#include "commands/command.hpp"
+#include "commands/fewshot.hpp"
+#include "commands/language_config.hpp"
+#include "commands/term.hpp"
+#include "lm/language_model.hpp"
+#include "lm/wordnet_lexicon.hpp"
 #include "pddl/plan.hpp"
 #include "pddl/task.hpp"
 

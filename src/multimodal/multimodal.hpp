@@ -17,8 +17,8 @@
 
 #include "assist/assist.hpp"
 #include "data/dataset.hpp"
-#include "language/lm/http_client.hpp"
-#include "language/lm/openai_chat.hpp"
+#include "lm/http_client.hpp"
+#include "lm/openai_chat.hpp"
 
 namespace clips::eval {
 

@@ -9,7 +9,7 @@
 #include "data/dataset.hpp"
 #include "engine/options.hpp"
 #include "inference/belief.hpp"
-#include "language/lm/cached_model.hpp"
+#include "lm/cached_model.hpp"
 #include "util/error.hpp"
 
 namespace clips::eval {

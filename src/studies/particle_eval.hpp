@@ -19,7 +19,7 @@
 #include "inference/belief.hpp"
 #include "inference/particle_belief.hpp"
 #include "inference/utterance_model.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
 namespace clips::eval {
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
 namespace clips::eval {
 

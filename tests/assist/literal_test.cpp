@@ -16,7 +16,7 @@
 
 #include "assist/literal.hpp"
 #include "domains/pack.hpp"
-#include "language/commands/grounding.hpp"
+#include "commands/grounding.hpp"
 #include "dkg_profiles.hpp"
 #include "pddl/parser.hpp"
 #include "search/astar.hpp"

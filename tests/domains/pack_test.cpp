@@ -14,7 +14,7 @@
 #include "data/dataset.hpp"
 #include <nlohmann/json.hpp>
 
-#include "language/commands/term.hpp"
+#include "commands/term.hpp"
 #include "model/spec.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"

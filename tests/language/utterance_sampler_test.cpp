@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "language/commands/enumerate.hpp"
+#include "commands/enumerate.hpp"
 #include "pddl/parser.hpp"
 
 namespace clips::language {
