@@ -10,6 +10,7 @@
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "generate/generate.hpp"
 #include "util/data_dir.hpp"

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "domains/builtin/packs.hpp"
 #include "inference/belief.hpp"
 #include "inference/temperature.hpp"
 #include "inference/utterance_model.hpp"

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "commands/enumerate.hpp"
+#include "domains/builtin/packs.hpp"
 #include "language/lm_domain.hpp"
 #include "lm/cached_model.hpp"
 #include "lm/embedded_model.hpp"

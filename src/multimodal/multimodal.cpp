@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <unordered_map>
 
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "scenes/scenes.hpp"
 #include "model/spec.hpp"
 #include "render/image.hpp"

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "data/dataset.hpp"
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 

@@ -15,6 +15,7 @@
 #include <algorithm>
 
 #include "assist/literal.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "commands/grounding.hpp"
 #include "dkg_profiles.hpp"

@@ -5,6 +5,7 @@
 // `clips generate` as a library (generate/generate.hpp): a small generated set
 // loads, every plan checks and reaches its recorded goal, the seed alone
 // decides the bytes, and impossible parameters are clear errors.
+#include "domains/builtin/packs.hpp"
 #include "generate/generate.hpp"
 
 #include <gtest/gtest.h>

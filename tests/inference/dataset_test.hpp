@@ -14,7 +14,7 @@
 
 #include "inference/belief.hpp"
 #include "pddl/plan.hpp"
-#include "domains/vh_value.hpp"
+#include "domains/vh/vh_value.hpp"
 #include "language/listener.hpp"
 #include "test_paths.hpp"
 

@@ -1,4 +1,4 @@
-#include "domains/vh_value.hpp"
+#include "domains/vh/vh_value.hpp"
 
 #include <algorithm>
 #include <regex>

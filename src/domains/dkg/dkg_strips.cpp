@@ -1,4 +1,4 @@
-#include "domains/dkg_strips.hpp"
+#include "domains/dkg/dkg_strips.hpp"
 
 #include <fmt/core.h>
 
@@ -9,7 +9,7 @@
 #include <set>
 #include <utility>
 
-#include "domains/dkg_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
 #include "pddl/sexpr.hpp"
 
 namespace clips::domains {
@@ -51,20 +51,6 @@ void collect_has_atoms(const pddl::SExpr& e, std::vector<std::pair<std::string, 
 long long scaled(double cost, int scale) { return std::llround(cost * scale); }
 
 }  // namespace
-
-int integer_cost_scale(const std::vector<double>& costs, int max_scale) {
-  for (double c : costs)
-    if (!std::isfinite(c) || c < 0) throw InputError(fmt::format("action costs must be finite and >= 0, got {}", c));
-  for (int k = 1; k <= max_scale; ++k) {
-    bool ok = std::all_of(costs.begin(), costs.end(), [k](double c) {
-      double v = c * k;
-      // Relative tolerance: binary fractions like 0.6 are never exact.
-      return std::abs(v - std::round(v)) <= 1e-9 * std::max(1.0, std::abs(v));
-    });
-    if (ok) return k;
-  }
-  throw InputError(fmt::format("no integer factor in 1..{} makes the action costs integral", max_scale));
-}
 
 StripsExport export_strips(const pddl::Task& task, const pddl::State& start, const std::string& goal,
                            const model::CostProfile& costs) {

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "domains/dkg_mask.hpp"
+#include "domains/dkg/dkg_mask.hpp"
 #include "pddl/task.hpp"
 
 namespace clips::domains {

@@ -1,4 +1,4 @@
-#include "domains/dkg_generate.hpp"
+#include "domains/dkg/dkg_generate.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "domains/dkg_mask.hpp"
+#include "domains/dkg/dkg_mask.hpp"
 #include "util/error.hpp"
 
 namespace clips::domains {

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "domains/pack.hpp"
+#include "domains/strips.hpp"  // integer_cost_scale
 #include "model/spec.hpp"
 #include "pddl/state.hpp"
 #include "pddl/task.hpp"
@@ -37,11 +38,6 @@ namespace clips::domains {
 // the task-costs profile marker, and for tasks that are not mDKG-shaped.
 StripsExport export_strips(const pddl::Task& task, const pddl::State& start, const std::string& goal,
                            const model::CostProfile& costs);
-
-// The smallest integer k in 1..max_scale with every cost * k integral (within a
-// relative tolerance, so 0.6 * 5 = 3.0000000000000004 counts); throws
-// InputError if there is none or a cost is negative or not finite.
-int integer_cost_scale(const std::vector<double>& costs, int max_scale = 1000);
 
 // Maps one exported ground action back to the original domain's action, e.g.
 // "(move-up-human c_5_3 c_5_2)" -> "(up human)",

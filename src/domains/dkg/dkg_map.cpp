@@ -1,4 +1,4 @@
-#include "domains/dkg_map.hpp"
+#include "domains/dkg/dkg_map.hpp"
 
 #include <algorithm>
 #include <deque>

@@ -1,4 +1,4 @@
-#include "domains/dkg_heuristic.hpp"
+#include "domains/dkg/dkg_heuristic.hpp"
 
 #include <algorithm>
 #include <cstring>

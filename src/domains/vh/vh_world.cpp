@@ -1,4 +1,4 @@
-#include "domains/vh_world.hpp"
+#include "domains/vh/vh_world.hpp"
 
 #include <algorithm>
 

@@ -23,7 +23,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "domains/dkg_map.hpp"
+#include "domains/dkg/dkg_map.hpp"
 #include "heuristics/heuristic.hpp"
 
 namespace clips::domains {

@@ -1,4 +1,4 @@
-#include "domains/dkg_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "domains/dkg_goals.hpp"
+#include "domains/dkg/dkg_goals.hpp"
 
 #include <map>
 #include <set>
