@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
     return fail(kExitOutOfMemory, e.what());
   } catch (const clips::lm::LmError& e) {
     return fail(kExitLanguageModel, e.what());
-  } catch (const clips::eval::MultimodalError& e) {
+  } catch (const clips::multimodal::MultimodalError& e) {
     return fail(kExitLanguageModel, e.what());
   } catch (const clips::util::SharedLibraryError& e) {
     // A part of the installation is missing (the HTTP module, libcurl).

@@ -23,7 +23,7 @@
 
 namespace fs = std::filesystem;
 
-namespace clips::eval {
+namespace clips::generate {
 
 namespace {
 
@@ -429,4 +429,4 @@ void write_dataset(const GeneratedDataset& dataset, const std::string& dir, bool
   }
 }
 
-}  // namespace clips::eval
+}  // namespace clips::generate

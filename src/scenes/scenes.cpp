@@ -8,7 +8,7 @@
 #include "render/theme.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
 
 using pddl::ObjectId;
 
@@ -247,4 +247,4 @@ void write_plan_gif(const PlanFrames& f, const std::string& path, const render::
   }
 }
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

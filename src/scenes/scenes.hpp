@@ -12,7 +12,7 @@
 #include "render/render.hpp"
 #include "render/scene.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
 
 struct SceneExtras {
   std::string caption;  // the utterance(s) spoken so far
@@ -71,4 +71,4 @@ void write_plan_png(const PlanFrames& frames, size_t index, const std::string& p
                     const render::RenderOptions& opts = {});
 render::Image render_plan_frame(const PlanFrames& frames, size_t index, const render::RenderOptions& opts = {});
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

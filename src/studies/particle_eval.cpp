@@ -12,7 +12,7 @@
 #include "lm/cached_model.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 
 namespace {
 
@@ -218,4 +218,4 @@ nlohmann::json to_json(const ParticleEvalReport& rep) {
   return j;
 }
 
-}  // namespace clips::eval
+}  // namespace clips::studies

@@ -21,7 +21,7 @@
 #include "inference/utterance_model.hpp"
 #include "lm/language_model.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 
 struct ParticleEvalOptions {
   std::string dataset;
@@ -83,4 +83,4 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& options);
 std::string format_particle_eval(const ParticleEvalReport& report);  // human-readable table
 nlohmann::json to_json(const ParticleEvalReport& report);
 
-}  // namespace clips::eval
+}  // namespace clips::studies

@@ -20,7 +20,8 @@
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::generate {
+namespace testing = eval::testing;  // the CLI test helpers (eval/support.hpp)
 namespace generate_test {
 
 using testing::TempDir;
@@ -82,4 +83,4 @@ std::vector<commands::Command> true_speaker_commands(const data::Dataset& ds, co
 
 }  // namespace generate_test
 using namespace generate_test;
-}  // namespace clips::eval
+}  // namespace clips::generate
