@@ -30,6 +30,8 @@
 #include "api/session_internals.hpp"
 #include "eval/bench.hpp"
 #include "scenes/scenes.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "render/render.hpp"
 #include "engine/json.hpp"
 #include "engine/methods.hpp"

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "render/gif.hpp"
 #include "render/theme.hpp"
 #include "util/error.hpp"

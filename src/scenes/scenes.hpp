@@ -7,10 +7,16 @@
 #include <vector>
 
 #include "data/dataset.hpp"
-#include "domains/dkg/dkg_world.hpp"
-#include "domains/vh/vh_world.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
+
+// The paper domains' world views (domains/dkg/dkg_world.hpp,
+// domains/vh/vh_world.hpp), declared only: a user of this header needs them
+// only when it draws one of those scenes.
+namespace clips::domains {
+class DkgWorld;
+class VhWorld;
+}  // namespace clips::domains
 
 namespace clips::scenes {
 

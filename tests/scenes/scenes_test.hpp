@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "scenes/scenes.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "eval/support.hpp"
 #include "render/image.hpp"
 
