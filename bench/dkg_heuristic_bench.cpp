@@ -12,8 +12,9 @@
 #include <vector>
 
 #include "data/dataset.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
-#include "domains/dkg_heuristic.hpp"
+#include "domains/dkg/dkg_heuristic.hpp"
 #include "pddl/plan.hpp"
 
 using namespace clips;

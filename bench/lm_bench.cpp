@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_model.hpp"
 
 namespace {
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "data/dataset.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "heuristics/basic.hpp"
 #include "search/astar.hpp"

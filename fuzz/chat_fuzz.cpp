@@ -1,7 +1,7 @@
 // The OpenAI-compatible /v1/chat/completions reply parser. The first byte's
 // low bit asks for a JSON-object answer (checked to parse); the rest is the body.
 #include "fuzz/fuzz_target.hpp"
-#include "language/lm/openai_chat.hpp"
+#include "lm/openai_chat.hpp"
 
 CLIPS_FUZZ_TARGET(chat) {
   using namespace clips::lm;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "fuzz/fuzz_target.hpp"
-#include "language/lm/openai_model.hpp"
+#include "lm/openai_model.hpp"
 
 CLIPS_FUZZ_TARGET(completions) {
   using namespace clips::lm;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "fuzz/fetch_domain.hpp"
 #include "fuzz/fuzz_target.hpp"

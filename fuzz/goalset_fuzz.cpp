@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "data/dataset.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "fuzz/fuzz_target.hpp"
 #include "model/spec.hpp"

@@ -12,10 +12,11 @@
 // answers without crashing.
 #include <memory>
 
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "fuzz/fetch_domain.hpp"
 #include "fuzz/fuzz_target.hpp"
-#include "language/commands/command.hpp"
+#include "commands/command.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/task.hpp"
 
@@ -32,6 +33,7 @@ CLIPS_FUZZ_TARGET(pack) {
   const pddl::Task& task = fuzz::fetch_task();
   try {
     domains::PackSpec spec = domains::parse_pack_spec(fuzz::as_text(data, size), "<pack.json>");
+    domains::check_pack_code(spec, task.domain());
     domains::check_pack_against(spec, task.domain());
     domains::derive_goal_atoms(spec, task.domain());
     const domains::PackPtr pack = domains::make_pack(std::move(spec));

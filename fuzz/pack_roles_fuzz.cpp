@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "domains/task_transform.hpp"
 #include "fuzz/fetch_domain.hpp"

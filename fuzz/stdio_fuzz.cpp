@@ -29,7 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fuzz/fuzz_target.hpp"
-#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_model.hpp"
 #include "serve/frontends.hpp"
 #include "serve/service.hpp"
 #include "util/data_dir.hpp"

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "fuzz/fuzz_target.hpp"
-#include "language/lm/embedded_model.hpp"
-#include "language/lm/utterance_tokens.hpp"
+#include "lm/embedded_model.hpp"
+#include "lm/utterance_tokens.hpp"
 
 namespace {
 

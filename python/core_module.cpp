@@ -30,6 +30,8 @@
 #include "api/session_internals.hpp"
 #include "eval/bench.hpp"
 #include "scenes/scenes.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "render/render.hpp"
 #include "engine/json.hpp"
 #include "engine/methods.hpp"
@@ -406,10 +408,10 @@ struct Event {
 std::string scene_png(const clips::domains::Pack& pack, const clips::pddl::Task& task, const clips::pddl::State& s) {
   switch (pack.spec().scene) {
     case clips::domains::SceneKind::Grid:
-      return clips::render::encode_png(clips::render::render_png(clips::eval::dkg_scene(clips::domains::DkgWorld(task), s)));
+      return clips::render::encode_png(clips::render::render_png(clips::scenes::dkg_scene(clips::domains::DkgWorld(task), s)));
     case clips::domains::SceneKind::Cards:
       return clips::render::encode_png(
-          clips::render::render_png(clips::eval::vh_scene(pack, clips::domains::VhWorld(task), s)));
+          clips::render::render_png(clips::scenes::vh_scene(pack, clips::domains::VhWorld(task), s)));
     case clips::domains::SceneKind::Text: break;
   }
   throw clips::InputError("the " + pack.name() + " pack's scene is text: there is no picture (print the session)");

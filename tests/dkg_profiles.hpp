@@ -4,6 +4,7 @@
 // pack, so the pack's data is the only definition.
 #include <string>
 
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 
 namespace clips::fixtures {

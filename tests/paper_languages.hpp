@@ -2,7 +2,7 @@
 // The paper domains' language settings (clips-spec.md 7.4), written out by
 // hand for the command tests. The shipped packs define them in data; the pack
 // tests check that the packs' settings equal these.
-#include "language/commands/language_config.hpp"
+#include "commands/language_config.hpp"
 
 namespace clips::commands {
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes corpus-dkg.tsv and corpus-vh.tsv: command<TAB>utterance training pairs
-for the embedded language model (src/language/lm/embedded_model.hpp).
+for the embedded language model (src/lm/embedded_model.hpp).
 
 All phrasings below were written for this corpus (none is taken from the CLIPS
 dataset). Sentences are produced by combining hand-written request frames, verb

@@ -5,7 +5,7 @@
 
 #include "clips/version.hpp"
 #include "engine/engine.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 #include "util/data_dir.hpp"
 
 namespace clips {

@@ -12,7 +12,7 @@
 #include "data/dataset.hpp"
 #include "eval/experiment.hpp"
 #include "language/listener.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
 namespace clips::app {
 

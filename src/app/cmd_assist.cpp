@@ -42,7 +42,7 @@ void register_assist(CLI::App& app) {
                   util::or_list(methods) + " (which literal methods apply is the domain pack's choice: "
                   "literal_listener.methods)")
       ->check(CLI::IsMember(methods));
-  auto mm = std::make_shared<eval::MultimodalOptions>();
+  auto mm = std::make_shared<multimodal::MultimodalOptions>();
   cmd->add_option("--chat-base-url", mm->base_url,
                   "multimodal: OpenAI-compatible chat endpoint (or $CLIPS_CHAT_BASE_URL, else the OpenAI API)")
       ->check(HttpUrl);

@@ -90,11 +90,11 @@ void emit(const eval::BenchReport& rep, const std::string& out, const std::strin
                rep.failed_plans || rep.failed_methods ? " (failures: see the error column)" : "");
   }
   if (!report.empty()) {
-    eval::ReportOptions ro;
+    report::ReportOptions ro;
     ro.dir = report;
     ro.paper_json = util::data_dir() + "/paper/results.json";
     ro.jobs = jobs;
-    fmt::print(stderr, "wrote {}\n", eval::write_report(rep, ro));
+    fmt::print(stderr, "wrote {}\n", report::write_report(rep, ro));
   }
   // A method that failed on some plan is a failure too, though the others' rows stand.
   g_exit_code = rep.failed_plans == 0 && rep.failed_methods == 0 ? kExitOk : kExitSomeFailed;
@@ -174,7 +174,7 @@ void register_particles(CLI::App* bench) {
       "Compare particle inference with exact inference on every plan: total variation between their goal "
       "posteriors (CLIPS modality; after the last step and averaged over steps) and the time and refinement "
       "ratios particle / exact, per particle count. Single-threaded, one plan at a time");
-  auto o = std::make_shared<eval::ParticleEvalOptions>();
+  auto o = std::make_shared<studies::ParticleEvalOptions>();
   auto lm = std::make_shared<LmFlags>();
   auto out = std::make_shared<std::string>();
   add_dataset_option(cmd, o->dataset, "Dataset directory (doors-keys-gems or virtual-home layout)");
@@ -208,11 +208,11 @@ void register_particles(CLI::App* bench) {
     o->speaker_rule = inference::parse_speaker_rule(lm->speaker_rule);
     o->utterance_timing = inference::parse_utterance_timing(lm->utterance_timing);
     o->assistant_turns = inference::parse_assistant_turns(lm->assistant_turns);
-    const eval::ParticleEvalReport rep = eval::run_particle_eval(*o);
-    fmt::print("{}", eval::format_particle_eval(rep));
+    const studies::ParticleEvalReport rep = studies::run_particle_eval(*o);
+    fmt::print("{}", studies::format_particle_eval(rep));
     if (!out->empty()) {
       std::ofstream f(*out, std::ios::binary | std::ios::trunc);
-      f << eval::to_json(rep).dump(2) << "\n";
+      f << studies::to_json(rep).dump(2) << "\n";
       if (!f) throw InputError("cannot write " + *out);
     }
   });

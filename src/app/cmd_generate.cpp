@@ -10,6 +10,7 @@
 
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "generate/generate.hpp"
 #include "util/data_dir.hpp"
@@ -90,7 +91,7 @@ void register_generate(CLI::App& app) {
   add_lm_options(cmd, o->lm);
   cmd->callback([o] {
     if (o->out.empty()) throw UsageError("--out is empty: give the folder to write the dataset to");
-    eval::GenerateOptions g;
+    generate::GenerateOptions g;
     const size_t x = o->size.find('x');
     g.map.width = std::stoi(o->size.substr(0, x));
     g.map.height = std::stoi(o->size.substr(x + 1));
@@ -110,8 +111,8 @@ void register_generate(CLI::App& app) {
     if (!o->force && std::filesystem::exists(o->out) && !std::filesystem::is_empty(o->out))
       throw InputError("--out " + o->out + " is not empty (give --force to replace the dataset there)");
 
-    const eval::GeneratedDataset ds = eval::generate_dataset(g);
-    eval::write_dataset(ds, o->out, o->force);
+    const generate::GeneratedDataset ds = generate::generate_dataset(g);
+    generate::write_dataset(ds, o->out, o->force);
     if (!o->quiet)
       for (const auto& p : ds.plans)
         fmt::print("{:<14} goal={:<5} T={:<3} completion={:<3} options={:<12} \"{}\"\n", p.id, p.goal,

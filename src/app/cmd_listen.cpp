@@ -10,7 +10,7 @@
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
 #include "language/listener.hpp"
-#include "language/lm/readability.hpp"
+#include "lm/readability.hpp"
 #include "util/error.hpp"
 #include "util/utf8.hpp"
 

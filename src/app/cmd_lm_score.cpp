@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "app/cli.hpp"
-#include "language/commands/fewshot.hpp"
+#include "commands/fewshot.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 

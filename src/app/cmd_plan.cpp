@@ -12,6 +12,7 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "data/dataset.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "domains/task_transform.hpp"
 #include "pddl/parser.hpp"

@@ -72,7 +72,7 @@ void register_render(CLI::App& app) {
     if (o->step < -1) throw InputError(fmt::format("render: --step {} is negative", o->step));
     const int step = o->step < 0 ? T : o->step;
     auto lm = make_lm(o->lm, ds);
-    eval::PlanRun run;
+    scenes::PlanRun run;
     bool need_assist = !o->gif.empty() || step > T;
     if (need_assist) {
       eval::ExperimentOptions eo;
@@ -97,18 +97,18 @@ void register_render(CLI::App& app) {
       run.goals = inf.goals;
       for (auto& st : inf.steps) run.observed_posterior.push_back(st[inference::Modality::Both].goals);
     }
-    auto frames = eval::plan_frames(ds, p, run);
+    auto frames = scenes::plan_frames(ds, p, run);
     render::RenderOptions ro;
     ro.cell_px = o->cell;
     if (!o->out.empty()) {
       if (step >= static_cast<int>(frames.size()))
         throw InputError(fmt::format("render: --step {} is out of range for plan {}: 0..{} ({} observed, {} assisted)",
                                      step, p.id, frames.size() - 1, T, frames.assisted_steps));
-      eval::write_plan_png(frames, static_cast<size_t>(step), o->out, ro);
+      scenes::write_plan_png(frames, static_cast<size_t>(step), o->out, ro);
       fmt::print(stderr, "wrote {} (plan {}, step {}; {} observed steps)\n", o->out, p.id, step, T);
     }
     if (!o->gif.empty()) {
-      eval::write_plan_gif(frames, o->gif, ro);
+      scenes::write_plan_gif(frames, o->gif, ro);
       fmt::print(stderr, "wrote {} ({} frames: {} observed states, {} assisted steps)\n", o->gif, frames.size(), T + 1,
                  frames.assisted_steps);
     }

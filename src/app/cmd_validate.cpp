@@ -13,7 +13,7 @@
 #include "data/validate.hpp"
 #include "domains/pack.hpp"
 #include "language/listener.hpp"
-#include "language/lm/wordnet_lexicon.hpp"
+#include "lm/wordnet_lexicon.hpp"
 #include "pddl/sexpr.hpp"
 #include "util/program_name.hpp"
 #include "eval/experiment.hpp"

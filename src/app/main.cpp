@@ -16,8 +16,8 @@
 #include "app/cli.hpp"
 #include "app/exit_codes.hpp"
 #include "multimodal/multimodal.hpp"
-#include "language/lm/http_client.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/http_client.hpp"
+#include "lm/language_model.hpp"
 #include "util/error.hpp"
 #include "util/program_name.hpp"
 #include "util/shared_library.hpp"
@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
     return fail(kExitOutOfMemory, e.what());
   } catch (const clips::lm::LmError& e) {
     return fail(kExitLanguageModel, e.what());
-  } catch (const clips::eval::MultimodalError& e) {
+  } catch (const clips::multimodal::MultimodalError& e) {
     return fail(kExitLanguageModel, e.what());
   } catch (const clips::util::SharedLibraryError& e) {
     // A part of the installation is missing (the HTTP module, libcurl).

@@ -19,12 +19,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-eval::ScalingPoint find_point(const std::string& spec, bool quick) {
+studies::ScalingPoint find_point(const std::string& spec, bool quick) {
   const auto colon = spec.find(':');
   if (colon == std::string::npos) throw UsageError("--scaling-point " + spec + " is not AXIS:VALUE (e.g. goals:16)");
   const std::string axis = spec.substr(0, colon), value = spec.substr(colon + 1);
   for (bool q : {quick, !quick})
-    for (const auto& p : eval::scaling_points(q))
+    for (const auto& p : studies::scaling_points(q))
       if (p.axis == axis && std::to_string(p.value) == value) return p;
   throw UsageError("--scaling-point " + spec + ": no such point (axes side, goals, steps; see --scaling)");
 }
@@ -45,13 +45,13 @@ std::string self_exe() {
 }  // namespace
 
 int run_scaling_cli(const ScalingCli& cli) {
-  eval::ScalingSettings settings = cli.settings;
+  studies::ScalingSettings settings = cli.settings;
   if (settings.domain_file.empty()) settings.domain_file = util::data_path("domains/doors-keys-gems/domain.pddl");
   if (!cli.point.empty()) {
-    const eval::ScalingPoint point = find_point(cli.point, cli.quick);
+    const studies::ScalingPoint point = find_point(cli.point, cli.quick);
     auto lm = language::make_language_model(cli.lm_kind, {});
-    const eval::ScalingRow row = eval::run_scaling_point(point, settings, *lm);
-    fmt::print("{}\n", eval::scaling_csv_line(row));
+    const studies::ScalingRow row = studies::run_scaling_point(point, settings, *lm);
+    fmt::print("{}\n", studies::scaling_csv_line(row));
     std::fflush(stdout);
     return row.error.empty() ? kExitOk : kExitSomeFailed;
   }
@@ -60,9 +60,9 @@ int run_scaling_cli(const ScalingCli& cli) {
   fs::create_directories(cli.out, ec);
   if (ec) throw InputError("--out " + cli.out + ": " + ec.message());
   const std::string exe = self_exe();
-  std::vector<eval::ScalingRow> rows;
+  std::vector<studies::ScalingRow> rows;
   int failed = 0;
-  const auto points = eval::scaling_points(cli.quick);
+  const auto points = studies::scaling_points(cli.quick);
   for (size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     // Every argument is a number or a fixed word, so no quoting is needed.
@@ -79,9 +79,9 @@ int run_scaling_cli(const ScalingCli& cli) {
     pipe.reset();
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     const std::string line = text.substr(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
-    eval::ScalingRow row;
+    studies::ScalingRow row;
     try {
-      row = eval::parse_scaling_csv_line(line);
+      row = studies::parse_scaling_csv_line(line);
     } catch (const InputError&) {
       row.point = p;
       row.error = "the point's process printed no result";
@@ -94,10 +94,10 @@ int run_scaling_cli(const ScalingCli& cli) {
                row.decision_p95_ms, row.max_rss_mb, row.p_true_mean, row.budget_stops,
                row.time_budget_hit ? ", stopped by --point-seconds" : "", row.error.empty() ? "" : "; " + row.error);
     rows.push_back(row);
-    std::string csv = eval::scaling_csv_header() + "\n";
-    for (const auto& r : rows) csv += eval::scaling_csv_line(r) + "\n";
+    std::string csv = studies::scaling_csv_header() + "\n";
+    for (const auto& r : rows) csv += studies::scaling_csv_line(r) + "\n";
     write_file(fs::path(cli.out) / "scaling.csv", csv);
-    write_file(fs::path(cli.out) / "scaling.svg", eval::scaling_svg(rows));
+    write_file(fs::path(cli.out) / "scaling.svg", studies::scaling_svg(rows));
   }
   fmt::print(stderr, "wrote {0}/scaling.csv and {0}/scaling.svg\n", cli.out);
   return failed == 0 ? kExitOk : kExitSomeFailed;

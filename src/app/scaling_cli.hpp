@@ -15,7 +15,7 @@ struct ScalingCli {
   bool quick = false;       // --quick
   std::string point;        // --scaling-point AXIS:VALUE (one point, CSV line on stdout)
   std::string out = "docs/scaling";
-  eval::ScalingSettings settings;
+  studies::ScalingSettings settings;
   std::string lm_kind = "embedded";
 };
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "language/commands/language_config.hpp"
+#include "commands/language_config.hpp"
 #include "model/turns.hpp"
 #include "search/rtaa.hpp"
 #include "util/choices.hpp"

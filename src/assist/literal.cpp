@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "language/commands/grounding.hpp"
-#include "language/commands/sampling.hpp"
+#include "commands/grounding.hpp"
+#include "commands/sampling.hpp"
 
 namespace clips::assist {
 

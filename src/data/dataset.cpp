@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "domains/builtin/packs.hpp"
 #include "domains/task_transform.hpp"
 #include "pddl/parser.hpp"
 #include "util/utf8.hpp"

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "domains/strips.hpp"
-#include "pddl/parser.hpp"
 #include "pddl/sexpr.hpp"
 #include "util/data_dir.hpp"
 #include "util/error.hpp"
@@ -419,9 +418,6 @@ void check_pack_against(const PackSpec& spec, const pddl::Domain& d) {
   auto type = [&](const std::string& field, const std::string& name) {
     if (!d.find_type(name)) fail(field, "the domain has no type '" + name + "'");
   };
-  if (const std::string misfit = code_misfit(spec.code, d); !misfit.empty())
-    fail("code", "\"" + spec.code + "\" is the compiled code of the paper's " + spec.code +
-                     " domain, and this domain does not have its shape (" + misfit + "): leave \"code\" out");
   // The turns and freezing clips adds (and the no-op, when it compiles the turns).
   const TaskTransform added = plan_task_transform(spec, d);
   if (!added.add_noop) {
@@ -728,51 +724,52 @@ void check_implicit_types(const PackSpec& spec, const pddl::Domain& d) {
 }
 }  // namespace
 
-PackPtr find_pack(const pddl::Domain& domain, const std::string& dir) {
-  std::optional<PackSpec> spec;
-  bool declared = true;
-  if (!dir.empty() && fs::exists(fs::path(dir) / "pack.json")) {
-    spec = load_pack_spec((fs::path(dir) / "pack.json").string());
-  } else {
-    std::error_code ec;
-    const fs::path shared = fs::path(util::data_dir()) / "domains" / domain.name / "pack.json";
-    if (fs::exists(shared, ec)) spec = load_pack_spec(shared.string());
-    else spec = builtin_pack_spec(domain.name);
-  }
-  if (!spec) {
-    // The generic pack: every default (docs/domains.md).
-    PackSpec s;
-    s.name = domain.name;
-    s.generic = true;
-    s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
-    s.language.domain = s.name;
-    s.language.salient_actions.clear();
-    s.fewshot.domain = s.name;
-    spec = std::move(s);
-    declared = false;  // nothing to check: `clips plan` works on any domain
-  }
-  if (declared) return pack_for_domain(std::move(*spec), domain);
-  check_implicit_types(*spec, domain);
-  derive_goal_atoms(*spec, domain);
-  derive_location_predicates(*spec, domain);
-  return make_pack(std::move(*spec));
+std::optional<PackSpec> declared_pack_spec(const pddl::Domain& domain, const std::string& dir) {
+  if (!dir.empty() && fs::exists(fs::path(dir) / "pack.json")) return load_pack_spec((fs::path(dir) / "pack.json").string());
+  std::error_code ec;
+  const fs::path shared = fs::path(util::data_dir()) / "domains" / domain.name / "pack.json";
+  if (fs::exists(shared, ec)) return load_pack_spec(shared.string());
+  return builtin_pack_spec(domain.name);
 }
 
-PackPtr pack_for_domain(PackSpec spec, const pddl::Domain& domain) {
+PackSpec generic_pack_spec(const pddl::Domain& domain) {
+  PackSpec s;
+  s.name = domain.name;
+  s.generic = true;
+  s.grounding.keep_dynamic = {"frozen", "nograb", "noput"};
+  s.language.domain = s.name;
+  s.language.salient_actions.clear();
+  s.fewshot.domain = s.name;
+  // Nothing to check against the domain: `clips plan` works on any domain.
+  check_implicit_types(s, domain);
+  derive_goal_atoms(s, domain);
+  derive_location_predicates(s, domain);
+  return s;
+}
+
+PackSpec pack_spec_for_domain(PackSpec spec, const pddl::Domain& domain) {
   check_implicit_types(spec, domain);
   check_pack_against(spec, domain);
   spec.transform = plan_task_transform(spec, domain);
   derive_goal_atoms(spec, domain);
   derive_location_predicates(spec, domain);
-  return make_pack(std::move(spec));
+  return spec;
 }
 
-DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir) {
-  auto parsed = std::make_shared<const pddl::Domain>(pddl::load_domain(domain_file));
-  DomainWithPack out;
-  out.pack = find_pack(*parsed, dir);
-  out.domain = prepare_domain(out.pack->spec(), std::move(parsed));
-  return out;
+std::string domain_misfit(const pddl::Domain& d, const DomainNeeds& needs) {
+  for (const char* t : needs.types)
+    if (!d.find_type(t)) return std::string("no type '") + t + "'";
+  for (const auto& [name, arity] : needs.predicates) {
+    const auto p = d.find_predicate(name);
+    if (!p || d.predicates[static_cast<size_t>(*p)].arg_types.size() != arity)
+      return "no predicate '" + std::string(name) + "' of " + std::to_string(arity) + " arguments";
+  }
+  for (const auto& [name, arity] : needs.functions) {
+    const auto f = d.find_function(name);
+    if (!f || d.functions[static_cast<size_t>(*f)].arg_types.size() != arity)
+      return "no function (" + std::string(name) + (arity ? " ?o" : "") + ")";
+  }
+  return "";
 }
 
 }  // namespace clips::domains

@@ -21,10 +21,10 @@
 
 #include "heuristics/heuristic.hpp"
 #include "heuristics/registry.hpp"
-#include "language/commands/command.hpp"
-#include "language/commands/fewshot.hpp"
-#include "language/commands/language_config.hpp"
-#include "language/commands/salient.hpp"
+#include "commands/command.hpp"
+#include "commands/fewshot.hpp"
+#include "commands/language_config.hpp"
+#include "commands/salient.hpp"
 #include "model/spec.hpp"
 #include "model/turns.hpp"
 #include "pddl/plan.hpp"
@@ -240,7 +240,7 @@ struct PackSpec {
   std::string name;         // the PDDL domain name the pack is for
   // Hand-written corpora (files in data/language/) the embedded language
   // model trains on; empty: a corpus generated from the domain's PDDL names
-  // and command language (language/lm/domain_corpus.hpp).
+  // and command language (lm/domain_corpus.hpp).
   std::vector<std::string> embedded_corpus;
   std::string code;         // built-in code behind the pack ("" none)
   std::string source;       // the file it was read from ("" built in)
@@ -480,37 +480,33 @@ void derive_location_predicates(PackSpec& spec, const pddl::Domain& domain);
 // (a block on a block), whatever language.destinations says.
 void derive_destinations(PackSpec& spec, const pddl::Domain& domain);
 
-// The pack for a domain:
+// Finding a domain's pack, in three parts so that the compiled hooks (a
+// spec's "code", src/domains/dkg and src/domains/vh) stay out of this
+// library: domains/builtin/packs.hpp joins them (find_pack, make_pack).
+// The declared spec of a domain, the first of:
 //   1. `<dir>/pack.json` when `dir` is given and holds one;
 //   2. `<data>/domains/<domain name>/pack.json` (util::data_dir());
-//   3. the compiled-in pack of that name (doors-keys-gems, virtual-home);
-//   4. the generic pack: everything defaulted (see docs/domains.md).
-// A declared pack is checked against the domain (check_pack_against) and
-// carries what clips adds to it (PackSpec::transform).
-PackPtr find_pack(const pddl::Domain& domain, const std::string& dir = "");
-// A declared spec (a file's or a text's) made the pack of a domain: checked
-// against it, with what clips adds and what it derives from the domain (goal
-// atoms, location predicates). find_pack's last step.
-PackPtr pack_for_domain(PackSpec spec, const pddl::Domain& domain);
-// A domain file and its pack as clips grounds them: find_pack on the file's
-// folder (or `dir`), and the domain with the pack's task transformations
-// applied (task_transform.hpp), which problems are parsed against.
-struct DomainWithPack {
-  std::shared_ptr<const pddl::Domain> domain;
-  PackPtr pack;
+//   3. the compiled-in spec of that name (builtin_pack_spec);
+// none when the domain has no pack.
+std::optional<PackSpec> declared_pack_spec(const pddl::Domain& domain, const std::string& dir = "");
+// The generic spec of a domain without a pack: everything defaulted (see
+// docs/domains.md), with what it derives from the domain.
+PackSpec generic_pack_spec(const pddl::Domain& domain);
+// A declared spec made the spec of a domain: checked against it
+// (check_pack_against), with what clips adds (PackSpec::transform) and what
+// it derives from the domain (goal atoms, location predicates).
+PackSpec pack_spec_for_domain(PackSpec spec, const pddl::Domain& domain);
+// What a pack's compiled hooks read from a domain: types, and predicates and
+// functions with their arity.
+struct DomainNeeds {
+  std::vector<const char*> types;
+  std::vector<std::pair<const char*, size_t>> predicates, functions;  // name, arity
 };
-DomainWithPack load_domain_with_pack(const std::string& domain_file, const std::string& dir);
-// A pack from a spec: its "code" picks the compiled hooks ("" none).
-PackPtr make_pack(PackSpec spec);
-// What a domain lacks of what the compiled hooks of `code` read (the types,
-// predicates and functions of the paper's domain they were written for),
-// e.g. "no function (walls)"; "" when it has all of it (or `code` is "").
-std::string code_misfit(const std::string& code, const pddl::Domain& domain);
+// What the domain lacks of `needs`, e.g. "no function (walls)"; "" when nothing.
+std::string domain_misfit(const pddl::Domain& domain, const DomainNeeds& needs);
 // The compiled-in specs (equal to data/domains/<name>/pack.json; tested).
 std::vector<std::string> builtin_pack_names();
 std::optional<PackSpec> builtin_pack_spec(const std::string& name);
-// The compiled-in pack of that name; InputError listing the known ones.
-PackPtr builtin_pack(const std::string& name);
 
 std::string to_string(GoalSource s);
 std::string to_string(SceneKind s);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <set>
 
-#include "domains/dkg_strips.hpp"  // integer_cost_scale
 #include "util/error.hpp"
 
 namespace clips::domains {
@@ -95,6 +94,20 @@ std::string unique_name(const std::string& base, std::set<std::string>& taken) {
 }
 
 }  // namespace
+
+int integer_cost_scale(const std::vector<double>& costs, int max_scale) {
+  for (double c : costs)
+    if (!std::isfinite(c) || c < 0) throw InputError(fmt::format("action costs must be finite and >= 0, got {}", c));
+  for (int k = 1; k <= max_scale; ++k) {
+    bool ok = std::all_of(costs.begin(), costs.end(), [k](double c) {
+      double v = c * k;
+      // Relative tolerance: binary fractions like 0.6 are never exact.
+      return std::abs(v - std::round(v)) <= 1e-9 * std::max(1.0, std::abs(v));
+    });
+    if (ok) return k;
+  }
+  throw InputError(fmt::format("no integer factor in 1..{} makes the action costs integral", max_scale));
+}
 
 StripsExport export_grounded_strips(const pddl::Task& task, const pddl::State& start, const std::string& goal,
                                             const model::CostProfile& costs) {

@@ -2,7 +2,7 @@
 // A grounded task compiled to plain STRIPS PDDL (domain + problem) with
 // integer action costs, for any pack: an outside classical planner such as
 // Fast Downward can then check clips' optimal plans. (Doors-Keys-Gems keeps
-// its own compilation, dkg_strips.hpp, which also turns its numeric grid
+// its own compilation, dkg/dkg_strips.hpp, which also turns its numeric grid
 // into atoms.)
 //
 // What is exported:
@@ -42,5 +42,10 @@ namespace clips::domains {
 // to "".
 StripsExport export_grounded_strips(const pddl::Task& task, const pddl::State& start, const std::string& goal,
                                     const model::CostProfile& costs);
+
+// The smallest integer k in 1..max_scale with every cost * k integral (within a
+// relative tolerance, so 0.6 * 5 = 3.0000000000000004 counts); throws
+// InputError if there is none or a cost is negative or not finite.
+int integer_cost_scale(const std::vector<double>& costs, int max_scale = 1000);
 
 }  // namespace clips::domains

@@ -1,4 +1,5 @@
 #include "engine/engine.hpp"
+#include "domains/builtin/packs.hpp"
 #include "engine/hypotheses.hpp"
 #include "engine/options.hpp"
 #include "engine/runs.hpp"

@@ -23,7 +23,7 @@
 #include "clips/types.hpp"
 #include "data/dataset.hpp"
 #include "domains/pack.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 #include "pddl/task.hpp"
 
 namespace clips::inference {

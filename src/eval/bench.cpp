@@ -20,7 +20,7 @@
 #include <thread>
 
 #include "eval/methods.hpp"
-#include "language/commands/fewshot.hpp"
+#include "commands/fewshot.hpp"
 #include "language/listener.hpp"
 #include "language/lm_domain.hpp"
 #include "pddl/parser.hpp"

@@ -17,7 +17,7 @@
 #include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
 #include "inference/utterance_model.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
 namespace clips::eval {
 
@@ -104,7 +104,7 @@ struct ExperimentOptions {
   ParticleOptions particles;
   // (issue 8) The multimodal-LLM baseline's chat endpoint; with the default
   // method list it runs only when configured().
-  MultimodalOptions multimodal;
+  multimodal::MultimodalOptions multimodal;
   // Node budget of each lookahead search of inference and assistance
   // (InferenceOptions::refine.max_nodes); 0: the default, 2^18.
   size_t refine_max_nodes = 0;

@@ -11,7 +11,7 @@
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
 #include "eval/requested.hpp"
-#include "language/commands/utterance_merge.hpp"
+#include "commands/utterance_merge.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 
@@ -194,7 +194,7 @@ class MultimodalMethod : public Method {
   void run(const PlanContext& ctx, MethodResult& r) const override {
     try {
       const inference::Belief& belief = *ctx.inference.belief;
-      auto mm = run_multimodal(ctx.dataset, ctx.plan, ctx.setup, ctx.inference.goals,
+      auto mm = multimodal::run_multimodal(ctx.dataset, ctx.plan, ctx.setup, ctx.inference.goals,
                                belief.policies()[ctx.true_hypothesis], ctx.options.multimodal);
       r.goal_posterior = mm.answer.goal_posterior;
       r.p_true_goal = r.goal_posterior.at(ctx.inference.true_goal);

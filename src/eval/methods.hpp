@@ -23,7 +23,7 @@
 #include "data/dataset.hpp"
 #include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 #include "util/choices.hpp"
 
 namespace clips::eval {

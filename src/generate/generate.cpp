@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "domains/builtin/packs.hpp"
 #include "inference/belief.hpp"
 #include "inference/temperature.hpp"
 #include "inference/utterance_model.hpp"
@@ -22,7 +23,7 @@
 
 namespace fs = std::filesystem;
 
-namespace clips::eval {
+namespace clips::generate {
 
 namespace {
 
@@ -428,4 +429,4 @@ void write_dataset(const GeneratedDataset& dataset, const std::string& dir, bool
   }
 }
 
-}  // namespace clips::eval
+}  // namespace clips::generate

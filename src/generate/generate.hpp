@@ -41,9 +41,9 @@
 
 #include "domains/pack.hpp"
 #include "language/listener.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
-namespace clips::eval {
+namespace clips::generate {
 
 struct GenerateOptions {
   std::string domain_file;          // the PDDL domain (copied into the dataset)
@@ -89,4 +89,4 @@ GeneratedDataset generate_dataset(const GenerateOptions& options, lm::LanguageMo
 // (problems/, plans/, utterances/) so no stale plan is left behind.
 void write_dataset(const GeneratedDataset& dataset, const std::string& dir, bool force);
 
-}  // namespace clips::eval
+}  // namespace clips::generate

@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "language/lm/readability.hpp"
+#include "lm/readability.hpp"
 #include "pddl/plan.hpp"
 #include "search/astar.hpp"
 #include "util/error.hpp"

@@ -56,7 +56,7 @@
 #include "inference/particle_belief.hpp"
 #include "inference/temperature.hpp"
 #include "inference/utterance_model.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 #include "model/spec.hpp"
 #include "search/rtaa.hpp"
 #include "util/worker_pool.hpp"

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <limits>
 
-#include "language/commands/enumerate.hpp"
-#include "language/lm/wordnet_lexicon.hpp"
+#include "commands/enumerate.hpp"
+#include "lm/wordnet_lexicon.hpp"
 #include "language/lm_domain.hpp"
-#include "language/commands/salient.hpp"
+#include "commands/salient.hpp"
 #include "util/error.hpp"
 #include "util/numbered_names.hpp"
 

@@ -34,10 +34,10 @@
 #include <vector>
 
 #include "data/dataset.hpp"
-#include "language/commands/command.hpp"
-#include "language/commands/fewshot.hpp"
-#include "language/commands/language_config.hpp"
-#include "language/lm/language_model.hpp"
+#include "commands/command.hpp"
+#include "commands/fewshot.hpp"
+#include "commands/language_config.hpp"
+#include "lm/language_model.hpp"
 #include "search/rtaa.hpp"
 #include "search/tied_rollouts.hpp"
 #include "util/choices.hpp"

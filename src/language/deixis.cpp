@@ -3,7 +3,7 @@
 #include <cctype>
 #include <regex>
 
-#include "language/lm/wordnet_lexicon.hpp"
+#include "lm/wordnet_lexicon.hpp"
 
 namespace clips::language {
 

@@ -11,11 +11,12 @@
 
 #include <set>
 
-#include "language/commands/enumerate.hpp"
+#include "commands/enumerate.hpp"
+#include "domains/builtin/packs.hpp"
 #include "language/lm_domain.hpp"
-#include "language/lm/cached_model.hpp"
-#include "language/lm/embedded_model.hpp"
-#include "language/lm/openai_model.hpp"
+#include "lm/cached_model.hpp"
+#include "lm/embedded_model.hpp"
+#include "lm/openai_model.hpp"
 #include "pddl/parser.hpp"
 #include "util/data_dir.hpp"
 #include "util/error.hpp"

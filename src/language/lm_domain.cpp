@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "language/lm/wordnet_lexicon.hpp"
+#include "lm/wordnet_lexicon.hpp"
 #include "util/numbered_names.hpp"
 
 namespace clips::language {

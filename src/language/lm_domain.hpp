@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "language/commands/language_config.hpp"
-#include "language/lm/domain_corpus.hpp"
+#include "commands/language_config.hpp"
+#include "lm/domain_corpus.hpp"
 #include "pddl/ast.hpp"
 
 namespace clips::language {

@@ -7,9 +7,9 @@
 #include <limits>
 #include <set>
 
-#include "language/commands/fewshot.hpp"
+#include "commands/fewshot.hpp"
 #include "language/listener.hpp"
-#include "language/lm/domain_corpus.hpp"
+#include "lm/domain_corpus.hpp"
 #include "language/lm_domain.hpp"
 #include "util/error.hpp"
 

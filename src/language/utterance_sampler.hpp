@@ -29,9 +29,9 @@
 #include <vector>
 
 #include "domains/pack.hpp"
-#include "language/commands/command.hpp"
-#include "language/commands/salient.hpp"
-#include "language/lm/language_model.hpp"
+#include "commands/command.hpp"
+#include "commands/salient.hpp"
+#include "lm/language_model.hpp"
 #include "pddl/ast.hpp"
 #include "util/rng.hpp"
 

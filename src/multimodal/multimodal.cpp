@@ -13,14 +13,14 @@
 #include <nlohmann/json.hpp>
 #include <unordered_map>
 
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "scenes/scenes.hpp"
 #include "model/spec.hpp"
 #include "render/image.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::multimodal {
 
 using pddl::ActionId;
 using pddl::State;
@@ -133,8 +133,8 @@ lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanReco
   const std::string assistant = pack.roles().assistant;
   const std::string objects = pack.object_list(*task);
   switch (pack.spec().scene) {
-    case domains::SceneKind::Cards: img = render::render_png(vh_scene(pack, domains::VhWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
-    case domains::SceneKind::Grid: img = render::render_png(dkg_scene(domains::DkgWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
+    case domains::SceneKind::Cards: img = render::render_png(scenes::vh_scene(pack, domains::VhWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
+    case domains::SceneKind::Grid: img = render::render_png(scenes::dkg_scene(domains::DkgWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
     case domains::SceneKind::Text:
       throw InputError("the multimodal baseline needs a picture, and the " + pack.name() + " pack draws none (scene \"text\")");
   }
@@ -256,4 +256,4 @@ MultimodalRun run_multimodal(const data::Dataset& ds, const data::PlanRecord& pl
   return run;
 }
 
-}  // namespace clips::eval
+}  // namespace clips::multimodal

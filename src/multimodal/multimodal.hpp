@@ -17,10 +17,10 @@
 
 #include "assist/assist.hpp"
 #include "data/dataset.hpp"
-#include "language/lm/http_client.hpp"
-#include "language/lm/openai_chat.hpp"
+#include "lm/http_client.hpp"
+#include "lm/openai_chat.hpp"
 
-namespace clips::eval {
+namespace clips::multimodal {
 
 // A malformed answer (not JSON, a missing or mistyped field, an unknown
 // goal). The message names the field.
@@ -74,4 +74,4 @@ MultimodalRun run_multimodal(const data::Dataset& ds, const data::PlanRecord& pl
                              const std::vector<std::string>& goals, const search::Policy& truth,
                              const MultimodalOptions& options);
 
-}  // namespace clips::eval
+}  // namespace clips::multimodal

@@ -16,7 +16,7 @@
 #include "render/theme.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::report {
 
 namespace fs = std::filesystem;
 
@@ -68,17 +68,17 @@ const nlohmann::json* paper_value(const nlohmann::json* paper, const std::string
 
 // One horizontal bar chart for a metric: our mean with a standard-error
 // whisker, the paper's mean as a black diamond.
-std::string metric_svg(const Column& col, const BenchReport& r, const nlohmann::json* paper) {
+std::string metric_svg(const Column& col, const eval::BenchReport& r, const nlohmann::json* paper) {
   struct Row {
     std::string method;
-    const MeanSe* ours;
+    const eval::MeanSe* ours;
     const nlohmann::json* theirs;
   };
   std::vector<Row> rows;
   double hi = col.unit_range ? 1.0 : 0.0;
   for (auto& s : r.summary) {
     auto it = s.metrics.find(col.key);
-    const MeanSe* ours = it == s.metrics.end() ? nullptr : &it->second;
+    const eval::MeanSe* ours = it == s.metrics.end() ? nullptr : &it->second;
     const nlohmann::json* theirs = paper_value(paper, s.method, col.key);
     if (!ours && !theirs) continue;
     rows.push_back({s.method, ours, theirs});
@@ -117,7 +117,7 @@ std::string metric_svg(const Column& col, const BenchReport& r, const nlohmann::
     svg += fmt::format("<text x=\"{}\" y=\"{}\" class=\"lb\" text-anchor=\"end\">{}</text>\n", label_w - 6, y + 15,
                        html_escape(rows[i].method));
     if (rows[i].ours) {
-      const MeanSe& m = *rows[i].ours;
+      const eval::MeanSe& m = *rows[i].ours;
       svg += fmt::format(
           "<rect x=\"{}\" y=\"{}\" width=\"{:.1f}\" height=\"{}\" fill=\"{}\"><title>ours {:.3f} (se {:.3f})</title></rect>\n",
           label_w, y + 4, X(m.mean) - label_w, row_h - 8, rows[i].method == "clips" ? "#4e79a7" : "#9fb8d3", m.mean,
@@ -138,7 +138,7 @@ std::string metric_svg(const Column& col, const BenchReport& r, const nlohmann::
   return svg;
 }
 
-std::string cell(const MeanSe* m) {
+std::string cell(const eval::MeanSe* m) {
   if (!m) return "<td class=\"na\">\u2013</td>";
   return fmt::format("<td>{:.2f} <span class=\"se\">({:.2f})</span></td>", m->mean, m->se);
 }
@@ -225,7 +225,7 @@ std::string posterior_svg(const std::vector<std::string>& goals, const std::vect
   return svg;
 }
 
-std::string report_html(const BenchReport& r, const std::string& paper_json_path, const std::vector<PlanAssets>& assets) {
+std::string report_html(const eval::BenchReport& r, const std::string& paper_json_path, const std::vector<PlanAssets>& assets) {
   nlohmann::json paper_all;
   if (std::ifstream in(paper_json_path); in) {
     try {
@@ -234,7 +234,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
     }
   }
   // Only the paper's own datasets are shown beside its numbers.
-  const nlohmann::json* paper = paper_results_for(r, paper_all);
+  const nlohmann::json* paper = eval::paper_results_for(r, paper_all);
   const size_t per_metric = paper ? 2 : 1;
 
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -245,7 +245,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
                    "{:.1f} s wall \u00b7 max RSS {:.0f} MiB</div>\n",
                    html_escape(r.dataset), r.plans.size(), r.failed_plans, html_escape(r.lm), r.wall_seconds,
                    r.max_rss_kb / 1024.0);
-  if (const std::string note = partial_note(r); !note.empty())
+  if (const std::string note = eval::partial_note(r); !note.empty())
     h += "<div class=\"meta\"><b>" + html_escape(note) + "</b></div>\n";
 
   // ---- results table
@@ -266,7 +266,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
     }
     h += "</tr>\n";
   }
-  if (paper_has_method(paper_all, r.domain, "multimodal") && !multimodal_ran) {
+  if (eval::paper_has_method(paper_all, r.domain, "multimodal") && !multimodal_ran) {
     h += fmt::format("<tr class=\"skipped\"><td class=\"m\">multimodal</td><td colspan=\"{}\">skipped: no chat endpoint "
                      "configured (--chat-base-url or $CLIPS_CHAT_BASE_URL)</td></tr>\n",
                      kColumns.size() * per_metric);
@@ -280,16 +280,16 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
   h += "</div>\n";
 
   // ---- splits, instruction categories, calibration
-  if (const Breakdown b = breakdown(r); !b.empty()) {
+  if (const eval::Breakdown b = eval::breakdown(r); !b.empty()) {
     if (!b.splits.empty() || !b.categories.empty())
       h += "<h2>By split and by instruction category</h2>\n<pre class=\"breakdown\">" +
-           html_escape(breakdown_table(Breakdown{b.splits, b.categories, {}})) + "</pre>\n";
+           html_escape(eval::breakdown_table(eval::Breakdown{b.splits, b.categories, {}})) + "</pre>\n";
     if (!b.calibration.empty()) {
       h += "<h2>Calibration of the goal posterior after the instruction</h2>\n<p class=\"meta\">Every candidate "
            "goal of every plan is one forecast: its posterior probability after the instruction against whether it "
            "was the true goal, in ten bins. Dashed: perfect calibration; dot size: the bin's share of the "
            "forecasts.</p>\n<div class=\"charts\">\n";
-      for (const auto& c : b.calibration) h += reliability_svg(c);
+      for (const auto& c : b.calibration) h += eval::reliability_svg(c);
       h += "</div>\n";
     }
   }
@@ -299,7 +299,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
        "</th><th>precision / recall<br>CLIPS</th><th>run (observed + CLIPS assistance)</th><th>goal posterior over "
        "observed steps</th></tr>\n";
   for (size_t i = 0; i < r.plans.size(); ++i) {
-    const PlanOutcome& p = r.plans[i];
+    const eval::PlanOutcome& p = r.plans[i];
     const PlanAssets* a = i < assets.size() ? &assets[i] : nullptr;
     h += "<tr id=\"plan-" + html_escape(p.plan_id) + "\"><td class=\"m\">" + html_escape(p.plan_id) + "</td>";
     if (!p.error.empty()) {
@@ -310,7 +310,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
     h += "<td class=\"utt\">";
     if (a && !a->utterance.empty()) h += "\u201c" + html_escape(a->utterance) + "\u201d<br>";
     h += "true goal: <b>" + html_escape(truth) + "</b></td>";
-    const MethodResult* c = p.find("clips");
+    const eval::MethodResult* c = p.find("clips");
     if (c && c->error.empty()) {
       h += c->p_true_goal ? fmt::format("<td>{:.2f}</td>", *c->p_true_goal) : "<td class=\"na\">\u2013</td>";
       h += fmt::format("<td>{:.2f} / {:.2f}</td>", c->precision, c->recall);
@@ -333,7 +333,7 @@ std::string report_html(const BenchReport& r, const std::string& paper_json_path
   return h;
 }
 
-std::string write_report(const BenchReport& r, const ReportOptions& o) {
+std::string write_report(const eval::BenchReport& r, const ReportOptions& o) {
   std::error_code ec;
   fs::create_directories(fs::path(o.dir) / "plans", ec);
   if (ec) throw InputError("cannot create report directory " + o.dir + "/plans: " + ec.message());
@@ -351,7 +351,7 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
     for (;;) {
       size_t i = next++;
       if (i >= r.plans.size()) return;
-      const PlanOutcome& p = r.plans[i];
+      const eval::PlanOutcome& p = r.plans[i];
       PlanAssets& a = assets[i];
       if (!p.error.empty()) continue;
       try {
@@ -360,7 +360,7 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
         auto task = ds->task(rec.problem_id);
         std::vector<std::string> colours;
         for (size_t g = 0; g < p.goals.size(); ++g)
-          colours.push_back(css_colour(goal_colour(*task, ds->pack(), p.goals[g]), g));
+          colours.push_back(css_colour(scenes::goal_colour(*task, ds->pack(), p.goals[g]), g));
         std::vector<int> utt;
         for (auto& u : rec.observed.utterances) {
           utt.push_back(u.index);
@@ -370,19 +370,19 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
         a.svg = "plans/" + p.plan_id + "_posterior.svg";
         std::ofstream(fs::path(o.dir) / a.svg) << a.svg_text;
         if (o.render_gifs && ds->pack().spec().scene != domains::SceneKind::Text) {
-          PlanRun run;
+          scenes::PlanRun run;
           run.goals = p.goals;
           run.observed_posterior = p.goal_posterior_steps;
-          if (const MethodResult* c = p.find("clips"); c && c->error.empty()) {
+          if (const eval::MethodResult* c = p.find("clips"); c && c->error.empty()) {
             run.final_posterior = c->goal_posterior;
             run.assisted = c->plan;
             run.label = "CLIPS";
           }
-          auto frames = plan_frames(*ds, rec, run);
+          auto frames = scenes::plan_frames(*ds, rec, run);
           render::RenderOptions ro;
           ro.cell_px = o.cell_px;
           std::string rel = "plans/" + p.plan_id + ".gif";
-          write_plan_gif(frames, (fs::path(o.dir) / rel).string(), ro);
+          scenes::write_plan_gif(frames, (fs::path(o.dir) / rel).string(), ro);
           a.gif = rel;
         }
       } catch (const std::exception& e) {
@@ -401,4 +401,4 @@ std::string write_report(const BenchReport& r, const ReportOptions& o) {
   return path;
 }
 
-}  // namespace clips::eval
+}  // namespace clips::report

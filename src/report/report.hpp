@@ -10,7 +10,7 @@
 #include "eval/bench.hpp"
 #include "render/scene.hpp"
 
-namespace clips::eval {
+namespace clips::report {
 
 struct ReportOptions {
   std::string dir;
@@ -30,10 +30,10 @@ struct PlanAssets {
 
 // Writes DIR/report.html and DIR/plans/*; returns the page's path. Throws
 // InputError when DIR cannot be written.
-std::string write_report(const BenchReport& report, const ReportOptions& options);
+std::string write_report(const eval::BenchReport& report, const ReportOptions& options);
 
 // The pieces, exposed for tests.
-std::string report_html(const BenchReport& report, const std::string& paper_json_path,
+std::string report_html(const eval::BenchReport& report, const std::string& paper_json_path,
                         const std::vector<PlanAssets>& assets);  // assets: one per report.plans entry (or empty)
 // Goal posterior over observed steps: one line per goal; `colours` are CSS colours.
 std::string posterior_svg(const std::vector<std::string>& goals, const std::vector<std::string>& colours,
@@ -41,4 +41,4 @@ std::string posterior_svg(const std::vector<std::string>& goals, const std::vect
                           const std::vector<int>& utterance_steps, int width = 360, int height = 180);
 std::string html_escape(const std::string& text);
 
-}  // namespace clips::eval
+}  // namespace clips::report

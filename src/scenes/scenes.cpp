@@ -4,11 +4,13 @@
 #include <filesystem>
 #include <memory>
 
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "render/gif.hpp"
 #include "render/theme.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
 
 using pddl::ObjectId;
 
@@ -247,4 +249,4 @@ void write_plan_gif(const PlanFrames& f, const std::string& path, const render::
   }
 }
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

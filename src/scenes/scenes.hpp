@@ -7,12 +7,18 @@
 #include <vector>
 
 #include "data/dataset.hpp"
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 
-namespace clips::eval {
+// The paper domains' world views (domains/dkg/dkg_world.hpp,
+// domains/vh/vh_world.hpp), declared only: a user of this header needs them
+// only when it draws one of those scenes.
+namespace clips::domains {
+class DkgWorld;
+class VhWorld;
+}  // namespace clips::domains
+
+namespace clips::scenes {
 
 struct SceneExtras {
   std::string caption;  // the utterance(s) spoken so far
@@ -71,4 +77,4 @@ void write_plan_png(const PlanFrames& frames, size_t index, const std::string& p
                     const render::RenderOptions& opts = {});
 render::Image render_plan_frame(const PlanFrames& frames, size_t index, const render::RenderOptions& opts = {});
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

@@ -4,8 +4,8 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "language/commands/term.hpp"
-#include "language/lm/wordnet_lexicon.hpp"
+#include "commands/term.hpp"
+#include "lm/wordnet_lexicon.hpp"
 
 namespace clips::serve {
 

@@ -269,7 +269,7 @@ json PlaySession::decision() const {
 json PlaySession::posterior() const {
   json j = engine::to_json(engine_.posterior(), engine_.method());
   // The colour each goal is drawn in (the page's bars and chart).
-  for (auto& g : j["goals"]) g["colour"] = eval::goal_colour(engine_.task(), engine_.pack(), g["goal"].get<std::string>());
+  for (auto& g : j["goals"]) g["colour"] = scenes::goal_colour(engine_.task(), engine_.pack(), g["goal"].get<std::string>());
   return j;
 }
 
@@ -289,7 +289,7 @@ json PlaySession::scene() const {
   if (text_) return text_->draw(s, engine_.previous_state(), engine_.active_agent());
   json j;
   if (dkg_) {
-    const auto g = eval::dkg_scene(*dkg_, s);
+    const auto g = scenes::dkg_scene(*dkg_, s);
     j["kind"] = "grid";
     j["width"] = g.width;
     j["height"] = g.height;
@@ -313,7 +313,7 @@ json PlaySession::scene() const {
     j["objects"] = std::move(objs);
     j["active"] = g.active_agent;
   } else {
-    const auto h = eval::vh_scene(engine_.pack(), *vh_, s);
+    const auto h = scenes::vh_scene(engine_.pack(), *vh_, s);
     j["kind"] = "home";
     json fixtures = json::array();
     for (const auto& f : h.fixtures) fixtures.push_back({{"name", f.name}, {"piles", f.piles}});

@@ -16,10 +16,10 @@
 #include <nlohmann/json.hpp>
 
 #include "data/dataset.hpp"
-#include "domains/dkg_world.hpp"
-#include "domains/vh_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "engine/engine.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 #include "serve/command_words.hpp"
 #include "serve/text_scene.hpp"
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "data/dataset.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 #include "serve/exchange_log.hpp"
 #include "serve/messages.hpp"
 #include "serve/play_session.hpp"

@@ -10,10 +10,10 @@
 #include "data/dataset.hpp"
 #include "engine/options.hpp"
 #include "inference/belief.hpp"
-#include "language/lm/cached_model.hpp"
+#include "lm/cached_model.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 
 namespace {
 
@@ -219,4 +219,4 @@ nlohmann::json to_json(const ParticleEvalReport& rep) {
   return j;
 }
 
-}  // namespace clips::eval
+}  // namespace clips::studies

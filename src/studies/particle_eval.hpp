@@ -19,9 +19,9 @@
 #include "inference/belief.hpp"
 #include "inference/particle_belief.hpp"
 #include "inference/utterance_model.hpp"
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 
 struct ParticleEvalOptions {
   std::string dataset;
@@ -83,4 +83,4 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& options);
 std::string format_particle_eval(const ParticleEvalReport& report);  // human-readable table
 nlohmann::json to_json(const ParticleEvalReport& report);
 
-}  // namespace clips::eval
+}  // namespace clips::studies

@@ -15,7 +15,7 @@
 #include "generate/generate.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 
 namespace fs = std::filesystem;
 
@@ -94,7 +94,7 @@ ScalingRow run_scaling_point(const ScalingPoint& point, const ScalingSettings& s
   const auto t0 = Clock::now();
   fs::path dir;
   try {
-    GenerateOptions g;
+    generate::GenerateOptions g;
     g.domain_file = settings.domain_file;
     g.map.width = g.map.height = point.side;
     g.map.counts = {{"gem", point.gems}, {"key", point.keys}, {"door", point.doors}};
@@ -104,16 +104,16 @@ ScalingRow run_scaling_point(const ScalingPoint& point, const ScalingSettings& s
     g.temperature = point.temperature;
     g.max_steps = point.max_steps;
     g.refine_nodes = settings.max_nodes;  // drawn from the model inference below assumes
-    const GeneratedDataset ds_files = generate_dataset(g, &lm);
+    const generate::GeneratedDataset ds_files = generate::generate_dataset(g, &lm);
     dir = fs::temp_directory_path() / fmt::format("clips-scaling-{}-{}-{}", ::getpid(), point.axis, point.value);
-    write_dataset(ds_files, dir.string(), true);
+    generate::write_dataset(ds_files, dir.string(), true);
     row.generate_seconds = since(t0);
 
     const auto t1 = Clock::now();
     const data::Dataset ds = data::Dataset::load(dir.string());
     std::vector<double> belief, decisions, observed;
     double p_true = 0;
-    ExperimentOptions o;
+    eval::ExperimentOptions o;
     o.methods = {"clips"};
     o.refine_max_nodes = settings.max_nodes;
     std::vector<double> step_seconds;
@@ -129,8 +129,8 @@ ScalingRow run_scaling_point(const ScalingPoint& point, const ScalingSettings& s
       }
       const data::PlanRecord p = point.steps > 0 ? with_prefix(plan, point.steps) : plan;
       step_seconds.clear();
-      const PlanOutcome out = evaluate_plan(ds, p, lm, o);
-      const MethodResult* r = out.find("clips");
+      const eval::PlanOutcome out = eval::evaluate_plan(ds, p, lm, o);
+      const eval::MethodResult* r = out.find("clips");
       if (!out.error.empty() || !r || !r->error.empty() || !r->p_true_goal) {
         ++row.plans_failed;
         if (row.error.empty()) row.error = !out.error.empty() ? out.error : r ? r->error : "no clips result";
@@ -329,4 +329,4 @@ std::string scaling_svg(const std::vector<ScalingRow>& rows) {
   return svg;
 }
 
-}  // namespace clips::eval
+}  // namespace clips::studies

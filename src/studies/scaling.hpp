@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "language/lm/language_model.hpp"
+#include "lm/language_model.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 
 struct ScalingPoint {
   std::string axis;  // "side", "goals" or "steps"
@@ -81,4 +81,4 @@ std::string scaling_svg(const std::vector<ScalingRow>& rows);
 // Nearest-rank quantile of unsorted values (0 for none).
 double scaling_quantile(std::vector<double> xs, double q);
 
-}  // namespace clips::eval
+}  // namespace clips::studies

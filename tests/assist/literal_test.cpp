@@ -15,8 +15,9 @@
 #include <algorithm>
 
 #include "assist/literal.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
-#include "language/commands/grounding.hpp"
+#include "commands/grounding.hpp"
 #include "dkg_profiles.hpp"
 #include "pddl/parser.hpp"
 #include "search/astar.hpp"

@@ -10,6 +10,7 @@
 #include "assist/assist.hpp"
 #include "assist/request.hpp"
 #include "data/dataset.hpp"
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 #include "heuristics/basic.hpp"
 #include "model/spec.hpp"

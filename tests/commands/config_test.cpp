@@ -1,4 +1,4 @@
-#include "language/commands/language_config.hpp"
+#include "commands/language_config.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
-#include "language/commands/enumerate.hpp"
+#include "commands/enumerate.hpp"
 
 namespace clips::commands {
 namespace {

@@ -9,8 +9,8 @@
 
 #include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
-#include "language/commands/enumerate.hpp"
-#include "language/commands/fewshot.hpp"
+#include "commands/enumerate.hpp"
+#include "commands/fewshot.hpp"
 #include "util/error.hpp"
 
 namespace clips::commands {

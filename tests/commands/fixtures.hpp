@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "language/commands/language_config.hpp"
-#include "language/commands/salient.hpp"
-#include "language/commands/term.hpp"
+#include "commands/language_config.hpp"
+#include "commands/salient.hpp"
+#include "commands/term.hpp"
 
 namespace clips::commands::testing {
 

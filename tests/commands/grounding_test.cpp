@@ -3,7 +3,7 @@
 
 #include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
-#include "language/commands/grounding.hpp"
+#include "commands/grounding.hpp"
 
 namespace clips::commands {
 namespace {

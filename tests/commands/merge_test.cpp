@@ -3,8 +3,8 @@
 
 #include "paper_languages.hpp"
 #include "commands/fixtures.hpp"
-#include "language/commands/enumerate.hpp"
-#include "language/commands/utterance_merge.hpp"
+#include "commands/enumerate.hpp"
+#include "commands/utterance_merge.hpp"
 
 namespace clips::commands {
 namespace {

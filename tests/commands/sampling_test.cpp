@@ -1,7 +1,7 @@
 // Systematic sampling of ranked commands (spec 9.8).
 #include <gtest/gtest.h>
 
-#include "language/commands/sampling.hpp"
+#include "commands/sampling.hpp"
 
 namespace clips::commands {
 namespace {

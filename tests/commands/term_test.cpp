@@ -1,4 +1,4 @@
-#include "language/commands/term.hpp"
+#include "commands/term.hpp"
 
 #include <gtest/gtest.h>
 

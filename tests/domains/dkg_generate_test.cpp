@@ -1,14 +1,15 @@
 // Random Doors-Keys-Gems maps (Pack::generate_problem of the mDKG pack): the
 // PDDL and the picture agree, gems sit behind doors that matter, the draw
 // depends only on the seed, and impossible counts are clear errors.
-#include "domains/dkg_generate.hpp"
+#include "domains/builtin/packs.hpp"
+#include "domains/dkg/dkg_generate.hpp"
 
 #include <gtest/gtest.h>
 
 #include <deque>
 #include <set>
 
-#include "domains/dkg_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
 #include "domains/pack.hpp"
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"

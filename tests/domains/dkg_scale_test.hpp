@@ -10,9 +10,10 @@
 
 #include <vector>
 
-#include "domains/dkg_generate.hpp"
-#include "domains/dkg_heuristic.hpp"
-#include "domains/dkg_mask.hpp"
+#include "domains/builtin/packs.hpp"
+#include "domains/dkg/dkg_generate.hpp"
+#include "domains/dkg/dkg_heuristic.hpp"
+#include "domains/dkg/dkg_mask.hpp"
 #include "domains/pack.hpp"
 #include "model/spec.hpp"
 #include "pddl/parser.hpp"

@@ -1,6 +1,7 @@
 // Domain packs: reading pack.json (every error names the field), the
 // compiled-in packs of the paper domains, and what a pack derives from its
 // data (goals, true goals, profiles, options, candidates).
+#include "domains/builtin/packs.hpp"
 #include "domains/pack.hpp"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@
 #include "data/dataset.hpp"
 #include <nlohmann/json.hpp>
 
-#include "language/commands/term.hpp"
+#include "commands/term.hpp"
 #include "model/spec.hpp"
 #include "pddl/parser.hpp"
 #include "util/error.hpp"

@@ -1,6 +1,7 @@
 // Task transformations (domains/task_transform.hpp): what clips adds to a
 // domain without the turn idiom or `frozen`, that domains with them are left
 // exactly as parsed, and the errors that name the action or the pack field.
+#include "domains/builtin/packs.hpp"
 #include "domains/task_transform.hpp"
 
 #include <gtest/gtest.h>

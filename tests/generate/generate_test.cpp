@@ -1,6 +1,6 @@
 #include "generate/generate_test.hpp"
 
-namespace clips::eval {
+namespace clips::generate {
 namespace generate_test {
 TEST(GenerateDataset, TheSpeakerPlansAsInferenceDoes) {
   // The instruction's command is drawn from the commands the CLIPS speaker
@@ -118,4 +118,4 @@ TEST(GenerateDataset, RefusesToWriteOverAnotherFolderWithoutForce) {
 
 }  // namespace generate_test
 
-}  // namespace clips::eval
+}  // namespace clips::generate

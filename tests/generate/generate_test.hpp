@@ -5,6 +5,7 @@
 // `clips generate` as a library (generate/generate.hpp): a small generated set
 // loads, every plan checks and reaches its recorded goal, the seed alone
 // decides the bytes, and impossible parameters are clear errors.
+#include "domains/builtin/packs.hpp"
 #include "engine/runs.hpp"
 #include "generate/generate.hpp"
 
@@ -20,7 +21,8 @@
 #include "pddl/parser.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::generate {
+namespace testing = eval::testing;  // the CLI test helpers (eval/support.hpp)
 namespace generate_test {
 
 using testing::TempDir;
@@ -82,4 +84,4 @@ std::vector<commands::Command> true_speaker_commands(const data::Dataset& ds, co
 
 }  // namespace generate_test
 using namespace generate_test;
-}  // namespace clips::eval
+}  // namespace clips::generate

@@ -4,6 +4,7 @@
 // (docs/testing.md, "Labels").
 // Belief updates on a hand-made corridor where every number can be worked out
 // on paper, plus the do-operator and the three modalities.
+#include "domains/builtin/packs.hpp"
 #include "engine/runs.hpp"
 #include "inference/belief.hpp"
 

@@ -15,7 +15,7 @@
 #include "engine/runs.hpp"
 #include "inference/belief.hpp"
 #include "pddl/plan.hpp"
-#include "domains/vh_value.hpp"
+#include "domains/vh/vh_value.hpp"
 #include "language/listener.hpp"
 #include "test_paths.hpp"
 

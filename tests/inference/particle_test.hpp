@@ -5,6 +5,7 @@
 // Particle (SMC) inference: the filter's bookkeeping on made-up likelihoods,
 // then Belief's particle mode against exact enumeration on the hand-made
 // corridor and on the repo's example plans.
+#include "domains/builtin/packs.hpp"
 #include "inference/particle_belief.hpp"
 
 #include <gtest/gtest.h>

@@ -7,6 +7,7 @@
 #include <memory>
 #include <thread>
 
+#include "domains/builtin/packs.hpp"
 #include "inference/belief.hpp"
 #include "pddl/parser.hpp"
 #include "test_paths.hpp"

@@ -1,11 +1,12 @@
 // The utterance sampler of `clips generate` (language/utterance_sampler.hpp):
 // renaming qualifier values, the listener's part of a joint command, and
 // which pool a phrasing is drawn from, with a stand-in scorer.
+#include "domains/builtin/packs.hpp"
 #include "language/utterance_sampler.hpp"
 
 #include <gtest/gtest.h>
 
-#include "language/commands/enumerate.hpp"
+#include "commands/enumerate.hpp"
 #include "pddl/parser.hpp"
 
 namespace clips::language {

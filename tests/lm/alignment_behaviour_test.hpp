@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_model.hpp"
 #include "lm/embedded_prompts.hpp"
 
 namespace clips::lm {

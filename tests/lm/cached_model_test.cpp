@@ -4,7 +4,7 @@
 #include <atomic>
 #include <thread>
 
-#include "language/lm/cached_model.hpp"
+#include "lm/cached_model.hpp"
 
 namespace clips::lm {
 namespace {

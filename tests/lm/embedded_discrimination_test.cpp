@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_model.hpp"
 #include "lm/embedded_prompts.hpp"
 
 namespace clips::lm {

@@ -18,10 +18,10 @@
 #include <fstream>
 #include <thread>
 
-#include "language/lm/alignment_model.hpp"
-#include "language/lm/embedded_model.hpp"
-#include "language/lm/utterance_tokens.hpp"
-#include "language/lm/wordnet_lexicon.hpp"
+#include "lm/alignment_model.hpp"
+#include "lm/embedded_model.hpp"
+#include "lm/utterance_tokens.hpp"
+#include "lm/wordnet_lexicon.hpp"
 #include "util/error.hpp"
 #include "lm/embedded_prompts.hpp"
 

@@ -20,7 +20,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "language/lm/base64.hpp"
+#include "lm/base64.hpp"
 
 namespace clips::lm::fake {
 

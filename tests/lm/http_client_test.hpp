@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "language/lm/http_client.hpp"
+#include "lm/http_client.hpp"
 #include "lm/fake_openai_server.hpp"
 
 namespace clips::lm {

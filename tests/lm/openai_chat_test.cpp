@@ -4,8 +4,8 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
-#include "language/lm/base64.hpp"
-#include "language/lm/openai_chat.hpp"
+#include "lm/base64.hpp"
+#include "lm/openai_chat.hpp"
 #include "lm/fake_openai_server.hpp"
 
 namespace clips::lm {

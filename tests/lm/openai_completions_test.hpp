@@ -15,7 +15,7 @@
 #include <thread>
 #include <nlohmann/json.hpp>
 
-#include "language/lm/openai_model.hpp"
+#include "lm/openai_model.hpp"
 #include "lm/fake_openai_server.hpp"
 
 namespace clips::lm {

@@ -8,7 +8,7 @@
 #include <chrono>
 #include <string>
 
-#include "language/lm/openai_model.hpp"
+#include "lm/openai_model.hpp"
 #include "lm/fake_llm_servers.hpp"
 
 namespace clips::lm {

@@ -27,7 +27,7 @@
 #include <thread>
 #include <vector>
 
-#include "language/lm/openai_model.hpp"
+#include "lm/openai_model.hpp"
 
 namespace clips::lm {
 namespace {

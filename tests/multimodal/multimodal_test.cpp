@@ -1,6 +1,6 @@
 #include "multimodal/multimodal_test.hpp"
 
-namespace clips::eval {
+namespace clips::multimodal {
 namespace multimodal_test {
 TEST(MultimodalParse, StrictJson) {
   auto a = parse_multimodal_answer(
@@ -37,4 +37,4 @@ TEST(MultimodalParse, ErrorsNameTheField) {
 
 }  // namespace multimodal_test
 
-}  // namespace clips::eval
+}  // namespace clips::multimodal

@@ -13,9 +13,14 @@
 #include "language/listener.hpp"
 #include "lm/fake_openai_server.hpp"
 
-namespace clips::eval {
+namespace clips::multimodal {
+namespace testing = eval::testing;  // the CLI test helpers (eval/support.hpp)
 namespace multimodal_test {
 
+using eval::ExperimentOptions;
+using eval::MethodResult;
+using eval::PlanOutcome;
+using eval::evaluate_plan;
 using lm::fake::FakeFaults;
 using lm::fake::FakeOpenAiServer;
 using lm::fake::FakeReply;
@@ -76,4 +81,4 @@ const json kGoodAnswer = {{"goal_probabilities", {{"gem1", 0.1}, {"gem2", 0.05},
 
 }  // namespace multimodal_test
 using namespace multimodal_test;
-}  // namespace clips::eval
+}  // namespace clips::multimodal

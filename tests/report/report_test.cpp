@@ -1,15 +1,15 @@
 #include "report/report_test.hpp"
 
-namespace clips::eval {
+namespace clips::report {
 namespace report_test {
 // The latency figures' quantiles: the value at rank floor(q (n - 1)).
 TEST(BenchLatency, QuantilesAreTheBenchmarksRanks) {
-  const LatencyStats l = LatencyStats::of({5, 1, 4, 2, 3, 10, 6, 7, 8, 9, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21});
+  const eval::LatencyStats l = eval::LatencyStats::of({5, 1, 4, 2, 3, 10, 6, 7, 8, 9, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21});
   EXPECT_EQ(l.n, 21u);
   EXPECT_EQ(l.median, 11);
   EXPECT_EQ(l.p95, 20);
   EXPECT_EQ(l.max, 21);
-  EXPECT_EQ(LatencyStats::of({}).n, 0u);
+  EXPECT_EQ(eval::LatencyStats::of({}).n, 0u);
 }
 
 TEST(ReportHtml, EscapesAndPosteriorSvg) {
@@ -23,4 +23,4 @@ TEST(ReportHtml, EscapesAndPosteriorSvg) {
 
 }  // namespace report_test
 
-}  // namespace clips::eval
+}  // namespace clips::report

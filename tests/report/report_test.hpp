@@ -15,7 +15,8 @@
 #include "eval/support.hpp"
 #include "render/image.hpp"
 
-namespace clips::eval {
+namespace clips::report {
+namespace testing = eval::testing;  // the CLI test helpers (eval/support.hpp)
 namespace report_test {
 
 namespace fs = std::filesystem;
@@ -44,4 +45,4 @@ class BenchReportTest : public ::testing::Test {
 
 }  // namespace report_test
 using namespace report_test;
-}  // namespace clips::eval
+}  // namespace clips::report

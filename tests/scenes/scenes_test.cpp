@@ -1,6 +1,6 @@
 #include "scenes/scenes_test.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
 namespace scenes_test {
 TEST(Scenes, DkgInitialState) {
   auto ds = data::Dataset::load(examples_dkg());
@@ -93,4 +93,4 @@ TEST(Scenes, PlanFramesObservedThenAssisted) {
 
 }  // namespace scenes_test
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

@@ -9,10 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "scenes/scenes.hpp"
+#include "domains/dkg/dkg_world.hpp"
+#include "domains/vh/vh_world.hpp"
 #include "eval/support.hpp"
 #include "render/image.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
+namespace testing = eval::testing;  // the CLI test helpers (eval/support.hpp)
 namespace scenes_test {
 
 using testing::clips_binary;
@@ -27,4 +30,4 @@ const render::GridObject& object(const render::GridScene& s, const std::string& 
 
 }  // namespace scenes_test
 using namespace scenes_test;
-}  // namespace clips::eval
+}  // namespace clips::scenes

@@ -1,4 +1,5 @@
 #include "search/astar_test.hpp"
+#include "domains/builtin/packs.hpp"
 
 TEST(AStar, BudgetExhaustionIsAStatusAndSearchIsDeterministic) {
   auto ds = data::Dataset::load(paths::examples_dir() + "/doors-keys-gems");

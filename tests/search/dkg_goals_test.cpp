@@ -1,7 +1,7 @@
 // Unsatisfiable goal recognition for Doors-Keys-Gems.
 #include <gtest/gtest.h>
 
-#include "domains/dkg_goals.hpp"
+#include "domains/dkg/dkg_goals.hpp"
 
 using clips::domains::dkg_goal_unsatisfiable;
 

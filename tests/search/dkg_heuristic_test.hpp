@@ -21,8 +21,8 @@
 #include <unordered_map>
 
 #include "data/dataset.hpp"
-#include "domains/dkg_heuristic.hpp"
-#include "domains/dkg_map.hpp"
+#include "domains/dkg/dkg_heuristic.hpp"
+#include "domains/dkg/dkg_map.hpp"
 #include "pddl/parser.hpp"
 #include "search/rtaa.hpp"
 #include "test_paths.hpp"

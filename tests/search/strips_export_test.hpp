@@ -16,7 +16,7 @@
 #include <set>
 
 #include "data/dataset.hpp"
-#include "domains/dkg_strips.hpp"
+#include "domains/dkg/dkg_strips.hpp"
 #include "heuristics/basic.hpp"
 #include "pddl/parser.hpp"
 #include "pddl/plan.hpp"

@@ -1,6 +1,6 @@
 #include "studies/scaling_test.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 namespace scaling_test {
 TEST(Scaling, AxesVaryOneQuantityEach) {
   const auto full = scaling_points(false);
@@ -98,4 +98,4 @@ TEST(Scaling, SvgLeavesOutTimesThatWereNotMeasured) {
 
 }  // namespace scaling_test
 
-}  // namespace clips::eval
+}  // namespace clips::studies

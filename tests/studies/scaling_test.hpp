@@ -15,7 +15,7 @@
 #include "test_paths.hpp"
 #include "util/error.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 namespace scaling_test {
 
 int count(const std::string& s, const std::string& what) {
@@ -42,4 +42,4 @@ ScalingRow sample_row(const std::string& axis, int value, double ms) {
 
 }  // namespace scaling_test
 using namespace scaling_test;
-}  // namespace clips::eval
+}  // namespace clips::studies

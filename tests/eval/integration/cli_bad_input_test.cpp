@@ -13,7 +13,7 @@
 #include <string>
 
 #include "eval/support.hpp"
-#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_model.hpp"
 #include "lm/fake_openai_server.hpp"
 #include "util/error.hpp"
 

@@ -1,6 +1,6 @@
 #include "generate/generate_test.hpp"
 
-namespace clips::eval {
+namespace clips::generate {
 namespace generate_test {
 TEST(GenerateDataset, SmallSetLoadsAndEveryPlanChecks) {
   const GeneratedDataset gen = generate_dataset(small(1), &shared_lm());
@@ -58,4 +58,4 @@ TEST(GenerateDataset, TheSeedDecidesEveryByte) {
 
 }  // namespace generate_test
 
-}  // namespace clips::eval
+}  // namespace clips::generate

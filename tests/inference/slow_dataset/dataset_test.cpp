@@ -1,3 +1,4 @@
+#include "domains/builtin/packs.hpp"
 #include "inference/dataset_test.hpp"
 
 namespace clips::inference {

@@ -1,3 +1,4 @@
+#include "domains/builtin/packs.hpp"
 #include "language/listener_test.hpp"
 
 namespace clips::language {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "language/lm/embedded_model.hpp"
+#include "lm/embedded_model.hpp"
 #include "language/lm_domain.hpp"
 #include "pddl/parser.hpp"
 

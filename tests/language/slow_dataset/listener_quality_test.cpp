@@ -7,7 +7,7 @@
 #include <optional>
 #include <regex>
 
-#include "domains/dkg_world.hpp"
+#include "domains/dkg/dkg_world.hpp"
 #include "language/dataset_fixture.hpp"
 #include "language/listener.hpp"
 

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "language/lm/alignment_model.hpp"
-#include "language/lm/command_frame.hpp"
-#include "language/lm/domain_corpus.hpp"
-#include "language/lm/embedded_model.hpp"
-#include "language/lm/wordnet_lexicon.hpp"
+#include "lm/alignment_model.hpp"
+#include "lm/command_frame.hpp"
+#include "lm/domain_corpus.hpp"
+#include "lm/embedded_model.hpp"
+#include "lm/wordnet_lexicon.hpp"
 #include "pddl/parser.hpp"
 
 namespace clips::lm {

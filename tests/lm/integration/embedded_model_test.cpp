@@ -91,7 +91,7 @@ TEST(EmbeddedCache, TheTrainingVersionGoesWithWhatTrainingProduces) {
   for (size_t i = 0; i < scores.size(); ++i)
     EXPECT_NEAR(scores[i], it->second[i], 1e-6 * std::max(1.0, std::abs(it->second[i])))
         << "probe " << i << ": training changed what it produces (score " << std::setprecision(12) << scores[i]
-        << "); bump kEmbeddedTrainingVersion (src/language/lm/embedded_model.hpp) and record the new scores";
+        << "); bump kEmbeddedTrainingVersion (src/lm/embedded_model.hpp) and record the new scores";
 }
 
 TEST(EmbeddedCache, DifferentTrainingDataGetsItsOwnEntry) {

@@ -1,6 +1,6 @@
 #include "multimodal/multimodal_test.hpp"
 
-namespace clips::eval {
+namespace clips::multimodal {
 namespace multimodal_test {
 TEST_F(MultimodalServer, EndToEndOnAnExamplePlan) {
   answer(kGoodAnswer);
@@ -143,4 +143,4 @@ TEST_F(MultimodalServer, AssistAndBenchCli) {
 
 }  // namespace multimodal_test
 
-}  // namespace clips::eval
+}  // namespace clips::multimodal

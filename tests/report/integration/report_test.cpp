@@ -1,6 +1,6 @@
 #include "report/report_test.hpp"
 
-namespace clips::eval {
+namespace clips::report {
 namespace report_test {
 TEST_F(BenchReportTest, SummaryJson) {
   ASSERT_EQ(result_->status, 0) << result_->out;
@@ -101,4 +101,4 @@ TEST_F(BenchReportTest, ReportFilesAndHtml) {
 
 }  // namespace report_test
 
-}  // namespace clips::eval
+}  // namespace clips::report

@@ -1,6 +1,6 @@
 #include "scenes/scenes_test.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
 namespace scenes_test {
 TEST(Scenes, VirtualHomeSceneIfDatasetPresent) {
   if (!clips::paths::have_shared_dataset()) GTEST_SKIP() << "no shared dataset";
@@ -27,4 +27,4 @@ TEST(Scenes, VirtualHomeSceneIfDatasetPresent) {
 
 }  // namespace scenes_test
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

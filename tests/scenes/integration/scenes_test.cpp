@@ -1,6 +1,6 @@
 #include "scenes/scenes_test.hpp"
 
-namespace clips::eval {
+namespace clips::scenes {
 namespace scenes_test {
 TEST(RenderCli, PngAndBadArguments) {
   testing::TempDir tmp("render");
@@ -44,4 +44,4 @@ TEST(RenderCli, GifHasObservedAndAssistedFrames) {
 
 }  // namespace scenes_test
 
-}  // namespace clips::eval
+}  // namespace clips::scenes

@@ -1,6 +1,6 @@
 #include "studies/scaling_test.hpp"
 
-namespace clips::eval {
+namespace clips::studies {
 namespace scaling_test {
 TEST(ScalingRun, TinyPointRunsEndToEnd) {
   ScalingPoint p;
@@ -39,4 +39,4 @@ TEST(ScalingRun, TinyPointRunsEndToEnd) {
 
 }  // namespace scaling_test
 
-}  // namespace clips::eval
+}  // namespace clips::studies
