@@ -6,11 +6,6 @@ TEST(AssistantTurns, TakenLeavesTheExamplePosteriorsUnchanged) {
   expect_assistant_turns_do_not_move_posteriors(paths::examples_dir() + "/doors-keys-gems", 4);
 }
 
-TEST(AssistantTurns, TakenLeavesThePaperPosteriorsUnchanged) {
-  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
-  expect_assistant_turns_do_not_move_posteriors(paths::dkg_dataset(), 27);
-}
-
 // An utterance at the assistant's turn (observe) or after the last action
 // (hear) is explained by each hypothesis' rollout from the state. A
 // hypothesis with a stored plan from there follows it whatever is refined, so

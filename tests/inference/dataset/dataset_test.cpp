@@ -129,6 +129,12 @@ TEST(VhDataset, UtteranceExplainedFromTheStateItWasSaidIn) {
                   speak, 1e-9);
 }
 
+// The paper's 27 plans (the dataset label: it needs ../shared).
+TEST(AssistantTurns, TakenLeavesThePaperPosteriorsUnchanged) {
+  if (!paths::have_shared_dataset()) GTEST_SKIP() << "no dataset";
+  expect_assistant_turns_do_not_move_posteriors(paths::dkg_dataset(), 27);
+}
+
 }  // namespace dataset_test
 
 }  // namespace clips::inference
