@@ -764,15 +764,18 @@ enum class Distrust {
   TakeOver,      // offline Q_MDP: plans as if the assistant were frozen and acts on every turn
   PlanAlone,     // online Q_MDP: plans as if the assistant were frozen, on its own turns only
   FreezeWorld,   // pi-bar per hypothesis: the assistant is frozen in the world; the principal acts on every turn
+  Never,         // a scripted assistant: trusted to the script's end, then as TakeOver
 };
 
 // The one episode loop of the simulated assistance: from setup.start to the
 // horizon or the true goal, the principal simulated by `truth` (refined as
 // it goes), the assistant's turns decided by `decide(s, t, plan so far)`,
 // and `seen(s, a)` told of every action but the one that reaches the goal.
-template <typename Decide, typename Seen>
+// `done()`: the assistant has nothing more to do (a script used up), so the
+// principal takes over.
+template <typename Decide, typename Seen, typename Done>
 AssistResult run_episode(Episode& ep, search::Policy& truth, const model::Specification& tspec, Distrust distrust,
-                         Decide&& decide, Seen&& seen) {
+                         Decide&& decide, Seen&& seen, Done&& done) {
   const AssistSetup& setup = ep.setup;
   const pddl::Task& task = ep.task;
   AssistResult r;
@@ -803,12 +806,12 @@ AssistResult run_episode(Episode& ep, search::Policy& truth, const model::Specif
       }
     } else {
       // Trust lost is for good: the assistant, not acting any more, cannot win it back.
-      if (!solo && coop < -kLog10) {
+      if (!solo && ((distrust != Distrust::Never && coop < -kLog10) || done())) {
         solo = true;
         if (distrust == Distrust::FreezeWorld) s = model::freeze(task, s, setup.assistant);
       }
       const bool stuck = !solo && setup.impatient_principal && ep.principal_turn(s) && patience.stuck(s);
-      const bool frozen_view = stuck || (solo && distrust == Distrust::TakeOver);
+      const bool frozen_view = stuck || (solo && distrust != Distrust::FreezeWorld);
       const State s_h = frozen_view ? model::freeze(task, s, setup.assistant) : s;
       if (setup.refine) truth.refine(s_h, setup.refine_options);
       if (ep.principal_turn(s) || solo) {
@@ -851,7 +854,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
         return a;
       },
-      [](const State&, ActionId) {});
+      [](const State&, ActionId) {}, [] { return false; });
   r.decision_seconds = std::move(seconds);
   return r;
 }
@@ -870,7 +873,7 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
       [&](const State& s, int t, const AssistResult& so_far) {
         return ep.qmdp_decide(belief.hypotheses(), s, t, round_of_waits(setup, so_far.plan));
       },
-      [&](const State& pre, ActionId a) { belief.observe(pre, a); });
+      [&](const State& pre, ActionId a) { belief.observe(pre, a); }, [] { return false; });
 }
 
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
@@ -905,7 +908,7 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
             auto b = mine.value(s) > -kInf ? mine.best_action(s) : std::nullopt;
             return b ? *b : ep.assistant_wait;
           },
-          [](const State&, ActionId) {});
+          [](const State&, ActionId) {}, [] { return false; });
     }
     mean.plan_length += h.weight * run.plan_length;
     mean.plan_cost += h.weight * run.plan_cost;
@@ -919,6 +922,15 @@ AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief,
   }
   mean.goal_reached = mean.success >= 0.5;
   return mean;
+}
+
+AssistResult scripted_episode(const AssistSetup& setup, search::Policy truth, size_t length,
+                              const std::function<ActionId(const State&, size_t)>& play) {
+  Episode ep(setup);
+  size_t next = 0;
+  return run_episode(
+      ep, truth, truth.spec(), Distrust::Never, [&](const State& s, int, const AssistResult&) { return play(s, next++); },
+      [](const State&, ActionId) {}, [&] { return next >= length; });
 }
 
 bool round_of_waits(const AssistSetup& setup, const std::vector<ActionId>& actions) {

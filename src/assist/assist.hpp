@@ -171,6 +171,13 @@ AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
                          std::shared_ptr<const model::Specification> true_spec,
                          std::shared_ptr<heuristics::Heuristic> true_heuristic);
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
+// An assistant that plays a script of `length` actions (the multimodal
+// baseline's): `play(s, i)` is its action for entry i on its next turn (a
+// wait for an entry it cannot play). The principal is the simulated one of
+// the episodes above, trusting the script to its end and then finishing
+// alone, the assistant frozen.
+AssistResult scripted_episode(const AssistSetup& setup, search::Policy truth, size_t length,
+                              const std::function<pddl::ActionId(const pddl::State&, size_t)>& play);
 
 // Whether `s` is the assistant's turn (the principal is not the active agent).
 bool assistant_turn(const AssistSetup& setup, const pddl::State& s);

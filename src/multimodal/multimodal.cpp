@@ -162,74 +162,26 @@ lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanReco
 assist::AssistResult execute_assistant_actions(const assist::AssistSetup& setup, const std::vector<std::string>& actions,
                                                search::Policy truth, std::vector<std::string>& notes) {
   const pddl::Task& task = *setup.task;
-  const model::TurnTaking& turns = setup.turns();
-  const auto principal_active = turns.turn_atom(task, setup.principal);
-  const ActionId aw = turns.noop(task, setup.assistant), pw = turns.noop(task, setup.principal);
-  auto assistant = task.find_object(setup.assistant);
-  std::unordered_map<State, int, pddl::StateHash> trajectory;
-  {
-    State cur = setup.start;
-    for (size_t j = 0; j < setup.completed.size(); ++j) {
-      trajectory.try_emplace(cur, static_cast<int>(j));
-      if (!task.applicable(setup.completed[j], cur.data())) break;
-      cur = task.apply(cur, setup.completed[j]);
-    }
-  }
-  const model::Specification& tspec = truth.spec();
-  auto truth_action = [&](const State& s_h) {
-    if (truth.value(s_h) == -model::kInf) return task.test(s_h, principal_active) ? pw : aw;
-    auto a = truth.best_action(s_h);
-    return a ? *a : (task.test(s_h, principal_active) ? pw : aw);
-  };
-  assist::AssistResult r;
-  State s = setup.start;
-  size_t next = 0;
-  for (int t = setup.observed_steps + 1; t <= setup.horizon; ++t) {
-    bool solo = next >= actions.size();
-    ActionId a;
-    if (solo) {
-      State s_h = model::freeze(task, s, setup.assistant);
-      truth.refine(s_h, setup.refine_options);
-      a = truth_action(s_h);
-    } else if (task.test(s, principal_active)) {
-      auto it = trajectory.find(s);
-      if (it != trajectory.end() && task.applicable(setup.completed[it->second], s.data())) {
-        a = setup.completed[it->second];
-      } else {
-        truth.refine(s, setup.refine_options);
-        a = truth_action(s);
-      }
+  const ActionId wait = setup.turns().noop(task, setup.assistant);
+  const auto assistant = task.find_object(setup.assistant);
+  auto play = [&](const State& s, size_t i) {
+    const std::string& text = actions[i];
+    const auto found = task.find_action(text);
+    if (!found) {
+      notes.push_back("action \"" + text + "\" is not a ground action of this problem; the " + setup.assistant +
+                      " waits");
+    } else if (task.action(*found).args.empty() || !assistant || task.action(*found).args[0] != *assistant) {
+      notes.push_back("action " + text + " is not the " + setup.assistant + "'s; the " + setup.assistant + " waits");
+    } else if (!task.applicable(*found, s.data())) {
+      const auto& ga = task.action(*found);
+      notes.push_back("action " + text + " is illegal here (" + task.explain_inapplicable(ga.schema, ga.args, s) +
+                      "); the " + setup.assistant + " waits");
     } else {
-      const std::string& text = actions[next++];
-      a = aw;
-      auto found = task.find_action(text);
-      if (!found) {
-        notes.push_back("action \"" + text + "\" is not a ground action of this problem; the " + setup.assistant +
-                        " waits");
-      } else if (task.action(*found).args.empty() || !assistant || task.action(*found).args[0] != *assistant) {
-        notes.push_back("action " + text + " is not the " + setup.assistant + "'s; the " + setup.assistant + " waits");
-      } else if (!task.applicable(*found, s.data())) {
-        const auto& ga = task.action(*found);
-        notes.push_back("action " + text + " is illegal here (" + task.explain_inapplicable(ga.schema, ga.args, s) +
-                        "); the " + setup.assistant + " waits");
-      } else {
-        a = *found;
-      }
-      if (setup.option_of)
-        if (auto o = setup.option_of(a)) r.options[*o] = 1.0;
+      return *found;
     }
-    r.plan.push_back(a);
-    s = task.apply(s, a);
-    if (tspec.is_goal(s)) {
-      r.goal_reached = true;
-      break;
-    }
-  }
-  r.plan_length = static_cast<double>(r.plan.size());
-  r.plan_cost = assist::plan_cost(tspec, r.plan);
-  r.human_cost = assist::human_cost(tspec, r.plan, setup.principal);
-  r.success = r.goal_reached ? 1.0 : 0.0;
-  return r;
+    return wait;
+  };
+  return assist::scripted_episode(setup, std::move(truth), actions.size(), play);
 }
 
 MultimodalRun run_multimodal(const data::Dataset& ds, const data::PlanRecord& plan, const assist::AssistSetup& setup,

@@ -5,10 +5,10 @@
 // endpoint. The model must answer with strict JSON
 //   {"goal_probabilities": {"gem1": 0.7, ...}, "actions": ["(pickup robot key2)", ...]}
 // The assistant then plays the parsed actions on its own turns (illegal or
-// unknown ones are reported and replaced by a wait) while the simulated human
-// follows the completed plan (else the true goal's policy); once the list is
-// used up the human finishes alone. Scored with the same metrics as the
-// other methods.
+// unknown ones are reported and replaced by a wait) in the episodes' one loop
+// (assist::scripted_episode), with the simulated human of the other methods;
+// once the list is used up the human finishes alone. Scored with the same
+// metrics as the other methods.
 #include <map>
 #include <optional>
 #include <stdexcept>
