@@ -7,17 +7,12 @@
 #include "domains/dkg/dkg_heuristic.hpp"
 #include "domains/dkg/dkg_strips.hpp"
 #include "domains/dkg/dkg_world.hpp"
+#include "domains/required_object.hpp"
 #include "util/error.hpp"
 
 namespace clips::domains {
 
 namespace {
-
-pddl::ObjectId require_object(const pddl::Task& task, const std::string& name) {
-  auto o = task.find_object(name);
-  if (!o) throw InputError("the problem has no object '" + name + "' (needed by the literal listener)");
-  return *o;
-}
 
 class DkgPack : public Pack {
  public:
