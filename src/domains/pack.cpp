@@ -139,11 +139,16 @@ int Pack::true_goal_index(const pddl::Task& task, const std::vector<GoalSpec>& g
 // ---- costs ----------------------------------------------------------------------
 
 model::CostProfile Pack::default_profile() const {
-  if (spec_.roles.noop_cost == 1.0) return model::unit_profile();
+  const double effort = spec_.roles.principal_effort;
+  if (spec_.roles.noop_cost == 1.0 && effort == 1.0) return model::unit_profile();
   model::CostProfile p = model::unit_profile();
   p.name = "default";
   for (const std::string& agent : {spec_.roles.principal, spec_.roles.assistant})
     p.costs[{agent, spec_.roles.noop_action}] = spec_.roles.noop_cost;
+  if (effort != 1.0) {
+    p.effort_factors[spec_.roles.principal] = effort;
+    p.noop_action = spec_.roles.noop_action;
+  }
   return p;
 }
 

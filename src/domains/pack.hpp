@@ -59,6 +59,12 @@ struct Roles : model::TurnTaking {
   // not differ by needless actions (the paper's profiles: 0.6); VirtualHome
   // sets 1 (unit costs).
   double noop_cost = 0.6;
+  // For a pack without cost_profiles: how many times an assistant's action
+  // each action of the principal but its no-op costs in the default profile,
+  // for domains where people ask for help with what they would rather not do
+  // themselves (the paper's mDKG profiles: human moves 2, robot 1). 1 by
+  // default: docs/decisions.md ("A principal who may plan alone") has why.
+  double principal_effort = 1.0;
   // The principal's simulated moves also take the k-th completed-plan action
   // when it is legal, even off the completed trajectory (VirtualHome).
   bool principal_follows_completed_plan = false;
@@ -344,8 +350,9 @@ class Pack {
   ProfileSet profiles_for(const std::string& tag) const;
   // The declared profiles alone (or the default one).
   ProfileSet declared_profiles_for(const std::string& tag) const;
-  // The one profile of a pack without cost_profiles: every action 1, both
-  // agents' no-op roles.noop_cost ("unit" when that is 1).
+  // The one profile of a pack without cost_profiles: every assistant action
+  // 1, every principal action roles.principal_effort, both agents' no-op
+  // roles.noop_cost ("unit" when both are 1).
   model::CostProfile default_profile() const;
   // The default candidate profiles (a live session without a tag).
   std::vector<model::CostProfile> default_profiles() const { return profiles_for("").profiles; }

@@ -197,7 +197,7 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   if (doc.contains("roles")) {
     const json& r = doc["roles"];
     f.only(r, "roles", {"principal", "assistant", "noop_action", "turn_predicate", "turns", "agent_type", "horizon",
-                        "noop_cost", "principal_follows_completed_plan", "comment"});
+                        "noop_cost", "principal_effort", "principal_follows_completed_plan", "comment"});
     if (r.contains("principal")) s.roles.principal = f.text(r["principal"], "roles.principal");
     if (r.contains("assistant")) s.roles.assistant = f.text(r["assistant"], "roles.assistant");
     if (r.contains("noop_action")) s.roles.noop_action = f.text(r["noop_action"], "roles.noop_action");
@@ -222,6 +222,8 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
     }
     if (r.contains("horizon")) s.roles.horizon = f.integer(r["horizon"], "roles.horizon", 1, 100000);
     if (r.contains("noop_cost")) s.roles.noop_cost = f.number(r["noop_cost"], "roles.noop_cost", 0, false);
+    if (r.contains("principal_effort"))
+      s.roles.principal_effort = f.number(r["principal_effort"], "roles.principal_effort", 0, true, 1000);
     if (r.contains("principal_follows_completed_plan"))
       s.roles.principal_follows_completed_plan =
           f.boolean(r["principal_follows_completed_plan"], "roles.principal_follows_completed_plan");

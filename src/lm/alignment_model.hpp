@@ -308,7 +308,9 @@ class AlignmentModel {
   std::string respell(const std::string& w) const;
   std::string respelled(const std::string& w) const;  // respell(), memoised
   // The qualifier value an out-of-vocabulary word names by WordNet ("big" ->
-  // large, "tiny" -> small, "wood" -> wooden), or "" if none or several do.
+  // large, "tiny" -> small, "wood" -> wooden), or "" if none or several do;
+  // also for a plain modifier of the vocabulary, and for a value only of bags
+  // (bag_kinds_: "big" of a goal's name, where the items' size is "large").
   std::string attribute_synonym(const std::string& w) const;
   void read_place_numbers(EncodedUtterance& u) const;
   void mark_negations(EncodedUtterance& u) const;
@@ -322,6 +324,10 @@ class AlignmentModel {
   // Per vocabulary id: nonzero for a qualifier value of some training command,
   // one bit per qualifier predicate it is a value of (colour, size, ...).
   std::vector<char> attribute_word_;
+  // The bits of attribute_word_ whose predicate gives one object several
+  // values in a training command: a bag of words about it (a goal's name
+  // words), not a qualifier with one value per object.
+  uint8_t bag_kinds_ = 0;
   std::vector<double> char_first_;  // char bigram model: first char
   std::vector<double> char_next_;   // [prev * 37 + next], next 36 = end
   std::vector<double> bg_;          // background probs over the vocabulary

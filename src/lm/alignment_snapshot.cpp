@@ -14,7 +14,7 @@ namespace clips::lm {
 
 namespace {
 
-constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '3'};
+constexpr char kSnapshotMagic[8] = {'C', 'L', 'I', 'P', 'S', 'A', 'M', '4'};
 
 // FNV-1a over the payload, stored last: a snapshot damaged on disk (a flipped
 // bit in a probability) is rejected instead of scoring silently wrong.
@@ -85,6 +85,7 @@ std::string AlignmentModel::save() const {
   for (const std::string& x : words_) w.str(x);
   w.vec(word_flags_);
   w.vec(attribute_word_);
+  w.pod(bag_kinds_);
   w.vec(char_first_);
   w.vec(char_next_);
   w.vec(bg_);
@@ -127,6 +128,7 @@ std::shared_ptr<AlignmentModel> AlignmentModel::load(const std::string& bytes) {
   if (m->words_.size() != V) throw LmError("embedded LM snapshot: repeated vocabulary word");
   m->word_flags_ = r.vec<uint8_t>();
   m->attribute_word_ = r.vec<char>();
+  m->bag_kinds_ = r.pod<uint8_t>();
   m->char_first_ = r.vec<double>();
   m->char_next_ = r.vec<double>();
   m->bg_ = r.vec<double>();

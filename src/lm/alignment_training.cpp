@@ -45,14 +45,20 @@ struct Trainer {
     std::set<std::string> attributes;
     // The qualifier predicates of the training commands and the values each takes.
     std::map<std::string, std::set<std::string>> qualifier_values;
+    std::set<std::string> bag_predicates;
     for (const CommandFrame& f : frames) {
       for (const FrameGroup& g : f.groups) {
         keys.insert(verb_key(g));
         if (!g.type.empty()) keys.insert(noun_key(g));
         if (g.count >= 2) keys.insert(number_key(g.count));
         for (const std::string& a : g.attributes) attributes.insert(a);
-        for (size_t k = 0; k < g.attributes.size() && k < g.attribute_predicates.size(); ++k)
+        std::map<std::string, int> per_predicate;
+        for (size_t k = 0; k < g.attributes.size() && k < g.attribute_predicates.size(); ++k) {
           qualifier_values[g.attribute_predicates[k]].insert(g.attributes[k]);
+          // One object (a group of count 1) with two values of a predicate.
+          if (++per_predicate[g.attribute_predicates[k]] == 2 && g.count == 1)
+            bag_predicates.insert(g.attribute_predicates[k]);
+        }
       }
     }
     std::map<std::string, WordDistribution> bases;
@@ -193,6 +199,7 @@ struct Trainer {
       for (const auto& [predicate, values] : qualifier_values) {
         for (const std::string& a : values)
           M.attribute_word_[static_cast<size_t>(M.word_ids_.at(a))] |= static_cast<char>(1u << (bit % 8));
+        if (bag_predicates.count(predicate) != 0) M.bag_kinds_ |= static_cast<uint8_t>(1u << (bit % 8));
         ++bit;
       }
     }

@@ -153,9 +153,32 @@ std::string AlignmentModel::attribute_synonym(const std::string& w) const {
         b.ambiguous = true;
       }
     };
+    // A value only of bags of words (a goal's name words: "big") that is a
+    // close relative of a qualifier's value reads as that value ("large", the
+    // items' size): else the size would have no word but its own name, and
+    // the value's other relatives ("huge") would be torn between the two.
+    std::unordered_map<std::string, Best> absorbed;
+    auto kinds_of = [&](const std::string& word) -> unsigned {
+      auto it = word_ids_.find(word);
+      if (it == word_ids_.end() || static_cast<size_t>(it->second) >= attribute_word_.size()) return 0;
+      return static_cast<unsigned char>(attribute_word_[static_cast<size_t>(it->second)]);
+    };
+    for (size_t id = 0; id < attribute_word_.size() && id < words_.size(); ++id) {
+      const unsigned mine = static_cast<unsigned char>(attribute_word_[id]);
+      if (mine == 0) continue;
+      for (const auto& [word, strength] : wn.adjective_relatives(words_[id])) {
+        const unsigned theirs = kinds_of(word);
+        if (strength < 3 || theirs == 0 || (theirs & ~bag_kinds_) != 0 || (mine & ~bag_kinds_) == 0) continue;
+        Best& b = absorbed[word];
+        if (strength > b.strength) b = Best{strength, words_[id], false};
+        else if (strength == b.strength && words_[id] != b.value) b.ambiguous = true;
+      }
+    }
+    for (auto it = absorbed.begin(); it != absorbed.end();)
+      it = it->second.ambiguous ? absorbed.erase(it) : std::next(it);
     static constexpr std::string_view kSuffixes[] = {"en", "n", "ic", "lic", "y", "ish"};
     for (size_t id = 0; id < attribute_word_.size() && id < words_.size(); ++id) {
-      if (!attribute_word_[id]) continue;
+      if (!attribute_word_[id] || absorbed.count(words_[id]) != 0) continue;
       const std::string& value = words_[id];
       for (const auto& [word, strength] : wn.adjective_relatives(value))
         if (wn.word_class(word).adjective_like) offer(word, strength, value);
@@ -170,6 +193,7 @@ std::string AlignmentModel::attribute_synonym(const std::string& w) const {
     }
     for (auto& [word, b] : best)
       if (!b.ambiguous) attribute_synonyms_.emplace(word, b.value);
+    for (auto& [word, b] : absorbed) attribute_synonyms_[word] = b.value;
   });
   auto it = attribute_synonyms_.find(w);
   return it == attribute_synonyms_.end() ? std::string() : it->second;

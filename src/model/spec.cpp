@@ -7,7 +7,14 @@ namespace clips::model {
 double CostProfile::cost(const std::string& agent, const std::string& action) const {
   auto it = costs.find({agent, action});
   const double c = it == costs.end() ? default_cost : it->second;
-  return agent == scaled_agent && action != unscaled_action ? c * agent_factor : c;
+  return c * factor(agent, action);
+}
+
+double CostProfile::factor(const std::string& agent, const std::string& action) const {
+  double f = agent == scaled_agent && action != unscaled_action ? agent_factor : 1.0;
+  if (!effort_factors.empty() && action != noop_action)
+    if (auto it = effort_factors.find(agent); it != effort_factors.end()) f *= it->second;
+  return f;
 }
 
 CostProfile scaled_assistant(const CostProfile& base, std::string name, const std::string& assistant,
@@ -66,8 +73,7 @@ Specification::Specification(std::shared_ptr<const pddl::Task> task, std::string
     const std::string& name = task_->domain().actions[ga.schema].name;
     std::string agent = ga.args.empty() ? "" : task_->object_name(ga.args[0]);
     if (profile_.default_cost < 0) {
-      const bool scaled = agent == profile_.scaled_agent && name != profile_.unscaled_action;
-      action_cost_[a] = scaled ? ga.cost * profile_.agent_factor : ga.cost;
+      action_cost_[a] = ga.cost * profile_.factor(agent, name);
       continue;
     }
     action_cost_[a] = profile_.cost(agent, name);

@@ -31,11 +31,18 @@ struct CostProfile {
   std::string scaled_agent;
   std::string unscaled_action;
   double agent_factor = 1.0;
+  // Kept by every copy, the twin's too: each listed agent's actions except
+  // its no-op (`noop_action`) cost the factor times as much. The principal's
+  // effort valued above the assistant's (Pack::default_profile).
+  std::map<std::string, double> effort_factors;
+  std::string noop_action;
   // The index, in its profile set, of the profile this one is the alone twin
   // of (-1: none). The assistant values such hypotheses with that profile:
   // the twin models how the principal chooses, not what help costs.
   int twin_of = -1;
   double cost(const std::string& agent, const std::string& action) const;
+  // The factor on a listed cost of `agent`'s `action`.
+  double factor(const std::string& agent, const std::string& action) const;
 };
 
 // What an alone twin's name adds to its base's.

@@ -215,6 +215,45 @@ constexpr const char* kPantryPack = R"j({
   "assistance_options": [{"action": "take", "object_arg": 2, "object_type": "fruit"}]
 })j";
 
+// roles.principal_effort: in the default profile the principal's actions but
+// its no-op cost that many times the assistant's; the alone twin keeps it and
+// scales the assistant's on top. 1 (the default) leaves unit costs.
+TEST(PackFile, PrincipalEffortScalesThePrincipalsActionsInTheDefaultProfile) {
+  Pantry p;
+  std::string text = kPantryPack;
+  text.replace(text.find(R"("turns": ["helper", "cook"]})"), std::string(R"("turns": ["helper", "cook"]})").size(),
+               R"("turns": ["helper", "cook"], "principal_effort": 2.5})");
+  std::ofstream(p.dir / "pack.json") << text;
+  PackPtr pack = find_pack(*p.domain, p.dir.string());
+  auto task = data::ground_problem(*pack, p.domain, (p.dir / "p1.pddl").string());
+  const ProfileSet set = pack->profiles_for("");
+  ASSERT_EQ(set.profiles.size(), 2u);
+  const model::Specification base(task, "(has cook apple)", set.profiles[0]);
+  const model::Specification alone(task, "(has cook apple)", set.profiles[1]);
+  auto id = [&](const std::string& a) {
+    for (pddl::ActionId i = 0; i < task->num_actions(); ++i)
+      if (task->action_name(i) == a) return i;
+    ADD_FAILURE() << "no action " << a;
+    return pddl::ActionId{0};
+  };
+  EXPECT_DOUBLE_EQ(base.cost(id("(take cook apple)")), 2.5);
+  EXPECT_DOUBLE_EQ(base.cost(id("(wait cook)")), 0.6);
+  EXPECT_DOUBLE_EQ(base.cost(id("(take helper apple)")), 1.0);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(take cook apple)")), 2.5);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(take helper apple)")), 4.0);
+  EXPECT_DOUBLE_EQ(alone.cost(id("(wait helper)")), 0.6);
+  // The sparing plans' scaling of the principal multiplies it.
+  const model::Specification sparing(task, "(has cook apple)",
+                                     model::scaled_assistant(set.profiles[0], "s", "cook", "wait", 10));
+  EXPECT_DOUBLE_EQ(sparing.cost(id("(take cook apple)")), 25.0);
+  EXPECT_DOUBLE_EQ(sparing.cost(id("(wait cook)")), 0.6);
+  EXPECT_EQ(parse_pack_spec(R"j({"domain": "k"})j", "t/pack.json").roles.principal_effort, 1.0);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"principal_effort": 0}})j").find("roles.principal_effort"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"j({"domain": "k", "roles": {"principal_effort": 1001}})j").find("roles.principal_effort"),
+            std::string::npos);
+}
+
 TEST(PackFile, TurnsTurnPredicateAndAgentType) {
   PackSpec s = parse_pack_spec(R"j({"domain": "k"})j", "t/pack.json");
   EXPECT_EQ(s.roles.turns, TurnMode::Auto);

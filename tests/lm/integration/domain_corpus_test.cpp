@@ -198,6 +198,24 @@ TEST(DomainCorpus, QualifierSynonymsReadAsTheDomainsValues) {
   EXPECT_GT(score(m, small, "pass me the little one"), score(m, big, "pass me the little one") + 1.0);
 }
 
+// A goal's name is a bag of words about it ("(named goal1 large)"), not a
+// qualifier: a name word that WordNet relates to a value ("large", of the
+// items' size "big") still reads as that value, so the sizes of the items
+// stay told apart by it, and the value's other relatives follow it.
+TEST(DomainCorpus, GoalNameWordsStillReadAsTheItemsValues) {
+  DomainDescription d = workshop(1);
+  d.goal_names = {"large-frame", "small-stool-repair"};
+  const std::shared_ptr<AlignmentModel> m = train_domain_model(d, {});
+  EXPECT_EQ(m->encode("bring the large plank and the huge leg").words,
+            (std::vector<std::string>{"bring", "the", "big", "plank", "and", "the", "big", "leg"}));
+  const std::string big = "(handover you me plank1) where (issize plank1 big)";
+  const std::string small = "(handover you me plank1) where (issize plank1 small)";
+  EXPECT_GT(score(*m, big, "could you bring me the large plank"),
+            score(*m, small, "could you bring me the large plank") + 3.0);
+  // The goal's other name words are no values of a qualifier: they stay.
+  EXPECT_EQ(m->encode("the stool repair").words, (std::vector<std::string>{"the", "stool", "repair"}));
+}
+
 // The domain's own type hierarchy is world knowledge too: planks, legs and
 // brackets are declared `part`s, hammers and screwdrivers `tool`s, and the
 // generated corpus sometimes names an object by such a supertype. WordNet
