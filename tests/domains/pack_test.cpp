@@ -206,6 +206,14 @@ struct Pantry {
   std::shared_ptr<pddl::Domain> domain;
 };
 
+// The problem's action written as `text` ("(take cook apple)"); a failure
+// (and action 0) when there is none.
+pddl::ActionId action_id(const pddl::Task& task, const std::string& text) {
+  if (auto a = task.find_action(text)) return *a;
+  ADD_FAILURE() << "no action " << text;
+  return pddl::ActionId{0};
+}
+
 constexpr const char* kPantryPack = R"j({
   "domain": "pantry",
   "roles": {"principal": "cook", "assistant": "helper", "turns": ["helper", "cook"]},
@@ -230,12 +238,7 @@ TEST(PackFile, PrincipalEffortScalesThePrincipalsActionsInTheDefaultProfile) {
   ASSERT_EQ(set.profiles.size(), 2u);
   const model::Specification base(task, "(has cook apple)", set.profiles[0]);
   const model::Specification alone(task, "(has cook apple)", set.profiles[1]);
-  auto id = [&](const std::string& a) {
-    for (pddl::ActionId i = 0; i < task->num_actions(); ++i)
-      if (task->action_name(i) == a) return i;
-    ADD_FAILURE() << "no action " << a;
-    return pddl::ActionId{0};
-  };
+  auto id = [&](const std::string& a) { return action_id(*task, a); };
   EXPECT_DOUBLE_EQ(base.cost(id("(take cook apple)")), 2.5);
   EXPECT_DOUBLE_EQ(base.cost(id("(wait cook)")), 0.6);
   EXPECT_DOUBLE_EQ(base.cost(id("(take helper apple)")), 1.0);
@@ -435,12 +438,7 @@ TEST(PackFile, EveryProfileHasAnAloneTwinWhoseAssistantCostsMore) {
   EXPECT_EQ(set.profiles[1].twin_of, 0);
   const model::Specification base(task, "(has cook apple)", set.profiles[0]);
   const model::Specification alone(task, "(has cook apple)", set.profiles[1]);
-  auto id = [&](const std::string& a) {
-    for (pddl::ActionId i = 0; i < task->num_actions(); ++i)
-      if (task->action_name(i) == a) return i;
-    ADD_FAILURE() << "no action " << a;
-    return pddl::ActionId{0};
-  };
+  auto id = [&](const std::string& a) { return action_id(*task, a); };
   EXPECT_DOUBLE_EQ(base.cost(id("(take helper apple)")), 1.0);
   EXPECT_DOUBLE_EQ(alone.cost(id("(take helper apple)")), 4.0);
   EXPECT_DOUBLE_EQ(alone.cost(id("(wait helper)")), 0.6);
