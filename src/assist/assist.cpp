@@ -193,9 +193,10 @@ std::vector<std::pair<int, bool>> net_effect(const AssistSetup& setup, const std
 }
 
 // AssistRule::Request's commitment: what the live hypotheses most probably
-// asked the assistant to do, when at least kAskingShare of their weight reads
-// the words as asking the assistant for something and kCommitShare of that
-// asks for it (by its net effect), it is not yet done in s, and doing it leaves
+// asked the assistant to do next, when at least kAskingShare of their weight
+// reads the words as asking the assistant for something and kCommitShare of
+// that asks for it next (by the net effect of the step asked next), it is not
+// yet done in s, and doing it leaves
 // the goals of most of their weight no costlier (their heuristic estimate
 // after it at most the cheapest action's cost above the estimate now):
 // the first step of the assistant's own plan for it, the principal frozen.
@@ -213,11 +214,21 @@ constexpr double kSparingFactor = 10;
 std::optional<Commitment> committed_request(const AssistSetup& setup, const std::vector<const Hypothesis*>& live,
                                             const State& s, const std::vector<State>* since_instruction) {
   const pddl::Task& task = *setup.task;
+  using Effect = std::vector<std::pair<int, bool>>;
+  auto holds_in = [](const Effect& e, const State& x) {
+    return std::all_of(e.begin(), e.end(), [&](const auto& bv) { return pddl::get_bit(x.data(), bv.first) == bv.second; });
+  };
+  // Each reading is grouped by the step it asks for next: the effect of the
+  // shortest prefix of its assistant part that does not hold yet (after the
+  // longest one that does). Readings that differ only in what follows ("fetch
+  // it" and "fetch it and hand it to me") agree on that step, so a request
+  // read several ways is still done. A reading whose whole part held at some
+  // point since it was said is done: help given is not taken back to be given
+  // again (an empty next step).
   struct Asked {
-    std::vector<std::pair<int, bool>> effect;
+    Effect next;
     double weight = 0;
     std::map<std::string, double> texts;
-    std::map<std::string, std::vector<ActionId>> parts;  // each text's assistant part, in its order
   };
   std::vector<Asked> asked;
   double total = 0, asking = 0;
@@ -226,16 +237,34 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
     if (!h->request) continue;
     for (const RequestedCommand& c : *h->request) {
       if (c.assistant_part.empty() || !(c.probability > 0)) continue;
-      auto effect = net_effect(setup, c.assistant_part);
-      if (effect.empty()) continue;
-      auto it = std::find_if(asked.begin(), asked.end(), [&](const Asked& a) { return a.effect == effect; });
+      const std::vector<ActionId>& part = c.assistant_part;
+      const Effect whole = net_effect(setup, part);
+      if (whole.empty()) continue;
+      const bool done = holds_in(whole, s) ||
+                        (since_instruction && std::any_of(since_instruction->begin(), since_instruction->end(),
+                                                          [&](const State& x) { return holds_in(whole, x); }));
+      Effect next;
+      if (!done) {
+        auto prefix = [&](size_t k) {
+          return net_effect(setup, {part.begin(), part.begin() + static_cast<std::ptrdiff_t>(k)});
+        };
+        size_t from = 0;
+        for (size_t k = part.size(); k-- > 1;)
+          if (holds_in(prefix(k), s)) {
+            from = k;
+            break;
+          }
+        for (size_t k = from + 1; k <= part.size() && next.empty(); ++k)
+          if (auto e = prefix(k); !e.empty() && !holds_in(e, s)) next = std::move(e);
+        if (next.empty()) next = whole;
+      }
+      auto it = std::find_if(asked.begin(), asked.end(), [&](const Asked& a) { return a.next == next; });
       if (it == asked.end()) {
-        asked.push_back({std::move(effect), 0, {}, {}});
+        asked.push_back({std::move(next), 0, {}});
         it = asked.end() - 1;
       }
       it->weight += h->weight * c.probability;
       it->texts[c.text] += h->weight * c.probability;
-      it->parts.emplace(c.text, c.assistant_part);
       asking += h->weight * c.probability;
     }
   }
@@ -245,47 +274,8 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   if (asked.empty() || !(total > 0) || asking < kAskingShare * total) return std::nullopt;
   const Asked& top = *std::max_element(asked.begin(), asked.end(),
                                        [](const Asked& a, const Asked& b) { return a.weight < b.weight; });
-  if (top.weight < kCommitShare * asking) return std::nullopt;
-  auto holds_in = [&](const State& x) {
-    return std::all_of(top.effect.begin(), top.effect.end(),
-                       [&](const auto& bv) { return pddl::get_bit(x.data(), bv.first) == bv.second; });
-  };
-  if (holds_in(s)) return std::nullopt;
-  // Done once since it was asked (a key fetched, then used or handed over):
-  // help given is not taken back to be given again.
-  if (since_instruction && std::any_of(since_instruction->begin(), since_instruction->end(), holds_in))
-    return std::nullopt;
-  // Asked for several things ("open the cupboard, then fetch the flour"),
-  // the assistant does them in the order asked: the next goal is the effect
-  // of the shortest part of the heaviest reading that is not yet so (after
-  // the longest one that is).
-  std::string top_text;
-  double top_text_weight = -1;
-  for (const auto& [text, w] : top.texts)
-    if (w > top_text_weight) {
-      top_text_weight = w;
-      top_text = text;
-    }
-  std::vector<std::pair<int, bool>> next = top.effect;
-  if (auto it = top.parts.find(top_text); it != top.parts.end() && it->second.size() > 1) {
-    const std::vector<ActionId>& part = it->second;
-    auto holds = [&](const std::vector<std::pair<int, bool>>& e) {
-      return std::all_of(e.begin(), e.end(), [&](const auto& bv) { return pddl::get_bit(s.data(), bv.first) == bv.second; });
-    };
-    size_t from = 0;  // the first prefix to aim for
-    for (size_t k = part.size(); k-- > 1;)
-      if (holds(net_effect(setup, {part.begin(), part.begin() + static_cast<std::ptrdiff_t>(k)}))) {
-        from = k;
-        break;
-      }
-    for (size_t k = from + 1; k <= part.size(); ++k) {
-      auto e = net_effect(setup, {part.begin(), part.begin() + static_cast<std::ptrdiff_t>(k)});
-      if (!e.empty() && !holds(e)) {
-        next = std::move(e);
-        break;
-      }
-    }
-  }
+  if (top.next.empty() || top.weight < kCommitShare * asking) return std::nullopt;
+  const Effect& next = top.next;
   // The goal: what the request makes true (what it deletes, for a request
   // that only deletes, as an unlock does).
   std::string goal;

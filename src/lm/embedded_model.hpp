@@ -37,7 +37,7 @@ class AlignmentModel;
 // parameters), so that no build reads a model another training made. The
 // test EmbeddedCache.TheTrainingVersionGoesWithWhatTrainingProduces holds the
 // scores of a reference training for this version and fails when they move.
-inline constexpr int kEmbeddedTrainingVersion = 2;
+inline constexpr int kEmbeddedTrainingVersion = 3;
 
 struct EmbeddedModelOptions {
   // Directory holding the corpus files. Empty: the language/ folder of

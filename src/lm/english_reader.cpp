@@ -423,6 +423,8 @@ void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
   std::vector<uint8_t> f(n);
   for (size_t i = 0; i < n; ++i) f[i] = word_flags(u.ids[i], u.words[i]);
   auto content = [&](size_t i) { return (f[i] & kWordFunction) == 0; };
+  // "the red one": a noun phrase whose noun is left out.
+  auto names_one = [&](size_t i) { return u.words[i] == "one" || u.words[i] == "ones"; };
   std::vector<size_t> starts;  // of the clauses before the current one
   size_t clause_start = 0;
   for (size_t e : u.clause_end) {
@@ -444,11 +446,12 @@ void AlignmentModel::mark_pronoun_antecedents(EncodedUtterance& u) const {
           break;
         }
       }
-      // The nearest earlier clause with a noun holds what "it" stands for.
+      // The nearest earlier clause with a noun (or a noun-less "one") holds
+      // what "it" stands for.
       for (size_t k = starts.size(); k-- > 0;) {
         const size_t b = starts[k], c_end = k + 1 < starts.size() ? starts[k + 1] : clause_start;
         bool has_noun = false;
-        for (size_t i = b; i < c_end; ++i) has_noun = has_noun || (content(i) && (f[i] & kWordNoun) != 0);
+        for (size_t i = b; i < c_end; ++i) has_noun = has_noun || (content(i) && (f[i] & kWordNoun) != 0) || names_one(i);
         if (!has_noun) continue;
         for (size_t i = b; i < c_end; ++i) u.about_request[i] = content(i) ? 1 : 0;
         break;

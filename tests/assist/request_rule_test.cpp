@@ -241,3 +241,45 @@ TEST(RequestRule, WhatWasDoneSinceTheInstructionIsNotDoneAgain) {
   EXPECT_TRUE(again.followed_request);
   EXPECT_EQ(g.task->action_name(again.action), "(move bot bed shed)");
 }
+
+// Readings that differ only in what comes after the first thing asked ("fetch
+// the basil", "fetch the basil and give it to me") ask for the same next
+// step: together they outweigh a third reading, so the bot fetches the basil
+// although no one reading has half the weight, and although idling is cheaper
+// by the values.
+TEST(RequestRule, ReadingsThatAgreeOnTheNextStepAreOneRequest) {
+  Garden g;
+  auto spec = std::make_shared<model::Specification>(g.task, "(planted basil1)", idling_is_cheap());
+  auto policy = std::make_shared<search::Policy>(spec, std::make_shared<heuristics::HMaxHeuristic>());
+  const pddl::State start = g.task->apply(g.task->initial_state(), g.act("(idle gardener)"));
+  policy->refine(start, search::SearchOptions{});
+  auto reading = [&](double p, const char* text, std::vector<std::string> part) {
+    assist::RequestedCommand c;
+    c.probability = p;
+    c.text = text;
+    for (const auto& a : part) c.assistant_part.push_back(g.act(a));
+    return c;
+  };
+  auto request = std::make_shared<assist::Request>();
+  request->push_back(reading(0.4, "fetch the basil", {"(take bot basil1 barn)"}));
+  request->push_back(reading(0.3, "fetch the basil and give it to me",
+                             {"(take bot basil1 barn)", "(move bot barn bed)", "(give bot gardener basil1 bed)"}));
+  request->push_back(reading(0.3, "fetch the tomato", {"(take bot tomato1 shed)"}));
+  std::vector<assist::Hypothesis> belief = {{1.0, policy, request}};
+  assist::AssistSetup setup;
+  setup.task = g.task;
+  setup.set_turns(g.dp.pack->roles());
+  setup.start = start;
+  setup.observed_steps = 1;
+  setup.horizon = 30;
+  assist::set_request_rule(setup, assist::AssistRule::Request, g.dp.pack->language());
+  const assist::Decision d = assist::qmdp_decision(setup, belief, start, 1);
+  EXPECT_TRUE(d.followed_request) << d.reason;
+  EXPECT_EQ(g.task->action_name(d.action), "(move bot bed barn)");
+  EXPECT_NE(d.reason.find("70%"), std::string::npos) << d.reason;
+
+  // Split three ways, no next step has half the weight: no commitment.
+  request->back() = reading(0.3, "fetch the tomato", {"(take bot tomato1 shed)"});
+  (*request)[1] = reading(0.3, "go to the shed", {"(move bot bed shed)"});
+  EXPECT_FALSE(assist::qmdp_decision(setup, belief, start, 1).followed_request);
+}

@@ -31,6 +31,17 @@ TEST(AlignmentBehaviour, WhatALaterItPointsBackToIsTheRequestsObject) {
   EXPECT_GT(gap, 5.0);
 }
 
+// The same when the earlier clause names its object with "one" and no
+// noun: "That red one, could you get it?" asks the listener for the red key,
+// not for a blue key while the speaker takes the red one.
+TEST(AlignmentBehaviour, ALaterItPointsBackToANounlessOne) {
+  const std::string asked = pragmatic_prompt("(pickup you key1) (pickup me key2) where (iscolor key1 red) (iscolor key2 blue)");
+  const std::string split = pragmatic_prompt("(pickup me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)");
+  const double gap = lead(asked, split, " That red one, could you get it?\n");
+  std::printf("[it-one] the request for the red one leads the split by %.2f nats\n", gap);
+  EXPECT_GT(gap, 3.0);
+}
+
 // Item 7: "the red one" has no noun, but in a request it is one of the
 // listener's objects, so it contradicts a command whose only object the
 // listener handles is blue, as "the red key" does.

@@ -69,29 +69,30 @@ std::string prompt_of(const Golden& g) {
 // get ...") became theirs,
 // with the listener's anchors scaled down there (EM moves every score a
 // little), and when the numbers in names got a mention rate of their own and
-// negated values stopped being copied (issue 60; a few hundredths of a nat); they
+// negated values stopped being copied (issue 60; a few hundredths of a nat), and
+// when "it" could point back to a noun-less "one" (training version 3); they
 // are not derived by hand. They cover every step of the model: length, mention
 // sums, anchors, clause types, modifiers, colour binding and contradiction,
 // number binding, pronoun antecedents, misspellings, unknown words, prefixes
 // and the empty-command prompt. Re-record them only for an intended change of
 // the model, and say so in the commit.
 const std::vector<Golden> kGolden = {
-    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.185507092441732},
-    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.72004908855655},
+    {"L", "(pickup you key1) where (iscolor key1 red)", " Could you grab the red key for me?\n", -33.185562186628026},
+    {"L", "(unlock you key1 door1) where (iscolor door1 blue)", " Unlock the blue door.\n", -17.719862885802549},
     {"L", "(handover you me key1) (handover you me key2) where (iscolor key1 red) (iscolor key2 red)",
-     " Bring me both red", -13.811103028182551},
-    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -55.990430253726728},
-    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.933144228273903},
+     " Bring me both red", -13.810884042119291},
+    {"P", "(pickup you key1) where (iscolor key1 blue)", " I'll grab the red key, could you pick up the blue one?\n", -56.010349959884273},
+    {"P", "(handover you me key1) where (iscolor key1 yellow)", " Grab the key for that yellow door.\n", -28.931569446184884},
     {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 red)",
-     " This red door has me stuck; could you open it?\n", -70.692992052953187},
-    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -30.711838777505399},
+     " This red door has me stuck; could you open it?\n", -70.69275002291721},
+    {"P", "(unlock you ?key1 ?door1) where (iscolor ?door1 blue)", " Can you open the red door?\n", -30.7328475489984},
     {"P", "(handover you me key1) (pickup you key2) where (iscolor key1 red) (iscolor key2 blue)",
-     " Pass me the red key pls, would it be possible?\n", -76.507492634964223},
-    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.68078607310833},
-    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -24.967599677277363},
-    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.685214290517948},
-    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.807170168908222},
-    {"E", "", " Hello there.\n", -28.156360275835297},
+     " Pass me the red key pls, would it be possible?\n", -76.506403850983247},
+    {"L", "(pickup you key1) where (iscolor key1 green)", " Grab the grene key zyzzyva!\n", -57.680574626186804},
+    {"V", "(grab you cutleryfork1) (grab you cutleryfork2) (grab you wineglass1)", " Could you get two forks?\n", -24.967446157586171},
+    {"V", "(grab you mug1) (grab you plate1)", " Get a mug and a plate.\n", -25.684876082677039},
+    {"V", "(grab you chefknife1)", " The wine is in the kitchen.\n", -44.803895015712321},
+    {"E", "", " Hello there.\n", -28.156391505829017},
 };
 
 }  // namespace alignment_behaviour_test

@@ -83,6 +83,8 @@ TEST(EmbeddedCache, TheTrainingVersionGoesWithWhatTrainingProduces) {
       {1, {-38.15526606519726, -31.461070506912517, -23.598095674832585, -35.386005874968397}},
       // 2: the snapshot keeps which qualifiers are bags of words (no bag here).
       {2, {-38.15526606519726, -31.461070506912517, -23.598095674832585, -35.386005874968397}},
+      // 3: "it" may point back to a noun-less "one" (no such sentence here).
+      {3, {-38.15526606519726, -31.461070506912517, -23.598095674832585, -35.386005874968397}},
   };
   const auto batch = probe_batch();
   const std::vector<ScoreRequest> probes = {batch[0], batch[3], batch[10], batch.back()};
