@@ -220,8 +220,10 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   };
   // Each reading is grouped by the step it asks for next: the effect of the
   // shortest prefix of its assistant part that does not hold yet (after the
-  // longest one that does). Readings that differ only in what follows ("fetch
-  // it" and "fetch it and hand it to me") agree on that step, so a request
+  // longest one that does), so things asked together ("open the cupboard,
+  // then fetch the flour") are done in the order asked. Readings that differ
+  // only in what follows ("fetch it" and "fetch it and hand it to me") agree
+  // on that step, so a request
   // read several ways is still done. A reading whose whole part held at some
   // point since it was said is done: help given is not taken back to be given
   // again (an empty next step).
