@@ -2,6 +2,7 @@
 #include "domains/builtin/packs.hpp"
 #include "engine/hypotheses.hpp"
 #include "engine/options.hpp"
+#include "engine/policies.hpp"
 #include "engine/runs.hpp"
 
 #include <algorithm>
@@ -759,9 +760,7 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
       x = task.apply(x, done[i]);
     }
   }
-  const assist::Decision dec = m.options.assistance == Assistance::QMdp
-                                   ? assist::qmdp_decision(setup, hyps, s, t, stalled, &since)
-                                   : assist::pibar_decision(setup, hyps, s);
+  const assist::Decision dec = engine::decide_of(m.options.assistance)({setup, hyps, s, t, stalled, &since});
   b.check();
   d.id = dec.action;
   d.action = task.action_name(dec.action);

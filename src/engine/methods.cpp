@@ -1,4 +1,5 @@
-// The name tables of clips::Method and clips::Assistance (engine/methods.hpp).
+// The name table of clips::Method (engine/methods.hpp); clips::Assistance's is
+// the decision policies' (engine/policies.cpp).
 #include "engine/methods.hpp"
 
 namespace clips {
@@ -16,16 +17,6 @@ util::Choices<Method>& method_choices() {
           {Method::Literal, "literal",
            "the literal listener: the most probable command of the latest instruction, on the CLIPS posterior",
            {}},
-      });
-  return table;
-}
-
-util::Choices<Assistance>& assistance_choices() {
-  static util::Choices<Assistance> table(
-      "assistance",
-      {
-          {Assistance::QMdp, "qmdp", "Q_MDP: the action of highest posterior-weighted Q-value, as in the paper", {}},
-          {Assistance::PiBar, "pibar", "pi-bar_MDP: the action the posterior mixture of policies takes most often", {}},
       });
   return table;
 }

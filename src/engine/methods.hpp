@@ -9,7 +9,9 @@
 namespace clips::engine {
 
 util::Choices<Method>& method_choices();
-util::Choices<Assistance>& assistance_choices();
+// The decision policies' names: each registered once with its decide()
+// (engine/policies.hpp).
+const util::Choices<Assistance>& assistance_choices();
 // The methods with a posterior of their own (all but literal, which reads the
 // CLIPS one): `clips infer --modalities`, the bench's inference methods.
 std::vector<std::string> posterior_method_names();

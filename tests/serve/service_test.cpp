@@ -296,19 +296,29 @@ TEST(ApiSchema, ItsChoiceEnumsAreTheNameTables) {
   EXPECT_THROW(fill_choice_enums(bad), std::invalid_argument);
 }
 
-// issue 63's test of "one registration": an assistance rule added to the
-// engine's table at run time is a value of a CLI flag built as the
-// subcommands build theirs (with its help in --help), in the server's
-// catalogue and session requests, and in the OpenAPI enums. (Python's
-// keyword help is made from the same table: python/tests, test_choices.)
-TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueAndTheSchema) {
-  auto& table = engine::assistance_choices();
+// issue 63's test of "one registration": a decision policy registered at
+// run time (its name, help and decide(), engine/policies.hpp) is a value of a
+// CLI flag built as the subcommands build theirs (with its help in --help),
+// in the server's catalogue and session requests, in the OpenAPI enums, and
+// a session created with it decides by it. (Python's keyword help is made
+// from the same table: python/tests, test_choices.)
+TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueTheSchemaAndTheDecisions) {
   const auto rule = static_cast<Assistance>(99);
-  table.add({rule, "test_rule", "a rule only this test knows", {}});
+  auto waits = [](const engine::DecisionInput& in) {
+    assist::Decision d;
+    d.action = in.setup.turns().noop(*in.setup.task, in.setup.assistant);
+    d.candidates = {d.action};
+    d.values = {1.0};
+    d.reason = "the test policy always waits";
+    return d;
+  };
+  engine::register_assistance({rule, "test_rule", "a rule only this test knows", waits});
   struct Unregister {
-    ~Unregister() { engine::assistance_choices().remove("test_rule"); }
+    ~Unregister() { engine::unregister_assistance("test_rule"); }
   } unregister;
-  EXPECT_THROW(table.add({rule, "test_rule", "twice", {}}), std::logic_error);
+  EXPECT_THROW(engine::register_assistance({rule, "test_rule", "twice", waits}), std::logic_error);
+  EXPECT_THROW(engine::register_assistance({static_cast<Assistance>(98), "no_decide", "none", {}}), std::logic_error);
+  const auto& table = engine::assistance_choices();
 
   CLI::App app("test");
   std::string value;
@@ -329,6 +339,18 @@ TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueAndTheSchema) {
   if (log) setenv("CLIPS_SERVE_EXCHANGE_LOG", saved.c_str(), 1);
   const json catalogue = body(s->handle("GET", "/api/datasets", ""));
   EXPECT_TRUE(lists(catalogue["assistance"], "test_rule")) << catalogue["assistance"];
+
+  // A session with it: the decision is the registered decide()'s.
+  const Reply created = s->handle("POST", "/api/sessions",
+                                  json{{"dataset", "doors-keys-gems"}, {"problem", "e1"}, {"assistance", "test_rule"}}.dump());
+  ASSERT_EQ(created.status, 201) << created.body;
+  const std::string id = body(created)["id"];
+  EXPECT_EQ(body(created)["assistance"], "test_rule");
+  ASSERT_LT(s->handle("POST", "/api/sessions/" + id + "/act", json{{"action", "(left human)"}}.dump()).status, 300);
+  const Reply decided = s->handle("POST", "/api/sessions/" + id + "/assist", json{{"apply", false}}.dump());
+  ASSERT_EQ(decided.status, 200) << decided.body;
+  EXPECT_EQ(body(decided)["decision"]["action"], "(wait robot)") << decided.body;
+  EXPECT_NE(decided.body.find("the test policy always waits"), std::string::npos) << decided.body;
 
   nlohmann::ordered_json doc = read_api_schema();
   fill_choice_enums(doc);

@@ -19,6 +19,7 @@
 #include "language/listener.hpp"
 #include "app/choice_option.hpp"
 #include "engine/methods.hpp"
+#include "engine/policies.hpp"
 #include "serve/api_schema.hpp"
 #include "serve/frontends.hpp"
 #include "serve/service.hpp"
