@@ -43,6 +43,18 @@ struct Garden {
     EXPECT_TRUE(a.has_value()) << text;
     return a.value_or(-1);
   }
+  // The assistance set-up in state `s` after `observed_steps` steps, under `rule`.
+  assist::AssistSetup setup_at(const pddl::State& s, int observed_steps,
+                               assist::AssistRule rule = assist::AssistRule::Request) const {
+    assist::AssistSetup setup;
+    setup.task = task;
+    setup.set_turns(dp.pack->roles());
+    setup.start = s;
+    setup.observed_steps = observed_steps;
+    setup.horizon = 30;
+    assist::set_request_rule(setup, rule, dp.pack->language());
+    return setup;
+  }
   // The bot's turn after the gardener idled. Unit costs: moving to either
   // building or staying put are equally good in Q_MDP's values here.
   std::string decide(assist::AssistRule rule, std::vector<std::string> asked, std::vector<std::string> self,
@@ -61,13 +73,7 @@ struct Garden {
     const pddl::State start = task->apply(task->initial_state(), act("(idle gardener)"));
     policy->refine(start, search::SearchOptions{});  // as inference leaves it at the current state
 
-    assist::AssistSetup setup;
-    setup.task = task;
-    setup.set_turns(dp.pack->roles());
-    setup.start = start;
-    setup.observed_steps = 1;
-    setup.horizon = 30;
-    assist::set_request_rule(setup, rule, dp.pack->language());
+    const assist::AssistSetup setup = setup_at(start, 1, rule);
     const assist::Decision d = assist::qmdp_decision(setup, belief, setup.start, 1, stalled);
     EXPECT_TRUE(rule == assist::AssistRule::Paper || d.followed_request ||
                 d.request_scores.size() == d.candidates.size());
@@ -157,13 +163,7 @@ TEST(RequestRule, ValuesThatOnlyAverageOutAreNotATie) {
   c.text = "fetch the basil";
   c.assistant_part.push_back(g.act("(take bot basil1 barn)"));
   request->push_back(c);
-  assist::AssistSetup setup;
-  setup.task = g.task;
-  setup.set_turns(g.dp.pack->roles());
-  setup.start = start;
-  setup.observed_steps = 1;
-  setup.horizon = 30;
-  assist::set_request_rule(setup, assist::AssistRule::Request, g.dp.pack->language());
+  const assist::AssistSetup setup = g.setup_at(start, 1);
 
   std::vector<assist::Hypothesis> split = {{0.5, policy_for("(planted tomato1)"), request},
                                            {0.5, policy_for("(planted basil1)"), request}};
@@ -227,13 +227,7 @@ TEST(RequestRule, WhatWasDoneSinceTheInstructionIsNotDoneAgain) {
     s = g.task->apply(s, g.act(a));
   }
   policy->refine(s, search::SearchOptions{});
-  assist::AssistSetup setup;
-  setup.task = g.task;
-  setup.set_turns(g.dp.pack->roles());
-  setup.start = s;
-  setup.observed_steps = 5;
-  setup.horizon = 30;
-  assist::set_request_rule(setup, assist::AssistRule::Request, g.dp.pack->language());
+  const assist::AssistSetup setup = g.setup_at(s, 5);
   EXPECT_FALSE(assist::qmdp_decision(setup, belief, s, 5, false, &since).followed_request);
   // Without the history the same words send the bot to the shed again.
   const std::vector<pddl::State> none;
@@ -266,13 +260,7 @@ TEST(RequestRule, ReadingsThatAgreeOnTheNextStepAreOneRequest) {
                              {"(take bot basil1 barn)", "(move bot barn bed)", "(give bot gardener basil1 bed)"}));
   request->push_back(reading(0.3, "fetch the tomato", {"(take bot tomato1 shed)"}));
   std::vector<assist::Hypothesis> belief = {{1.0, policy, request}};
-  assist::AssistSetup setup;
-  setup.task = g.task;
-  setup.set_turns(g.dp.pack->roles());
-  setup.start = start;
-  setup.observed_steps = 1;
-  setup.horizon = 30;
-  assist::set_request_rule(setup, assist::AssistRule::Request, g.dp.pack->language());
+  const assist::AssistSetup setup = g.setup_at(start, 1);
   const assist::Decision d = assist::qmdp_decision(setup, belief, start, 1);
   EXPECT_TRUE(d.followed_request) << d.reason;
   EXPECT_EQ(g.task->action_name(d.action), "(move bot bed barn)");
