@@ -38,6 +38,8 @@
 #include "eval/choices.hpp"
 #include "inference/belief.hpp"
 #include "engine/options.hpp"
+#include "engine/policies.hpp"
+#include "eval/methods.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
 
@@ -139,6 +141,127 @@ std::vector<std::string> list_option(const char* name, py::handle v) {
 }
 
 
+
+// ---- decision policies written in Python -------------------------------------
+//
+// register_policy(name, help, decide) registers `decide` with the engine's one
+// table of decision policies (engine/policies.hpp), as the C++ ones are: the
+// keyword assistance=, choices(), run_bench's "clips/NAME" and a server made in
+// this process take it. The callables are kept in a dict that is never
+// destroyed (their one strong reference, so no Python object is released
+// after the interpreter is gone); the engine's entry holds them borrowed.
+
+// Set on the thread that runs a Python policy: a call on a session from inside
+// the policy would wait for the call that is running it.
+thread_local bool inside_python_policy = false;
+
+py::dict& python_policies() {
+  static auto* held = new py::dict();  // never destroyed: the interpreter owns its items
+  return *held;
+}
+
+clips::assist::Decision decide_in_python(const std::string& name, PyObject* fn, const clips::engine::DecisionInput& in) {
+  const clips::pddl::Task& task = *in.setup.task;
+  clips::assist::Decision d;
+  d.candidates = task.applicable_actions(in.state);
+  if (d.candidates.empty()) throw clips::InputError("no action is applicable in the assistance state");
+  py::gil_scoped_acquire gil;
+  py::dict view;
+  py::list actions;
+  for (clips::pddl::ActionId a : d.candidates) actions.append(task.action_name(a));
+  view["actions"] = actions;
+  view["wait"] = task.action_name(in.setup.turns().noop(task, in.setup.assistant));
+  // Goals and what was asked, summed over the hypotheses (several cost
+  // profiles can share a goal), in the belief's order.
+  std::vector<std::pair<std::string, double>> goals, asked;
+  auto add = [](std::vector<std::pair<std::string, double>>& to, const std::string& key, double w) {
+    for (auto& [k, v] : to)
+      if (k == key) {
+        v += w;
+        return;
+      }
+    to.emplace_back(key, w);
+  };
+  for (const auto& h : in.hypotheses) {
+    add(goals, h.policy->spec().goal_text(), h.weight);
+    if (h.request)
+      for (const auto& c : *h.request) add(asked, c.text, h.weight * c.probability);
+  }
+  py::list gl, al;
+  for (const auto& [g, w] : goals) gl.append(py::dict(py::arg("goal") = g, py::arg("p") = w));
+  for (const auto& [c, w] : asked) al.append(py::dict(py::arg("command") = c, py::arg("p") = w));
+  view["goals"] = gl;
+  view["asked"] = al;
+  view["state"] = task.state_str(in.state);
+  view["t"] = in.t;
+  view["stalled"] = in.stalled;
+  std::string chosen, why;
+  struct Inside {
+    Inside() { inside_python_policy = true; }
+    ~Inside() { inside_python_policy = false; }
+  };
+  try {
+    const Inside inside;
+    const py::object r = py::reinterpret_borrow<py::object>(fn)(view);
+    if (py::isinstance<py::tuple>(r) && py::len(r) == 2) {
+      chosen = py::cast<std::string>(r.cast<py::tuple>()[0]);
+      why = py::cast<std::string>(r.cast<py::tuple>()[1]);
+    } else {
+      chosen = py::cast<std::string>(r);
+    }
+  } catch (py::error_already_set& e) {
+    throw clips::InputError("assistance policy '" + name + "' raised " + e.what());
+  } catch (const py::cast_error&) {
+    throw clips::InputError("assistance policy '" + name +
+                            "' must return an action's name (a str) or (action, reason), as in view['actions']");
+  }
+  for (size_t i = 0; i < d.candidates.size(); ++i)
+    if (task.action_name(d.candidates[i]) == chosen) {
+      d.action = d.candidates[i];
+      d.values.assign(d.candidates.size(), 0.0);
+      d.values[i] = 1.0;
+      d.reason = why.empty() ? "the Python policy '" + name + "' chose it" : why;
+      return d;
+    }
+  throw clips::InputError("assistance policy '" + name + "' returned '" + chosen +
+                          "', which is not an applicable action (view['actions']: " +
+                          clips::util::or_list([&] {
+                            std::vector<std::string> n;
+                            for (clips::pddl::ActionId a : d.candidates) n.push_back(task.action_name(a));
+                            return n;
+                          }()) +
+                          ")");
+}
+
+void register_policy(const std::string& name, const std::string& help, py::function decide) {
+  const auto& table = clips::engine::assistance_choices();
+  if (name.empty() || name.find_first_of(" /\t\n") != std::string::npos)
+    throw py::value_error("a policy's name is one word without '/' (it is written METHOD/NAME in bench), got '" +
+                          name + "'");
+  if (table.contains(name)) throw py::value_error("the assistance policy '" + name + "' is already registered");
+  if (clips::eval::assist_policy_choices().contains(name))
+    throw py::value_error("'" + name + "' is a bench assistance method's name");
+  int value = 1000;  // the C++ policies' values are small
+  for (const auto& e : table.entries()) value = std::max(value, static_cast<int>(e.value) + 1);
+  python_policies()[py::str(name)] = decide;
+  PyObject* fn = decide.ptr();
+  try {
+    clips::engine::register_assistance({static_cast<clips::Assistance>(value), name, help,
+                                        [name, fn](const clips::engine::DecisionInput& in) {
+                                          return decide_in_python(name, fn, in);
+                                        }});
+  } catch (...) {
+    PyDict_DelItemString(python_policies().ptr(), name.c_str());
+    throw;
+  }
+}
+
+void unregister_policy(const std::string& name) {
+  if (!python_policies().contains(name))
+    throw py::value_error("'" + name + "' is not a policy registered from Python");
+  clips::engine::unregister_assistance(name);
+  PyDict_DelItemString(python_policies().ptr(), name.c_str());
+}
 
 // Every named choice (eval/choices.hpp) as {id: [{'name', 'help', 'aliases'}]}:
 // the same tables the CLI's flags and the server's fields read.
@@ -454,6 +577,8 @@ PySession& opened(py::handle self) {
 class Held {
  public:
   explicit Held(py::handle self) : ps_(&opened(self)), busy_(ps_->busy), owner_(ps_->busy_owner) {
+    if (inside_python_policy)
+      throw clips::InputError("a Python assistance policy cannot call a session: it runs inside a session's call");
     if (owner_->load() == std::this_thread::get_id())
       throw py::value_error("this Session is already running a call on this thread (a call from inside a call)");
     while (!busy_->try_lock()) {
@@ -1018,6 +1143,17 @@ PYBIND11_MODULE(_core, m) {
         "choices() -> dict\n\nEvery named choice of the options and methods (the keyword 'method', "
         "'assistance', 'rejuvenate', ...; run_bench's methods), by kind: {kind: [{'name', 'help', 'aliases'}]}. "
         "The same name tables the CLI's flags and the server's fields read (docs/cli.md, \"Named choices\").");
+  m.def("register_policy", &register_policy, py::arg("name"), py::arg("help"), py::arg("decide"),
+        "register_policy(name, help, decide) -> None\n\n"
+        "Registers a decision policy written in Python, in the same table as 'qmdp' and 'pibar': sessions take "
+        "assistance=name, choices()['assistance'] lists it, run_bench(methods=['clips/' + name]) runs its "
+        "episodes. decide(view) is called at each of the assistant's turns with a dict: 'actions' (the "
+        "applicable actions' names), 'wait' (the assistant's no-op), 'goals' ([{'goal', 'p'}]: each goal's PDDL formula and its posterior probability), "
+        "'asked' ([{'command', 'p'}], what the last instruction asked for), 'state' (its atoms, as text), 't', "
+        "'stalled' (a round of waits just ended). It returns an action of view['actions'], or (action, "
+        "reason). It runs on a worker thread with the GIL held, and must not call a session.");
+  m.def("unregister_policy", &unregister_policy, py::arg("name"),
+        "unregister_policy(name) -> None\n\nTakes back a policy register_policy registered.");
   m.def("data_directory", &clips::data_directory,
         "data_directory() -> str\n\nWhere the library reads its data: $CLIPS_DATA_DIR, else the data installed "
         "with the package (or under the prefix), else the source tree it was built from.");

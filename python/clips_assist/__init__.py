@@ -37,8 +37,10 @@ from ._core import (
     __version__,
     choices,
     data_directory,
+    register_policy,
     run_bench,
     run_plan,
+    unregister_policy,
 )
 from ._core import _join_abandoned
 from . import _display  # noqa: F401  (Session._repr_png_ and _repr_html_)
@@ -60,8 +62,10 @@ __all__ = [
     "data_directory",
     "example_dataset",
     "goal_probabilities",
+    "register_policy",
     "run_bench",
     "run_plan",
+    "unregister_policy",
 ]
 
 # Calls interrupted by Ctrl-C finish on their own threads; wait for them

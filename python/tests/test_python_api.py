@@ -434,3 +434,62 @@ def test_every_catalogue_kind_is_reachable_from_python_or_said_to_be_cli_only():
     assert all("clips/" + p in valid for p in others)
     assert all(c["name"] in valid for c in catalogue["baseline"])
     assert any(c["name"] in valid for c in catalogue["literal_method"])  # the pack says which it runs
+
+
+def test_a_policy_registered_in_python_decides_sessions_and_bench_episodes():
+    """A decision policy is one registration, from Python too: the keyword
+    assistance=, choices() (the CLI's and server's table) and run_bench's
+    methods take it, and the engine calls it at the assistant's turns."""
+    views = []
+
+    def idle(view):
+        views.append(view)
+        return view["wait"], "this policy only waits"
+
+    clips_assist.register_policy("py_idle", "waits, whatever it hears", idle)
+    try:
+        with pytest.raises(ValueError, match="already registered"):
+            clips_assist.register_policy("py_idle", "again", idle)
+        with pytest.raises(ValueError, match="one word"):
+            clips_assist.register_policy("py/idle", "", idle)
+        catalogue = clips_assist.choices()
+        assert {"name": "py_idle", "help": "waits, whatever it hears", "aliases": []} in catalogue["assistance"]
+        assert "py_idle" in [c["name"] for c in catalogue["assist"]]
+
+        s = played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1, assistance="py_idle"))
+        d = s.assist()
+        view = views[-1]
+        assert d["action"] == view["wait"] and d["reason"] == "this policy only waits"
+        assert d["action"] in view["actions"] and len(view["actions"]) > 1
+        assert sum(g["p"] for g in view["goals"]) == pytest.approx(1.0)
+        # The goals as PDDL formulas, with the posterior's weights.
+        assert [g["p"] for g in view["goals"]] == pytest.approx([g["p"] for g in s.posterior()["goals"]])
+        assert all(g["goal"].startswith("(") for g in view["goals"])
+        assert any("key" in a["command"] for a in view["asked"])  # "Can you get me the yellow key?"
+        helpful = played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1)).assist()
+        assert helpful["action"] != d["action"]  # Q_MDP moves to fetch the key
+
+        rep = clips_assist.run_bench(str(EXAMPLES), methods=["clips", "clips/py_idle"], plans=["e1.1.keys"], jobs=1)
+        rows = {r["method"]: r for r in rep["rows"]}
+        assert rows["clips/py_idle"]["human_cost"] > rows["clips"]["human_cost"]  # the human did it all
+
+        clips_assist.register_policy("py_bad", "names an action that is not there", lambda view: "(fly robot)")
+        bad = played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1, assistance="py_bad"))
+        with pytest.raises(clips_assist.InputError, match=r"'py_bad' returned '\(fly robot\)', which is not an applicable"):
+            bad.assist()
+
+        def raises(view):
+            raise RuntimeError("no plan today")
+
+        clips_assist.register_policy("py_raises", "raises", raises)
+        broken = played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1, assistance="py_raises"))
+        with pytest.raises(clips_assist.InputError, match="'py_raises' raised .*no plan today"):
+            broken.assist()
+        broken.observe(helpful["action"])
+    finally:
+        for name in ("py_idle", "py_bad", "py_raises"):
+            if name in [c["name"] for c in clips_assist.choices()["assistance"]]:
+                clips_assist.unregister_policy(name)
+    assert "py_idle" not in [c["name"] for c in clips_assist.choices()["assistance"]]
+    with pytest.raises(ValueError, match="not a policy registered from Python"):
+        clips_assist.unregister_policy("qmdp")

@@ -48,7 +48,8 @@ void register_assist(CLI::App& app) {
       ->check(HttpUrl);
   cmd->add_option("--chat-model", mm->model, "multimodal: chat model (or $CLIPS_CHAT_MODEL)");
   add_choice_option(cmd, "--assist", o->assist, eval::assist_policy_choices(),
-                    "Assistance policy of the inference methods (default " + o->assist + ")");
+                    "Assistance policy of the inference methods (default " + o->assist +
+                        "; with --problem, the next action is its decision policy's)");
   add_lm_options(cmd, o->lm);
   add_speaker_model_options(cmd, o->lm);
   add_assistance_options(cmd, o->lm);
@@ -67,8 +68,6 @@ void register_assist(CLI::App& app) {
     if (adhoc && !ip)
       throw UsageError("with --problem, --method is " + util::or_list(inference_methods) +
                        " (the others need a dataset plan)");
-    if (adhoc && eval::assist_policy_choices().parse(o->assist) != eval::AssistPolicy::QmdpOffline)
-      throw UsageError("with --problem, the assistant's next action is the Q_MDP choice (--assist qmdp_offline)");
     auto ds = data::Dataset::load(dataset_dir(o->dataset));
     bound_grounding(ds, "assist", o->time_limit);
     require_stimuli(ds);
@@ -82,7 +81,9 @@ void register_assist(CLI::App& app) {
       eo.inference_threads = 0;
       apply_model_flags(o->lm, eo);
       const eval::LiveDecision d = with_time_limit("assist", o->time_limit, [&](const CallLimits& limits) {
-        return eval::decide_next_action(ds, obs, lm, eo, o->method, limits);
+        // One decision: the policy's decide() (online or offline is the same here).
+        return eval::decide_next_action(ds, obs, lm, eo, o->method,
+                                        eval::assist_policy_choices().parse(o->assist).decide, limits);
       });
       const auto& goals = d.goals;
       if (o->json) {

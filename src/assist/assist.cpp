@@ -698,8 +698,11 @@ struct Episode {
   // The episode's states before the current one (the instruction was heard
   // in the observed prefix, so all of them follow it).
   mutable std::vector<State> visited;
-  ActionId qmdp_decide(const std::vector<Hypothesis>& belief, const State& s, int t, bool stalled) const {
-    const Decision d = decide_qmdp(setup, assistant_wait, belief, s, t, /*values_always=*/false, stalled, &visited);
+  // The assistant's turn at s, decided by `decide` on `belief`; what the
+  // request rule did is kept for AssistResult::ties.
+  ActionId decide_with(const Decide& decide, const std::vector<Hypothesis>& belief, const State& s, int t,
+                       bool stalled) const {
+    const Decision d = decide(DecisionInput{setup, belief, s, t, stalled, &visited});
     if (d.followed_request)
       tie_notes.push_back("step " + std::to_string(t) + ": " + d.reason + "; took " + task.action_name(d.action));
     else if (!d.request_scores.empty())
@@ -833,7 +836,8 @@ AssistResult run_episode(Episode& ep, search::Policy& truth, const model::Specif
 
 }  // namespace
 
-AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
+AssistResult offline_episode(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis,
+                             const Decide& decide) {
   Episode ep(setup);
   search::Policy truth = *belief.at(true_hypothesis).policy;  // a copy: the principal's own planner
   for (auto& h : belief) h.policy = std::make_shared<search::Policy>(*h.policy);  // never touch the caller's
@@ -842,7 +846,7 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
       ep, truth, truth.spec(), Distrust::TakeOver,
       [&](const State& s, int t, const AssistResult& so_far) {
         const auto d0 = std::chrono::steady_clock::now();
-        const ActionId a = ep.qmdp_decide(belief, s, t, round_of_waits(setup, so_far.plan));
+        const ActionId a = ep.decide_with(decide, belief, s, t, round_of_waits(setup, so_far.plan));
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - d0).count());
         return a;
       },
@@ -851,19 +855,25 @@ AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> beli
   return r;
 }
 
+AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis) {
+  return offline_episode(setup, std::move(belief), true_hypothesis, [](const DecisionInput& in) {
+    return qmdp_decision(in.setup, in.hypotheses, in.state, in.t, in.stalled, in.since_instruction);
+  });
+}
+
 bool assistant_turn(const AssistSetup& setup, const State& s) {
   return !setup.turns().is_turn_of(*setup.task, s, setup.principal);
 }
 
-AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
-                         std::shared_ptr<const model::Specification> true_spec,
-                         std::shared_ptr<heuristics::Heuristic> true_heuristic) {
+AssistResult online_episode(const AssistSetup& setup, OnlineBelief& belief,
+                            std::shared_ptr<const model::Specification> true_spec,
+                            std::shared_ptr<heuristics::Heuristic> true_heuristic, const Decide& decide) {
   Episode ep(setup);
   search::Policy truth(true_spec, std::move(true_heuristic));  // fresh, refined as it goes
   return run_episode(
       ep, truth, *true_spec, Distrust::PlanAlone,
       [&](const State& s, int t, const AssistResult& so_far) {
-        return ep.qmdp_decide(belief.hypotheses(), s, t, round_of_waits(setup, so_far.plan));
+        return ep.decide_with(decide, belief.hypotheses(), s, t, round_of_waits(setup, so_far.plan));
       },
       [&](const State& pre, ActionId a) { belief.observe(pre, a); }, [] { return false; });
 }

@@ -9,9 +9,10 @@
 //                     the principal follows, and what counts as an option
 //   AssistResult      executed joint plan, success, length, costs, options
 //
-// Methods: Q_MDP offline (posterior fixed after the observed prefix), Q_MDP
-// online (belief updated after every action through an OnlineBelief), and the
-// policy mixture pi-bar_MDP (exact expectation over hypotheses).
+// Episodes: a decision policy (Q_MDP, pi-bar or any registered one) decides
+// each assistant turn, on the posterior fixed after the observed prefix
+// (offline) or updated after every action through an OnlineBelief (online);
+// and the paper's pi-bar_MDP evaluation (exact expectation over hypotheses).
 #include <functional>
 #include <map>
 #include <memory>
@@ -165,11 +166,29 @@ class OnlineBelief {
   virtual std::vector<Hypothesis>& hypotheses() = 0;
 };
 
-// The simulated principal's plan-following rule needs the true hypothesis.
+struct Decision;
+struct DecisionInput;
+// A decision policy: the assistant's action from what one decision sees. The
+// live sessions' policies are registered with theirs (engine/policies.hpp);
+// the simulated episodes below call the same one at every assistant turn.
+using Decide = std::function<Decision(const DecisionInput&)>;
+
+// Simulated episodes in which the assistant decides by `decide` at each of
+// its turns: on the posterior after the observed prefix, kept for the whole
+// episode (offline, the paper's Q_MDP evaluation), or on a belief updated by
+// each action of the episode (online). The simulated principal's
+// plan-following rule needs the true hypothesis.
+AssistResult offline_episode(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis,
+                             const Decide& decide);
+AssistResult online_episode(const AssistSetup& setup, OnlineBelief& belief,
+                            std::shared_ptr<const model::Specification> true_spec,
+                            std::shared_ptr<heuristics::Heuristic> true_heuristic, const Decide& decide);
+// offline_episode deciding by qmdp_decision.
 AssistResult qmdp_offline(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
-AssistResult qmdp_online(const AssistSetup& setup, OnlineBelief& belief,
-                         std::shared_ptr<const model::Specification> true_spec,
-                         std::shared_ptr<heuristics::Heuristic> true_heuristic);
+// The paper's pi-bar_MDP evaluation: not one episode but the expectation over
+// the hypotheses above the threshold of the episode the assistant would have
+// had with that hypothesis alone (its greedy policy), the world frozen once
+// the principal stops trusting it (spec 9.5).
 AssistResult pibar_mdp(const AssistSetup& setup, std::vector<Hypothesis> belief, int true_hypothesis);
 // An assistant that plays a script of `length` actions (the multimodal
 // baseline's): `play(s, i)` is its action for entry i on its next turn (a
@@ -210,6 +229,18 @@ struct Decision {
   // Why this action, in words: the rule that decided, with its numbers
   // (the same text for every front end and `clips assist --explain`).
   std::string reason;
+};
+// What one decision sees: the assistance set-up at the current state, the
+// belief's hypotheses, the model time step, whether a round of waits just
+// ended (round_of_waits) and the states since the last instruction (what was
+// asked and done since is not asked again).
+struct DecisionInput {
+  const AssistSetup& setup;
+  const std::vector<Hypothesis>& hypotheses;
+  const pddl::State& state;
+  int t = 0;
+  bool stalled = false;
+  const std::vector<pddl::State>* since_instruction = nullptr;
 };
 // The weight at or above which a hypothesis takes part in a decision: the
 // setup's weight_threshold, at most half the largest weight. qmdp_decision and

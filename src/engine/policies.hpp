@@ -12,19 +12,10 @@
 
 namespace clips::engine {
 
-// What one decision sees: the assistance set-up at the current state, the
-// belief's hypotheses, the model time step, whether a round of waits just
-// ended (assist::round_of_waits) and the states since the last instruction
-// (what was asked and done since is not asked again).
-struct DecisionInput {
-  const assist::AssistSetup& setup;
-  const std::vector<assist::Hypothesis>& hypotheses;
-  const pddl::State& state;
-  int t = 0;
-  bool stalled = false;
-  const std::vector<pddl::State>* since_instruction = nullptr;
-};
-using Decide = std::function<assist::Decision(const DecisionInput&)>;
+// What a decision sees and the policy's signature are the simulated
+// episodes' too (assist/assist.hpp): the bench calls the same decide().
+using DecisionInput = assist::DecisionInput;
+using Decide = assist::Decide;
 
 struct DecisionPolicy {
   Assistance value;

@@ -284,12 +284,13 @@ BenchCheck check_bench_setup(const data::Dataset& ds, const data::PlanRecord& p,
 
 LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations,
                                 std::shared_ptr<lm::LanguageModel> lm, const ExperimentOptions& opts,
-                                const std::string& method, const CallLimits& limits) {
+                                const std::string& method, Assistance assistance, const CallLimits& limits) {
   const clips::Method m = clips::parse_method(method);
   if (m == clips::Method::Literal)
     throw InputError("--method " + method + " cannot assist from ad-hoc observations (clips, lang_only or action_only)");
   SessionOptions so;
   so.method = m;
+  so.assistance = assistance;
   so.qa_floor = assist::to_string(opts.qa_floor);
   if (opts.assist_rule) so.assist_rule = assist::to_string(*opts.assist_rule);
   engine::Engine e = engine::engine_over_observations(ds, observations, std::move(lm), inference_options(opts), so, limits);

@@ -125,8 +125,9 @@ bool is_method_name(const std::string& name);
 
 // Assisting a live human: inference over observations that are not a dataset
 // plan (built by the caller; see engine::run_inference_on_observations),
-// then one Q_MDP decision of the assistant in the state they lead to, with the
-// posterior of `method` (clips, lang_only or action_only).
+// then one decision of the assistant in the state they lead to by the
+// registered policy `assistance`, with the posterior of `method` (clips,
+// lang_only or action_only).
 // Driven by the session engine (src/engine), as clips::Session and the
 // server decide; `limits` bound the whole call (inference and decision).
 struct LiveDecision {
@@ -139,7 +140,8 @@ struct LiveDecision {
 };
 LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord& observations,
                                 std::shared_ptr<lm::LanguageModel> lm, const ExperimentOptions& opts,
-                                const std::string& method, const CallLimits& limits = {});
+                                const std::string& method, Assistance assistance = Assistance::QMdp,
+                                const CallLimits& limits = {});
 
 // Runs every requested method on one plan. Thread-safe for distinct Datasets.
 PlanOutcome evaluate_plan(const data::Dataset& ds, const data::PlanRecord& plan, lm::LanguageModel& lm,

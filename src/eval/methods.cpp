@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <functional>
+#include <mutex>
 
 #include "assist/literal.hpp"
 #include "assist/request.hpp"
 #include "engine/hypotheses.hpp"
 #include "engine/methods.hpp"
+#include "engine/policies.hpp"
 #include "engine/runs.hpp"
 #include "eval/experiment.hpp"
 #include "eval/metrics.hpp"
@@ -88,19 +90,20 @@ class InferenceMethod : public Method {
     // A method that listens reads what the instruction asked for.
     const auto requests = engine::requests_for(*ctx.task, inf.steps, post.hypotheses.size(), modality_);
     std::vector<assist::Hypothesis> hyps = engine::assistant_hypotheses(belief, post, requests);
-    switch (policy_) {
-      case AssistPolicy::QmdpOffline:
-        score_assistance(ctx, assist::qmdp_offline(ctx.setup, hyps, ctx.true_hypothesis), r);
+    const assist::Decide& decide = engine::decide_of(policy_.decide);
+    switch (policy_.episodes) {
+      case Episodes::Offline:
+        score_assistance(ctx, assist::offline_episode(ctx.setup, hyps, ctx.true_hypothesis, decide), r);
         break;
-      case AssistPolicy::PiBar:
+      case Episodes::PaperMixture:
         score_assistance(ctx, assist::pibar_mdp(ctx.setup, hyps, ctx.true_hypothesis), r);
         break;
-      case AssistPolicy::QmdpOnline: {
+      case Episodes::Online: {
         OnlineAdapter online(belief, modality_, requests);
         const domains::Pack& pack = ctx.dataset.pack();
         std::shared_ptr<heuristics::Heuristic> h = pack.make_heuristic(pack.spec().inference.heuristic, *ctx.task);
         if (!ctx.setup.refine) h->prepare(*ctx.true_spec, ctx.setup.start);
-        score_assistance(ctx, assist::qmdp_online(ctx.setup, online, ctx.true_spec, h), r);
+        score_assistance(ctx, assist::online_episode(ctx.setup, online, ctx.true_spec, h, decide), r);
         break;
       }
     }
@@ -209,15 +212,33 @@ class MultimodalMethod : public Method {
 
 }  // namespace
 
-util::Choices<AssistPolicy>& assist_policy_choices() {
+const util::Choices<AssistPolicy>& assist_policy_choices() {
+  const auto& live = engine::assistance_choices();
+  const std::string qmdp = live.name(Assistance::QMdp), pibar = live.name(Assistance::PiBar);
   static util::Choices<AssistPolicy> table(
       "assistance method",
-      {{AssistPolicy::QmdpOffline, "qmdp_offline",
-        "Q_MDP on the posterior after the observations, kept through the episode, as in the paper", {}},
-       {AssistPolicy::QmdpOnline, "qmdp_online", "Q_MDP, the posterior updated by each action of the episode", {}},
-       // pi-bar is the session engine's rule too: its name and help are that table's.
-       {AssistPolicy::PiBar, engine::assistance_choices().name(Assistance::PiBar),
-        engine::assistance_choices().help(Assistance::PiBar), {}}});
+      {{{Assistance::QMdp, Episodes::Offline},
+        qmdp + "_offline",
+        "Q_MDP on the posterior after the observations, kept through the episode, as in the paper",
+        {}},
+       {{Assistance::QMdp, Episodes::Online}, qmdp + "_online",
+        "Q_MDP, the posterior updated by each action of the episode", {}},
+       {{Assistance::PiBar, Episodes::PaperMixture}, pibar, live.help(Assistance::PiBar), {}}});
+  // The other registered policies, each decided at every turn on the
+  // posterior after the observations. The table changes only when the
+  // registrations did (at start-up or in a test's set-up, before readers run:
+  // util/choices.hpp); the lock keeps two callers from following them at once.
+  static std::mutex follow;
+  std::lock_guard<std::mutex> lock(follow);
+  std::vector<std::string> gone;
+  for (const auto& e : table.entries())
+    if (e.value.episodes == Episodes::Offline && e.value.decide != Assistance::QMdp &&
+        (!live.contains(e.name) || live.parse(e.name) != e.value.decide))
+      gone.push_back(e.name);
+  for (const std::string& n : gone) table.remove(n);
+  for (const auto& c : live.entries())
+    if (c.value != Assistance::QMdp && c.value != Assistance::PiBar && !table.contains(c.name))
+      table.add({{c.value, Episodes::Offline}, c.name, c.help + " (decided at each assistant turn, offline)", {}});
   return table;
 }
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "assist/assist.hpp"
+#include "clips/types.hpp"
 #include "data/dataset.hpp"
 #include "multimodal/multimodal.hpp"
 #include "inference/belief.hpp"
@@ -61,8 +62,21 @@ class Method {
 
 // How an inference method's assistant acts over the episode: the part after
 // the slash of "clips/pibar". The first entry is the default.
-enum class AssistPolicy { QmdpOffline, QmdpOnline, PiBar };
-util::Choices<AssistPolicy>& assist_policy_choices();
+//   qmdp_offline, qmdp_online: the live Q_MDP policy's decide() at each
+//     assistant turn, on the posterior after the observations (the paper's)
+//     or on one updated by each action of the episode;
+//   pibar: the paper's pi-bar_MDP evaluation (assist::pibar_mdp);
+//   every other decision policy registered for the live sessions
+//   (engine::register_assistance), under its own name: its decide() at each
+//   turn, offline. So registering a policy makes it a bench method too.
+enum class Episodes { Offline, Online, PaperMixture };
+struct AssistPolicy {
+  Assistance decide = Assistance::QMdp;
+  Episodes episodes = Episodes::Offline;
+  bool operator==(const AssistPolicy&) const = default;
+};
+// Read-only: it follows the decision policies' table on every call.
+const util::Choices<AssistPolicy>& assist_policy_choices();
 // Which policies `clips bench --assist` runs: the default one alone (each
 // inference method's bare name) or every one (adds "clips/pibar", ...).
 enum class AssistanceSet { Default, All };

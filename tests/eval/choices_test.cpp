@@ -8,6 +8,7 @@
 
 #include "domains/pack.hpp"
 #include "engine/methods.hpp"
+#include "engine/policies.hpp"
 #include "eval/choices.hpp"
 #include "eval/experiment.hpp"
 #include "eval/methods.hpp"
@@ -65,17 +66,26 @@ TEST(Choices, BenchMethodNamesAreComposedFromTheTables) {
     EXPECT_NE(std::string(e.what()).find("known: qmdp_offline, qmdp_online, pibar"), std::string::npos) << e.what();
   }
 
-  auto& policies = assist_policy_choices();
-  policies.add({static_cast<AssistPolicy>(99), "test_policy", "a policy only this test knows", {}});
+  // A decision policy registered for the live sessions is a bench method too,
+  // under its own name, and leaves with its registration.
+  engine::register_assistance({static_cast<Assistance>(99), "test_policy", "a policy only this test knows",
+                               [](const engine::DecisionInput&) { return assist::Decision{}; }});
   struct Unregister {
-    ~Unregister() { assist_policy_choices().remove("test_policy"); }
+    ~Unregister() { engine::unregister_assistance("test_policy"); }
   } unregister;
   EXPECT_TRUE(is_method_name("lang_only/test_policy"));
+  EXPECT_EQ(assist_policy_choices().parse("test_policy").decide, static_cast<Assistance>(99));
+  EXPECT_EQ(assist_policy_choices().parse("test_policy").episodes, Episodes::Offline);
   bool listed = false;
   for (const auto& [id, kind] : choice_catalogue())
     if (id == "assist") listed = kind.names().back() == "test_policy";
   EXPECT_TRUE(listed);
-  EXPECT_NE(choices_markdown().find("| `assist` | `test_policy` | a policy only this test knows |"), std::string::npos);
+  EXPECT_NE(choices_markdown().find("| `assist` | `test_policy` | a policy only this test knows (decided at each "
+                                    "assistant turn, offline) |"),
+            std::string::npos);
+  engine::unregister_assistance("test_policy");
+  EXPECT_FALSE(is_method_name("lang_only/test_policy"));
+  EXPECT_EQ(all_method_names().size(), 3u * 3u + 3u + 1u);
 }
 
 // docs/cli.md's "Named choices" table is the catalogue's; CLIPS_UPDATE_DOCS=1 rewrites it.

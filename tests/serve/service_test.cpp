@@ -1,4 +1,5 @@
 #include "serve/service_test.hpp"
+#include "eval/methods.hpp"
 
 namespace clips::serve {
 namespace service_test {
@@ -327,6 +328,16 @@ TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueTheSchemaAndTheDecisio
   app.parse("--assistance test_rule", false);
   EXPECT_EQ(value, "test_rule");
   EXPECT_THROW(app.parse("--assistance oracle", false), CLI::ValidationError);
+
+  // The bench's policies follow the table: `clips assist --assist` and
+  // `clips bench --methods clips/test_rule` take it (tests/eval's
+  // RegisteredPolicy runs its episodes).
+  CLI::App bench("test");
+  std::string policy;
+  app::add_choice_option(&bench, "--assist", policy, eval::assist_policy_choices(), "Assistance policy");
+  EXPECT_NE(bench.help().find("test_rule (a rule only this test knows (decided at each assistant turn"),
+            std::string::npos)
+      << bench.help();
 
   EXPECT_EQ(parse_assistance("test_rule"), rule);
   EXPECT_EQ(assistance_name(rule), "test_rule");
