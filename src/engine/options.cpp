@@ -59,7 +59,7 @@ template <typename T>
 Row integer_row(std::string name, long long lo, long long hi, std::string brief, std::string help,
                 T ParticleOptions::*field) {
   ParticleOption o{std::move(name), ParticleOption::Kind::Integer, fmt::format("an integer from {} to {}", lo, hi),
-                   std::move(brief), std::move(help), {}};
+                   std::move(brief), std::move(help), {}, static_cast<double>(lo), static_cast<double>(hi)};
   return {o, [o, lo, hi, field](ParticleOptions& p, const std::string& t) {
             p.*field = static_cast<T>(parse_integer<long long>(o, t, lo, hi));
           },
@@ -77,7 +77,9 @@ Row choice_row(std::string name, const util::Choices<E>& table, std::string brie
                    one_of(table.names()),
                    std::move(brief),
                    lead + ": " + table.help_text() + " (default " + defaults.*field + ")",
-                   table.names()};
+                   table.names(),
+                   {},
+                   {}};
   return {o,
           [o, &table, field](ParticleOptions& p, const std::string& t) {
             if (!table.contains(t)) refuse(o, "'" + t + "'");
@@ -98,7 +100,7 @@ std::vector<Row> rows() {
     {
       ParticleOption o{"particle_seed", ParticleOption::Kind::Integer, "an integer from 0 to 18446744073709551615",
                        "the particle filters' seed",
-                       "Seed of the particle filters (default 1); results are a function of it", {}};
+                       "Seed of the particle filters (default 1); results are a function of it", {}, 0.0, {}};
       t.push_back({o,
                    [o](ParticleOptions& p, const std::string& text) {
                      p.particle_seed = parse_integer<uint64_t>(o, text, 0, UINT64_MAX);
@@ -110,7 +112,7 @@ std::vector<Row> rows() {
                        "resample below this share of the particles",
                        "Resample when the effective sample size falls below this share of the particles (default "
                        "0.5; 1: every step)",
-                       {}};
+                       {}, 0.0, 1.0};
       t.push_back({o, [o](ParticleOptions& p, const std::string& text) { p.ess_threshold = parse_real(o, text, 0, 1); },
                    [](const ParticleOptions& p) { return fmt::format("{}", p.ess_threshold); }});
     }

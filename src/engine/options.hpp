@@ -7,6 +7,7 @@
 // of an int or repr() of a float, a JSON number's dump), so a bad value gives
 // the same message from every front end:
 //   "ess_threshold must be a number from 0 to 1, got 2.0"
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct ParticleOption {
   std::string brief;  // a few words, for Python's docstrings
   std::string help;   // what --help says
   std::vector<std::string> choices;  // Kind::Choice
+  // Kind::Integer and Kind::Real: the range, for schemas (an integer bound
+  // beyond 2^53, which a JSON number does not hold exactly, is left out).
+  std::optional<double> minimum, maximum;
 };
 
 // The options, as they stand (a choice registered at run time is listed).

@@ -4,8 +4,14 @@
 // its "enum" from the engine's name table of that ID (engine/choices.hpp):
 // the canonical names, and with "x-clips-aliases": true (a request field
 // that reads the older spellings) the aliases too.
-// A test keeps the file equal to fill_choice_enums(file); with
-// CLIPS_UPDATE_SCHEMA=1 it writes the filled document back.
+// Its particle options likewise: a schema with "x-clips-options": "particle"
+// (a session's "inference" object) takes its properties from the engine's
+// option table (engine/options.hpp): names, types, ranges (particles at most
+// the server's kMaxSessionParticles) and choices. So an option added to that
+// table is in the CLI's flags, Python's keywords, the server's fields and
+// this document.
+// A test keeps the file equal to the filled file; with CLIPS_UPDATE_SCHEMA=1
+// it writes the filled document back.
 #include <nlohmann/json.hpp>
 
 namespace clips::serve {
@@ -13,5 +19,9 @@ namespace clips::serve {
 // Sets each "x-clips-choices" schema's enum from the catalogue; returns how
 // many schemas it set. std::invalid_argument for an ID the catalogue lacks.
 size_t fill_choice_enums(nlohmann::ordered_json& doc);
+// Sets each "x-clips-options" schema's properties from the option table, then
+// their choices' enums (fill_choice_enums); returns how many schemas it set.
+// std::invalid_argument for an unknown table.
+size_t fill_option_properties(nlohmann::ordered_json& doc);
 
 }  // namespace clips::serve

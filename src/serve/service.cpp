@@ -72,9 +72,6 @@ json parse_body(const std::string& body, std::initializer_list<const char*> allo
   return j;
 }
 
-// More particles than a shared server gives one session.
-constexpr int kMaxSessionParticles = 10'000;
-
 // The server's play limits with a session's "inference" object applied: its
 // particle options, read by the engine's one table (engine/options.hpp) as
 // `clips serve --particles ...` and Python's keywords are.

@@ -24,6 +24,10 @@
 
 namespace clips::serve {
 
+// More particles than a shared server gives one session (its "inference"
+// field; the OpenAPI document's bound, serve/api_schema.hpp).
+constexpr int kMaxSessionParticles = 10'000;
+
 struct ServiceLimits {
   size_t max_body_bytes = 64 * 1024;
   // Each PDDL or pack text of a session created from text ("domain",

@@ -1,5 +1,6 @@
 #include "serve/service_test.hpp"
 #include "eval/methods.hpp"
+#include "engine/options.hpp"
 
 namespace clips::serve {
 namespace service_test {
@@ -280,13 +281,24 @@ TEST_F(Fixture, TheGameEndsAtThePlayersGoalOnly) {
   EXPECT_NE(r.body.find("field 'goal'"), std::string::npos) << r.body;
 }
 
-// issue 63: the OpenAPI document's enums are the name tables'. A table
-// changed: CLIPS_UPDATE_SCHEMA=1 writes the filled document back.
-TEST(ApiSchema, ItsChoiceEnumsAreTheNameTables) {
+// The OpenAPI document's enums are the name tables', and a session's
+// particle options the option table's. A table changed: CLIPS_UPDATE_SCHEMA=1
+// writes the filled document back.
+TEST(ApiSchema, ItsChoiceEnumsAndOptionsAreTheTables) {
   const nlohmann::ordered_json file = read_api_schema();
   nlohmann::ordered_json filled = file;
+  // the "inference" object of both session requests
+  EXPECT_EQ(fill_option_properties(filled), 2u);
   // method (also in the two session requests and the switch), assistance, modality and the inference choices
   EXPECT_EQ(fill_choice_enums(filled), 17u);
+  const auto& inference = filled["components"]["schemas"]["CreateSessionRequest"]["oneOf"][0]["properties"]["inference"];
+  std::vector<std::string> names;
+  for (const auto& [name, schema] : inference["properties"].items()) names.push_back(name);
+  std::vector<std::string> table;
+  for (const auto& o : engine::particle_option_table()) table.push_back(o.name);
+  EXPECT_EQ(names, table);
+  EXPECT_EQ(inference["properties"]["particles"]["maximum"], kMaxSessionParticles);
+  EXPECT_EQ(inference["properties"]["ess_threshold"]["maximum"], 1.0);
   if (std::getenv("CLIPS_UPDATE_SCHEMA") && filled != file) {
     std::ofstream(std::string(CLIPS_SOURCE_DIR) + "/data/schema/serve-api.openapi.json") << filled.dump(1) << "\n";
     return;
@@ -295,6 +307,8 @@ TEST(ApiSchema, ItsChoiceEnumsAreTheNameTables) {
                              "CLIPS_UPDATE_SCHEMA=1";
   nlohmann::ordered_json bad = {{"enum", {"x"}}, {"x-clips-choices", "no_such_kind"}};
   EXPECT_THROW(fill_choice_enums(bad), std::invalid_argument);
+  nlohmann::ordered_json no_table = {{"type", "object"}, {"x-clips-options", "no_such_table"}};
+  EXPECT_THROW(fill_option_properties(no_table), std::invalid_argument);
 }
 
 // issue 63's test of "one registration": a decision policy registered at
