@@ -38,8 +38,6 @@
 #include "eval/choices.hpp"
 #include "inference/belief.hpp"
 #include "engine/options.hpp"
-#include "engine/policies.hpp"
-#include "eval/methods.hpp"
 #include "engine/runs.hpp"
 #include "language/listener.hpp"
 
@@ -144,12 +142,12 @@ std::vector<std::string> list_option(const char* name, py::handle v) {
 
 // ---- decision policies written in Python -------------------------------------
 //
-// register_policy(name, help, decide) registers `decide` with the engine's one
-// table of decision policies (engine/policies.hpp), as the C++ ones are: the
-// keyword assistance=, choices(), run_bench's "clips/NAME" and a server made in
-// this process take it. The callables are kept in a dict that is never
-// destroyed (their one strong reference, so no Python object is released
-// after the interpreter is gone); the engine's entry holds them borrowed.
+// register_policy(name, help, decide) is the library's clips::register_policy
+// (clips/policy.hpp) with a Python callable: the keyword assistance=,
+// choices() and run_bench's "clips/NAME" take it. The callables are kept in a
+// dict that is never destroyed (their one strong reference, so no Python
+// object is released after the interpreter is gone); the registered function
+// holds them borrowed.
 
 // Set on the thread that runs a Python policy: a call on a session from inside
 // the policy would wait for the call that is running it.
@@ -160,107 +158,65 @@ py::dict& python_policies() {
   return *held;
 }
 
-clips::assist::Decision decide_in_python(const std::string& name, PyObject* fn, const clips::engine::DecisionInput& in) {
-  const clips::pddl::Task& task = *in.setup.task;
-  clips::assist::Decision d;
-  d.candidates = task.applicable_actions(in.state);
-  if (d.candidates.empty()) throw clips::InputError("no action is applicable in the assistance state");
+// The Python callable's choice for one view (clips/policy.hpp), with the GIL
+// held: its exceptions become C++ ones carrying their Python message.
+clips::PolicyChoice choose_in_python(const std::string& name, PyObject* fn, const clips::PolicyView& v) {
   py::gil_scoped_acquire gil;
   py::dict view;
-  py::list actions;
-  for (clips::pddl::ActionId a : d.candidates) actions.append(task.action_name(a));
-  view["actions"] = actions;
-  view["wait"] = task.action_name(in.setup.turns().noop(task, in.setup.assistant));
-  // Goals and what was asked, summed over the hypotheses (several cost
-  // profiles can share a goal), in the belief's order.
-  std::vector<std::pair<std::string, double>> goals, asked;
-  auto add = [](std::vector<std::pair<std::string, double>>& to, const std::string& key, double w) {
-    for (auto& [k, v] : to)
-      if (k == key) {
-        v += w;
-        return;
-      }
-    to.emplace_back(key, w);
-  };
-  for (const auto& h : in.hypotheses) {
-    add(goals, h.policy->spec().goal_text(), h.weight);
-    if (h.request)
-      for (const auto& c : *h.request) add(asked, c.text, h.weight * c.probability);
-  }
-  py::list gl, al;
-  for (const auto& [g, w] : goals) gl.append(py::dict(py::arg("goal") = g, py::arg("p") = w));
-  for (const auto& [c, w] : asked) al.append(py::dict(py::arg("command") = c, py::arg("p") = w));
-  view["goals"] = gl;
-  view["asked"] = al;
-  view["state"] = task.state_str(in.state);
-  view["t"] = in.t;
-  view["stalled"] = in.stalled;
-  std::string chosen, why;
+  view["actions"] = v.actions;
+  view["wait"] = v.wait;
+  py::list goals, asked;
+  for (size_t i = 0; i < v.goals.size(); ++i)
+    goals.append(py::dict(py::arg("goal") = v.goals[i], py::arg("p") = v.goal_weights[i]));
+  for (size_t i = 0; i < v.asked.size(); ++i)
+    asked.append(py::dict(py::arg("command") = v.asked[i], py::arg("p") = v.asked_weights[i]));
+  view["goals"] = goals;
+  view["asked"] = asked;
+  view["state"] = v.state;
+  view["t"] = v.t;
+  view["stalled"] = v.stalled;
   struct Inside {
     Inside() { inside_python_policy = true; }
     ~Inside() { inside_python_policy = false; }
   };
+  clips::PolicyChoice choice;
   try {
     const Inside inside;
     const py::object r = py::reinterpret_borrow<py::object>(fn)(view);
     if (py::isinstance<py::tuple>(r) && py::len(r) == 2) {
-      chosen = py::cast<std::string>(r.cast<py::tuple>()[0]);
-      why = py::cast<std::string>(r.cast<py::tuple>()[1]);
+      choice.action = py::cast<std::string>(r.cast<py::tuple>()[0]);
+      choice.reason = py::cast<std::string>(r.cast<py::tuple>()[1]);
     } else {
-      chosen = py::cast<std::string>(r);
+      choice.action = py::cast<std::string>(r);
     }
   } catch (py::error_already_set& e) {
-    throw clips::InputError("assistance policy '" + name + "' raised " + e.what());
+    throw std::runtime_error(e.what());  // read while the GIL is held
   } catch (const py::cast_error&) {
     throw clips::InputError("assistance policy '" + name +
                             "' must return an action's name (a str) or (action, reason), as in view['actions']");
   }
-  for (size_t i = 0; i < d.candidates.size(); ++i)
-    if (task.action_name(d.candidates[i]) == chosen) {
-      d.action = d.candidates[i];
-      d.values.assign(d.candidates.size(), 0.0);
-      d.values[i] = 1.0;
-      d.reason = why.empty() ? "the Python policy '" + name + "' chose it" : why;
-      return d;
-    }
-  throw clips::InputError("assistance policy '" + name + "' returned '" + chosen +
-                          "', which is not an applicable action (view['actions']: " +
-                          clips::util::or_list([&] {
-                            std::vector<std::string> n;
-                            for (clips::pddl::ActionId a : d.candidates) n.push_back(task.action_name(a));
-                            return n;
-                          }()) +
-                          ")");
+  return choice;
 }
 
 void register_policy(const std::string& name, const std::string& help, py::function decide) {
-  const auto& table = clips::engine::assistance_choices();
-  if (name.empty() || name.find_first_of(" /\t\n") != std::string::npos)
-    throw py::value_error("a policy's name is one word without '/' (it is written METHOD/NAME in bench), got '" +
-                          name + "'");
-  if (table.contains(name)) throw py::value_error("the assistance policy '" + name + "' is already registered");
-  if (clips::eval::assist_policy_choices().contains(name))
-    throw py::value_error("'" + name + "' is a bench assistance method's name");
-  int value = 1000;  // the C++ policies' values are small
-  for (const auto& e : table.entries()) value = std::max(value, static_cast<int>(e.value) + 1);
-  python_policies()[py::str(name)] = decide;
+  const py::str key(name);
+  if (python_policies().contains(key))
+    throw clips::InputError("the assistance policy '" + name + "' is already registered");
+  python_policies()[key] = decide;
   PyObject* fn = decide.ptr();
   try {
-    clips::engine::register_assistance({static_cast<clips::Assistance>(value), name, help,
-                                        [name, fn](const clips::engine::DecisionInput& in) {
-                                          return decide_in_python(name, fn, in);
-                                        }});
+    clips::register_policy(name, help,
+                           [name, fn](const clips::PolicyView& v) { return choose_in_python(name, fn, v); });
   } catch (...) {
-    PyDict_DelItemString(python_policies().ptr(), name.c_str());
+    PyDict_DelItem(python_policies().ptr(), key.ptr());
     throw;
   }
 }
 
 void unregister_policy(const std::string& name) {
-  if (!python_policies().contains(name))
-    throw py::value_error("'" + name + "' is not a policy registered from Python");
-  clips::engine::unregister_assistance(name);
-  PyDict_DelItemString(python_policies().ptr(), name.c_str());
+  clips::unregister_policy(name);  // InputError for a name it did not register
+  const py::str key(name);
+  if (python_policies().contains(key)) PyDict_DelItem(python_policies().ptr(), key.ptr());
 }
 
 // Every named choice (eval/choices.hpp) as {id: [{'name', 'help', 'aliases'}]}:

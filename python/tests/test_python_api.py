@@ -491,5 +491,5 @@ def test_a_policy_registered_in_python_decides_sessions_and_bench_episodes():
             if name in [c["name"] for c in clips_assist.choices()["assistance"]]:
                 clips_assist.unregister_policy(name)
     assert "py_idle" not in [c["name"] for c in clips_assist.choices()["assistance"]]
-    with pytest.raises(ValueError, match="not a policy registered from Python"):
+    with pytest.raises(ValueError, match="not a policy registered with register_policy"):
         clips_assist.unregister_policy("qmdp")

@@ -64,4 +64,9 @@ const Decide& decide_of(Assistance a) {
   return it->second;
 }
 
+std::vector<std::string> reserved_policy_names() {
+  const std::string qmdp = registry().names.name(Assistance::QMdp);
+  return {qmdp + "_offline", qmdp + "_online"};
+}
+
 }  // namespace clips::engine

@@ -30,5 +30,8 @@ void register_assistance(DecisionPolicy policy);
 void unregister_assistance(const std::string& name);
 // The decide() of a registered policy; InputError for a value none has.
 const Decide& decide_of(Assistance a);
+// The bench's names of Q_MDP's two episode kinds ("qmdp_offline",
+// "qmdp_online"; eval::assist_policy_choices): no policy may take them.
+std::vector<std::string> reserved_policy_names();
 
 }  // namespace clips::engine

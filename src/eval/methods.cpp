@@ -214,14 +214,15 @@ class MultimodalMethod : public Method {
 
 const util::Choices<AssistPolicy>& assist_policy_choices() {
   const auto& live = engine::assistance_choices();
-  const std::string qmdp = live.name(Assistance::QMdp), pibar = live.name(Assistance::PiBar);
+  const std::vector<std::string> qmdp = engine::reserved_policy_names();  // offline, online
+  const std::string pibar = live.name(Assistance::PiBar);
   static util::Choices<AssistPolicy> table(
       "assistance method",
       {{{Assistance::QMdp, Episodes::Offline},
-        qmdp + "_offline",
+        qmdp[0],
         "Q_MDP on the posterior after the observations, kept through the episode, as in the paper",
         {}},
-       {{Assistance::QMdp, Episodes::Online}, qmdp + "_online",
+       {{Assistance::QMdp, Episodes::Online}, qmdp[1],
         "Q_MDP, the posterior updated by each action of the episode", {}},
        {{Assistance::PiBar, Episodes::PaperMixture}, pibar, live.help(Assistance::PiBar), {}}});
   // The other registered policies, each decided at every turn on the

@@ -1,0 +1,54 @@
+#pragma once
+// A decision policy of your own: how the assistant picks its next action.
+// Registered once, it sits in the same table as "qmdp" and "pibar": a
+// Session decides by it (SessionOptions::assistance), `clips serve` and
+// Python take its name, and the bench runs its episodes ("clips/NAME").
+//
+//   clips::register_policy("idle", "never helps", [](const clips::PolicyView& v) {
+//     return clips::PolicyChoice{v.wait, "this policy never helps"};
+//   });
+//   clips::SessionOptions o;
+//   o.assistance = clips::parse_assistance("idle");
+//
+// Register at start-up, before sessions run (the table is not locked).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "clips/types.hpp"
+
+namespace clips {
+
+// What the policy sees at one of the assistant's turns.
+struct PolicyView {
+  std::vector<std::string> actions;  // the actions it may take now (PDDL text)
+  std::string wait;                  // its no-op among them
+  // The candidate goals as PDDL conditions and their posterior weights
+  // (summed over cost profiles), in the session's order.
+  std::vector<std::string> goals;
+  std::vector<double> goal_weights;
+  // What the last instruction may have asked for (display form), with
+  // P(command | instruction) summed over the goals weighted by the posterior.
+  std::vector<std::string> asked;
+  std::vector<double> asked_weights;
+  std::string state;     // the state's atoms, as text
+  int t = 0;             // the model time step
+  bool stalled = false;  // both agents just waited
+};
+
+struct PolicyChoice {
+  std::string action;  // one of PolicyView::actions
+  std::string reason;  // why, in words ("": a default naming the policy)
+};
+
+using PolicyFunction = std::function<PolicyChoice(const PolicyView&)>;
+
+// Registers `decide` under `name` (one word, no '/'); returns its value for
+// SessionOptions::assistance. InputError for a name that is taken or
+// malformed. A choice that is not one of the view's actions, or an exception
+// from `decide`, is an InputError naming the policy when the session decides.
+Assistance register_policy(const std::string& name, const std::string& help, PolicyFunction decide);
+// Takes back a policy register_policy registered; InputError for another name.
+void unregister_policy(const std::string& name);
+
+}  // namespace clips
