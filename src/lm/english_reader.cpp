@@ -329,11 +329,18 @@ void AlignmentModel::read_place_numbers(EncodedUtterance& u) const {
       return (f & kWordFunction) == 0 && !is_punctuation_token(u.words[j]) && number_word_value(u.words[j]) == 0 &&
              ((f & kWordNoun) != 0 || (f & kWordModifier) != 0);
     };
+    // A cardinal before a noun phrase counts it ("we need two glasses") when
+    // the noun names one of the domain's kinds; "shelf two needs sorting
+    // out" counts no needs. (While training, no noun table exists yet: any
+    // noun or adjective after it counts.)
+    auto counts = [&](size_t j) {
+      if (!place_word(j)) return false;
+      return noun_tables_.empty() || best_noun_mass(u.ids[j], u.words[j]) >= kTypedNoun;
+    };
     bool place_number = false;
     if (i > 0 && (u.words[i - 1] == "number" || u.words[i - 1] == "no" || u.words[i - 1] == "num")) place_number = true;
-    // "shelf three", but not "we need two glasses": a cardinal before a noun
-    // phrase counts it.
-    else if (i > 0 && place_word(i - 1) && u.words[i] != "one" && !(i + 1 < n && place_word(i + 1)))
+    // "shelf three", but not "we need two glasses".
+    else if (i > 0 && place_word(i - 1) && u.words[i] != "one" && !(i + 1 < n && counts(i + 1)))
       place_number = true;
     else if (is_ordinal_word(u.words[i]) && i + 1 < n && place_word(i + 1)) place_number = true;
     if (!place_number) continue;

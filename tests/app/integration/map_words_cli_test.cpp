@@ -62,6 +62,23 @@ TEST(MapWords, NumberedShelvesAreToldApartByTheirNumber) {
   EXPECT_GT(one.at("red-blue-cans-shelf1"), 0.6);
 }
 
+// A number said after a place's noun is its number whatever word follows,
+// unless that word names one of the domain's kinds, which the number then
+// counts: "shelf three needs sorting out" reads as "shelf 3 needs ...", but
+// "I need two cans" asks for two cans, not for shelf 2's.
+TEST(MapWords, ANumberAfterAPlaceIsItsNumberUnlessItCountsAKind) {
+  const auto words = posterior("Shelf three needs sorting out.");
+  const auto digits = posterior("Shelf 3 needs sorting out.");
+  ASSERT_FALSE(words.empty());
+  ASSERT_EQ(words.size(), digits.size());
+  for (const auto& [goal, q] : digits) EXPECT_NEAR(words.at(goal), q, 1e-6) << goal;
+  EXPECT_GT(words.at("blue-can-big-box-shelf3"), 0.5);
+  const auto two = posterior("I need two cans.");
+  ASSERT_FALSE(two.empty());
+  EXPECT_GT(two.at("red-blue-cans-shelf1") + two.at("red-green-cans-shelf2"), 0.9);
+  EXPECT_LT(two.at("red-green-cans-shelf2"), 0.5);
+}
+
 // "not the green one" is not a request for the green can: the goals with a
 // green can keep less than half the posterior, where the same request
 // without "not" gives them nearly all of it.
