@@ -4,6 +4,8 @@
 
 #include <map>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "engine/methods.hpp"
 #include "util/error.hpp"
@@ -12,6 +14,14 @@ namespace clips::engine {
 
 namespace {
 
+// Q_MDP's two bench evaluations go by its name and the episode kind (none
+// before Q_MDP is registered).
+std::vector<std::string> reserved(const util::Choices<Assistance>& names) {
+  for (const auto& e : names.entries())
+    if (e.value == Assistance::QMdp) return {e.name + "_offline", e.name + "_online"};
+  return {};
+}
+
 struct Registry {
   util::Choices<Assistance> names{"assistance", {}};
   std::map<Assistance, Decide> decide;
@@ -19,6 +29,8 @@ struct Registry {
   void add(DecisionPolicy p) {
     if (!p.decide) throw std::logic_error("assistance '" + p.name + "' needs a decide()");
     if (decide.count(p.value)) throw std::logic_error("assistance '" + p.name + "': its value is registered twice");
+    for (const std::string& taken : reserved(names))
+      if (p.name == taken) throw std::logic_error("assistance '" + p.name + "' is the name of a bench evaluation");
     names.add({p.value, p.name, p.help, {}});
     decide.emplace(p.value, std::move(p.decide));
   }
@@ -64,9 +76,6 @@ const Decide& decide_of(Assistance a) {
   return it->second;
 }
 
-std::vector<std::string> reserved_policy_names() {
-  const std::string qmdp = registry().names.name(Assistance::QMdp);
-  return {qmdp + "_offline", qmdp + "_online"};
-}
+std::vector<std::string> reserved_policy_names() { return reserved(registry().names); }
 
 }  // namespace clips::engine

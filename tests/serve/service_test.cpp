@@ -333,6 +333,8 @@ TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueTheSchemaAndTheDecisio
   } unregister;
   EXPECT_THROW(engine::register_assistance({rule, "test_rule", "twice", waits}), std::logic_error);
   EXPECT_THROW(engine::register_assistance({static_cast<Assistance>(98), "no_decide", "none", {}}), std::logic_error);
+  EXPECT_THROW(engine::register_assistance({static_cast<Assistance>(97), "qmdp_online", "a bench name", waits}),
+               std::logic_error);
   const auto& table = engine::assistance_choices();
 
   CLI::App app("test");
