@@ -399,10 +399,9 @@ std::string qmdp_reason(const Decision& d, const std::vector<ActionId>& acts, si
 // every hypothesis above the threshold agrees, else the argmax of the
 // weighted Q-values, dead ends (or, with QaFloor::Horizon, every value)
 // floored at the cost of waiting to the horizon. The weighted values are
-// computed for a unanimous choice too only when `values_always` (the
-// simulated episodes do not read them).
+// computed for a unanimous choice too (explanations read them).
 Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const std::vector<Hypothesis>& belief,
-                     const State& s, int t, bool values_always, bool stalled,
+                     const State& s, int t, bool stalled,
                      const std::vector<State>* since_instruction = nullptr) {
   const pddl::Task& task = *setup.task;
   std::vector<const Hypothesis*> live;
@@ -428,11 +427,6 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
   const bool request_rule = setup.rule == AssistRule::Request && !setup.salient_args.empty() &&
                             std::any_of(live.begin(), live.end(),
                                         [](const Hypothesis* h) { return h->request && !h->request->empty(); });
-  if (d.unanimous && !values_always && !request_rule) {
-    d.action = *common;
-    d.reason = "every likely goal's plan takes this action next";
-    return d;
-  }
   d.candidates = task.applicable_actions(s);
   const auto& acts = d.candidates;
   std::vector<double>& qa = d.values;
@@ -943,8 +937,7 @@ bool round_of_waits(const AssistSetup& setup, const std::vector<ActionId>& actio
 
 Decision qmdp_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s, int t,
                        bool stalled, const std::vector<pddl::State>* since_instruction) {
-  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, /*values_always=*/true, stalled,
-                     since_instruction);
+  return decide_qmdp(setup, find_wait(setup, setup.assistant), belief, s, t, stalled, since_instruction);
 }
 
 Decision pibar_decision(const AssistSetup& setup, const std::vector<Hypothesis>& belief, const pddl::State& s) {
