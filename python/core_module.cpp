@@ -175,6 +175,17 @@ clips::PolicyChoice choose_in_python(const std::string& name, PyObject* fn, cons
   view["state"] = v.state;
   view["t"] = v.t;
   view["stalled"] = v.stalled;
+  // The registered options' values, typed as their kinds.
+  py::dict options;
+  for (const auto& o : clips::engine::option_table()) {
+    const auto it = v.options.find(o.name);
+    if (!o.registered || it == v.options.end()) continue;
+    using Kind = clips::engine::EngineOption::Kind;
+    if (o.kind == Kind::Integer) options[py::str(o.name)] = py::int_(std::stoll(it->second));
+    else if (o.kind == Kind::Real) options[py::str(o.name)] = py::float_(std::stod(it->second));
+    else options[py::str(o.name)] = py::str(it->second);
+  }
+  view["options"] = options;
   struct Inside {
     Inside() { inside_python_policy = true; }
     ~Inside() { inside_python_policy = false; }
@@ -219,6 +230,40 @@ void unregister_policy(const std::string& name) {
   if (python_policies().contains(key)) PyDict_DelItem(python_policies().ptr(), key.ptr());
 }
 
+// register_option(name, help, kind, default, ...) is the library's
+// clips::register_option: kind 'int', 'float' or 'choice'; the default as a
+// value of that kind (a float's repr is the text the table parses).
+void register_option(const std::string& name, const std::string& help, const std::string& kind, py::handle fallback,
+                     py::handle minimum, py::handle maximum, py::handle choices) {
+  clips::OptionSpec spec;
+  spec.name = name;
+  spec.help = help;
+  if (kind == "int") {
+    spec.kind = clips::OptionSpec::Kind::Integer;
+  } else if (kind == "float") {
+    spec.kind = clips::OptionSpec::Kind::Real;
+  } else if (kind == "choice") {
+    spec.kind = clips::OptionSpec::Kind::Choice;
+  } else {
+    throw clips::InputError("option '" + name + "': kind must be 'int', 'float' or 'choice', got '" + kind + "'");
+  }
+  if (spec.kind == clips::OptionSpec::Kind::Choice) {
+    spec.default_value = text_option("default", fallback);
+    if (choices.is_none()) throw clips::InputError("option '" + name + "': a choice needs choices=[...]");
+    spec.choices = list_option("choices", choices);
+  } else {
+    if (!choices.is_none()) throw clips::InputError("option '" + name + "': choices= is for kind 'choice'");
+    if (py::isinstance<py::bool_>(fallback) || !(py::isinstance<py::int_>(fallback) || py::isinstance<py::float_>(fallback)))
+      throw py::type_error("option '" + name + "': default must be a number, got " + type_name(fallback));
+    spec.default_value = spec.kind == clips::OptionSpec::Kind::Integer
+                             ? std::string(py::str(fallback))
+                             : std::string(py::repr(py::float_(py::reinterpret_borrow<py::object>(fallback))));
+    if (!minimum.is_none()) spec.minimum = cast_option<double>("minimum", minimum, "float");
+    if (!maximum.is_none()) spec.maximum = cast_option<double>("maximum", maximum, "float");
+  }
+  clips::register_option(spec);
+}
+
 // Every named choice (eval/choices.hpp) as {id: [{'name', 'help', 'aliases'}]}:
 // the same tables the CLI's flags and the server's fields read.
 py::dict choices() {
@@ -252,9 +297,9 @@ std::string number(double v) { return py::str(py::float_(v)); }
 // A particle option of the engine's table (engine/options.hpp) as Python
 // passes it: an int, a float or a str, turned into the text the table parses,
 // so that a bad value gives the CLI's and the server's message.
-std::string particle_option_text(const clips::engine::ParticleOption& po, py::handle v) {
+std::string python_option_text(const clips::engine::EngineOption& po, py::handle v) {
   const char* name = po.name.c_str();
-  using Kind = clips::engine::ParticleOption::Kind;
+  using Kind = clips::engine::EngineOption::Kind;
   if (po.kind == Kind::Choice) return text_option(name, v);
   if (py::isinstance<py::bool_>(v))
     throw py::type_error(std::string("option '") + name + "': expected " + (po.kind == Kind::Real ? "float" : "int") +
@@ -269,23 +314,27 @@ std::string particle_option_text(const clips::engine::ParticleOption& po, py::ha
 
 std::vector<SessionOption> particle_option_rows() {
   std::vector<SessionOption> rows;
-  for (const auto& po : clips::engine::particle_option_table()) {
-    const bool choice = po.kind == clips::engine::ParticleOption::Kind::Choice;
+  for (const auto& po : clips::engine::option_table()) {
+    const bool choice = po.kind == clips::engine::EngineOption::Kind::Choice;
     rows.push_back({po.name.c_str(), po.brief + "; " + po.takes,
                     [po](clips::SessionOptions& o, py::handle v) {
-                      clips::engine::set_particle_option(o, po.name, particle_option_text(po, v));
+                      clips::engine::set_option(o, po.name, python_option_text(po, v));
                     },
                     [name = po.name, choice](const clips::SessionOptions& o) {
-                      const std::string text = clips::engine::particle_option_text(o, name);
+                      const std::string text = clips::engine::option_text(o, name);
                       return choice ? quoted(text) : text;
                     }});
   }
   return rows;
 }
 
-const std::vector<SessionOption>& session_option_table() {
+// The keywords of Python's sessions: this module's own rows, with the
+// engine's table (particle settings, options registered at run time)
+// inserted before assistant_turns; composed at each use, so an option
+// registered after import is a keyword.
+std::vector<SessionOption> session_option_table() {
   using O = clips::SessionOptions;
-  static const std::vector<SessionOption> table = [] {
+  static const std::vector<SessionOption> own = [] {
     std::vector<SessionOption> t = {
       // The names and their help from the engine's tables (engine/methods.hpp).
       {"method", "the evidence the posterior uses and how the assistant decides: " +
@@ -331,11 +380,11 @@ const std::vector<SessionOption>& session_option_table() {
        },
        [](const O& o) { return quoted(o.assistant_turns); }},
     };
-    // The particle options, from the engine's one table, before assistant_turns.
-    auto particles = particle_option_rows();
-    t.insert(t.end() - 1, particles.begin(), particles.end());
     return t;
   }();
+  std::vector<SessionOption> table = own;
+  auto engine_rows = particle_option_rows();
+  table.insert(table.end() - 1, engine_rows.begin(), engine_rows.end());
   return table;
 }
 
@@ -344,7 +393,7 @@ const std::vector<SessionOption>& session_option_table() {
 clips::SessionOptions session_options(const py::kwargs& kwargs, const char* opener,
                                       std::initializer_list<const char*> taken = {}) {
   clips::SessionOptions o;
-  const auto& table = session_option_table();
+  const auto table = session_option_table();
   for (auto item : kwargs) {
     const std::string key = py::str(item.first);
     if (std::any_of(taken.begin(), taken.end(), [&](const char* t) { return key == t; })) continue;
@@ -1099,6 +1148,30 @@ PYBIND11_MODULE(_core, m) {
         "choices() -> dict\n\nEvery named choice of the options and methods (the keyword 'method', "
         "'assistance', 'rejuvenate', ...; run_bench's methods), by kind: {kind: [{'name', 'help', 'aliases'}]}. "
         "The same name tables the CLI's flags and the server's fields read (docs/cli.md, \"Named choices\").");
+  m.def("register_option", &register_option, py::arg("name"), py::arg("help"), py::arg("kind"), py::arg("default"),
+        py::kw_only(), py::arg("minimum") = py::none(), py::arg("maximum") = py::none(),
+        py::arg("choices") = py::none(),
+        "register_option(name, help, kind, default, *, minimum=None, maximum=None, choices=None) -> None\n\n"
+        "An option of your own, for a policy registered with register_policy to read (view['options'][name], "
+        "typed as its kind): kind is 'int', 'float' or 'choice'. It is then a keyword of open_dataset and "
+        "open_domain (checked as the built-in ones), and of the engine's option table that the CLI's flags and "
+        "the server's 'inference' fields are built from. InputError for a malformed or taken name (the built-in "
+        "keywords included) or a default out of range.");
+  m.def(
+      "options",
+      [] {
+        py::list out;
+        const clips::SessionOptions defaults;
+        for (const auto& so : session_option_table())
+          out.append(py::dict(py::arg("name") = so.name, py::arg("help") = so.help,
+                              py::arg("default") = so.show(defaults)));
+        return out;
+      },
+      "options() -> list\n\nThe keywords of open_dataset and open_domain, each {'name', 'help', 'default'} (the "
+      "default as Python writes it): this module's own, the engine's option table's (particle settings) and the "
+      "options registered with register_option.");
+  m.def("unregister_option", [](const std::string& name) { clips::unregister_option(name); }, py::arg("name"),
+        "unregister_option(name) -> None\n\nTakes back an option register_option registered.");
   m.def("register_policy", &register_policy, py::arg("name"), py::arg("help"), py::arg("decide"),
         "register_policy(name, help, decide) -> None\n\n"
         "Registers a decision policy written in Python, in the same table as 'qmdp' and 'pibar': sessions take "

@@ -10,8 +10,11 @@
 //   clips::SessionOptions o;
 //   o.assistance = clips::parse_assistance("idle");
 //
-// Register at start-up, before sessions run (the table is not locked).
+// Register at start-up, before sessions run (the table is not locked). A
+// policy's own settings are options registered beside it (register_option).
 #include <functional>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +37,8 @@ struct PolicyView {
   std::string state;     // the state's atoms, as text
   int t = 0;             // the model time step
   bool stalled = false;  // both agents just waited
+  // Every registered option's value (register_option below), as text.
+  std::map<std::string, std::string> options;
 };
 
 struct PolicyChoice {
@@ -50,5 +55,31 @@ using PolicyFunction = std::function<PolicyChoice(const PolicyView&)>;
 Assistance register_policy(const std::string& name, const std::string& help, PolicyFunction decide);
 // Takes back a policy register_policy registered; InputError for another name.
 void unregister_policy(const std::string& name);
+
+// An option of one's own, for a policy to read (PolicyView::options). Once
+// registered it is a session option (SessionOptions::registered_options,
+// checked when a session opens), a keyword of Python's sessions, a field of
+// the server's "inference" object and of the OpenAPI document it serves
+// (GET /api/openapi.json), and a flag --NAME ('-' for '_') of `clips infer`,
+// `bench` and `serve` built after it in the same process:
+//
+//   clips::register_option({"caution", clips::OptionSpec::Kind::Real,
+//                           "how sure the policy must be before it acts", "0.8", 0.0, 1.0});
+//   clips::SessionOptions o;
+//   o.registered_options["caution"] = "0.9";
+struct OptionSpec {
+  enum class Kind { Integer, Real, Choice };
+  std::string name;  // lower-case letters, digits and '_'
+  Kind kind = Kind::Real;
+  std::string help;
+  std::string default_value;               // as text: "0.8", "12", "cautious"
+  std::optional<double> minimum, maximum;  // Integer and Real: the range (unset: unbounded)
+  std::vector<std::string> choices;        // Choice: its values
+};
+// InputError for a malformed or taken name (the session's own options and
+// the CLI's flags included), a default outside the range or choices.
+void register_option(const OptionSpec& spec);
+// Takes back an option register_option registered; InputError for another name.
+void unregister_option(const std::string& name);
 
 }  // namespace clips

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,11 @@ struct ParticleOptions {
   int proposal_groups = 8;                 // exploring proposals per sweep, 1 to 64
   std::string particle_filters = "all";    // "all" (one filter per modality) or "clips" (the CLIPS one only)
   std::string particle_estimate = "support";  // "support" (exact weights on the held hypotheses) or "weights"
+  // Options registered at run time for a policy of one's own
+  // (clips::register_option, include/clips/policy.hpp): name -> value as
+  // text; an option not set here has its registered default. The same table
+  // reads them from flags, keywords and JSON fields.
+  std::map<std::string, std::string> registered_options;
 };
 
 // A session's options; the particle ones (unused when `particles` is 0) are

@@ -37,9 +37,12 @@ from ._core import (
     __version__,
     choices,
     data_directory,
+    options,
+    register_option,
     register_policy,
     run_bench,
     run_plan,
+    unregister_option,
     unregister_policy,
 )
 from ._core import _join_abandoned
@@ -62,9 +65,12 @@ __all__ = [
     "data_directory",
     "example_dataset",
     "goal_probabilities",
+    "options",
+    "register_option",
     "register_policy",
     "run_bench",
     "run_plan",
+    "unregister_option",
     "unregister_policy",
 ]
 

@@ -493,3 +493,56 @@ def test_a_policy_registered_in_python_decides_sessions_and_bench_episodes():
     assert "py_idle" not in [c["name"] for c in clips_assist.choices()["assistance"]]
     with pytest.raises(ValueError, match="not a policy registered with register_policy"):
         clips_assist.unregister_policy("qmdp")
+
+
+def test_an_option_registered_in_python_is_a_keyword_and_what_the_policy_sees():
+    """An option is one registration too: a keyword of the openers (checked
+    as the built-in ones are), listed by options(), and its value (typed as
+    its kind) in the view of a registered policy, in sessions and bench
+    episodes alike."""
+    seen = []
+
+    def careful(view):
+        seen.append(view["options"])
+        return view["wait"]
+
+    own = [o["name"] for o in clips_assist.options()]
+    clips_assist.register_option("py_caution", "how sure before moving", "float", 0.8, minimum=0, maximum=1)
+    clips_assist.register_option("py_mood", "a choice", "choice", "calm", choices=["calm", "eager"])
+    clips_assist.register_policy("py_careful", "waits, noting its options", careful)
+    try:
+        # Every keyword the openers already take is refused as a name.
+        for name in own:
+            with pytest.raises(ValueError, match="already taken"):
+                clips_assist.register_option(name, "clash", "int", 1)
+        with pytest.raises(ValueError, match="from 0 to 1"):
+            clips_assist.register_option("py_far", "out of range", "float", 2.0, minimum=0, maximum=1)
+        with pytest.raises(ValueError, match="kind must be"):
+            clips_assist.register_option("py_text", "no such kind", "text", "x")
+        listed = {o["name"]: o for o in clips_assist.options()}
+        assert listed["py_caution"]["default"] == "0.8" and listed["py_mood"]["default"] == "'calm'"
+        assert "how sure before moving" in listed["py_caution"]["help"]
+
+        s = played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1, assistance="py_careful",
+                                                     py_caution=0.25, py_mood="eager"))
+        s.assist()
+        assert seen[-1] == {"py_caution": 0.25, "py_mood": "eager"}
+        played(clips_assist.Session.open_dataset(EXAMPLES, "e1", threads=1, assistance="py_careful")).assist()
+        assert seen[-1] == {"py_caution": 0.8, "py_mood": "calm"}  # the defaults
+        with pytest.raises(ValueError, match="py_caution must be a number from 0 to 1, got 2.0"):
+            clips_assist.Session.open_dataset(EXAMPLES, "e1", py_caution=2.0)
+        with pytest.raises(ValueError, match="py_mood must be one of calm, eager, got 'sleepy'"):
+            clips_assist.Session.open_dataset(EXAMPLES, "e1", py_mood="sleepy")
+
+        seen.clear()
+        rep = clips_assist.run_bench(str(EXAMPLES), methods=["clips/py_careful"], plans=["e1.1.keys"], jobs=1)
+        assert rep["rows"] and seen and all(v == {"py_caution": 0.8, "py_mood": "calm"} for v in seen)
+    finally:
+        clips_assist.unregister_policy("py_careful")
+        for name in ("py_caution", "py_mood"):
+            clips_assist.unregister_option(name)
+    assert "py_caution" not in [o["name"] for o in clips_assist.options()]
+    with pytest.raises(TypeError, match="unexpected keyword argument 'py_caution'"):
+        clips_assist.Session.open_dataset(EXAMPLES, "e1", py_caution=0.5)
+    with pytest.raises(ValueError, match="not an option registered with register_option"):
+        clips_assist.unregister_option("particles")

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "engine/methods.hpp"
+#include "engine/options.hpp"
 #include "engine/policies.hpp"
 #include "util/choices.hpp"
 #include "util/error.hpp"
@@ -50,6 +51,7 @@ PolicyView view_of(const engine::DecisionInput& in, const std::vector<pddl::Acti
   v.state = task.state_str(in.state);
   v.t = in.t;
   v.stalled = in.stalled;
+  v.options = in.setup.registered_options;
   return v;
 }
 
@@ -105,5 +107,25 @@ void unregister_policy(const std::string& name) {
   }
   engine::unregister_assistance(name);
 }
+
+}  // namespace clips
+
+namespace clips {
+
+void register_option(const OptionSpec& spec) {
+  engine::EngineOption o;
+  o.name = spec.name;
+  o.kind = spec.kind == OptionSpec::Kind::Integer ? engine::EngineOption::Kind::Integer
+           : spec.kind == OptionSpec::Kind::Real  ? engine::EngineOption::Kind::Real
+                                                  : engine::EngineOption::Kind::Choice;
+  o.help = spec.help;
+  o.default_text = spec.default_value;
+  o.minimum = spec.minimum;
+  o.maximum = spec.maximum;
+  o.choices = spec.choices;
+  engine::register_option(std::move(o));
+}
+
+void unregister_option(const std::string& name) { engine::unregister_option(name); }
 
 }  // namespace clips

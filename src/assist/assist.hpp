@@ -130,6 +130,9 @@ struct AssistSetup : model::TurnTaking {
   // the focal object of a salient action (commands are matched on them), or
   // {-1, -1} for schemas people do not ask for. Empty: no request is read.
   std::vector<std::pair<int, int>> salient_args;
+  // The values of the options a library user registered (clips::register_option),
+  // for a registered decision policy to read.
+  std::map<std::string, std::string> registered_options;
   AssistSetup() {
     refine_options.max_nodes = 1u << 16;
     refine_options.max_seconds = 10;

@@ -20,6 +20,7 @@ AssistSetup setup_for(const domains::Pack& pack, std::shared_ptr<const pddl::Tas
   setup.refine = belief.searches();
   set_request_rule(setup, options.rule.value_or(parse_assist_rule(pack.spec().assistance_rule)), pack.language());
   setup.qa_floor = options.qa_floor;
+  setup.registered_options = options.registered_options;
   if (options.max_nodes) setup.refine_options.max_nodes = *options.max_nodes;
   if (options.max_seconds) setup.refine_options.max_seconds = *options.max_seconds;
   setup.refine_options.deadline = options.deadline;

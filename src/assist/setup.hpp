@@ -4,6 +4,7 @@
 // state, step and search graph, and the caller's rule and budgets. A dataset
 // plan's episode adds its completed plan and the options it counts.
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -25,6 +26,8 @@ struct SetupOptions {
   // At most this many model timesteps after the observed part (a rehearsal
   // of an episode: `clips validate`); unset: the pack's horizon.
   std::optional<int> max_steps;
+  // The registered options' values, for registered policies (AssistSetup::registered_options).
+  std::map<std::string, std::string> registered_options;
 };
 
 AssistSetup setup_for(const domains::Pack& pack, std::shared_ptr<const pddl::Task> task,

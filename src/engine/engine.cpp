@@ -733,6 +733,7 @@ AssistDecision Engine::assist(Method method, const CallLimits& limits) {
   so.max_nodes = nodes;
   so.max_seconds = m.options.search_seconds;
   so.deadline = b.deadline();
+  so.registered_options = registered_option_values(m.options);
   assist::AssistSetup setup = assist::setup_for(*m.problem.pack, m.problem.task, *belief, so);
   // The hypotheses with copies of their policies: deciding never changes the belief.
   std::vector<assist::Hypothesis> hyps = assistant_hypotheses(

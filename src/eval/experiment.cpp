@@ -92,6 +92,7 @@ assist::SetupOptions assistance_options(const ExperimentOptions& opts) {
   so.rule = opts.assist_rule;
   so.qa_floor = opts.qa_floor;
   so.deadline = opts.deadline;
+  so.registered_options = engine::registered_option_values(opts.particles);
   return so;
 }
 

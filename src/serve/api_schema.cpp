@@ -35,13 +35,13 @@ size_t fill(nlohmann::ordered_json& node, const util::ChoiceCatalogue& catalogue
 
 nlohmann::ordered_json particle_properties() {
   nlohmann::ordered_json props = nlohmann::ordered_json::object();
-  using Kind = engine::ParticleOption::Kind;
-  for (const auto& o : engine::particle_option_table()) {
+  using Kind = engine::EngineOption::Kind;
+  for (const auto& o : engine::option_table()) {
     nlohmann::ordered_json p;
     if (o.kind == Kind::Choice) {
       p["type"] = "string";
       p["enum"] = o.choices;
-      p["x-clips-choices"] = o.name;  // the catalogue's kind of the same name
+      if (!o.registered) p["x-clips-choices"] = o.name;  // the catalogue's kind of the same name
     } else {
       p["type"] = o.kind == Kind::Integer ? "integer" : "number";
       if (o.minimum) p["minimum"] = o.kind == Kind::Integer ? nlohmann::ordered_json(static_cast<long long>(*o.minimum))
@@ -51,6 +51,7 @@ nlohmann::ordered_json particle_properties() {
       if (hi) p["maximum"] = o.kind == Kind::Integer ? nlohmann::ordered_json(static_cast<long long>(*hi))
                                                     : nlohmann::ordered_json(*hi);
     }
+    p["description"] = o.help;
     props[o.name] = p;
   }
   return props;
@@ -61,7 +62,7 @@ size_t fill_options(nlohmann::ordered_json& node) {
   if (node.is_object()) {
     if (node.contains("x-clips-options")) {
       const std::string id = node["x-clips-options"].get<std::string>();
-      if (id != "particle") throw std::invalid_argument("x-clips-options: no option table '" + id + "'");
+      if (id != "engine") throw std::invalid_argument("x-clips-options: no option table '" + id + "'");
       node["properties"] = particle_properties();
       ++n;
     }
@@ -80,6 +81,15 @@ size_t fill_option_properties(nlohmann::ordered_json& doc) {
   const size_t n = fill_options(doc);
   fill_choice_enums(doc);
   return n;
+}
+
+nlohmann::ordered_json served_api_document() {
+  const auto& docs = api_documents();
+  const auto it = docs.find("/serve-api.openapi.json");
+  if (it == docs.end()) throw std::logic_error("the OpenAPI document is not embedded");
+  auto doc = nlohmann::ordered_json::parse(it->second.body);
+  fill_option_properties(doc);
+  return doc;
 }
 
 }  // namespace clips::serve

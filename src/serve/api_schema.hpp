@@ -4,10 +4,10 @@
 // its "enum" from the engine's name table of that ID (engine/choices.hpp):
 // the canonical names, and with "x-clips-aliases": true (a request field
 // that reads the older spellings) the aliases too.
-// Its particle options likewise: a schema with "x-clips-options": "particle"
+// Its engine options likewise: a schema with "x-clips-options": "engine"
 // (a session's "inference" object) takes its properties from the engine's
-// option table (engine/options.hpp): names, types, ranges (particles at most
-// the server's kMaxSessionParticles) and choices. So an option added to that
+// option table (engine/options.hpp): names, help, types, ranges (particles at
+// most the server's kMaxSessionParticles) and choices, registered options too. So an option added to that
 // table is in the CLI's flags, Python's keywords, the server's fields and
 // this document.
 // A test keeps the file equal to the filled file; with CLIPS_UPDATE_SCHEMA=1
@@ -23,5 +23,9 @@ size_t fill_choice_enums(nlohmann::ordered_json& doc);
 // their choices' enums (fill_choice_enums); returns how many schemas it set.
 // std::invalid_argument for an unknown table.
 size_t fill_option_properties(nlohmann::ordered_json& doc);
+// The document as this process serves it (GET /api/openapi.json): the shipped
+// one (embedded at build time) filled from the running tables, so a policy or
+// an option registered in the process is in it.
+nlohmann::ordered_json served_api_document();
 
 }  // namespace clips::serve

@@ -18,6 +18,7 @@
 
 #include "engine/methods.hpp"
 #include "engine/options.hpp"
+#include "serve/api_schema.hpp"
 #include "language/listener.hpp"
 #include "util/error.hpp"
 #include "util/program_name.hpp"
@@ -84,11 +85,11 @@ PlayLimits with_inference(PlayLimits play, const json& j) {
       const std::string& name = it.key();
       const json& value = it.value();
       // A choice is a JSON string; a number is read from its JSON text.
-      const auto& table = engine::particle_option_table();
-      const bool choice = std::any_of(table.begin(), table.end(), [&](const engine::ParticleOption& o) {
-        return o.name == name && o.kind == engine::ParticleOption::Kind::Choice;
+      const auto& table = engine::option_table();
+      const bool choice = std::any_of(table.begin(), table.end(), [&](const engine::EngineOption& o) {
+        return o.name == name && o.kind == engine::EngineOption::Kind::Choice;
       });
-      engine::set_particle_option(play.belief, name, choice && value.is_string() ? value.get<std::string>() : value.dump());
+      engine::set_option(play.belief, name, choice && value.is_string() ? value.get<std::string>() : value.dump());
     }
   } catch (const InputError& e) {
     throw HttpError(400, std::string("field 'inference': ") + e.what());
@@ -638,7 +639,8 @@ std::string Service::allowed_methods(const std::string& path) {
     if (parts.size() <= 1 && assets.count(parts.empty() ? "/index.html" : "/" + parts.back())) return "GET, HEAD";
     return "";
   }
-  if (parts.size() == 2 && (parts[1] == "health" || parts[1] == "datasets")) return "GET, HEAD";
+  if (parts.size() == 2 && (parts[1] == "health" || parts[1] == "datasets" || parts[1] == "openapi.json"))
+    return "GET, HEAD";
   if (parts.size() == 2 && parts[1] == "sessions") return "GET, HEAD, POST, DELETE";
   if (parts.size() == 3 && parts[1] == "sessions") return "GET, HEAD, DELETE";
   if (parts.size() == 4 && parts[1] == "sessions") {
@@ -683,6 +685,8 @@ Reply Service::respond(const Request& request) {
       return json_reply(200, json{{"sessions", sessions_.size()}, {"max_sessions", limits_.max_sessions}});
     }
     if (parts.size() == 2 && parts[1] == "datasets") return datasets();
+    if (parts.size() == 2 && parts[1] == "openapi.json")
+      return {200, served_api_document().dump(1) + "\n", "application/json", {}};
     if (parts.size() == 2 && parts[1] == "sessions") {
       // The owner's sessions are not counted against a client's quota.
       if (method == "POST") return create(body, request.owner ? "" : request.client);

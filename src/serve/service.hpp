@@ -66,6 +66,8 @@ struct Asset {
   std::string_view body;
 };
 const std::map<std::string, Asset>& web_assets();  // "/index.html", "/app.js", ...
+// data/schema/serve-api.openapi.json as shipped ("/serve-api.openapi.json").
+const std::map<std::string, Asset>& api_documents();
 
 // The language model for the sessions of one domain (its pack, PDDL domain
 // and the problems it will hear about); the server's own model when unset.

@@ -56,12 +56,12 @@ ParticleEvalReport run_particle_eval(const ParticleEvalOptions& o) {
   ParticleEvalReport rep;
   rep.dataset = o.dataset;
   rep.lm = o.language_model->name();
-  rep.settings = {{"ess_threshold", engine::particle_option_text(o.tuning, "ess_threshold")},
-                  {"rejuvenation_moves", engine::particle_option_text(o.tuning, "rejuvenation_moves")},
-                  {"rejuvenate", engine::particle_option_text(o.tuning, "rejuvenate")},
-                  {"proposal_groups", engine::particle_option_text(o.tuning, "proposal_groups")},
-                  {"particle_filters", engine::particle_option_text(o.tuning, "particle_filters")},
-                  {"particle_estimate", engine::particle_option_text(o.tuning, "particle_estimate")},
+  rep.settings = {{"ess_threshold", engine::option_text(o.tuning, "ess_threshold")},
+                  {"rejuvenation_moves", engine::option_text(o.tuning, "rejuvenation_moves")},
+                  {"rejuvenate", engine::option_text(o.tuning, "rejuvenate")},
+                  {"proposal_groups", engine::option_text(o.tuning, "proposal_groups")},
+                  {"particle_filters", engine::option_text(o.tuning, "particle_filters")},
+                  {"particle_estimate", engine::option_text(o.tuning, "particle_estimate")},
                   {"assistant_turns", inference::to_string(o.assistant_turns)}};
   std::vector<const data::PlanRecord*> todo;
   for (const auto& p : ds.plans()) {

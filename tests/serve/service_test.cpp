@@ -1,6 +1,8 @@
 #include "serve/service_test.hpp"
 #include "eval/methods.hpp"
 #include "engine/options.hpp"
+#include "app/particle_flags.hpp"
+#include "clips/policy.hpp"
 
 namespace clips::serve {
 namespace service_test {
@@ -295,7 +297,7 @@ TEST(ApiSchema, ItsChoiceEnumsAndOptionsAreTheTables) {
   std::vector<std::string> names;
   for (const auto& [name, schema] : inference["properties"].items()) names.push_back(name);
   std::vector<std::string> table;
-  for (const auto& o : engine::particle_option_table()) table.push_back(o.name);
+  for (const auto& o : engine::option_table()) table.push_back(o.name);
   EXPECT_EQ(names, table);
   EXPECT_EQ(inference["properties"]["particles"]["maximum"], kMaxSessionParticles);
   EXPECT_EQ(inference["properties"]["ess_threshold"]["maximum"], 1.0);
@@ -386,6 +388,133 @@ TEST_F(Fixture, OneRegistrationReachesTheFlagsTheCatalogueTheSchemaAndTheDecisio
   EXPECT_TRUE(lists(schemas["CreateSessionRequest"]["oneOf"][0]["properties"]["assistance"]["enum"], "test_rule"));
   EXPECT_FALSE(lists(read_api_schema()["components"]["schemas"]["SessionState"]["properties"]["assistance"]["enum"],
                      "test_rule"));
+}
+
+// GET /api/openapi.json: with nothing registered in the process, the
+// document the server serves is the shipped file (which the test above keeps
+// equal to the tables).
+TEST_F(Fixture, TheServedDocumentIsTheShippedOne) {
+  auto s = make();
+  const Reply r = s->handle("GET", "/api/openapi.json", "");
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.content_type, "application/json");
+  EXPECT_EQ(body(r), json(read_api_schema()));
+  EXPECT_EQ(s->handle("POST", "/api/openapi.json", "{}").status, 405);
+}
+
+// An option a library user registers at run time (clips::register_option)
+// is one row of the engine's option table: a flag of the CLI's commands
+// built after it, a field of a session's "inference" object, a property in
+// the OpenAPI document the server serves, and its value is what a registered
+// policy sees. (Python's keyword: python/tests, test_policies.)
+TEST_F(Fixture, ARegisteredOptionIsAFlagAFieldInTheServedSchemaAndWhatThePolicySees) {
+  clips::register_option({"test_caution", clips::OptionSpec::Kind::Real, "how sure the policy must be to move",
+                          "0.8", 0.0, 1.0, {}});
+  struct Unregister {
+    ~Unregister() {
+      try {
+        clips::unregister_option("test_caution");  // the test takes it back itself, below
+      } catch (const InputError&) {
+      }
+      clips::unregister_policy("test_cautious");
+    }
+  } unregister;
+  clips::register_policy("test_cautious", "waits unless a goal is as likely as its caution",
+                         [](const clips::PolicyView& v) {
+                           const double caution = std::stod(v.options.at("test_caution"));
+                           const double best = *std::max_element(v.goal_weights.begin(), v.goal_weights.end());
+                           return clips::PolicyChoice{v.wait, "caution " + v.options.at("test_caution") +
+                                                                  (best >= caution ? " met" : " not met")};
+                         });
+  // Names the table, a front end or the CLI use are refused; so is a default out of range.
+  for (const std::string taken : {"test_caution", "particles", "threads", "dataset", "lm"})
+    EXPECT_THROW(clips::register_option({taken, clips::OptionSpec::Kind::Integer, "taken", "1", {}, {}, {}}),
+                 InputError)
+        << taken;
+  EXPECT_THROW(clips::register_option({"Caution", clips::OptionSpec::Kind::Real, "upper case", "1", {}, {}, {}}),
+               InputError);
+  EXPECT_THROW(clips::register_option({"test_far", clips::OptionSpec::Kind::Real, "out of range", "2", 0.0, 1.0, {}}),
+               InputError);
+  EXPECT_THROW(clips::register_option({"test_pick", clips::OptionSpec::Kind::Choice, "no choices", "a", {}, {}, {}}),
+               InputError);
+
+  // The CLI: a flag with its help and range, parsed and checked by the table.
+  CLI::App app("test");
+  ParticleOptions flags;
+  app::add_particle_options(&app, flags);
+  EXPECT_NE(app.help().find("--test-caution"), std::string::npos) << app.help();
+  EXPECT_NE(app.help().find("how sure the policy must be to move [a number from 0 to 1]"), std::string::npos)
+      << app.help();
+  app.parse("--test-caution 0.25", false);
+  EXPECT_EQ(flags.registered_options.at("test_caution"), "0.25");
+  EXPECT_THROW(app.parse("--test-caution 2", false), CLI::ValidationError);
+  EXPECT_EQ(engine::registered_option_values(ParticleOptions{}).at("test_caution"), "0.8");  // the default
+  // A command's own flag of that name stays the command's.
+  CLI::App own("test");
+  std::string mine;
+  own.add_option("--test-caution", mine, "the command's own");
+  EXPECT_NO_THROW(app::add_particle_options(&own, flags));
+  own.parse("--test-caution 7", false);
+  EXPECT_EQ(mine, "7");
+
+  // The served document: the option in both session requests' "inference"
+  // objects, the policy in the assistance enums; the shipped file has neither.
+  const char* log = std::getenv("CLIPS_SERVE_EXCHANGE_LOG");
+  const std::string saved = log ? log : "";
+  unsetenv("CLIPS_SERVE_EXCHANGE_LOG");
+  auto s = make();
+  if (log) setenv("CLIPS_SERVE_EXCHANGE_LOG", saved.c_str(), 1);
+  const Reply doc_reply = s->handle("GET", "/api/openapi.json", "");
+  ASSERT_EQ(doc_reply.status, 200) << doc_reply.body;
+  const json doc = body(doc_reply);
+  EXPECT_EQ(json(served_api_document()), doc);
+  for (const auto& variant : doc["components"]["schemas"]["CreateSessionRequest"]["oneOf"]) {
+    const json& p = variant["properties"]["inference"]["properties"]["test_caution"];
+    EXPECT_EQ(p["type"], "number") << p;
+    EXPECT_EQ(p["minimum"], 0.0) << p;
+    EXPECT_EQ(p["maximum"], 1.0) << p;
+    EXPECT_EQ(p["description"], "how sure the policy must be to move") << p;
+    EXPECT_TRUE(lists(variant["properties"]["assistance"]["enum"], "test_cautious"));
+  }
+  EXPECT_FALSE(read_api_schema()["components"]["schemas"]["CreateSessionRequest"]["oneOf"][0]["properties"]
+                   ["inference"]["properties"]
+                       .contains("test_caution"));
+
+  // A session's field: checked as the flag is, and what the policy sees.
+  json request = {{"dataset", "doors-keys-gems"},
+                  {"problem", "e1"},
+                  {"assistance", "test_cautious"},
+                  {"inference", {{"test_caution", 1.5}}}};
+  const Reply refused = s->handle("POST", "/api/sessions", request.dump());
+  EXPECT_EQ(refused.status, 400);
+  EXPECT_NE(refused.body.find("field 'inference': test_caution must be a number from 0 to 1, got 1.5"),
+            std::string::npos)
+      << refused.body;
+  request["inference"] = {{"test_caution", 0.05}};
+  const Reply created = s->handle("POST", "/api/sessions", request.dump());
+  ASSERT_EQ(created.status, 201) << created.body;
+  auto decide = [&](const Reply& session) {
+    const std::string id = body(session)["id"];
+    EXPECT_LT(s->handle("POST", "/api/sessions/" + id + "/act", json{{"action", "(left human)"}}.dump()).status, 300);
+    const Reply decided = s->handle("POST", "/api/sessions/" + id + "/assist", json{{"apply", false}}.dump());
+    EXPECT_EQ(decided.status, 200) << decided.body;
+    return decided.body;
+  };
+  EXPECT_NE(decide(created).find("caution 0.05 met"), std::string::npos);
+  request.erase("inference");  // the default
+  const Reply plain = s->handle("POST", "/api/sessions", request.dump());
+  ASSERT_EQ(plain.status, 201) << plain.body;
+  EXPECT_NE(decide(plain).find("caution 0.8 "), std::string::npos);
+
+  // Taken back: no flag, no field.
+  clips::unregister_option("test_caution");
+  CLI::App after("test");
+  ParticleOptions none;
+  app::add_particle_options(&after, none);
+  EXPECT_EQ(after.help().find("--test-caution"), std::string::npos);
+  ParticleOptions stale;
+  stale.registered_options["test_caution"] = "0.5";
+  EXPECT_THROW(engine::check_options(stale), InputError);
 }
 
 // A session's method is a name of the engine's method table, as the
