@@ -97,23 +97,6 @@ std::string text_option(const char* name, py::handle v) {
   return text_arg(std::string("option '") + name + "'", v);
 }
 
-// An int option in [lo, hi]; a bool is a TypeError, an int out of range
-// (however large) an InputError (a ValueError).
-long long int_option(const char* name, py::handle v, long long lo, long long hi = INT_MAX) {
-  if (py::isinstance<py::bool_>(v))
-    throw py::type_error(std::string("option '") + name + "': expected int, got bool");
-  if (!py::isinstance<py::int_>(v) && !py::hasattr(v, "__index__"))
-    throw py::type_error(std::string("option '") + name + "': expected int, got " + type_name(v));
-  const py::int_ big(py::reinterpret_borrow<py::object>(v));
-  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  int overflow = 0;
-  const long long x = PyLong_AsLongLongAndOverflow(big.ptr(), &overflow);
-  if (overflow != 0 || x < lo || x > hi)
-    throw clips::InputError(std::string(name) + " must be an int in " + range + ", got " +
-                            std::string(py::str(py::object(big))));
-  return x;
-}
-
 // A finite float option in [lo, hi] (NaN and infinities are refused).
 double float_option(const char* name, py::handle v, double lo = -HUGE_VAL, double hi = HUGE_VAL) {
   if (py::isinstance<py::bool_>(v))
@@ -285,22 +268,21 @@ py::dict choices() {
 constexpr long long kMaxThreads = 1024;
 
 struct SessionOption {
-  std::string name;  // owned: the particle rows' names come from a table built per call
+  std::string name;
   std::string help;
   std::function<void(clips::SessionOptions&, py::handle)> set;
   std::function<std::string(const clips::SessionOptions&)> show;  // the default, as Python would write it
 };
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
-std::string number(double v) { return py::str(py::float_(v)); }
 
-// A particle option of the engine's table (engine/options.hpp) as Python
+// A session option of the engine's table (engine/options.hpp) as Python
 // passes it: an int, a float or a str, turned into the text the table parses,
 // so that a bad value gives the CLI's and the server's message.
 std::string python_option_text(const clips::engine::EngineOption& po, py::handle v) {
   const char* name = po.name.c_str();
   using Kind = clips::engine::EngineOption::Kind;
-  if (po.kind == Kind::Choice) return text_option(name, v);
+  if (po.kind == Kind::Choice || po.kind == Kind::Text) return text_option(name, v);
   if (py::isinstance<py::bool_>(v))
     throw py::type_error(std::string("option '") + name + "': expected " + (po.kind == Kind::Real ? "float" : "int") +
                          ", got bool");
@@ -312,80 +294,36 @@ std::string python_option_text(const clips::engine::EngineOption& po, py::handle
   return py::repr(py::float_(cast_option<double>(name, v, "float")));
 }
 
-std::vector<SessionOption> particle_option_rows() {
+// The keywords of Python's sessions: the engine's session option table (the
+// session's own options, the particle settings and options registered at
+// run time), read at each use, so an option registered after import is a
+// keyword.
+std::vector<SessionOption> session_option_table() {
+  using Kind = clips::engine::EngineOption::Kind;
   std::vector<SessionOption> rows;
-  for (const auto& po : clips::engine::option_table()) {
-    const bool choice = po.kind == clips::engine::EngineOption::Kind::Choice;
-    rows.push_back({po.name.c_str(), po.brief + "; " + po.takes,
+  for (const auto& po : clips::engine::session_option_table()) {
+    std::string help = po.kind == Kind::Choice ? po.help : po.brief;
+    if (po.kind == Kind::Integer || po.kind == Kind::Real) help += "; " + po.takes;
+    rows.push_back({po.name, help,
                     [po](clips::SessionOptions& o, py::handle v) {
-                      clips::engine::set_option(o, po.name, python_option_text(po, v));
+                      if (po.kind == Kind::List)
+                        clips::engine::set_session_option(o, po.name, list_option(po.name.c_str(), v));
+                      else
+                        clips::engine::set_session_option(o, po.name, python_option_text(po, v));
                     },
-                    [name = po.name, choice](const clips::SessionOptions& o) {
-                      const std::string text = clips::engine::option_text(o, name);
-                      return choice ? quoted(text) : text;
+                    [name = po.name, kind = po.kind](const clips::SessionOptions& o) {
+                      const std::string text = clips::engine::session_option_text(o, name);
+                      switch (kind) {
+                        case Kind::Choice:
+                        case Kind::Text: return quoted(text);
+                        case Kind::List: return text.empty() ? std::string("[]") : "[" + text + "]";
+                        case Kind::Real: return std::string(py::str(py::float_(std::stod(text))));
+                        case Kind::Integer: break;
+                      }
+                      return text;
                     }});
   }
   return rows;
-}
-
-// The keywords of Python's sessions: this module's own rows, with the
-// engine's table (particle settings, options registered at run time)
-// inserted before assistant_turns; composed at each use, so an option
-// registered after import is a keyword.
-std::vector<SessionOption> session_option_table() {
-  using O = clips::SessionOptions;
-  static const std::vector<SessionOption> own = [] {
-    std::vector<SessionOption> t = {
-      // The names and their help from the engine's tables (engine/methods.hpp).
-      {"method", "the evidence the posterior uses and how the assistant decides: " +
-                     clips::engine::method_choices().help_text(),
-       [](O& o, py::handle v) { o.method = clips::parse_method(text_option("method", v)); },
-       [](const O& o) { return quoted(clips::method_name(o.method)); }},
-      {"assistance", "how the assistant decides: " + clips::engine::assistance_choices().help_text(),
-       [](O& o, py::handle v) { o.assistance = clips::parse_assistance(text_option("assistance", v)); },
-       [](const O& o) { return quoted(clips::assistance_name(o.assistance)); }},
-      {"lm", "language model: " + clips::language::language_model_choices().help_text(),
-       [](O& o, py::handle v) { o.language_model.backend = text_option("lm", v); },
-       [](const O& o) { return quoted(o.language_model.backend); }},
-      {"lm_base_url", "openai: completions API base URL ('': $CLIPS_LM_BASE_URL, else OpenAI's)",
-       [](O& o, py::handle v) { o.language_model.base_url = text_option("lm_base_url", v); },
-       [](const O& o) { return quoted(o.language_model.base_url); }},
-      {"lm_model", "openai: model name ('': $CLIPS_LM_MODEL, else davinci-002)",
-       [](O& o, py::handle v) { o.language_model.model = text_option("lm_model", v); },
-       [](const O& o) { return quoted(o.language_model.model); }},
-      {"lm_timeout", "openai: seconds per request",
-       [](O& o, py::handle v) {
-         // At most a day: a larger wait is no timeout (and overflows libcurl's milliseconds).
-         o.language_model.timeout_seconds = float_option("lm_timeout", v, 0, 86400);
-         if (!(o.language_model.timeout_seconds > 0)) throw clips::InputError("lm_timeout must be > 0, got 0.0");
-       },
-       [](const O& o) { return number(o.language_model.timeout_seconds); }},
-      {"goals", "candidate goals as PDDL conditions ([]: the domain pack's)",
-       [](O& o, py::handle v) { o.goals = list_option("goals", v); }, [](const O&) { return std::string("[]"); }},
-      {"cost_profiles", "candidate cost profiles ([]: the plan's or the pack's default)",
-       [](O& o, py::handle v) { o.cost_profiles = list_option("cost_profiles", v); },
-       [](const O&) { return std::string("[]"); }},
-      {"max_nodes", "expansions per lookahead search",
-       [](O& o, py::handle v) { o.max_nodes = static_cast<size_t>(int_option("max_nodes", v, 1, LLONG_MAX)); },
-       [](const O& o) { return std::to_string(o.max_nodes); }},
-      {"threads", "threads refining the hypotheses, 0 to 1024 (0: all cores)",
-       [](O& o, py::handle v) { o.threads = static_cast<int>(int_option("threads", v, 0, kMaxThreads)); },
-       [](const O& o) { return std::to_string(o.threads); }},
-      {"assistant_turns", "refinement at the assistant's turns (as --assistant-turns): " +
-                              clips::inference::assistant_turns_choices().help_text(),
-       [](O& o, py::handle v) {
-         const std::string t = text_option("assistant_turns", v);
-         clips::inference::parse_assistant_turns(t);  // a bad name lists the valid ones now, not at open
-         o.assistant_turns = t;
-       },
-       [](const O& o) { return quoted(o.assistant_turns); }},
-    };
-    return t;
-  }();
-  std::vector<SessionOption> table = own;
-  auto engine_rows = particle_option_rows();
-  table.insert(table.end() - 1, engine_rows.begin(), engine_rows.end());
-  return table;
 }
 
 // The options named in `kwargs`; `taken` lists keywords the opener reads

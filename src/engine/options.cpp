@@ -6,13 +6,17 @@
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <regex>
 
 #include <fmt/core.h>
 
+#include "assist/assist.hpp"
+#include "engine/methods.hpp"
 #include "inference/belief.hpp"
 #include "inference/particle_belief.hpp"
+#include "language/listener.hpp"
 #include "util/error.hpp"
 
 namespace clips::engine {
@@ -137,6 +141,9 @@ std::string registered_value(const EngineOption& o, const std::string& text) {
     case EngineOption::Kind::Choice:
       if (std::find(o.choices.begin(), o.choices.end(), text) == o.choices.end()) refuse(o, "'" + text + "'");
       return text;
+    case EngineOption::Kind::Text:
+    case EngineOption::Kind::List:
+      break;  // not registrable
   }
   refuse(o, text);
 }
@@ -208,7 +215,217 @@ Row row(const std::string& name) {
   throw InputError("unknown option '" + name + "' (known: " + known + ")");
 }
 
+// ---- the session's own rows -------------------------------------------------
+
+struct SessionRow {
+  EngineOption option;
+  std::function<void(SessionOptions&, const std::string&)> set;                     // every kind but List
+  std::function<void(SessionOptions&, const std::vector<std::string>&)> set_list;   // List
+  std::function<std::string(const SessionOptions&)> get;
+};
+
+EngineOption session_option(std::string name, EngineOption::Kind kind, std::string takes, std::string help,
+                            std::vector<std::string> choices = {}, std::optional<double> lo = {},
+                            std::optional<double> hi = {}) {
+  EngineOption o{std::move(name), kind, std::move(takes), help, help, std::move(choices), lo, hi, false, {}};
+  return o;
+}
+
+template <typename E>
+SessionRow session_choice(std::string name, const util::Choices<E>& table, const std::string& lead,
+                          E SessionOptions::*field) {
+  EngineOption o = session_option(std::move(name), EngineOption::Kind::Choice, one_of(table.names()),
+                                  lead + ": " + table.help_text(), table.names());
+  return {o, [&table, field](SessionOptions& s, const std::string& t) { s.*field = table.parse(t); }, {},
+          [&table, field](const SessionOptions& s) { return table.name(s.*field); }};
+}
+
+SessionRow session_list(std::string name, std::string help, std::vector<std::string> SessionOptions::*field) {
+  return {session_option(std::move(name), EngineOption::Kind::List, "a list of strings", std::move(help)), {},
+          [field](SessionOptions& s, const std::vector<std::string>& items) { s.*field = items; },
+          [field](const SessionOptions& s) {
+            std::string t;
+            for (const auto& i : s.*field) t += (t.empty() ? "" : ", ") + i;
+            return t;
+          }};
+}
+
+// Built at each use: the choices of registered policies and options are listed.
+std::vector<SessionRow> session_rows() {
+  std::vector<SessionRow> t;
+  t.push_back(session_choice("method", method_choices(), "the evidence the posterior uses and how the assistant decides",
+                             &SessionOptions::method));
+  t.push_back(session_choice("assistance", assistance_choices(), "how the assistant decides",
+                             &SessionOptions::assistance));
+  {
+    const auto& table = language::language_model_choices();
+    // The backend stays a name (LanguageModelOptions::backend), checked here.
+    EngineOption o = session_option("lm", EngineOption::Kind::Choice, one_of(table.names()),
+                                    "language model: " + table.help_text(), table.names());
+    t.push_back({o, [&table](SessionOptions& s, const std::string& text) {
+                   s.language_model.backend = table.name(table.parse(text));
+                 },
+                 {}, [](const SessionOptions& s) { return s.language_model.backend; }});
+  }
+  {
+    EngineOption o = session_option("lm_base_url", EngineOption::Kind::Text, "a string",
+                                    "openai: completions API base URL ('': $CLIPS_LM_BASE_URL, else OpenAI's)");
+    t.push_back({o, [](SessionOptions& s, const std::string& text) { s.language_model.base_url = text; }, {},
+                 [](const SessionOptions& s) { return s.language_model.base_url; }});
+  }
+  {
+    EngineOption o = session_option("lm_model", EngineOption::Kind::Text, "a string",
+                                    "openai: model name ('': $CLIPS_LM_MODEL, else davinci-002)");
+    t.push_back({o, [](SessionOptions& s, const std::string& text) { s.language_model.model = text; }, {},
+                 [](const SessionOptions& s) { return s.language_model.model; }});
+  }
+  {
+    // At most a day: a longer wait is no timeout (and overflows libcurl's milliseconds).
+    EngineOption o = session_option("lm_timeout", EngineOption::Kind::Real, "a number above 0 and at most 86400",
+                                    "openai: seconds per request", {}, 0.0, 86400.0);
+    t.push_back({o,
+                 [o](SessionOptions& s, const std::string& text) {
+                   const double v = parse_real(o, text, 0, 86400);
+                   if (!(v > 0)) refuse(o, text);
+                   s.language_model.timeout_seconds = v;
+                 },
+                 {}, [](const SessionOptions& s) { return fmt::format("{}", s.language_model.timeout_seconds); }});
+  }
+  t.push_back(session_list("goals", "candidate goals as PDDL conditions ([]: the domain pack's)", &SessionOptions::goals));
+  t.push_back(session_list("cost_profiles", "candidate cost profiles ([]: the plan's or the pack's default)",
+                           &SessionOptions::cost_profiles));
+  {
+    const long long hi = std::numeric_limits<long long>::max();
+    EngineOption o = session_option("max_nodes", EngineOption::Kind::Integer, fmt::format("an integer from 1 to {}", hi),
+                                    "expansions per lookahead search", {}, 1.0, {});
+    t.push_back({o,
+                 [o, hi](SessionOptions& s, const std::string& text) {
+                   s.max_nodes = static_cast<size_t>(parse_integer<long long>(o, text, 1, hi));
+                 },
+                 {}, [](const SessionOptions& s) { return std::to_string(s.max_nodes); }});
+  }
+  {
+    EngineOption o = session_option("threads", EngineOption::Kind::Integer, "an integer from 0 to 1024",
+                                    "threads refining the hypotheses (0: all cores)", {}, 0.0, 1024.0);
+    t.push_back({o,
+                 [o](SessionOptions& s, const std::string& text) {
+                   s.threads = static_cast<int>(parse_integer<long long>(o, text, 0, 1024));
+                 },
+                 {}, [](const SessionOptions& s) { return std::to_string(s.threads); }});
+  }
+  {
+    EngineOption o = session_option("assist_max_nodes", EngineOption::Kind::Integer,
+                                    fmt::format("an integer from 0 to {}", std::numeric_limits<long long>::max()),
+                                    "expansions per search the assistant's decisions refine with (0: max_nodes)", {},
+                                    0.0, {});
+    t.push_back({o,
+                 [o](SessionOptions& s, const std::string& text) {
+                   s.assist_max_nodes = static_cast<size_t>(
+                       parse_integer<long long>(o, text, 0, std::numeric_limits<long long>::max()));
+                 },
+                 {}, [](const SessionOptions& s) { return std::to_string(s.assist_max_nodes); }});
+  }
+  {
+    const auto& table = assist::assist_rule_choices();
+    std::vector<std::string> names = table.names();
+    names.insert(names.begin(), "");
+    EngineOption o = session_option("assist_rule", EngineOption::Kind::Choice, "'' or " + one_of(table.names()),
+                                    "how Q_MDP breaks ties (as --assist-rule; '': the domain pack's): " +
+                                        table.help_text(),
+                                    names);
+    t.push_back({o,
+                 [&table](SessionOptions& s, const std::string& text) {
+                   s.assist_rule = text.empty() ? text : table.name(table.parse(text));
+                 },
+                 {}, [](const SessionOptions& s) { return s.assist_rule; }});
+  }
+  {
+    const auto& table = assist::qa_floor_choices();
+    EngineOption o = session_option("qa_floor", EngineOption::Kind::Choice, one_of(table.names()),
+                                    "which Q-values Q_MDP floors at waiting to the horizon (as --qa-floor): " +
+                                        table.help_text(),
+                                    table.names());
+    t.push_back({o, [&table](SessionOptions& s, const std::string& text) { s.qa_floor = table.name(table.parse(text)); },
+                 {}, [](const SessionOptions& s) { return s.qa_floor; }});
+  }
+  {
+    EngineOption o = session_option("search_seconds", EngineOption::Kind::Real, "a number above 0 (inf: no limit)",
+                                    "seconds per lookahead search (inf: none; a finite value makes results depend on "
+                                    "the machine's speed)",
+                                    {}, 0.0, {});
+    t.push_back({o,
+                 [o](SessionOptions& s, const std::string& text) {
+                   char* end = nullptr;
+                   const double v = text.empty() ? NAN : std::strtod(text.c_str(), &end);
+                   if (text.empty() || end != text.c_str() + text.size() || !(v > 0)) refuse(o, text);  // NaN too
+                   s.search_seconds = v;
+                 },
+                 {}, [](const SessionOptions& s) { return fmt::format("{}", s.search_seconds); }});
+  }
+  for (auto& r : rows())
+    t.push_back({r.option, [set = r.set](SessionOptions& s, const std::string& text) { set(s, text); }, {},
+                 [get = r.get](const SessionOptions& s) { return get(s); }});
+  {
+    const auto& table = inference::assistant_turns_choices();
+    EngineOption o = session_option("assistant_turns", EngineOption::Kind::Choice, one_of(table.names()),
+                                    "refinement at the assistant's turns (as --assistant-turns): " + table.help_text(),
+                                    table.names());
+    t.push_back({o, [&table](SessionOptions& s, const std::string& text) {
+                   s.assistant_turns = table.name(table.parse(text));
+                 },
+                 {}, [](const SessionOptions& s) { return s.assistant_turns; }});
+  }
+  return t;
+}
+
+SessionRow session_row(const std::string& name) {
+  for (auto& r : session_rows())
+    if (r.option.name == name) return r;
+  std::string known;
+  for (const auto& r : session_rows()) known += (known.empty() ? "" : ", ") + r.option.name;
+  throw InputError("unknown option '" + name + "' (known: " + known + ")");
+}
+
 }  // namespace
+
+std::vector<EngineOption> session_option_table() {
+  std::vector<EngineOption> t;
+  for (const auto& r : session_rows()) t.push_back(r.option);
+  return t;
+}
+
+void set_session_option(SessionOptions& o, const std::string& name, const std::string& text) {
+  const SessionRow r = session_row(name);
+  if (r.option.kind == EngineOption::Kind::List) throw InputError(name + " must be a list of strings");
+  r.set(o, text);
+}
+
+void set_session_option(SessionOptions& o, const std::string& name, const std::vector<std::string>& items) {
+  const SessionRow r = session_row(name);
+  if (r.option.kind != EngineOption::Kind::List) throw InputError(name + " must be " + r.option.takes + ", not a list");
+  r.set_list(o, items);
+}
+
+std::string session_option_text(const SessionOptions& o, const std::string& name) { return session_row(name).get(o); }
+
+std::string session_options_markdown() {
+  const SessionOptions defaults;
+  std::string md = "| option | takes | default | what it sets |\n|---|---|---|---|\n";
+  for (const auto& r : session_rows()) {
+    const std::string value = r.get(defaults);
+    std::string shown;
+    switch (r.option.kind) {
+      case EngineOption::Kind::List: shown = value.empty() ? "`[]`" : "`[" + value + "]`"; break;
+      case EngineOption::Kind::Choice:
+      case EngineOption::Kind::Text: shown = "`'" + value + "'`"; break;
+      default: shown = "`" + value + "`";
+    }
+    std::string help = r.option.help;
+    std::replace(help.begin(), help.end(), '|', '/');  // a cell's text
+    md += "| `" + r.option.name + "` | " + r.option.takes + " | " + shown + " | " + help + " |\n";
+  }
+  return md;
+}
 
 std::vector<EngineOption> option_table() {
   std::vector<EngineOption> t;
@@ -238,14 +455,9 @@ void check_options(const ParticleOptions& o) {
 }
 
 const std::vector<std::string>& reserved_option_names() {
-  // Python's own session keywords and its openers' arguments
-  // (python/tests checks the keywords are all here), and the session's
-  // other fields.
-  static const std::vector<std::string> names = {
-      "method", "assistance", "lm", "lm_base_url", "lm_model", "lm_timeout", "goals", "cost_profiles", "max_nodes",
-      "threads", "assistant_turns", "dataset", "problem", "domain_dir", "problem_file", "domain_text",
-      "problem_text", "pack_text", "assist_max_nodes", "assist_rule", "qa_floor", "search_seconds",
-      "language_model", "registered_options"};
+  // The arguments of Python's openers beside their keywords (dataset, ...).
+  static const std::vector<std::string> names = {"dataset",     "problem",      "domain_dir", "problem_file",
+                                                 "domain_text", "problem_text", "pack_text"};
   return names;
 }
 
@@ -255,6 +467,8 @@ void register_option(EngineOption option) {
     throw InputError("an option's name is lower-case letters, digits and '_' (the flag is --NAME with '-' for '_'), "
                      "got '" + option.name + "'");
   option.registered = true;
+  if (option.kind == EngineOption::Kind::Text || option.kind == EngineOption::Kind::List)
+    throw InputError("option '" + option.name + "': a registered option is an integer, a number or a choice");
   if (option.kind == EngineOption::Kind::Choice) {
     if (option.choices.empty()) throw InputError("option '" + option.name + "': a choice needs choices");
     option.minimum.reset();
@@ -268,13 +482,13 @@ void register_option(EngineOption option) {
   if (option.brief.empty()) option.brief = option.help;
   registered_value(option, option.default_text);  // a default out of range says so now
   const auto& reserved = reserved_option_names();
-  const auto table = rows();
+  const auto table = session_rows();
   if (std::find(reserved.begin(), reserved.end(), option.name) != reserved.end() ||
-      std::any_of(table.begin(), table.end(), [&](const Row& r) { return r.option.name == option.name; })) {
+      std::any_of(table.begin(), table.end(), [&](const SessionRow& r) { return r.option.name == option.name; })) {
     std::string taken;
     for (const auto& r : table) taken += (taken.empty() ? "" : ", ") + r.option.name;
-    throw InputError("the option '" + option.name + "' is already taken (the table's: " + taken +
-                     "; and the front ends' " + util::or_list(reserved) + ")");
+    throw InputError("the option '" + option.name + "' is already taken (the session's options: " + taken +
+                     "; and Python's openers' " + util::or_list(reserved) + ")");
   }
   std::lock_guard<std::mutex> lock(registered_mutex());
   registered_table().push_back(std::move(option));

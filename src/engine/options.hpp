@@ -23,7 +23,8 @@ struct InferenceOptions;
 namespace clips::engine {
 
 struct EngineOption {
-  enum class Kind { Integer, Real, Choice };
+  // Text and List: the session table's own rows only (a URL, PDDL goals).
+  enum class Kind { Integer, Real, Choice, Text, List };
   std::string name;   // the field, Python keyword and JSON name: "ess_threshold"
   Kind kind;
   std::string takes;  // what it takes, as errors say it: "a number from 0 to 1"
@@ -43,17 +44,17 @@ struct EngineOption {
 // The options, as they stand (a choice or an option registered at run time
 // is listed).
 std::vector<EngineOption> option_table();
-// Adds `option` (registered set, kind, name, help, default and range or
-// choices filled; `takes` is filled here) to the table. InputError for a name
-// that is not lower-case letters, digits and '_', one the table or a front
-// end already uses (reserved_option_names), or a default out of range.
+// Adds `option` (kind Integer, Real or Choice; name, help, default and range
+// or choices filled; `takes` is filled here) to the table. InputError for a
+// name that is not lower-case letters, digits and '_', one the session table
+// or Python's openers already use (reserved_option_names), or a default out
+// of range.
 void register_option(EngineOption option);
 // Takes back an option register_option added; InputError for another name.
 void unregister_option(const std::string& name);
-// Names no registered option may take besides the table's: Python's own
-// session keywords and openers' arguments, the session's other fields
-// (method, assistance, lm, goals, threads, ...). A CLI command with a flag
-// of a registered option's name keeps its own (add_particle_options).
+// Names no registered option may take besides the session table's: the
+// arguments of Python's openers. A CLI command with a flag of a registered
+// option's name keeps its own (add_particle_options).
 const std::vector<std::string>& reserved_option_names();
 // Every registered option's value in `o` (its default when unset), by name:
 // what a registered policy sees (clips::PolicyView::options).
@@ -66,6 +67,24 @@ std::string option_text(const ParticleOptions& o, const std::string& name);
 // <takes>, got <text>" for a bad value, "unknown option" for a name
 // not in the table.
 void set_option(ParticleOptions& o, const std::string& name, const std::string& text);
+// The session's options (clips::SessionOptions) as Python's openers take them
+// (the keywords of open_dataset and open_domain): the session's own rows
+// (method, assistance, lm, lm_base_url, lm_model, lm_timeout, goals,
+// cost_profiles, max_nodes, threads, assist_max_nodes, assist_rule, qa_floor,
+// search_seconds), then option_table()'s, then assistant_turns. The server and the CLI take only option_table()'s: the
+// others are their own limits and flags (a server's threads and node
+// budgets, its language model).
+std::vector<EngineOption> session_option_table();
+// Parses `text` (a List: `items`) into the session option `name` of `o`;
+// InputError as set_option's, the name tables' "unknown method ..." for a
+// choice, "unknown option" for a name of neither table.
+void set_session_option(SessionOptions& o, const std::string& name, const std::string& text);
+void set_session_option(SessionOptions& o, const std::string& name, const std::vector<std::string>& items);
+// The option's value in `o` as text (a List: its items joined by ", ").
+std::string session_option_text(const SessionOptions& o, const std::string& name);
+// docs/library.md's table of the session options (name, what it takes, its
+// default, its help), one row per session_option_table() row.
+std::string session_options_markdown();
 // The one validation: every field of `o` as set_option checks it
 // (InputError naming the first bad one), and no value for an option that is
 // not registered.
