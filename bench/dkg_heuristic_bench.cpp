@@ -86,7 +86,7 @@ void run(benchmark::State& st) {
 
 // Per-state cost of building the location graph and its MSTs, with warm
 // RECURSIVE memo (the steady state inside a search).
-void BM_DkgMstEstimate(benchmark::State& st) { run<domains::DkgMstHeuristic>(st); }
+void BM_DkgMstEstimate(benchmark::State& st) { run<domains::dkg::DkgMstHeuristic>(st); }
 BENCHMARK(BM_DkgMstEstimate)->Unit(benchmark::kMicrosecond);
 
 // The same states with a fresh heuristic per pass: every room/lock pattern
@@ -97,12 +97,12 @@ void BM_DkgMstEstimateColdMemo(benchmark::State& st) {
     st.SkipWithError("Doors-Keys-Gems dataset not found (set CLIPS_DATASET)");
     return;
   }
-  std::vector<std::shared_ptr<const domains::DkgMapAnalysis>> maps;
-  for (auto& p : c.plans) maps.push_back(domains::DkgMapAnalysis::build(p.task, p.task->initial_state()));
+  std::vector<std::shared_ptr<const domains::dkg::DkgMapAnalysis>> maps;
+  for (auto& p : c.plans) maps.push_back(domains::dkg::DkgMapAnalysis::build(p.task, p.task->initial_state()));
   double sink = 0;
   for (auto _ : st)
     for (size_t i = 0; i < c.plans.size(); ++i) {
-      domains::DkgMstHeuristic h(maps[i]);
+      domains::dkg::DkgMstHeuristic h(maps[i]);
       h.prepare(*c.plans[i].spec, c.plans[i].task->initial_state());
       for (const auto& s : c.plans[i].states) sink += h.estimate(s.data());
     }
@@ -111,7 +111,7 @@ void BM_DkgMstEstimateColdMemo(benchmark::State& st) {
 }
 BENCHMARK(BM_DkgMstEstimateColdMemo)->Unit(benchmark::kMicrosecond);
 
-void BM_DkgDistanceEstimate(benchmark::State& st) { run<domains::DkgDistanceHeuristic>(st); }
+void BM_DkgDistanceEstimate(benchmark::State& st) { run<domains::dkg::DkgDistanceHeuristic>(st); }
 BENCHMARK(BM_DkgDistanceEstimate)->Unit(benchmark::kMicrosecond);
 
 // Goal-independent precomputation (rooms, room graph, all-pairs distances)
@@ -125,7 +125,7 @@ void BM_DkgMapAnalysisBuild(benchmark::State& st) {
   const PlanStates* big = &c.plans[0];
   for (auto& p : c.plans)
     if (p.task->num_actions() > big->task->num_actions()) big = &p;
-  for (auto _ : st) benchmark::DoNotOptimize(domains::DkgMapAnalysis::build(big->task, big->task->initial_state()));
+  for (auto _ : st) benchmark::DoNotOptimize(domains::dkg::DkgMapAnalysis::build(big->task, big->task->initial_state()));
 }
 BENCHMARK(BM_DkgMapAnalysisBuild)->Unit(benchmark::kMicrosecond);
 

@@ -474,10 +474,10 @@ struct Event {
 std::string scene_png(const clips::domains::Pack& pack, const clips::pddl::Task& task, const clips::pddl::State& s) {
   switch (pack.spec().scene) {
     case clips::domains::SceneKind::Grid:
-      return clips::render::encode_png(clips::render::render_png(clips::scenes::dkg_scene(clips::domains::DkgWorld(task), s)));
+      return clips::render::encode_png(clips::render::render_png(clips::scenes::dkg_scene(clips::domains::dkg::DkgWorld(task), s)));
     case clips::domains::SceneKind::Cards:
       return clips::render::encode_png(
-          clips::render::render_png(clips::scenes::vh_scene(pack, clips::domains::VhWorld(task), s)));
+          clips::render::render_png(clips::scenes::vh_scene(pack, clips::domains::vh::VhWorld(task), s)));
     case clips::domains::SceneKind::Text: break;
   }
   throw clips::InputError("the " + pack.name() + " pack's scene is text: there is no picture (print the session)");

@@ -295,7 +295,7 @@ struct StripsExport {
   std::string goal;      // the goal as exported, e.g. "(and (has human gem2))"
   // Exported action name -> original ground action ("" for an action the
   // export adds), when the names do not say it (the generic export; mDKG's
-  // names map back by domains::to_original_action).
+  // names map back by domains::dkg::to_original_action).
   std::map<std::string, std::string> original_actions;
 };
 

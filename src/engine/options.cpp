@@ -207,13 +207,17 @@ std::vector<Row> rows() {
   return table;
 }
 
-Row row(const std::string& name) {
-  for (auto& r : rows())
-    if (r.option.name == name) return r;
+// The row named `name` of `table`; InputError listing the table's names.
+template <typename R>
+R find_row(std::vector<R> table, const std::string& name) {
+  for (auto& r : table)
+    if (r.option.name == name) return std::move(r);
   std::string known;
-  for (const auto& r : rows()) known += (known.empty() ? "" : ", ") + r.option.name;
+  for (const auto& r : table) known += (known.empty() ? "" : ", ") + r.option.name;
   throw InputError("unknown option '" + name + "' (known: " + known + ")");
 }
+
+Row row(const std::string& name) { return find_row(rows(), name); }
 
 // ---- the session's own rows -------------------------------------------------
 
@@ -378,13 +382,7 @@ std::vector<SessionRow> session_rows() {
   return t;
 }
 
-SessionRow session_row(const std::string& name) {
-  for (auto& r : session_rows())
-    if (r.option.name == name) return r;
-  std::string known;
-  for (const auto& r : session_rows()) known += (known.empty() ? "" : ", ") + r.option.name;
-  throw InputError("unknown option '" + name + "' (known: " + known + ")");
-}
+SessionRow session_row(const std::string& name) { return find_row(session_rows(), name); }
 
 }  // namespace
 

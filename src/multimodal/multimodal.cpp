@@ -133,8 +133,8 @@ lm::ChatRequest multimodal_request(const data::Dataset& ds, const data::PlanReco
   const std::string assistant = pack.roles().assistant;
   const std::string objects = pack.object_list(*task);
   switch (pack.spec().scene) {
-    case domains::SceneKind::Cards: img = render::render_png(scenes::vh_scene(pack, domains::VhWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
-    case domains::SceneKind::Grid: img = render::render_png(scenes::dkg_scene(domains::DkgWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
+    case domains::SceneKind::Cards: img = render::render_png(scenes::vh_scene(pack, domains::vh::VhWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
+    case domains::SceneKind::Grid: img = render::render_png(scenes::dkg_scene(domains::dkg::DkgWorld(*task), s_T, {utterance, "", {}, {}}), ro); break;
     case domains::SceneKind::Text:
       throw InputError("the multimodal baseline needs a picture, and the " + pack.name() + " pack draws none (scene \"text\")");
   }

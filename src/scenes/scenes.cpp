@@ -14,7 +14,7 @@ namespace clips::scenes {
 
 using pddl::ObjectId;
 
-render::GridScene dkg_scene(const domains::DkgWorld& w, const pddl::State& s, const SceneExtras& extras) {
+render::GridScene dkg_scene(const domains::dkg::DkgWorld& w, const pddl::State& s, const SceneExtras& extras) {
   render::GridScene scene(w.width(), w.height());
   for (int y = 1; y <= w.height(); ++y)
     for (int x = 1; x <= w.width(); ++x)
@@ -58,7 +58,7 @@ std::map<std::string, render::Rgb> scene_colours(const domains::Pack& pack) {
   return out;
 }
 
-render::HomeScene vh_scene(const domains::Pack& pack, const domains::VhWorld& w, const pddl::State& s,
+render::HomeScene vh_scene(const domains::Pack& pack, const domains::vh::VhWorld& w, const pddl::State& s,
                            const SceneExtras& extras) {
   render::HomeScene scene;
   scene.type_colours = scene_colours(pack);
@@ -169,13 +169,13 @@ PlanFrames plan_frames(const data::Dataset& ds, const data::PlanRecord& plan, co
     return posterior_bars(*task, ds.pack(), run.goals, *p);
   };
   if (out.scene == domains::SceneKind::Cards) {
-    domains::VhWorld world(*task);
+    domains::vh::VhWorld world(*task);
     for (size_t t = 0; t < states.size(); ++t) {
       SceneExtras ex{caption_at(plan, static_cast<int>(t)), title(static_cast<int>(t)), bars_at(static_cast<int>(t)), {}};
       out.home.push_back(vh_scene(ds.pack(), world, states[t], ex));
     }
   } else {
-    domains::DkgWorld world(*task);
+    domains::dkg::DkgWorld world(*task);
     render::PlanTrace human{world.name(world.human()), {}}, robot{world.name(world.robot()), {}};
     for (size_t t = 0; t < states.size(); ++t) {
       for (auto* tr : {&human, &robot}) {

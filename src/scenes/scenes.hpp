@@ -13,10 +13,12 @@
 // The paper domains' world views (domains/dkg/dkg_world.hpp,
 // domains/vh/vh_world.hpp), declared only: a user of this header needs them
 // only when it draws one of those scenes.
-namespace clips::domains {
+namespace clips::domains::dkg {
 class DkgWorld;
+}  // namespace clips::domains::dkg
+namespace clips::domains::vh {
 class VhWorld;
-}  // namespace clips::domains
+}  // namespace clips::domains::vh
 
 namespace clips::scenes {
 
@@ -29,10 +31,10 @@ struct SceneExtras {
 
 // mDKG: walls, agents, keys (on the grid or held), doors (locked or open),
 // gems, the active agent.
-render::GridScene dkg_scene(const domains::DkgWorld& world, const pddl::State& s, const SceneExtras& extras = {});
+render::GridScene dkg_scene(const domains::dkg::DkgWorld& world, const pddl::State& s, const SceneExtras& extras = {});
 // Card scenes: fixtures with their piles, where each agent is and what it
 // holds, filled with the pack's scene colours.
-render::HomeScene vh_scene(const domains::Pack& pack, const domains::VhWorld& world, const pddl::State& s,
+render::HomeScene vh_scene(const domains::Pack& pack, const domains::vh::VhWorld& world, const pddl::State& s,
                            const SceneExtras& extras = {});
 // A pack's scene colours ("#rrggbb" by type) as render colours.
 std::map<std::string, render::Rgb> scene_colours(const domains::Pack& pack);

@@ -128,8 +128,8 @@ class PlaySession {
   std::string principal_, assistant_;
   std::string method_;
   PlayLimits limits_;
-  std::optional<domains::DkgWorld> dkg_;
-  std::optional<domains::VhWorld> vh_;
+  std::optional<domains::dkg::DkgWorld> dkg_;
+  std::optional<domains::vh::VhWorld> vh_;
   std::optional<TextScene> text_;
   engine::Engine engine_;
   CommandWords words_;  // readings in parts, for the page to say in words

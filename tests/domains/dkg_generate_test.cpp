@@ -15,7 +15,7 @@
 #include "test_paths.hpp"
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 namespace {
 
 GenerateParams params(int w, int h, int gems, int keys, int doors) {
@@ -211,4 +211,4 @@ TEST(DkgGenerate, ShippedDomainIsTheExamplesDomain) {
 }
 
 }  // namespace
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

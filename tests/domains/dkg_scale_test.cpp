@@ -1,6 +1,6 @@
 #include "domains/dkg_scale_test.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 namespace dkg_scale_test {
 TEST(ObjMask, BitsAboveSixtyFour) {
   static_assert(kObjMaskBits == 128);
@@ -22,4 +22,4 @@ TEST(ObjMask, BitsAboveSixtyFour) {
 
 }  // namespace dkg_scale_test
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -22,7 +22,7 @@
 #include "util/rng.hpp"
 #include "dkg_profiles.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 namespace dkg_scale_test {
 
 struct BigMap {
@@ -46,4 +46,4 @@ struct BigMap {
 
 }  // namespace dkg_scale_test
 using namespace dkg_scale_test;
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -12,6 +12,7 @@
 #include "eval/choices.hpp"
 #include "eval/experiment.hpp"
 #include "eval/methods.hpp"
+#include "generated_section.hpp"
 #include "inference/belief.hpp"
 #include "util/choices.hpp"
 
@@ -90,22 +91,7 @@ TEST(Choices, BenchMethodNamesAreComposedFromTheTables) {
 
 // docs/cli.md's "Named choices" table is the catalogue's; CLIPS_UPDATE_DOCS=1 rewrites it.
 TEST(ChoicesDocs, TheCliPageListsEveryNameOfTheTables) {
-  const std::string path = std::string(CLIPS_SOURCE_DIR) + "/docs/cli.md";
-  std::stringstream buf;
-  buf << std::ifstream(path).rdbuf();
-  std::string page = buf.str();
-  const std::string begin = "<!-- choices: begin (generated) -->\n", end = "<!-- choices: end -->";
-  const auto b = page.find(begin), e = page.find(end);
-  ASSERT_NE(b, std::string::npos);
-  ASSERT_NE(e, std::string::npos);
-  const std::string table = page.substr(b + begin.size(), e - b - begin.size());
-  const std::string want = choices_markdown();
-  if (std::getenv("CLIPS_UPDATE_DOCS") && table != want) {
-    page.replace(b + begin.size(), e - b - begin.size(), want);
-    std::ofstream(path) << page;
-    return;
-  }
-  EXPECT_EQ(table, want) << "docs/cli.md's table is behind the name tables: rerun with CLIPS_UPDATE_DOCS=1";
+  generated_docs::expect_generated_section("docs/cli.md", "choices", choices_markdown());
 }
 
 }  // namespace

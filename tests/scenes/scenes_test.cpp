@@ -5,7 +5,7 @@ namespace scenes_test {
 TEST(Scenes, DkgInitialState) {
   auto ds = data::Dataset::load(examples_dkg());
   auto task = ds.task("e1");
-  domains::DkgWorld w(*task);
+  domains::dkg::DkgWorld w(*task);
   auto scene = dkg_scene(w, task->initial_state(), {"hello", "title", {}, {}});
   EXPECT_EQ(scene.width, 9);
   EXPECT_EQ(scene.height, 5);
@@ -36,7 +36,7 @@ TEST(Scenes, HeldItemsAndUnlockedDoorsAlongAPlan) {
   auto ds = data::Dataset::load(examples_dkg());
   const auto& p = ds.plan("e1.1.keys");
   auto task = ds.task(p.problem_id);
-  domains::DkgWorld w(*task);
+  domains::dkg::DkgWorld w(*task);
   auto obs = pddl::simulate(*task, task->initial_state(), p.observed);
   auto done = pddl::simulate(*task, obs.states.back(), p.completed);
   // Find the states right after the robot picks key3 up and after the unlock.

@@ -3,7 +3,7 @@
 
 #include "domains/dkg/dkg_goals.hpp"
 
-using clips::domains::dkg_goal_unsatisfiable;
+using clips::domains::dkg::dkg_goal_unsatisfiable;
 
 TEST(DkgGoals, UsedKeysCannotBeHeld) {
   EXPECT_TRUE(dkg_goal_unsatisfiable("(and (has robot key1) (unlocked-by robot door1) (unlocked-with key1 door1))"));

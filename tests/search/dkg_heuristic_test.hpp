@@ -30,6 +30,7 @@
 
 using namespace clips;
 using namespace clips::domains;
+using namespace clips::domains::dkg;
 using pddl::State;
 
 namespace dkg_heuristic_test {

@@ -48,7 +48,7 @@ bool check_equivalent(const std::shared_ptr<const pddl::Task>& task, const pddl:
   auto r1 = search::plan(orig, h1, start, so);
   if (r1.status == search::SearchStatus::MaxNodes) return false;
 
-  auto ex = domains::export_strips(*task, start, goal, fixtures::dkg_profile(profile));
+  auto ex = domains::dkg::export_strips(*task, start, goal, fixtures::dkg_profile(profile));
   EXPECT_EQ(ex.cost_scale, 5);
   auto d = std::make_shared<pddl::Domain>(pddl::parse_domain(ex.domain, "<exported domain>"));
   auto p = std::make_shared<pddl::Problem>(pddl::parse_problem(*d, ex.problem, "<exported problem>"));
@@ -71,7 +71,7 @@ bool check_equivalent(const std::shared_ptr<const pddl::Task>& task, const pddl:
   pddl::State s = start;
   double cost = 0;
   for (auto a : r2.plan) {
-    std::string text = domains::to_original_action(etask->action_name(a));
+    std::string text = domains::dkg::to_original_action(etask->action_name(a));
     auto oa = task->find_action(text);
     EXPECT_TRUE(oa.has_value()) << text;
     if (!oa) return true;

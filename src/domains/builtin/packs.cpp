@@ -17,8 +17,8 @@ struct PackCode {
   std::string (*misfit)(const pddl::Domain&);
 };
 constexpr PackCode kCodes[] = {
-    {"doors-keys-gems", make_dkg_pack, dkg_misfit},
-    {"virtual-home", make_vh_pack, vh_misfit},
+    {"doors-keys-gems", dkg::make_dkg_pack, dkg::dkg_misfit},
+    {"virtual-home", vh::make_vh_pack, vh::vh_misfit},
 };
 
 const PackCode* find_code(const std::string& name) {

@@ -10,7 +10,7 @@
 #include "domains/dkg/dkg_mask.hpp"
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 namespace {
 
@@ -355,4 +355,4 @@ std::optional<GeneratedProblem> generate_dkg_problem(const GenerateParams& param
   return out;
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

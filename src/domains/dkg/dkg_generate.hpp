@@ -21,7 +21,7 @@
 #include "domains/pack.hpp"
 #include "util/rng.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 // Throws InputError when no map can ever have these counts: sizes outside
 // 3..40, no gem or more than 64, locked doors without any key, more objects
@@ -32,4 +32,4 @@ void check_dkg_generate_params(const GenerateParams& params);
 // again). Calls check_dkg_generate_params first.
 std::optional<GeneratedProblem> generate_dkg_problem(const GenerateParams& params, util::Rng& rng);
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

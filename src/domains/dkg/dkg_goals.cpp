@@ -5,7 +5,7 @@
 
 #include "pddl/sexpr.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 namespace {
 
@@ -86,4 +86,4 @@ bool dkg_goal_unsatisfiable(const std::string& goal) {
   return false;
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -6,7 +6,7 @@
 // unlock with k"; recognising them saves a search that can only fail.
 #include <string>
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 // True when `goal` (a conjunction, possibly under exists) requires facts that
 // exclude each other: a key both held and used; one item held by two agents;
@@ -15,4 +15,4 @@ namespace clips::domains {
 // unequal. Anything else (disjunctions, ...) is never called unsatisfiable.
 bool dkg_goal_unsatisfiable(const std::string& goal);
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -8,7 +8,7 @@
 
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 using model::kInf;
 using pddl::CondId;
@@ -584,4 +584,4 @@ double DkgDistanceHeuristic::estimate(const uint64_t* s) {
   return eval(root_, s);
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -26,7 +26,7 @@
 #include "domains/dkg/dkg_map.hpp"
 #include "heuristics/heuristic.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 // A goal atom the MST heuristic understands: (has agent item) or
 // (unlocked-by agent door); agent/item are DkgMapAnalysis object indices.
@@ -186,4 +186,4 @@ class DkgDistanceHeuristic : public heuristics::Heuristic {
   DkgStateView view_;
 };
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -5,7 +5,7 @@
 
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 using pddl::ObjectId;
 
@@ -378,4 +378,4 @@ KeyDoorSets DkgMapAnalysis::recursive(const DkgStateView& v, int agent, std::spa
   return s;
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -21,7 +21,7 @@
 #include "domains/dkg/dkg_mask.hpp"
 #include "pddl/task.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 // An aligned list of keys and the doors they open: keys[j] opens doors[j]
 // (object indices). PATHSETS and NECESSARY return lists of these.
@@ -126,4 +126,4 @@ class DkgMapAnalysis {
   std::vector<pddl::Task::AtomRef> locked_, active_;
 };
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

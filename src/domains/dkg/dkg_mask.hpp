@@ -6,7 +6,7 @@
 // word split in one place.
 #include <cstdint>
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 using ObjMask = unsigned __int128;
 inline constexpr int kObjMaskBits = 128;
@@ -27,4 +27,4 @@ inline void mask_for_each(ObjMask m, F&& f) {
   for (; m; m &= m - 1) f(mask_ctz(m));
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -10,7 +10,7 @@
 #include "domains/required_object.hpp"
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 namespace {
 
@@ -116,7 +116,7 @@ class DkgPack : public Pack {
 
   std::optional<StripsExport> export_strips(const pddl::Task& task, const pddl::State& start, const std::string& goal,
                                             const model::CostProfile& costs) const override {
-    return domains::export_strips(task, start, goal, costs);
+    return dkg::export_strips(task, start, goal, costs);
   }
 
   // Random maps for `clips generate` (dkg_generate.hpp).
@@ -177,4 +177,4 @@ std::string dkg_misfit(const pddl::Domain& domain) {
   return domain_misfit(domain, needs);
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -7,7 +7,7 @@
 
 #include "domains/pack.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 // The pack of a spec whose code is "doors-keys-gems".
 PackPtr make_dkg_pack(PackSpec spec);
@@ -15,4 +15,4 @@ PackPtr make_dkg_pack(PackSpec spec);
 // functions), e.g. "no function (walls)"; "" when it has all of it.
 std::string dkg_misfit(const pddl::Domain& domain);
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

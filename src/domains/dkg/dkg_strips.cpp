@@ -12,7 +12,7 @@
 #include "domains/dkg/dkg_world.hpp"
 #include "pddl/sexpr.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 using pddl::ObjectId;
 
@@ -335,4 +335,4 @@ std::string to_original_action(const std::string& exported_action) {
   throw bad();
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

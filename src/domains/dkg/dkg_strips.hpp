@@ -30,7 +30,7 @@
 #include "pddl/state.hpp"
 #include "pddl/task.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 
 // Throws InputError for goals that are not a conjunction of (has agent item)
@@ -45,4 +45,4 @@ StripsExport export_strips(const pddl::Task& task, const pddl::State& start, con
 // Throws InputError for names the exporter never produces.
 std::string to_original_action(const std::string& exported_action);
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 using pddl::ObjectId;
 
@@ -142,4 +142,4 @@ std::string DkgWorld::describe(const pddl::State& s) const {
   return out;
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

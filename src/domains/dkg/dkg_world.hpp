@@ -9,7 +9,7 @@
 
 #include "pddl/task.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 
 struct Cell {
   int x = -1, y = -1;  // 1-based; (-1, -1) when off the grid
@@ -61,4 +61,4 @@ class DkgWorld {
   std::vector<std::string> color_;                  // per object
 };
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -7,7 +7,7 @@
 #include "domains/required_object.hpp"
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 namespace {
 
@@ -76,4 +76,4 @@ std::string vh_misfit(const pddl::Domain& domain) {
   return domain_misfit(domain, needs);
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh

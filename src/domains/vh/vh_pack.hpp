@@ -6,7 +6,7 @@
 
 #include "domains/pack.hpp"
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 // The pack of a spec whose code is "virtual-home".
 PackPtr make_vh_pack(PackSpec spec);
@@ -14,4 +14,4 @@ PackPtr make_vh_pack(PackSpec spec);
 // when it has all of it.
 std::string vh_misfit(const pddl::Domain& domain);
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh

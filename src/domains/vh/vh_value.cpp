@@ -6,7 +6,7 @@
 
 #include "util/error.hpp"
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 namespace {
 bool holds(const uint64_t* s, const pddl::Task::AtomRef& a) { return a.bit >= 0 ? pddl::get_bit(s, a.bit) : a.value; }
@@ -113,9 +113,9 @@ double VhValueHeuristic::estimate(const uint64_t* s) {
   return item_cost + move_cost;
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 void VhPlanningHeuristic::prepare(const model::Specification& spec, const pddl::State& root) {
   VhValueHeuristic::prepare(spec, root);
@@ -164,4 +164,4 @@ void VhPlanningHeuristic::prepare(const model::Specification& spec, const pddl::
   }
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh

@@ -9,7 +9,7 @@
 
 #include "heuristics/heuristic.hpp"
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 class VhValueHeuristic : public heuristics::Heuristic {
  public:
@@ -40,9 +40,9 @@ class VhValueHeuristic : public heuristics::Heuristic {
   std::vector<std::vector<pddl::Task::AtomRef>> next_to_;  // [agent][fixture]
 };
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 // VH heuristic plus the action filter used by the literal listener's A*
 // (as the reference's). The filter is fixed per planning call from
@@ -61,4 +61,4 @@ class VhPlanningHeuristic : public VhValueHeuristic {
   std::vector<char> keep_;
 };
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 using pddl::ObjectId;
 
@@ -79,4 +79,4 @@ std::string VhWorld::describe(const pddl::State& s) const {
   return out;
 }
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh

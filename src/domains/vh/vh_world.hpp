@@ -6,7 +6,7 @@
 
 #include "pddl/task.hpp"
 
-namespace clips::domains {
+namespace clips::domains::vh {
 
 class VhWorld {
  public:
@@ -36,4 +36,4 @@ class VhWorld {
   std::vector<pddl::ObjectId> fixtures_, items_, itypes_;
 };
 
-}  // namespace clips::domains
+}  // namespace clips::domains::vh

@@ -1,6 +1,6 @@
 #include "domains/dkg_scale_test.hpp"
 
-namespace clips::domains {
+namespace clips::domains::dkg {
 namespace dkg_scale_test {
 TEST(DkgScale, FortyByFortyMapWithSixtyFourGems) {
   BigMap big;
@@ -47,4 +47,4 @@ TEST(DkgScale, FortyByFortyMapWithSixtyFourGems) {
 
 }  // namespace dkg_scale_test
 
-}  // namespace clips::domains
+}  // namespace clips::domains::dkg

@@ -33,7 +33,7 @@ TEST(VhDataset, HeuristicTestVectors) {
   if (!std::filesystem::exists(paths::vh_dataset() + "/domain.pddl")) GTEST_SKIP() << "no VH dataset";
   auto ds = data::Dataset::load(paths::vh_dataset());
   auto task = ds.task("2");
-  domains::VhValueHeuristic h(*task);
+  domains::vh::VhValueHeuristic h(*task);
   pddl::State s0 = task->initial_state();
   pddl::State nograb = s0;
   task->set(nograb, task->atom("nograb", {"actor"}), true);

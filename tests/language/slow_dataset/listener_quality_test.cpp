@@ -115,7 +115,7 @@ struct TrueRequest {
 };
 
 std::optional<TrueRequest> true_request(const testing::PlanData& p) {
-  const domains::DkgWorld world(*p.task);
+  const domains::dkg::DkgWorld world(*p.task);
   const auto sim = pddl::simulate(*p.task, p.s_T, p.completed);
   std::optional<TrueRequest> key;
   for (pddl::ActionId a : sim.actions) {

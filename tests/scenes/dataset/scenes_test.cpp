@@ -7,7 +7,7 @@ TEST(Scenes, VirtualHomeSceneIfDatasetPresent) {
   auto ds = data::Dataset::load(clips::paths::vh_dataset());
   const auto& p = ds.plans().front();
   auto task = ds.task(p.problem_id);
-  domains::VhWorld w(*task);
+  domains::vh::VhWorld w(*task);
   auto s = task->initial_state();
   auto scene = vh_scene(ds.pack(), w, s);
   EXPECT_EQ(scene.fixtures.size(), w.fixtures().size());

@@ -36,7 +36,7 @@ TEST(StripsExport, ConjunctiveGoalsAndUnsupportedGoals) {
   auto s0 = task->initial_state();
   // A conjunction of has atoms is exported and stays equivalent.
   std::string goal = "(and (has human gem1) (has human gem2))";
-  auto ex = domains::export_strips(*task, s0, goal, fixtures::dkg_profile(1));
+  auto ex = domains::dkg::export_strips(*task, s0, goal, fixtures::dkg_profile(1));
   EXPECT_EQ(ex.goal, "(and (has human gem1) (has human gem2))");
   model::Specification orig(task, goal, fixtures::dkg_profile(1));
   heuristics::HMaxHeuristic h1, h2;
@@ -54,11 +54,11 @@ TEST(StripsExport, ConjunctiveGoalsAndUnsupportedGoals) {
   for (const char* bad : {"(or (has human gem1) (has human gem2))", "(not (has human gem1))", "(locked door1)",
                           "(has human)", "(has human door1)", "(has nobody gem1)", "(and)"}) {
     try {
-      domains::export_strips(*task, s0, bad, prof);
+      domains::dkg::export_strips(*task, s0, bad, prof);
       ADD_FAILURE() << "accepted " << bad;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("has"), std::string::npos) << bad << ": " << e.what();
     }
   }
-  EXPECT_THROW(domains::export_strips(*task, s0, "(has human gem1)", model::task_costs_profile()), InputError);
+  EXPECT_THROW(domains::dkg::export_strips(*task, s0, "(has human gem1)", model::task_costs_profile()), InputError);
 }
