@@ -519,6 +519,14 @@ def test_an_option_registered_in_python_is_a_keyword_and_what_the_policy_sees():
             clips_assist.register_option("py_far", "out of range", "float", 2.0, minimum=0, maximum=1)
         with pytest.raises(ValueError, match="kind must be"):
             clips_assist.register_option("py_text", "no such kind", "text", "x")
+        with pytest.raises(ValueError, match="finite"):
+            clips_assist.register_option("py_nan", "a NaN bound", "float", 0.5, minimum=math.nan)
+        with pytest.raises(ValueError, match="minimum is above its maximum"):
+            clips_assist.register_option("py_upside", "bounds upside down", "int", 1, minimum=5, maximum=0)
+        with pytest.raises(ValueError, match="a choice needs choices"):
+            clips_assist.register_option("py_empty", "no choices", "choice", "a", choices=[])
+        with pytest.raises(TypeError, match="default must be a number"):
+            clips_assist.register_option("py_bool", "a bool default", "int", True)
         listed = {o["name"]: o for o in clips_assist.options()}
         assert listed["py_caution"]["default"] == "0.8" and listed["py_mood"]["default"] == "'calm'"
         assert "how sure before moving" in listed["py_caution"]["help"]

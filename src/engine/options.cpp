@@ -473,12 +473,14 @@ void register_option(EngineOption option) {
     option.maximum.reset();
   } else {
     option.choices.clear();
+    if ((option.minimum && !std::isfinite(*option.minimum)) || (option.maximum && !std::isfinite(*option.maximum)))
+      throw InputError("option '" + option.name + "': its minimum and maximum are finite numbers (unset: unbounded)");
     if (option.minimum && option.maximum && *option.minimum > *option.maximum)
       throw InputError("option '" + option.name + "': its minimum is above its maximum");
   }
   option.takes = takes_text(option);
   if (option.brief.empty()) option.brief = option.help;
-  registered_value(option, option.default_text);  // a default out of range says so now
+  option.default_text = registered_value(option, option.default_text);  // a default out of range says so now
   const auto& reserved = reserved_option_names();
   const auto table = session_rows();
   if (std::find(reserved.begin(), reserved.end(), option.name) != reserved.end() ||
