@@ -76,8 +76,10 @@ struct OptionSpec {
   std::optional<double> minimum, maximum;  // Integer and Real: the range (unset: unbounded)
   std::vector<std::string> choices;        // Choice: its values
 };
-// InputError for a malformed or taken name (the session's own options and
-// the CLI's flags included), a default outside the range or choices.
+// InputError for a malformed or taken name (the session's options and the
+// arguments of Python's openers included), bounds that are not finite, a
+// default outside the range or choices. A CLI command that has a flag of the
+// same name keeps its own.
 void register_option(const OptionSpec& spec);
 // Takes back an option register_option registered; InputError for another name.
 void unregister_option(const std::string& name);
