@@ -3,11 +3,12 @@
 // particle settings, and options a library user registers at run time for
 // a policy of their own, clips::register_option): `clips infer`, `clips
 // bench` and `clips serve` build their flags from it (the name with '-' for
-// '_': --ess-threshold), Python reads its keywords through it, the server
-// its JSON fields and its OpenAPI document the fields' types, so a name, a
-// range and an error message exist once. Every value is parsed from text (a flag's text, Python's str()
-// of an int or repr() of a float, a JSON number's dump), so a bad value gives
-// the same message from every front end:
+// '_': --ess-threshold), the server its JSON fields and its OpenAPI document
+// the fields' types, and Python's keywords are the session table below,
+// which holds it; so a name, a range and an error message exist once. Every
+// value is parsed from text (a flag's text, Python's str() of an int or
+// repr() of a float, a JSON number's dump), so a bad value gives the same
+// message from every front end:
 //   "ess_threshold must be a number from 0 to 1, got 2.0"
 #include <map>
 #include <optional>
@@ -71,9 +72,9 @@ void set_option(ParticleOptions& o, const std::string& name, const std::string& 
 // (the keywords of open_dataset and open_domain): the session's own rows
 // (method, assistance, lm, lm_base_url, lm_model, lm_timeout, goals,
 // cost_profiles, max_nodes, threads, assist_max_nodes, assist_rule, qa_floor,
-// search_seconds), then option_table()'s, then assistant_turns. The server and the CLI take only option_table()'s: the
-// others are their own limits and flags (a server's threads and node
-// budgets, its language model).
+// search_seconds), then option_table()'s, then assistant_turns. The server
+// and the CLI take only option_table()'s: the others are their own limits
+// and flags (a server's threads and node budgets, its language model).
 std::vector<EngineOption> session_option_table();
 // Parses `text` (a List: `items`) into the session option `name` of `o`;
 // InputError as set_option's, the name tables' "unknown method ..." for a
