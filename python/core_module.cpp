@@ -680,10 +680,20 @@ py::dict run_plan(const std::string& dataset, const std::string& plan_id, const 
 // A whole bench, as `clips bench`: one row per plan and method (ready for
 // pandas.DataFrame) and the aggregated summary.
 py::dict run_bench(const std::string& dataset, std::vector<std::string> methods, std::vector<std::string> plans,
-                   long long jobs, uint64_t seed, const std::string& lm_kind) {
+                   long long jobs, uint64_t seed, const std::string& lm_kind, const py::kwargs& options) {
   if (jobs < 0 || jobs > kMaxThreads)
     throw clips::InputError("jobs must be an int in [0, " + std::to_string(kMaxThreads) + "], got " + std::to_string(jobs));
   clips::eval::BenchOptions o;
+  // The engine's option table (`clips bench`'s flags of the same names): the
+  // particle settings and options registered with register_option.
+  const auto table = clips::engine::option_table();
+  for (auto item : options) {
+    const std::string key = py::str(item.first);
+    const auto it = std::find_if(table.begin(), table.end(), [&](const auto& po) { return po.name == key; });
+    if (it == table.end()) throw py::type_error("run_bench() got an unexpected keyword argument '" + key + "'");
+    if (item.second.is_none()) continue;  // None: the default
+    clips::engine::set_option(o.experiment.particles, key, python_option_text(*it, item.second));
+  }
   o.dataset = dataset;
   o.jobs = static_cast<int>(jobs);
   o.experiment.methods = std::move(methods);
@@ -1079,9 +1089,11 @@ PYBIND11_MODULE(_core, m) {
   m.def("run_bench", &run_bench, py::arg("dataset"), py::kw_only(), py::arg("methods") = std::vector<std::string>{},
         py::arg("plans") = std::vector<std::string>{}, py::arg("jobs") = 0, py::arg("seed") = 1,
         py::arg("lm") = "embedded",
-        "run_bench(dataset, *, methods=[], plans=[], jobs=0, seed=1, lm='embedded') -> dict\n\n"
+        "run_bench(dataset, *, methods=[], plans=[], jobs=0, seed=1, lm='embedded', **options) -> dict\n\n"
         "Every plan x method of a dataset, as `clips bench`: {'domain', 'lm', 'rows': [one dict per plan and "
-        "method], 'summary': {method: {metric: {'mean', 'se', 'n'}}}, 'wall_seconds', 'failed_plans'}.");
+        "method], 'summary': {method: {metric: {'mean', 'se', 'n'}}}, 'wall_seconds', 'failed_plans'}. options: "
+        "the engine's options as `clips bench`'s flags of the same names take them (particles, particle_seed, "
+        "..., and options registered with register_option, which registered policies read in the episodes).");
   m.def("choices", &choices,
         "choices() -> dict\n\nEvery named choice of the options and methods (the keyword 'method', "
         "'assistance', 'rejuvenate', ...; run_bench's methods), by kind: {kind: [{'name', 'help', 'aliases'}]}. "

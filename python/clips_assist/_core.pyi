@@ -104,6 +104,7 @@ def run_bench(
     jobs: int = 0,
     seed: int = 1,
     lm: str = "embedded",
+    **options: Any,
 ) -> BenchReport: ...
 def choices() -> dict[str, list[dict[str, Any]]]: ...
 def register_policy(

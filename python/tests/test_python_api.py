@@ -545,6 +545,15 @@ def test_an_option_registered_in_python_is_a_keyword_and_what_the_policy_sees():
         seen.clear()
         rep = clips_assist.run_bench(str(EXAMPLES), methods=["clips/py_careful"], plans=["e1.1.keys"], jobs=1)
         assert rep["rows"] and seen and all(v == {"py_caution": 0.8, "py_mood": "calm"} for v in seen)
+        # run_bench takes the engine's options as `clips bench` its flags.
+        seen.clear()
+        clips_assist.run_bench(str(EXAMPLES), methods=["clips/py_careful"], plans=["e1.1.keys"], jobs=1,
+                               py_caution=0.3, py_mood="eager")
+        assert seen and all(v == {"py_caution": 0.3, "py_mood": "eager"} for v in seen)
+        with pytest.raises(ValueError, match="py_caution must be a number from 0 to 1, got 7.0"):
+            clips_assist.run_bench(str(EXAMPLES), methods=["clips/py_careful"], plans=["e1.1.keys"], py_caution=7.0)
+        with pytest.raises(TypeError, match="unexpected keyword argument 'threads'"):
+            clips_assist.run_bench(str(EXAMPLES), plans=["e1.1.keys"], threads=1)
     finally:
         clips_assist.unregister_policy("py_careful")
         for name in ("py_caution", "py_mood"):
