@@ -337,6 +337,16 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
   // goal is valued with the principal's own actions kSparingFactor times
   // dearer (the sparing plans of the speaker model); a request that moves
   // the world away from the goal still costs the assistant the way back.
+  // A step that gives the principal something ("bring me the jar") leaves
+  // them its use, which they chose by asking: one more action of theirs is
+  // not costlier (else the assistant would put away what it was asked to
+  // hand over).
+  double allowance = tolerance;
+  if (const auto principal = task.find_object(setup.principal))
+    for (const auto& [bit, v] : next) {
+      const auto& args = task.atom_info(bit).second;
+      if (v && std::find(args.begin(), args.end(), *principal) != args.end()) allowance = tolerance * (1 + kSparingFactor);
+    }
   double costlier = 0;
   for (const Hypothesis* h : live) {
     const model::Specification& base = h->policy->spec();
@@ -346,7 +356,7 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
     heuristics::FFHeuristic est;
     est.prepare(sparing, s);
     const double before = est.estimate(s.data()), after = est.estimate(end.data());
-    if (!(after <= before + tolerance)) costlier += h->weight;
+    if (!(after <= before + allowance)) costlier += h->weight;
   }
   if (costlier > 0.5 * total) return std::nullopt;
   Commitment c;

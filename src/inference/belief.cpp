@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "heuristics/conditions.hpp"
 #include "lm/readability.hpp"
 #include "pddl/plan.hpp"
 #include "search/astar.hpp"
@@ -424,6 +425,44 @@ SpeakerPlans Belief::sparing_plan(size_t h, const pddl::State& s) {
   return {SpeakerPlan{1.0, r.plan}};
 }
 
+SpeakerPlans Belief::handing_plan(size_t h, const pddl::State& s, const SpeakerPlan& sparing) {
+  const model::Specification& base = *hyps_[h].spec;
+  const domains::Roles& roles = pack_->spec().roles;
+  const pddl::Task& task = *task_;
+  model::CostProfile profile = model::scaled_assistant(base.profile(), base.profile().name + "-handing",
+                                                       roles.principal, roles.noop_action, kSparingFactor);
+  std::vector<char> goal_atom(static_cast<size_t>(task.num_atoms()), 0);
+  for (const auto& clause : heuristics::goal_dnf(base.goal(), false))
+    for (int b : clause)
+      if (b >= 0 && b < task.num_atoms()) goal_atom[static_cast<size_t>(b)] = 1;
+  for (pddl::ActionId a = 0; a < task.num_actions(); ++a) {
+    const auto& ga = task.action(a);
+    if (ga.args.empty()) continue;
+    const std::string agent = task.object_name(ga.args[0]);
+    if (agent != roles.principal && agent != roles.assistant) continue;
+    if (std::none_of(ga.eff.add.begin(), ga.eff.add.end(), [&](int b) { return goal_atom[static_cast<size_t>(b)] != 0; }))
+      continue;
+    const std::string& schema = task.domain().actions[ga.schema].name;
+    profile.action_factors[{agent, schema}] = agent == roles.principal ? 1 / kSparingFactor : kSparingFactor;
+  }
+  // Where the sparing plan leaves every such step to the principal, it is
+  // this plan already.
+  const bool assistant_finishes = std::any_of(sparing.actions.begin(), sparing.actions.end(), [&](pddl::ActionId a) {
+    const auto& ga = task.action(a);
+    return !ga.args.empty() && task.object_name(ga.args[0]) == roles.assistant &&
+           profile.action_factors.count({roles.assistant, task.domain().actions[ga.schema].name}) > 0;
+  });
+  if (!assistant_finishes) return {};
+  model::Specification spec(task_, base.goal_text(), profile);
+  std::shared_ptr<heuristics::Heuristic> heur = pack_->make_heuristic(heuristic_name_, *task_);
+  heur->prepare(spec, s);
+  search::SearchOptions o = options_.refine;
+  o.max_nodes = std::min<size_t>(o.max_nodes, size_t{1} << 16);
+  const search::SearchResult r = search::astar(spec, *heur, s, o);
+  if (r.status != search::SearchStatus::Success) return {};
+  return {SpeakerPlan{1.0, r.plan}};
+}
+
 void Belief::read_requests(const pddl::State& s, const std::vector<std::string>& texts,
                            std::vector<std::vector<HypothesisUtterance>>& scores, lm::LanguageModel& lm) {
   // The plan in which the assistant does all it can for each speaker's goal.
@@ -432,7 +471,14 @@ void Belief::read_requests(const pddl::State& s, const std::vector<std::string>&
   for (size_t h = 0; h < hyps_.size(); ++h) {
     if (base_of_[h] != static_cast<int>(h)) continue;
     speakers.push_back(static_cast<int>(h));
-    sparing.push_back(sparing_plan(h, s));
+    SpeakerPlans plans = sparing_plan(h, s);
+    // And, half and half, the plan that hands the principal what it fetches.
+    SpeakerPlans handing = plans.empty() ? SpeakerPlans{} : handing_plan(h, s, plans.front());
+    if (!handing.empty() && handing.front().actions != plans.front().actions) {
+      plans.front().weight = handing.front().weight = 0.5;
+      plans.push_back(std::move(handing.front()));
+    }
+    sparing.push_back(std::move(plans));
   }
   auto sparing_scores = utterance_model_->score(sparing, s, texts, lm);
   for (size_t u = 0; u < texts.size(); ++u)

@@ -408,6 +408,13 @@ class Belief {
   // does all it can, the principal only what the assistant cannot. Empty
   // when the search finds none within its budget.
   SpeakerPlans sparing_plan(size_t h, const pddl::State& s);
+  // Its variant in which the principal keeps the goal's last steps: the
+  // kinds of action (schemas) that make a goal atom true cost the principal
+  // what they cost, and the assistant kSparingFactor times as much. So the
+  // assistant fetches and hands over, and the principal puts ("bring me the
+  // jar"). Empty where `sparing` (sparing_plan's) leaves those steps to the
+  // principal already, or when none is found.
+  SpeakerPlans handing_plan(size_t h, const pddl::State& s, const SpeakerPlan& sparing);
   // Adds HypothesisUtterance::requests to `scores` (per utterance, per
   // hypothesis) of `texts` heard in s.
   void read_requests(const pddl::State& s, const std::vector<std::string>& texts,

@@ -14,6 +14,8 @@ double CostProfile::factor(const std::string& agent, const std::string& action) 
   double f = agent == scaled_agent && action != unscaled_action ? agent_factor : 1.0;
   if (!effort_factors.empty() && action != noop_action)
     if (auto it = effort_factors.find(agent); it != effort_factors.end()) f *= it->second;
+  if (!action_factors.empty())
+    if (auto it = action_factors.find({agent, action}); it != action_factors.end()) f *= it->second;
   return f;
 }
 

@@ -36,6 +36,9 @@ struct CostProfile {
   // effort valued above the assistant's (Pack::default_profile).
   std::map<std::string, double> effort_factors;
   std::string noop_action;
+  // Per (agent, action): a factor on top of the others (a speaker who keeps
+  // the goal's last steps for themselves: Belief::handing_plan).
+  std::map<std::pair<std::string, std::string>, double> action_factors;
   // The index, in its profile set, of the profile this one is the alone twin
   // of (-1: none). The assistant values such hypotheses with that profile:
   // the twin models how the principal chooses, not what help costs.

@@ -21,7 +21,12 @@ using testing::run;
 using testing::TempDir;
 
 std::string warehouse() { return std::string(CLIPS_SOURCE_DIR) + "/data/datasets/warehouse"; }
-std::string sq(const std::string& s) { return "'" + s + "'"; }
+// `s` as one single-quoted shell word.
+std::string sq(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
 
 // The goal posterior after the last step of `clips infer --json` (language
 // alone unless `modality` says otherwise), by goal name.
@@ -142,6 +147,29 @@ TEST(MapWords, AFetchTheHumanCouldMakeIsStillDoneWhenAsked) {
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("action").get<std::string>(), "(up robot c4-6 c4-5)") << r.out;
+  EXPECT_TRUE(j.at("decision").at("followed_request").get<bool>()) << r.out;
+}
+
+// The robot has fetched the red can and stands with it beside the human at
+// shelf 1. Putting it there itself is the cheapest joint plan, but the human
+// says they will shelve it and asks for it: the robot hands it over. (The
+// request is read off a plan in which the principal keeps the goal's last
+// steps, and a step that gives the principal something may leave them one
+// more action of their own.)
+TEST(MapWords, AskedToHandSomethingOverTheRobotDoesNotShelveIt) {
+  const std::string actions =
+      "(left human c4-4 c3-4) (up robot c4-6 c4-5) (left human c3-4 c2-4) (up robot c4-5 c4-4) "
+      "(left human c2-4 c1-4) (up robot c4-4 c4-3) (wait human) (up robot c4-3 c4-2) (wait human) "
+      "(up robot c4-2 c4-1) (wait human) (left robot c4-1 c3-1) (wait human) (left robot c3-1 c2-1) (wait human) "
+      "(left robot c2-1 c1-1) (wait human) (pickup robot can1 c1-1) (wait human) (down robot c1-1 c1-2) "
+      "(wait human) (down robot c1-2 c1-3) (wait human) (down robot c1-3 c1-4) (wait human)";
+  const std::string cmd = clips_binary() + " assist --json --explain --dataset " + warehouse() +
+                          " --problem 1 --actions " + sq(actions) + " --utterance-step 25 --utterance " +
+                          sq("I'm putting the red can on shelf 1 myself, so hand it to me.");
+  const auto r = run(cmd);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("action").get<std::string>(), "(handover robot human can1 c1-4)") << r.out;
   EXPECT_TRUE(j.at("decision").at("followed_request").get<bool>()) << r.out;
 }
 
