@@ -204,6 +204,7 @@ struct Commitment {
   ActionId action = -1;
   std::string command;
   double share = 0;
+  bool leaves_principal_a_step = false;  // the principal's one more action was allowed
 };
 constexpr double kCommitShare = 0.5;
 constexpr double kAskingShare = 0.5;
@@ -348,6 +349,7 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
       if (v && std::find(args.begin(), args.end(), *principal) != args.end()) allowance = tolerance * (1 + kSparingFactor);
     }
   double costlier = 0;
+  bool allowed_more = false;
   for (const Hypothesis* h : live) {
     const model::Specification& base = h->policy->spec();
     model::Specification sparing(setup.task, base.goal_text(),
@@ -357,11 +359,13 @@ std::optional<Commitment> committed_request(const AssistSetup& setup, const std:
     est.prepare(sparing, s);
     const double before = est.estimate(s.data()), after = est.estimate(end.data());
     if (!(after <= before + allowance)) costlier += h->weight;
+    else if (after > before + tolerance) allowed_more = true;
   }
   if (costlier > 0.5 * total) return std::nullopt;
   Commitment c;
   c.action = r.plan.front();
   c.share = top.weight / asking;
+  c.leaves_principal_a_step = allowed_more;
   double best = -1;
   for (const auto& [text, w] : top.texts)
     if (w > best) {
@@ -392,7 +396,9 @@ std::string qmdp_reason(const Decision& d, const std::vector<ActionId>& acts, si
     std::snprintf(buf, sizeof buf, "%.0f%%", 100 * d.request_share);
     return "doing what was asked: \"" + d.request_command + "\" (" + buf +
            " of the readings that ask the assistant for something ask for it, and it makes no likely goal "
-           "costlier); this is the first step of the assistant's plan for it";
+           "costlier" +
+           (d.request_leaves_principal_a_step ? " but by a step of the principal's own with what it gives them" : "") +
+           "); this is the first step of the assistant's plan for it";
   }
   if (d.broke_tie)
     return "tied with the best expected value (" + with_value("best", best < d.values.size() ? d.values[best] : 0.0) +
@@ -467,6 +473,7 @@ Decision decide_qmdp(const AssistSetup& setup, ActionId assistant_wait, const st
       d.followed_request = true;
       d.request_command = c->command;
       d.request_share = c->share;
+      d.request_leaves_principal_a_step = c->leaves_principal_a_step;
     }
   }
   if (request_rule && !d.followed_request) {

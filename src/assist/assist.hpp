@@ -229,6 +229,9 @@ struct Decision {
   // readings that ask the assistant for something asks for.
   bool followed_request = false;
   double request_share = 0;
+  // It gives the principal something that leaves them one more action of
+  // their own (allowed: they asked for it).
+  bool request_leaves_principal_a_step = false;
   // Why this action, in words: the rule that decided, with its numbers
   // (the same text for every front end and `clips assist --explain`).
   std::string reason;

@@ -171,6 +171,9 @@ TEST(MapWords, AskedToHandSomethingOverTheRobotDoesNotShelveIt) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("action").get<std::string>(), "(handover robot human can1 c1-4)") << r.out;
   EXPECT_TRUE(j.at("decision").at("followed_request").get<bool>()) << r.out;
+  // The reason says what decided: the human's own step after it was allowed.
+  EXPECT_TRUE(contains(j.at("decision").at("reason").get<std::string>(), "but by a step of the principal's own"))
+      << r.out;
 }
 
 // In the assistance episode the simulated human follows its recorded plan,
