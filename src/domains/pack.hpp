@@ -206,6 +206,17 @@ struct InferenceSettings {
   // themselves is then still explained by their goal. 0: none (the paper
   // packs).
   double sparing_plans = 0.05;
+  // The share of the principal's action likelihood that is progress rather
+  // than Boltzmann-rational choice: P(a | s, h) = (1 - ρ) Boltzmann(a) +
+  // ρ Progress(a), where Progress is uniform over the principal's actions
+  // that bring an atom of h's goal nearer by the principal's own h_max (the
+  // assistant's actions 1000 times dearer), or over all its actions when
+  // none does. People walk to the nearer of two things first although the
+  // other order is cheaper; on a map each such step would otherwise count
+  // many times against their goal. 0: the bare model (the paper packs).
+  // Chosen on the dev halves (docs/decisions.md, "Progress in the action
+  // likelihood").
+  double progress_share = 0.05;
 };
 
 // The literal listener's variants, by the method names a bench runs them

@@ -299,7 +299,8 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
   if (doc.contains("inference")) {
     const json& in = doc["inference"];
     f.only(in, "inference", {"heuristic", "search", "temperature_prior", "rollout", "utterance_noise", "utterance_exponent",
-                          "alone_cost_factor", "speaker_delegates", "request_plans", "sparing_plans", "comment"});
+                          "alone_cost_factor", "speaker_delegates", "request_plans", "sparing_plans", "progress_share",
+                          "comment"});
     if (in.contains("request_plans")) {
       s.inference.request_plans = f.number(in["request_plans"], "inference.request_plans", 0, false);
       if (s.inference.request_plans >= 1) f.fail("inference.request_plans", "expected a number below 1");
@@ -307,6 +308,10 @@ PackSpec parse_pack_spec(const std::string& json_text, const std::string& source
     if (in.contains("sparing_plans")) {
       s.inference.sparing_plans = f.number(in["sparing_plans"], "inference.sparing_plans", 0, false);
       if (s.inference.sparing_plans >= 1) f.fail("inference.sparing_plans", "expected a number below 1");
+    }
+    if (in.contains("progress_share")) {
+      s.inference.progress_share = f.number(in["progress_share"], "inference.progress_share", 0, false);
+      if (s.inference.progress_share >= 1) f.fail("inference.progress_share", "expected a number below 1");
     }
     if (in.contains("speaker_delegates")) {
       s.inference.speaker_delegates = f.number(in["speaker_delegates"], "inference.speaker_delegates", 0, false);

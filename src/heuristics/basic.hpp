@@ -51,6 +51,9 @@ class HMaxHeuristic : public Heuristic {
   bool estimates_depend_on_root() const override { return false; }  // the goal only
   void prepare(const model::Specification& spec, const pddl::State& root) override;
   double estimate(const uint64_t* s) override;
+  // Per atom, its h_max cost in the state last estimated (where the goal did
+  // not hold there: the estimate stops at a goal state).
+  const std::vector<double>& atom_costs() const { return atom_cost_; }
 
  private:
   const model::Specification* spec_ = nullptr;

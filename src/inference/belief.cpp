@@ -11,7 +11,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <mutex>
+#include <optional>
 
+#include "heuristics/basic.hpp"
 #include "heuristics/conditions.hpp"
 #include "lm/readability.hpp"
 #include "pddl/plan.hpp"
@@ -120,6 +123,7 @@ Belief::Belief(std::shared_ptr<const pddl::Task> task, domains::PackPtr pack, st
   heuristic_name_ = hname;
   if (search_ && settings.request_plans > 0) request_share_ = settings.request_plans;
   if (search_ && settings.sparing_plans > 0) spare_share_ = settings.sparing_plans;
+  progress_share_ = settings.progress_share;
   const double n = static_cast<double>(hyps_.size());
   log_prior_.assign(hyps_.size(), -std::log(n));
   action_ll_.assign(hyps_.size(), 0.0);
@@ -290,12 +294,75 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, Refin
   if (stopped) throw Interrupted("stopped between refinements");
 }
 
+// A hypothesis' goal as the principal alone would reach it. Copies of a
+// belief share it, hence the lock on its heuristic's buffers.
+struct Belief::Progress {
+  std::shared_ptr<model::Specification> spec;
+  std::mutex lock;
+  heuristics::HMaxHeuristic hmax;
+  std::vector<int> goal_atoms;
+  // The last state asked about and its progressing actions (a twin and its
+  // base share this: the assistant's costs do not matter here).
+  std::optional<pddl::State> last;
+  std::vector<pddl::ActionId> progressing;
+};
+
+double Belief::progress_likelihood(int h, const pddl::State& s, const std::vector<pddl::ActionId>& candidates,
+                                   pddl::ActionId action) {
+  if (progress_.size() != hyps_.size()) progress_.resize(hyps_.size());
+  auto& p = progress_[static_cast<size_t>(base_of_[static_cast<size_t>(h)])];
+  if (!p) {
+    p = std::make_shared<Progress>();
+    const domains::Roles& roles = pack_->spec().roles;
+    const model::Specification& base = *hyps_[static_cast<size_t>(h)].spec;
+    p->spec = std::make_shared<model::Specification>(
+        task_, base.goal_text(),
+        model::scaled_assistant(base.profile(), base.profile().name + "-progress", roles.assistant, roles.noop_action, 1000));
+    p->hmax.prepare(*p->spec, s);
+    for (const auto& clause : heuristics::goal_dnf(base.goal(), true))
+      for (int b : clause)
+        if (std::find(p->goal_atoms.begin(), p->goal_atoms.end(), b) == p->goal_atoms.end()) p->goal_atoms.push_back(b);
+  }
+  const std::lock_guard<std::mutex> held(p->lock);
+  if (!p->last || !(*p->last == s)) {
+    p->last = s;
+    p->progressing.clear();
+    p->hmax.estimate(s.data());
+    const std::vector<double> now = p->hmax.atom_costs();
+    // Where the goal holds already nothing is progress (and h_max stopped).
+    for (pddl::ActionId a : p->spec->is_goal(s) ? std::vector<pddl::ActionId>{} : candidates) {
+      const pddl::State next = task_->apply(s, a);
+      if (p->spec->is_goal(next)) {  // (h_max stops at a goal state)
+        p->progressing.push_back(a);
+        continue;
+      }
+      p->hmax.estimate(next.data());
+      const auto& after = p->hmax.atom_costs();
+      for (int b : p->goal_atoms)
+        if (!pddl::get_bit(s.data(), b) && after[static_cast<size_t>(b)] < now[static_cast<size_t>(b)] - 1e-9) {
+          p->progressing.push_back(a);
+          break;
+        }
+    }
+  }
+  if (p->progressing.empty()) return 1.0 / static_cast<double>(candidates.size());
+  const bool chosen = std::find(p->progressing.begin(), p->progressing.end(), action) != p->progressing.end();
+  return chosen ? 1.0 / static_cast<double>(p->progressing.size()) : 0.0;
+}
+
 double Belief::score_action(int h, const pddl::State& s, pddl::ActionId action) {
   std::vector<double> q;
+  std::vector<pddl::ActionId> candidates;
   int chosen = -1;
   for (const search::QValue& qv : policies_[h].q_values(s)) {
     if (qv.action == action) chosen = static_cast<int>(q.size());
     q.push_back(qv.q);
+    candidates.push_back(qv.action);
+  }
+  if (progress_share_ > 0 && chosen >= 0) {
+    const double boltzmann = temps_[h].update(q, chosen);
+    return std::log((1 - progress_share_) * boltzmann +
+                    progress_share_ * progress_likelihood(h, s, candidates, action));
   }
   // An unavailable action has likelihood 0: the hypothesis is eliminated.
   return std::log(temps_[h].update(q, chosen));

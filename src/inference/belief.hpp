@@ -422,6 +422,15 @@ class Belief {
   std::shared_ptr<search::StateGraph> graph_;  // shared by the policies (null without search)
   std::vector<search::Policy> policies_;
   std::vector<TemperatureBelief> temps_;
+  // The progress share of the action likelihood
+  // (domains::InferenceSettings::progress_share) and, per hypothesis, made
+  // when first needed, its goal as the principal alone would reach it.
+  double progress_share_ = 0;
+  struct Progress;
+  std::vector<std::shared_ptr<Progress>> progress_;
+  // Progress(action) among the principal's `candidates` in s under h.
+  double progress_likelihood(int h, const pddl::State& s, const std::vector<pddl::ActionId>& candidates,
+                             pddl::ActionId action);
   std::vector<double> log_prior_, action_ll_, utterance_ll_;
   pddl::State state_;
   int t_ = 0;

@@ -4,6 +4,7 @@
 // sentences are this test's own, not the dataset's instructions.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -174,6 +175,41 @@ TEST(MapWords, AskedToHandSomethingOverTheRobotDoesNotShelveIt) {
   // The reason says what decided: the human's own step after it was allowed.
   EXPECT_TRUE(contains(j.at("decision").at("reason").get<std::string>(), "but by a step of the principal's own"))
       << r.out;
+}
+
+// Problem 3: bag1 up the right-hand aisle, bag2 in the bottom-left corner,
+// the jars on the left. For white-bags-shelf2 (bag1 and bag2 to shelf 2) the
+// cheaper order fetches bag2 first, yet a human walking right towards bag1
+// is making progress on that goal; walking right is progress towards no jar.
+// With the pack's progress share those steps count less against the bags
+// goal than against the jars goal; without it (0) the two fall alike.
+TEST(MapWords, AWalkTowardsAGoalsThingCountsLessAgainstItThanAWalkAway) {
+  TempDir copy("progress-share");
+  const auto bare = copy.path / "warehouse";
+  std::filesystem::copy(warehouse(), bare, std::filesystem::copy_options::recursive);
+  {
+    auto pack = nlohmann::json::parse(std::ifstream(bare / "pack.json"));
+    pack["inference"]["progress_share"] = 0;
+    std::ofstream(bare / "pack.json") << pack.dump(2);
+  }
+  auto walk = [&](const std::string& dataset) {
+    const std::string cmd = clips_binary() + " infer --json --dataset " + dataset +
+                            " --problem 3 --modalities action_only --actions " +
+                            sq("(right human c4-5 c5-5) (wait robot) (right human c5-5 c6-5)");
+    const auto r = run(cmd);
+    EXPECT_EQ(r.status, 0) << cmd << "\n" << r.out;
+    std::map<std::string, double> p;
+    if (r.status != 0) return p;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& g : j.at("steps").back().at("posterior").at("goals")) p[g.at("goal")] = g.at("p").get<double>();
+    return p;
+  };
+  const auto with = walk(warehouse()), without = walk(bare.string());
+  ASSERT_FALSE(with.empty());
+  ASSERT_FALSE(without.empty());
+  EXPECT_GT(with.at("white-bags-shelf2"), 2 * with.at("yellow-jars-shelf1"));
+  EXPECT_LT(without.at("white-bags-shelf2"), 1.5 * without.at("yellow-jars-shelf1"));
+  EXPECT_GT(with.at("white-bags-shelf2"), 2 * without.at("white-bags-shelf2"));
 }
 
 // In the assistance episode the simulated human follows its recorded plan,
