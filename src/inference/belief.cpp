@@ -477,12 +477,7 @@ namespace {
 constexpr double kSparingFactor = 10;
 }  // namespace
 
-SpeakerPlans Belief::sparing_plan(size_t h, const pddl::State& s) {
-  const model::Specification& base = *hyps_[h].spec;
-  const domains::Roles& roles = pack_->spec().roles;
-  model::Specification spec(task_, base.goal_text(),
-                            model::scaled_assistant(base.profile(), base.profile().name + "-sparing", roles.principal,
-                                                    roles.noop_action, kSparingFactor));
+SpeakerPlans Belief::plan_for(const model::Specification& spec, const pddl::State& s) {
   std::shared_ptr<heuristics::Heuristic> heur = pack_->make_heuristic(heuristic_name_, *task_);
   heur->prepare(spec, s);
   search::SearchOptions o = options_.refine;
@@ -490,6 +485,15 @@ SpeakerPlans Belief::sparing_plan(size_t h, const pddl::State& s) {
   const search::SearchResult r = search::astar(spec, *heur, s, o);
   if (r.status != search::SearchStatus::Success) return {};
   return {SpeakerPlan{1.0, r.plan}};
+}
+
+SpeakerPlans Belief::sparing_plan(size_t h, const pddl::State& s) {
+  const model::Specification& base = *hyps_[h].spec;
+  const domains::Roles& roles = pack_->spec().roles;
+  model::Specification spec(task_, base.goal_text(),
+                            model::scaled_assistant(base.profile(), base.profile().name + "-sparing", roles.principal,
+                                                    roles.noop_action, kSparingFactor));
+  return plan_for(spec, s);
 }
 
 SpeakerPlans Belief::handing_plan(size_t h, const pddl::State& s, const SpeakerPlan& sparing) {
@@ -521,13 +525,7 @@ SpeakerPlans Belief::handing_plan(size_t h, const pddl::State& s, const SpeakerP
   });
   if (!assistant_finishes) return {};
   model::Specification spec(task_, base.goal_text(), profile);
-  std::shared_ptr<heuristics::Heuristic> heur = pack_->make_heuristic(heuristic_name_, *task_);
-  heur->prepare(spec, s);
-  search::SearchOptions o = options_.refine;
-  o.max_nodes = std::min<size_t>(o.max_nodes, size_t{1} << 16);
-  const search::SearchResult r = search::astar(spec, *heur, s, o);
-  if (r.status != search::SearchStatus::Success) return {};
-  return {SpeakerPlan{1.0, r.plan}};
+  return plan_for(spec, s);
 }
 
 void Belief::read_requests(const pddl::State& s, const std::vector<std::string>& texts,

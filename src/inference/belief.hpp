@@ -408,6 +408,8 @@ class Belief {
   // does all it can, the principal only what the assistant cannot. Empty
   // when the search finds none within its budget.
   SpeakerPlans sparing_plan(size_t h, const pddl::State& s);
+  // One A* plan (the pack's heuristic, at most 2^16 nodes) for `spec` from s.
+  SpeakerPlans plan_for(const model::Specification& spec, const pddl::State& s);
   // Its variant in which the principal keeps the goal's last steps: the
   // kinds of action (schemas) that make a goal atom true cost the principal
   // what they cost, and the assistant kSparingFactor times as much. So the

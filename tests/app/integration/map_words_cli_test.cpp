@@ -29,13 +29,9 @@ std::string sq(const std::string& s) {
   return out + "'";
 }
 
-// The goal posterior after the last step of `clips infer --json` (language
-// alone unless `modality` says otherwise), by goal name.
-std::map<std::string, double> posterior(const std::string& utterance, const std::string& actions = "",
-                                        int step = 0, const std::string& modality = "lang_only") {
-  std::string cmd = clips_binary() + " infer --json --dataset " + warehouse() + " --problem 1 --modalities " + modality +
-                    " --utterance " + sq(utterance);
-  if (!actions.empty()) cmd += " --actions " + sq(actions) + " --utterance-step " + std::to_string(step);
+// The goal posterior after the last step of a `clips infer --json` command,
+// by goal name.
+std::map<std::string, double> last_posterior(const std::string& cmd) {
   const auto r = run(cmd);
   EXPECT_EQ(r.status, 0) << cmd << "\n" << r.out;
   std::map<std::string, double> p;
@@ -43,6 +39,16 @@ std::map<std::string, double> posterior(const std::string& utterance, const std:
   const auto j = nlohmann::json::parse(r.out);
   for (const auto& g : j.at("steps").back().at("posterior").at("goals")) p[g.at("goal")] = g.at("p").get<double>();
   return p;
+}
+
+// The same on problem 1 for an utterance (language alone unless `modality`
+// says otherwise).
+std::map<std::string, double> posterior(const std::string& utterance, const std::string& actions = "",
+                                        int step = 0, const std::string& modality = "lang_only") {
+  std::string cmd = clips_binary() + " infer --json --dataset " + warehouse() + " --problem 1 --modalities " + modality +
+                    " --utterance " + sq(utterance);
+  if (!actions.empty()) cmd += " --actions " + sq(actions) + " --utterance-step " + std::to_string(step);
+  return last_posterior(cmd);
 }
 
 double green(const std::map<std::string, double>& p) {
@@ -193,16 +199,9 @@ TEST(MapWords, AWalkTowardsAGoalsThingCountsLessAgainstItThanAWalkAway) {
     std::ofstream(bare / "pack.json") << pack.dump(2);
   }
   auto walk = [&](const std::string& dataset) {
-    const std::string cmd = clips_binary() + " infer --json --dataset " + dataset +
-                            " --problem 3 --modalities action_only --actions " +
-                            sq("(right human c4-5 c5-5) (wait robot) (right human c5-5 c6-5)");
-    const auto r = run(cmd);
-    EXPECT_EQ(r.status, 0) << cmd << "\n" << r.out;
-    std::map<std::string, double> p;
-    if (r.status != 0) return p;
-    const auto j = nlohmann::json::parse(r.out);
-    for (const auto& g : j.at("steps").back().at("posterior").at("goals")) p[g.at("goal")] = g.at("p").get<double>();
-    return p;
+    return last_posterior(clips_binary() + " infer --json --dataset " + dataset +
+                          " --problem 3 --modalities action_only --actions " +
+                          sq("(right human c4-5 c5-5) (wait robot) (right human c5-5 c6-5)"));
   };
   const auto with = walk(warehouse()), without = walk(bare.string());
   ASSERT_FALSE(with.empty());
