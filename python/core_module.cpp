@@ -905,7 +905,8 @@ PYBIND11_MODULE(_core, m) {
           "The posterior in the engine's JSON form (as `clips infer --json` and the server write it): {'method', "
           "'modality', 'goals': [{'goal', 'p'}], 'cost_profiles': [{'cost_profile', 'p'}], 'hypotheses': [{'goal', "
           "'cost_profile', 'p'}], 'log_marginal_likelihood': float, None when nothing explains the observations}, "
-          "under the session's method or another ('clips', 'lang_only', 'action_only').")
+          "under the session's method or another with a posterior of its own (choices()['method'] lists the "
+          "methods).")
       .def(
           "assist",
           [](py::handle self, py::object time_limit) {
@@ -1084,8 +1085,8 @@ PYBIND11_MODULE(_core, m) {
         "run_plan(dataset, plan, *, lm='embedded', threads=0) -> dict\n\n"
         "Goal inference over one dataset plan, as `clips infer`: {'plan', 'goals', 'true_goal', 'cost_profiles', "
         "'steps', 'seconds'}; steps[t] has 't', 'action' (the action observed at t, '' at t = 0), 'utterances', "
-        "'posterior' ({'clips': ..., 'lang_only': ..., 'action_only': ...}, each method's posterior as "
-        "posterior() gives it) and 'seconds'.");
+        "'posterior' ({method: posterior} for each method with a posterior of its own, as posterior() gives it) "
+        "and 'seconds'.");
   m.def("run_bench", &run_bench, py::arg("dataset"), py::kw_only(), py::arg("methods") = std::vector<std::string>{},
         py::arg("plans") = std::vector<std::string>{}, py::arg("jobs") = 0, py::arg("seed") = 1,
         py::arg("lm") = "embedded",
@@ -1124,7 +1125,7 @@ PYBIND11_MODULE(_core, m) {
         "unregister_option(name) -> None\n\nTakes back an option register_option registered.");
   m.def("register_policy", &register_policy, py::arg("name"), py::arg("help"), py::arg("decide"),
         "register_policy(name, help, decide) -> None\n\n"
-        "Registers a decision policy written in Python, in the same table as 'qmdp' and 'pibar': sessions take "
+        "Registers a decision policy written in Python, in the same table as the built-in ones: sessions take "
         "assistance=name, choices()['assistance'] lists it, run_bench(methods=['clips/' + name]) runs its "
         "episodes. decide(view) is called at each of the assistant's turns with a dict: 'actions' (the "
         "applicable actions' names), 'wait' (the assistant's no-op), 'goals' ([{'goal', 'p'}]: each goal's PDDL formula and its posterior probability), "

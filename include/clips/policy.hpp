@@ -1,6 +1,6 @@
 #pragma once
 // A decision policy of your own: how the assistant picks its next action.
-// Registered once, it sits in the same table as "qmdp" and "pibar": a
+// Registered once, it sits in the same table as the built-in policies: a
 // Session decides by it (SessionOptions::assistance), `clips serve` and
 // Python take its name, and the bench runs its episodes ("clips/NAME").
 //

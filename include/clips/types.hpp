@@ -13,9 +13,7 @@ namespace clips {
 
 // Which evidence the posterior uses, and how the assistant decides. One
 // name table (src/engine/methods.cpp; docs/cli.md, "Named choices") serves
-// CLI flags, Python keywords and JSON fields: "clips", "lang_only",
-// "action_only", "literal"; the old spellings ("both", "utterance",
-// "language", "action", ...) are read too.
+// CLI flags, Python keywords and JSON fields, and reads older spellings too.
 enum class Method {
   Clips,         // actions and utterances
   LanguageOnly,  // utterances only (the actions still move the state)
@@ -24,7 +22,7 @@ enum class Method {
   // latest instruction (its posterior is the CLIPS one).
   Literal,
 };
-// The canonical name ("clips", "lang_only", "action_only", "literal").
+// The canonical name (method_names() lists them).
 std::string method_name(Method m);
 // Any known spelling; throws InputError listing the names.
 Method parse_method(const std::string& text);
@@ -35,8 +33,8 @@ enum class Assistance {
   QMdp,   // Q_MDP: the action of highest posterior-weighted Q-value
   PiBar,  // pi-bar_MDP: the action the posterior mixture of policies takes most often
 };
-// One name table, as for methods: "qmdp", "pibar" (Python keywords, the
-// server's JSON fields).
+// One name table, as for methods (the decision policies' table, which
+// registered policies join; Python keywords, the server's JSON fields).
 std::string assistance_name(Assistance a);
 // Throws InputError listing the names.
 Assistance parse_assistance(const std::string& text);

@@ -288,7 +288,8 @@ LiveDecision decide_next_action(const data::Dataset& ds, const data::PlanRecord&
                                 const std::string& method, Assistance assistance, const CallLimits& limits) {
   const clips::Method m = clips::parse_method(method);
   if (m == clips::Method::Literal)
-    throw InputError("--method " + method + " cannot assist from ad-hoc observations (clips, lang_only or action_only)");
+    throw InputError("--method " + method + " cannot assist from ad-hoc observations (" +
+                     util::or_list(engine::posterior_method_names()) + ")");
   SessionOptions so;
   so.method = m;
   so.assistance = assistance;

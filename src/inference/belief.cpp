@@ -294,6 +294,10 @@ void Belief::refine_some(const pddl::State& s, const std::vector<int>& hs, Refin
   if (stopped) throw Interrupted("stopped between refinements");
 }
 
+// How much dearer the assistant's actions are in the progress relaxation:
+// enough that h_max measures the principal's own way to each goal atom.
+constexpr double kPrincipalAloneFactor = 1000;
+
 // A hypothesis' goal as the principal alone would reach it. Copies of a
 // belief share it, hence the lock on its heuristic's buffers.
 struct Belief::Progress {
@@ -317,7 +321,8 @@ double Belief::progress_likelihood(int h, const pddl::State& s, const std::vecto
     const model::Specification& base = *hyps_[static_cast<size_t>(h)].spec;
     p->spec = std::make_shared<model::Specification>(
         task_, base.goal_text(),
-        model::scaled_assistant(base.profile(), base.profile().name + "-progress", roles.assistant, roles.noop_action, 1000));
+        model::scaled_assistant(base.profile(), base.profile().name + "-progress", roles.assistant, roles.noop_action,
+                                kPrincipalAloneFactor));
     p->hmax.prepare(*p->spec, s);
     for (const auto& clause : heuristics::goal_dnf(base.goal(), true))
       for (int b : clause)
