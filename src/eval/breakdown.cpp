@@ -160,20 +160,27 @@ std::string breakdown_table(const Breakdown& b) {
         if (std::find(pr_methods.begin(), pr_methods.end(), m) == pr_methods.end()) pr_methods.push_back(m);
     }
     out += "\nBy instruction category (mean over the plans of the category; P = P(g_true), prec = precision):\n";
-    std::string head = fmt::format("{:<16}{:<6}{:>3}", "category", "split", "n");
-    for (const auto& m : pt_methods) head += fmt::format(" {:>12}", "P " + m.substr(0, 10));
-    for (const auto& m : pr_methods) head += fmt::format(" {:>12}", "prec " + m.substr(0, 7));
+    // Columns as wide as their longest entry: no name is cut or runs into the next.
+    size_t cat_w = std::string("category").size();
+    for (const auto& row : b.categories) cat_w = std::max(cat_w, row.category.size());
+    std::vector<std::string> labels;
+    for (const auto& m : pt_methods) labels.push_back("P " + m);
+    for (const auto& m : pr_methods) labels.push_back("prec " + m);
+    std::vector<size_t> widths;
+    for (const auto& l : labels) widths.push_back(std::max<size_t>(6, l.size()));
+    std::string head = fmt::format("{:<{}}  {:<5} {:>3}", "category", cat_w, "split", "n");
+    for (size_t i = 0; i < labels.size(); ++i) head += fmt::format(" {:>{}}", labels[i], widths[i]);
     out += head + "\n";
     for (const auto& row : b.categories) {
-      std::string line = fmt::format("{:<16}{:<6}{:>3}", row.category, row.split.empty() ? "all" : row.split, row.n);
-      for (const auto& m : pt_methods) {
-        auto it = row.p_true_goal.find(m);
-        line += it == row.p_true_goal.end() ? fmt::format(" {:>12}", "–") : fmt::format(" {:>12.2f}", it->second);
-      }
-      for (const auto& m : pr_methods) {
-        auto it = row.precision.find(m);
-        line += it == row.precision.end() ? fmt::format(" {:>12}", "–") : fmt::format(" {:>12.2f}", it->second);
-      }
+      std::string line = fmt::format("{:<{}}  {:<5} {:>3}", row.category, cat_w, row.split.empty() ? "all" : row.split, row.n);
+      size_t col = 0;
+      auto value = [&](const std::map<std::string, double>& values, const std::string& m) {
+        auto it = values.find(m);
+        const size_t w = widths[col++];
+        line += it == values.end() ? fmt::format(" {:>{}}", "–", w) : fmt::format(" {:>{}.2f}", it->second, w);
+      };
+      for (const auto& m : pt_methods) value(row.p_true_goal, m);
+      for (const auto& m : pr_methods) value(row.precision, m);
       out += line + "\n";
     }
   }

@@ -493,12 +493,24 @@ SpeakerPlans Belief::plan_for(const model::Specification& spec, const pddl::Stat
 }
 
 SpeakerPlans Belief::sparing_plan(size_t h, const pddl::State& s) {
+  SparingMemo& memo = *sparing_memo_;
+  {
+    std::lock_guard<std::mutex> lock(memo.mu);
+    if (memo.state != s) {
+      memo.state = s;
+      memo.plans.clear();
+    }
+    if (auto it = memo.plans.find(h); it != memo.plans.end()) return it->second;
+  }
   const model::Specification& base = *hyps_[h].spec;
   const domains::Roles& roles = pack_->spec().roles;
   model::Specification spec(task_, base.goal_text(),
                             model::scaled_assistant(base.profile(), base.profile().name + "-sparing", roles.principal,
                                                     roles.noop_action, kSparingFactor));
-  return plan_for(spec, s);
+  SpeakerPlans plans = plan_for(spec, s);
+  std::lock_guard<std::mutex> lock(memo.mu);
+  if (memo.state == s) memo.plans.emplace(h, plans);
+  return plans;
 }
 
 SpeakerPlans Belief::handing_plan(size_t h, const pddl::State& s, const SpeakerPlan& sparing) {

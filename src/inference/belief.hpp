@@ -48,6 +48,7 @@
 #include <stdexcept>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -408,6 +409,14 @@ class Belief {
   // does all it can, the principal only what the assistant cannot. Empty
   // when the search finds none within its budget.
   SpeakerPlans sparing_plan(size_t h, const pddl::State& s);
+  // The speaker model and the request reading both ask for it in the state an
+  // utterance is heard in: each hypothesis' plan is searched once per state.
+  struct SparingMemo {
+    std::mutex mu;
+    pddl::State state;
+    std::map<size_t, SpeakerPlans> plans;
+  };
+  std::shared_ptr<SparingMemo> sparing_memo_ = std::make_shared<SparingMemo>();
   // One A* plan (the pack's heuristic, at most 2^16 nodes) for `spec` from s.
   SpeakerPlans plan_for(const model::Specification& spec, const pddl::State& s);
   // Its variant in which the principal keeps the goal's last steps: the
