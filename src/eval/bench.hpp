@@ -104,6 +104,13 @@ struct BenchLatency {
   // else every method's.
   std::string decision_method;
   LatencyStats decision;
+  // Where the time went: the plans' inference (their belief steps) and each
+  // method's runs, summed over plans (in the order methods first ran), and
+  // the longest single run.
+  double inference_seconds = 0;
+  std::vector<std::pair<std::string, double>> method_seconds;
+  std::string slowest_plan, slowest_method;
+  double slowest_seconds = 0;
 };
 BenchLatency bench_latency(const BenchReport& r);
 // Recomputes failed_plans and the per-method summary (means and standard

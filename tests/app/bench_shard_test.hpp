@@ -75,12 +75,13 @@ json plans_without_timing(const fs::path& dir) {
 }
 
 // The results table in a command's output: its lines less the timing lines
-// ("... s wall ...", "latency: ...") and the notes on stderr ("wrote ...").
+// ("... s wall ...", "latency: ...", "time: ...") and the notes on stderr ("wrote ...").
 std::vector<std::string> table_without_timing(const std::string& out) {
   std::vector<std::string> lines;
   std::istringstream in(out);
   for (std::string line; std::getline(in, line);)
-    if (!contains(line, " s wall") && line.rfind("wrote ", 0) != 0 && line.rfind("latency: ", 0) != 0)
+    if (!contains(line, " s wall") && line.rfind("wrote ", 0) != 0 && line.rfind("latency: ", 0) != 0 &&
+        line.rfind("time: ", 0) != 0)
       lines.push_back(line);
   return lines;
 }

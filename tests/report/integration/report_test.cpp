@@ -46,6 +46,19 @@ TEST_F(BenchReportTest, SummaryJson) {
   }
   EXPECT_NE(result_->out.find("latency: belief step median"), std::string::npos) << result_->out;
   EXPECT_NE(result_->out.find("latency: assistance decision (clips)"), std::string::npos) << result_->out;
+  // Where the time went: inference and every method that ran, and the longest run.
+  const auto& sec = lat["seconds"];
+  EXPECT_GT(sec["inference"].get<double>(), 0);
+  ASSERT_TRUE(sec["methods"].contains("clips")) << sec.dump();
+  double longest = 0;
+  for (const auto& [m, v] : sec["methods"].items()) {
+    EXPECT_GE(v.get<double>(), 0) << m;
+    longest = std::max(longest, v.get<double>());
+  }
+  EXPECT_GT(sec["longest_run"]["seconds"].get<double>(), 0);
+  EXPECT_LE(sec["longest_run"]["seconds"].get<double>(), longest + 1e-9);
+  EXPECT_TRUE(sec["methods"].contains(sec["longest_run"]["method"].get<std::string>())) << sec.dump();
+  EXPECT_NE(result_->out.find("time: inference "), std::string::npos) << result_->out;
 }
 
 TEST_F(BenchReportTest, ResultsCsvHasOneRowPerPlanAndMethod) {
