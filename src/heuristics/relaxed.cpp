@@ -3,24 +3,58 @@
 #include "heuristics/conditions.hpp"
 
 #include <algorithm>
+#include <map>
+#include <memory>
+#include <mutex>
 
 namespace clips::heuristics {
 
 using CNode = pddl::Task::CNode;
 
-RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
-  const pddl::Task& t = spec.task();
+namespace {
+
+// What of the relaxation follows from the task and the options alone (not
+// the goal's positive part, not the costs): the turn structure, the negation
+// atoms and each action's relaxed preconditions, adds and killers. A
+// hypothesis, a sparing or handing plan and an assistance decision each
+// prepare a heuristic for a specification of their own; they share this.
+struct RelaxedBase {
+  TurnStructure turns;
+  bool use_turns = false;
+  std::vector<char> is_turn, deleted;
+  std::vector<int> neg_atom, negated;
+  std::vector<std::vector<int>> pre, add, killers;  // per action
+  std::vector<std::vector<int>> axiom_pre;          // per axiom clause
+  std::vector<int> axiom_head;
+};
+
+// The negation atoms `goal_literals` (negative literals as -b - 1) add to
+// those of the actions: none unless the goal negates an atom no action's
+// precondition negates.
+bool goal_adds_negations(const RelaxedBase& b, const pddl::Task& t, const std::vector<std::vector<int>>& goal_literals) {
+  for (const auto& c : goal_literals)
+    for (int l : c) {
+      if (l >= 0) continue;
+      const size_t x = static_cast<size_t>(-l - 1);
+      if (b.deleted[x] && !b.is_turn[x] && !t.is_derived(static_cast<int>(x)) && b.neg_atom[x] < 0) return true;
+    }
+  return false;
+}
+
+RelaxedBase make_base(const pddl::Task& t, const RelaxedTask::Options& opts,
+                      const std::vector<std::vector<int>>& goal_literals) {
   const int na = t.num_actions(), nb = t.num_atoms();
-  RelaxedTask r;
-  r.options = opts;
+  RelaxedBase r;
   if (opts.turns) {
     r.turns = TurnStructure::of(t);
     r.use_turns = r.turns.ok;
   }
-  std::vector<char> is_turn(static_cast<size_t>(nb), 0);
+  std::vector<char>& is_turn = r.is_turn;
+  is_turn.assign(static_cast<size_t>(nb), 0);
   if (r.use_turns)
     for (int b : r.turns.turn_bit) is_turn[static_cast<size_t>(b)] = 1;
-  std::vector<char> deleted(static_cast<size_t>(nb), 0);
+  std::vector<char>& deleted = r.deleted;
+  deleted.assign(static_cast<size_t>(nb), 0);
   if (opts.dead_preconditions || opts.negations)
     for (pddl::ActionId a = 0; a < na; ++a) {
       for (int b : t.action(a).eff.del) deleted[static_cast<size_t>(b)] = 1;
@@ -35,8 +69,8 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
 
   // Negation atoms: negative preconditions some action deletes (turn atoms
   // are out of the relaxation anyway).
-  std::vector<int> neg_atom(static_cast<size_t>(nb), -1);
-  r.num_state_atoms = nb;
+  std::vector<int>& neg_atom = r.neg_atom;
+  neg_atom.assign(static_cast<size_t>(nb), -1);
   if (opts.negations) {
     std::vector<int> p, neg;
     for (pddl::ActionId a = 0; a < na; ++a) {
@@ -50,12 +84,8 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
           r.negated.push_back(b);
         }
     }
-  }
-  // The goal's negative literals too ((not (rcnot g)) for every gate done):
-  // "not b" is a goal atom when some action deletes b, else dropped.
-  std::vector<std::vector<int>> goal_literals;
-  if (opts.negations) {
-    goal_literals = goal_dnf_literals(spec.goal());
+    // The goal's negative literals too ((not (rcnot g)) for every gate done):
+    // "not b" is a goal atom when some action deletes b, else dropped.
     for (const auto& c : goal_literals)
       for (int l : c) {
         if (l >= 0) continue;
@@ -67,20 +97,16 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
         }
       }
   }
-  const int ntotal = nb + static_cast<int>(r.negated.size());
-  r.num_atoms = ntotal;
-  std::vector<std::vector<int>> pre_rows, add_rows, needed(static_cast<size_t>(ntotal)),
-      kills(static_cast<size_t>(ntotal)), killers_rows(static_cast<size_t>(na));
-  const size_t nagents = r.use_turns ? r.turns.agents.size() : 0;
-  r.agent_safe_min.assign(nagents, model::kInf);
-  r.agent_killable.assign(nagents, {});
+  r.pre.resize(static_cast<size_t>(na));
+  r.add.resize(static_cast<size_t>(na));
+  r.killers.resize(static_cast<size_t>(na));
   for (pddl::ActionId a = 0; a < na; ++a) {
     const pddl::GroundAction& ga = t.action(a);
     std::vector<int> p, neg, e;
     conjuncts(t, ga.pre, p, &neg);
     if (opts.dead_preconditions)
       for (int b : neg)
-        if (!deleted[static_cast<size_t>(b)]) killers_rows[static_cast<size_t>(a)].push_back(b);
+        if (!deleted[static_cast<size_t>(b)]) r.killers[static_cast<size_t>(a)].push_back(b);
     if (r.use_turns) std::erase_if(p, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
     for (int b : neg)
       if (neg_atom[static_cast<size_t>(b)] >= 0) p.push_back(neg_atom[static_cast<size_t>(b)]);
@@ -95,6 +121,77 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
         for (int b : ce.eff.del)
           if (neg_atom[static_cast<size_t>(b)] >= 0) e.push_back(neg_atom[static_cast<size_t>(b)]);
     }
+    r.pre[static_cast<size_t>(a)] = std::move(p);
+    r.add[static_cast<size_t>(a)] = std::move(e);
+  }
+  // Derived predicates' rules: zero-cost operators adding their atom, one per
+  // clause (conditions.hpp), after the actions.
+  for (int i = 0; i < t.num_axioms(); ++i) {
+    const pddl::Axiom& x = t.axiom(i);
+    for (auto& clause : axiom_clauses(t, x.body)) {
+      std::vector<int> p;
+      for (int b : clause)
+        if (!r.use_turns || !is_turn[static_cast<size_t>(b)]) p.push_back(b);
+      r.axiom_pre.push_back(std::move(p));
+      r.axiom_head.push_back(x.head);
+    }
+  }
+  return r;
+}
+
+// One base per live task and options (entries of tasks that are gone are
+// dropped), for goals that add no negation atom of their own.
+std::shared_ptr<const RelaxedBase> shared_base(const std::shared_ptr<const pddl::Task>& task,
+                                               const RelaxedTask::Options& opts) {
+  const int key = (opts.turns ? 1 : 0) | (opts.dead_preconditions ? 2 : 0) | (opts.negations ? 4 : 0) |
+                  (opts.dedup_preconditions ? 8 : 0);
+  static std::mutex mu;
+  static std::map<std::pair<const pddl::Task*, int>,
+                  std::pair<std::weak_ptr<const pddl::Task>, std::shared_ptr<const RelaxedBase>>>
+      cache;
+  {
+    std::lock_guard lock(mu);
+    auto it = cache.find({task.get(), key});
+    if (it != cache.end() && it->second.first.lock() == task) return it->second.second;
+  }
+  auto base = std::make_shared<const RelaxedBase>(make_base(*task, opts, {}));
+  std::lock_guard lock(mu);
+  for (auto it = cache.begin(); it != cache.end();)
+    it = it->second.first.expired() ? cache.erase(it) : std::next(it);
+  cache[{task.get(), key}] = {task, base};
+  return base;
+}
+
+}  // namespace
+
+RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
+  const pddl::Task& t = spec.task();
+  const int na = t.num_actions(), nb = t.num_atoms();
+  RelaxedTask r;
+  r.options = opts;
+  std::vector<std::vector<int>> goal_literals;
+  if (opts.negations) goal_literals = goal_dnf_literals(spec.goal());
+  std::shared_ptr<const RelaxedBase> base;
+  if (spec.task_ptr()) base = shared_base(spec.task_ptr(), opts);
+  if (!base || goal_adds_negations(*base, t, goal_literals))
+    base = std::make_shared<const RelaxedBase>(make_base(t, opts, goal_literals));
+  r.turns = base->turns;
+  r.use_turns = base->use_turns;
+  const std::vector<char>& is_turn = base->is_turn;
+  const std::vector<int>& neg_atom = base->neg_atom;
+  r.negated = base->negated;
+  r.num_state_atoms = nb;
+  const int ntotal = nb + static_cast<int>(r.negated.size());
+  r.num_atoms = ntotal;
+  std::vector<std::vector<int>> pre_rows, add_rows, needed(static_cast<size_t>(ntotal)),
+      kills(static_cast<size_t>(ntotal));
+  const std::vector<std::vector<int>>& killers_rows = base->killers;
+  const size_t nagents = r.use_turns ? r.turns.agents.size() : 0;
+  r.agent_safe_min.assign(nagents, model::kInf);
+  r.agent_killable.assign(nagents, {});
+  for (pddl::ActionId a = 0; a < na; ++a) {
+    const std::vector<int>& p = base->pre[static_cast<size_t>(a)];
+    const std::vector<int>& e = base->add[static_cast<size_t>(a)];
     const double c = spec.cost(a);
     if (r.use_turns) {
       const size_t x = static_cast<size_t>(r.turns.agent_of[static_cast<size_t>(a)]);
@@ -110,28 +207,21 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     for (int b : p) needed[static_cast<size_t>(b)].push_back(op);
     for (int b : killers_rows[static_cast<size_t>(a)]) kills[static_cast<size_t>(b)].push_back(op);
     if (p.empty()) r.no_pre_ops.push_back(op);
-    pre_rows.push_back(std::move(p));
-    add_rows.push_back(std::move(e));
+    pre_rows.push_back(p);
+    add_rows.push_back(e);
   }
   for (auto& k : r.agent_killable) std::sort(k.begin(), k.end());
-  // Derived predicates' rules: zero-cost operators adding their atom, one per
-  // clause (conditions.hpp), after the actions.
-  for (int i = 0; i < t.num_axioms(); ++i) {
-    const pddl::Axiom& x = t.axiom(i);
-    for (auto& clause : axiom_clauses(t, x.body)) {
-      std::vector<int> p;
-      for (int b : clause)
-        if (!r.use_turns || !is_turn[static_cast<size_t>(b)]) p.push_back(b);
-      const int op = static_cast<int>(r.op_action.size());
-      r.op_action.push_back(-1);
-      r.cost.push_back(0);
-      r.positive_costs = false;
-      r.agent.push_back(-1);
-      for (int b : p) needed[static_cast<size_t>(b)].push_back(op);
-      if (p.empty()) r.no_pre_ops.push_back(op);
-      pre_rows.push_back(std::move(p));
-      add_rows.push_back({x.head});
-    }
+  for (size_t i = 0; i < base->axiom_pre.size(); ++i) {
+    const std::vector<int>& p = base->axiom_pre[i];
+    const int op = static_cast<int>(r.op_action.size());
+    r.op_action.push_back(-1);
+    r.cost.push_back(0);
+    r.positive_costs = false;
+    r.agent.push_back(-1);
+    for (int b : p) needed[static_cast<size_t>(b)].push_back(op);
+    if (p.empty()) r.no_pre_ops.push_back(op);
+    pre_rows.push_back(p);
+    add_rows.push_back({base->axiom_head[i]});
   }
 
   if (opts.negations) {
@@ -147,7 +237,8 @@ RelaxedTask RelaxedTask::of(const model::Specification& spec, Options opts) {
     r.goal_clauses = goal_dnf(spec.goal(), opts.normalise_goal);
   }
   if (r.use_turns) {
-    for (auto& c : r.goal_clauses) std::erase_if(c, [&](int b) { return is_turn[static_cast<size_t>(b)] != 0; });
+    // Negation atoms (b >= nb) are never turn atoms.
+    for (auto& c : r.goal_clauses) std::erase_if(c, [&](int b) { return b < nb && is_turn[static_cast<size_t>(b)] != 0; });
     if (opts.normalise_goal) normalise_all(r.goal_clauses);
   }
   for (const auto& c : r.goal_clauses) {
