@@ -22,8 +22,8 @@ TEST(BreakdownTable, LongCategoryAndMethodNamesKeepTheirColumns) {
   CategoryRow longest;
   longest.category = "request-self-doable";
   longest.n = 2;
-  longest.p_true_goal = {{"action_only", 0.75}, {"clips", 0.5}};
-  longest.precision = {{"lang_only", 0.25}};
+  longest.p_true_goal = {{"observer_only", 0.75}, {"clips", 0.5}};
+  longest.precision = {{"listener_only", 0.25}};
   CategoryRow short_one;
   short_one.category = "goal";
   short_one.split = "dev";
@@ -38,8 +38,8 @@ TEST(BreakdownTable, LongCategoryAndMethodNamesKeepTheirColumns) {
   ASSERT_LT(head + 2, lines.size()) << breakdown_table(b);
   const std::string& h = lines[head];
   // Method names whole in the header (they were cut to 10 and 7 characters).
-  EXPECT_NE(h.find("P action_only"), std::string::npos) << h;
-  EXPECT_NE(h.find("prec lang_only"), std::string::npos) << h;
+  EXPECT_NE(h.find("P observer_only"), std::string::npos) << h;
+  EXPECT_NE(h.find("prec listener_only"), std::string::npos) << h;
   // The split column starts at the same place on every line, after a space.
   const size_t split_col = h.find("split");
   ASSERT_NE(split_col, std::string::npos);
@@ -48,7 +48,7 @@ TEST(BreakdownTable, LongCategoryAndMethodNamesKeepTheirColumns) {
   EXPECT_EQ(lines[head + 1][split_col - 1], ' ');
   EXPECT_EQ(lines[head + 2].substr(split_col, 3), "dev") << lines[head + 2];
   // Values end where their header ends.
-  const size_t p_action_end = h.find("P action_only") + std::string("P action_only").size();
+  const size_t p_action_end = h.find("P observer_only") + std::string("P observer_only").size();
   EXPECT_EQ(lines[head + 1].substr(p_action_end - 4, 4), "0.75") << lines[head + 1];
   // A method without a value on a row is a dash.
   EXPECT_NE(lines[head + 2].find("–"), std::string::npos) << lines[head + 2];
